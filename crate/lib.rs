@@ -1,0 +1,13 @@
+//! # steering — the steering lab's core
+//!
+//! A pure, deterministic (f32, [`glam`]) implementation of four source texts
+//! (see `../shared/DESIGN.md` and the README's map):
+//! funnelling control towards oriented targets, relaxed funnelling towards
+//! oriented region goals, crowded path following, and the random steering
+//! toolkit. The `bindings` module is the only place that knows about
+//! JavaScript; everything else runs the same natively and in WebAssembly.
+
+#![deny(unsafe_code)]
+#![warn(missing_docs, clippy::all)]
+
+pub mod angle;
