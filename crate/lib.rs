@@ -11,3 +11,4 @@
 #![warn(missing_docs, clippy::all)]
 
 pub mod angle;
+pub mod rng;
