@@ -12,3 +12,7 @@
 
 pub mod angle;
 pub mod rng;
+pub mod seek;
+pub mod table;
+pub mod table_gen;
+pub mod vehicle;
