@@ -12,3 +12,4 @@
 
 pub mod angle;
 pub mod rng;
+pub mod wander;
