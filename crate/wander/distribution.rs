@@ -22,8 +22,9 @@ use crate::rng::Rng;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum DistributionConfig {
-    /// Uniform on `[-1, 1)`: the paper's plain "random number".
-    Uniform,
+    /// Uniform on `[-1, 1)`: the paper's plain "random number". (An empty
+    /// struct variant so that `deny_unknown_fields` also applies to it.)
+    Uniform {},
     /// Smooth noise: a fresh uniform value every `period` steps, linearly
     /// interpolated in between (paper §2). `period = 1` is white noise.
     SmoothNoise {
@@ -62,7 +63,7 @@ impl DistributionConfig {
     /// Checks every parameter; the typed error names the bad one.
     pub fn validate(&self) -> Result<(), WanderError> {
         match self {
-            Self::Uniform => Ok(()),
+            Self::Uniform {} => Ok(()),
             Self::SmoothNoise { period } => in_range_u("smooth_noise.period", *period, 1, 1 << 20),
             Self::Perlin {
                 period,
@@ -203,7 +204,7 @@ impl Sampler {
     pub fn new(cfg: &DistributionConfig, rng: &mut Rng) -> Result<Self, WanderError> {
         cfg.validate()?;
         Ok(match cfg {
-            DistributionConfig::Uniform => Self::Uniform,
+            DistributionConfig::Uniform {} => Self::Uniform,
             DistributionConfig::SmoothNoise { period } => Self::Smooth {
                 seed: rng.next_u32(),
                 period: *period as f32,

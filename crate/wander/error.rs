@@ -115,6 +115,10 @@ impl fmt::Display for WanderError {
 
 impl std::error::Error for WanderError {}
 
+/// Largest world coordinate or length accepted anywhere (keeps every
+/// derived distance finite in f32).
+pub const WORLD_LIMIT: f32 = 1e6;
+
 /// Checks that `v` is finite.
 pub(crate) fn finite(what: &'static str, v: f32) -> Result<(), WanderError> {
     if v.is_finite() {

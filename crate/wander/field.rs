@@ -19,7 +19,7 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use super::error::{in_range, in_range_u, positive, WanderError};
+use super::error::{in_range, in_range_u, WanderError};
 use super::{math, noise};
 use crate::angle;
 use crate::rng::Rng;
@@ -73,7 +73,7 @@ impl FieldConfig {
     pub fn validate(&self) -> Result<(), WanderError> {
         in_range_u("field.cols", self.cols, 2, 512)?;
         in_range_u("field.rows", self.rows, 2, 512)?;
-        positive("field.cell", self.cell)?;
+        in_range("field.cell", self.cell, 1e-3, super::error::WORLD_LIMIT)?;
         in_range_u("field.count", self.count, 1, 3)?;
         in_range("field.jitter_deg", self.jitter_deg, 0.0, 180.0)
     }

@@ -21,7 +21,7 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use super::error::{finite, in_range, in_range_u, positive, WanderError};
+use super::error::{finite, in_range, in_range_u, positive, WanderError, WORLD_LIMIT};
 use super::math;
 use crate::rng::Rng;
 
@@ -90,7 +90,7 @@ impl PathConfig {
                 rule,
             } => {
                 for v in start.iter().chain(end) {
-                    finite("path.start/end", *v)?;
+                    in_range("path.start/end", *v, -WORLD_LIMIT, WORLD_LIMIT)?;
                 }
                 if start == end {
                     return Err(WanderError::NotPositive {
@@ -121,9 +121,10 @@ impl PathConfig {
                 samples,
                 ..
             } => {
-                finite("path.center", center[0])?;
-                finite("path.center", center[1])?;
+                in_range("path.center", center[0], -WORLD_LIMIT, WORLD_LIMIT)?;
+                in_range("path.center", center[1], -WORLD_LIMIT, WORLD_LIMIT)?;
                 positive("path.radius", *radius)?;
+                in_range("path.radius", *radius, 0.0, WORLD_LIMIT)?;
                 let mut sum = 0.0;
                 for c in coefficients {
                     finite("path.coefficients[]", *c)?;

@@ -26,7 +26,7 @@ use serde::{Deserialize, Serialize};
 
 use super::control::{Agent, Control, ControlConfig, Mode};
 use super::distribution::{DistributionConfig, Sampler};
-use super::error::{finite, in_range_u, WanderError};
+use super::error::{finite, in_range, in_range_u, positive, WanderError, WORLD_LIMIT};
 use super::field::{FieldConfig, FieldSource};
 use super::generated_path::{PathConfig, PathFollower};
 use super::markov::{Markov, MarkovConfig};
@@ -48,8 +48,8 @@ pub struct AgentConfig {
     /// displacement mode.
     #[serde(default)]
     pub heading_deg: f32,
-    /// Constant forward distance per step (> 0... or 0 to spin in place),
-    /// default 2.
+    /// Constant forward distance per step, world units in `[0, 1e6]`
+    /// (0 turns on the spot), default 2.
     #[serde(default = "speed_default")]
     pub speed: f32,
 }
@@ -139,10 +139,10 @@ impl WanderConfig {
 
     /// Checks the whole configuration, component by component.
     pub fn validate(&self) -> Result<(), WanderError> {
-        finite("agent.x", self.agent.x)?;
-        finite("agent.y", self.agent.y)?;
+        in_range("agent.x", self.agent.x, -WORLD_LIMIT, WORLD_LIMIT)?;
+        in_range("agent.y", self.agent.y, -WORLD_LIMIT, WORLD_LIMIT)?;
         finite("agent.heading_deg", self.agent.heading_deg)?;
-        super::error::in_range("agent.speed", self.agent.speed, 0.0, 1e6)?;
+        in_range("agent.speed", self.agent.speed, 0.0, WORLD_LIMIT)?;
         self.control.validate()?;
         in_range_u("trace_capacity", self.trace_capacity, 1, 1_000_000)?;
         if let Some(h) = &self.hold {
@@ -157,7 +157,8 @@ impl WanderConfig {
                 if self.control.mode != Mode::Velocity {
                     return Err(WanderError::PathNeedsVelocityMode);
                 }
-                super::error::positive("path.lookahead", *lookahead)?;
+                positive("path.lookahead", *lookahead)?;
+                in_range("path.lookahead", *lookahead, 0.0, WORLD_LIMIT)?;
                 path.validate()
             }
         }
@@ -175,11 +176,17 @@ enum Source {
 }
 
 /// Poses in a fixed-capacity ring, oldest overwritten first.
-#[derive(Clone, Debug, PartialEq)]
+#[derive(Clone, PartialEq)]
 struct Trace {
     data: Vec<f32>,
     start: usize,
     len: usize,
+}
+
+impl core::fmt::Debug for Trace {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        write!(f, "Trace {{ {} of {} poses }}", self.len, self.capacity())
+    }
 }
 
 impl Trace {

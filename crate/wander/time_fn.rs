@@ -25,8 +25,9 @@ use crate::rng::Rng;
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
 pub enum NoiseConfig {
-    /// A fresh uniform value every step.
-    White,
+    /// A fresh uniform value every step (empty struct variant so unknown
+    /// fields are rejected).
+    White {},
     /// Linearly interpolated white noise, a knot every `period` steps.
     Smooth {
         /// Steps per knot (≥ 1).
@@ -43,7 +44,7 @@ impl NoiseConfig {
     /// Checks the period.
     pub fn validate(&self) -> Result<(), WanderError> {
         match self {
-            Self::White => Ok(()),
+            Self::White {} => Ok(()),
             Self::Smooth { period } => in_range_u("noise.period", *period, 1, 1 << 20),
             Self::Perlin { period } => positive("noise.period", *period),
         }
@@ -65,7 +66,7 @@ impl NoiseSeq {
         cfg.validate()?;
         let seed = rng.next_u32();
         Ok(match cfg {
-            NoiseConfig::White => Self {
+            NoiseConfig::White {} => Self {
                 kind: 0,
                 seed,
                 period: 1.0,
