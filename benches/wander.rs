@@ -10,7 +10,7 @@ use std::hint::black_box;
 use criterion::{criterion_group, criterion_main, Criterion};
 use steering::wander::{WanderPreset, Wanderer};
 
-const CASES: [(&str, &str, usize); 19] = [
+const CASES: [(&str, &str, usize); 20] = [
     (
         "baseline: uniform displacement",
         include_str!("../scenarios/wander/control.json"),
@@ -105,6 +105,11 @@ const CASES: [(&str, &str, usize); 19] = [
         "§7 random circle path follow",
         include_str!("../scenarios/wander/paths.json"),
         3,
+    ),
+    (
+        "mix: sines + uniform",
+        include_str!("../scenarios/wander/composed.json"),
+        0,
     ),
 ];
 

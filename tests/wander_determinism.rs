@@ -13,7 +13,7 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
 use steering::wander::{WanderPreset, Wanderer};
 
-const PRESETS: [(&str, &str); 7] = [
+const PRESETS: [(&str, &str); 8] = [
     ("control", include_str!("../scenarios/wander/control.json")),
     (
         "distributions",
@@ -27,6 +27,10 @@ const PRESETS: [(&str, &str); 7] = [
     ("timed", include_str!("../scenarios/wander/timed.json")),
     ("markov", include_str!("../scenarios/wander/markov.json")),
     ("paths", include_str!("../scenarios/wander/paths.json")),
+    (
+        "composed",
+        include_str!("../scenarios/wander/composed.json"),
+    ),
 ];
 
 /// FNV-1a over the f32 bit patterns.
@@ -55,7 +59,7 @@ fn preset_hash(json: &str) -> u64 {
 }
 
 /// Golden hashes, one per preset file (recorded natively, checked in wasm).
-const GOLDEN: [(&str, u64); 7] = [
+const GOLDEN: [(&str, u64); 8] = [
     ("control", 0x6702_72c9_62be_c822),
     ("distributions", 0xc42c_6aa1_c02e_38e6),
     ("fields", 0x01b0_fbfa_2720_c9ea),
@@ -63,6 +67,7 @@ const GOLDEN: [(&str, u64); 7] = [
     ("timed", 0xce45_f541_9125_e52f),
     ("markov", 0x7cb6_c4f8_9c41_4986),
     ("paths", 0x7482_66bd_6c72_99e6),
+    ("composed", 0x432a_7cfe_efec_d26e),
 ];
 
 #[test]

@@ -260,6 +260,30 @@ fn field_time_hold_and_path_errors() {
 
 #[test]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+fn mix_errors() {
+    let mix =
+        |parts: &str| build(VEL, &format!(r#"{{"kind": "mix", "parts": {parts}}}"#)).unwrap_err();
+    assert_eq!(mix("[]"), WanderError::Empty { what: "mix.parts" });
+    let path = r#"{"kind": "path", "lookahead": 5, "path": {"kind": "circle", "center": [0, 0], "radius": 10, "coefficients": []}}"#;
+    assert_eq!(
+        mix(&format!(r#"[{{"weight": 1, "source": {path}}}]"#)),
+        WanderError::NotMixable { what: "path" }
+    );
+    let inner = format!(r#"{{"kind": "mix", "parts": [{{"weight": 1, "source": {UNIFORM}}}]}}"#);
+    assert_eq!(
+        mix(&format!(r#"[{{"weight": 1, "source": {inner}}}]"#)),
+        WanderError::NotMixable { what: "mix" }
+    );
+    let e = mix(&format!(r#"[{{"weight": 1e300, "source": {UNIFORM}}}]"#));
+    assert!(matches!(e, WanderError::NotFinite { .. }), "{e}");
+    let e = mix(
+        r#"[{"weight": 1, "source": {"kind": "random", "distribution": {"kind": "smooth_noise", "period": 0}}}]"#,
+    );
+    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+}
+
+#[test]
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn presets_reject_empty_variant_lists() {
     let e =
         WanderPreset::from_json(r#"{"title": "t", "section": "s", "steps": 10, "variants": []}"#)

@@ -21,6 +21,12 @@ fn source_json(kind: u8, seed: u64) -> String {
             seed % 2 == 0
         ),
         5 => r#"{"kind": "time_function", "function": {"terms": [{"amplitude": 2, "frequency": 1}, {"amplitude": 1, "frequency": 50, "weight": "blend"}], "blend": {"kind": "smooth", "period": 30}, "envelope": {"kind": "white"}}}"#.into(),
+        7 => format!(
+            r#"{{"kind": "mix", "parts": [{{"weight": 3, "source": {}}}, {{"weight": -2, "source": {}}}, {{"weight": 0.5, "source": {}}}]}}"#,
+            source_json(0, seed),
+            source_json(4, seed),
+            source_json(6, seed)
+        ),
         _ => r#"{"kind": "markov", "markov": {"edges_deg": [-170, -30, 0, 30, 170], "table": [[0.7, 0.1, 0.1, 0.1], [0.1, 0.7, 0.1, 0.1], [0.1, 0.1, 0.7, 0.1], [0.1, 0.1, 0.1, 0.7]], "change_probability": [0.5, 1, 1, 0.5]}}"#.into(),
     }
 }
@@ -35,7 +41,7 @@ proptest! {
     fn clamps_are_never_exceeded(
         seed in any::<u64>(),
         mode in 0u8..3,
-        kind in 0u8..7,
+        kind in 0u8..8,
         max_d in 0.5f32..180.0,
         max_v in 0.5f32..170.0,
         max_a in 0.05f32..90.0,

@@ -570,3 +570,30 @@ fn followers_stay_on_generated_paths() {
         assert!(worst < 2.0 * radius + 4.0, "{}: {worst}", v.label);
     }
 }
+
+#[test]
+fn mix_is_the_weighted_sum_of_its_parts() {
+    // Two time functions mixed with weights 0.25 and 0.75 drive the agent
+    // like one time function with those amplitudes.
+    let tf = |a: f32, f: f32| {
+        format!(
+            r#"{{"kind": "time_function", "function": {{"terms": [{{"amplitude": {a}, "frequency": {f}}}]}}}}"#
+        )
+    };
+    let control = r#"{"mode": "velocity", "max_velocity_deg": 20}"#;
+    let mixed = format!(
+        r#"{{"control": {control}, "source": {{"kind": "mix", "parts": [{{"weight": 0.25, "source": {}}}, {{"weight": 0.75, "source": {}}}]}}}}"#,
+        tf(1.0, 3.0),
+        tf(1.0, 17.0)
+    );
+    let single = format!(
+        r#"{{"control": {control}, "source": {{"kind": "time_function", "function": {{"terms": [{{"amplitude": 0.25, "frequency": 3}}, {{"amplitude": 0.75, "frequency": 17}}]}}}}}}"#
+    );
+    let mut a = Wanderer::from_json(&mixed).unwrap();
+    let mut b = Wanderer::from_json(&single).unwrap();
+    for _ in 0..300 {
+        a.step();
+        b.step();
+        assert!((a.command() - b.command()).abs() < 1e-5);
+    }
+}

@@ -72,6 +72,11 @@ pub enum WanderError {
     },
     /// Path following commands an angular velocity: it needs `mode: velocity`.
     PathNeedsVelocityMode,
+    /// This source cannot be a part of a mix (paths, nested mixes).
+    NotMixable {
+        /// Which source kind.
+        what: &'static str,
+    },
 }
 
 impl fmt::Display for WanderError {
@@ -109,6 +114,7 @@ impl fmt::Display for WanderError {
             Self::PathNeedsVelocityMode => {
                 write!(f, "path following needs control.mode = \"velocity\"")
             }
+            Self::NotMixable { what } => write!(f, "a {what} cannot be part of a mix"),
         }
     }
 }

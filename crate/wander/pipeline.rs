@@ -100,6 +100,66 @@ pub enum SourceConfig {
         /// Look-ahead distance along the path (world units, > 0).
         lookahead: f32,
     },
+    /// A weighted sum of other sources ("these can be combined in various
+    /// ways", paper introduction), e.g. a sum of sines plus a little
+    /// uniform noise, or a transition table jittered by Perlin noise.
+    /// Each part's command (radians, already scaled by the clamp) is
+    /// multiplied by its weight and the products are summed; the clamps
+    /// apply to the sum. Parts cannot be paths or mixes.
+    Mix {
+        /// The parts (1–8).
+        parts: Vec<MixPart>,
+    },
+}
+
+/// One weighted part of a [`SourceConfig::Mix`].
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+pub struct MixPart {
+    /// Weight (finite).
+    pub weight: f32,
+    /// The source.
+    pub source: SourceConfig,
+}
+
+impl SourceConfig {
+    /// Checks the source for a wanderer in `mode`; `nested` is true inside
+    /// a mix.
+    fn validate(&self, mode: Mode, nested: bool) -> Result<(), WanderError> {
+        match self {
+            Self::Random { distribution } => distribution.validate(),
+            Self::Field { field } => field.validate(),
+            Self::TimeFunction { function } => function.validate(),
+            Self::Markov { markov } => markov.validate(),
+            Self::Path { .. } if nested => Err(WanderError::NotMixable { what: "path" }),
+            Self::Path { path, lookahead } => {
+                if mode != Mode::Velocity {
+                    return Err(WanderError::PathNeedsVelocityMode);
+                }
+                positive("path.lookahead", *lookahead)?;
+                in_range("path.lookahead", *lookahead, 0.0, WORLD_LIMIT)?;
+                path.validate()
+            }
+            Self::Mix { .. } if nested => Err(WanderError::NotMixable { what: "mix" }),
+            Self::Mix { parts } => {
+                if parts.is_empty() {
+                    return Err(WanderError::Empty { what: "mix.parts" });
+                }
+                if parts.len() > 8 {
+                    return Err(WanderError::TooLarge {
+                        what: "mix.parts",
+                        value: parts.len() as u64,
+                        max: 8,
+                    });
+                }
+                for part in parts {
+                    finite("mix.parts[].weight", part.weight)?;
+                    part.source.validate(mode, true)?;
+                }
+                Ok(())
+            }
+        }
+    }
 }
 
 /// A whole wander behaviour.
@@ -148,20 +208,7 @@ impl WanderConfig {
         if let Some(h) = &self.hold {
             h.validate()?;
         }
-        match &self.source {
-            SourceConfig::Random { distribution } => distribution.validate(),
-            SourceConfig::Field { field } => field.validate(),
-            SourceConfig::TimeFunction { function } => function.validate(),
-            SourceConfig::Markov { markov } => markov.validate(),
-            SourceConfig::Path { path, lookahead } => {
-                if self.control.mode != Mode::Velocity {
-                    return Err(WanderError::PathNeedsVelocityMode);
-                }
-                positive("path.lookahead", *lookahead)?;
-                in_range("path.lookahead", *lookahead, 0.0, WORLD_LIMIT)?;
-                path.validate()
-            }
-        }
+        self.source.validate(self.control.mode, false)
     }
 }
 
@@ -173,6 +220,47 @@ enum Source {
     Time(TimeFn),
     Markov(Markov),
     Path(PathFollower),
+    Mix(Vec<(f32, Source)>),
+}
+
+impl Source {
+    /// Builds a validated source; a path moves `agent` onto its start.
+    fn build(cfg: &SourceConfig, rng: &mut Rng, agent: &mut Agent) -> Result<Self, WanderError> {
+        Ok(match cfg {
+            SourceConfig::Random { distribution } => Self::Random(Sampler::new(distribution, rng)?),
+            SourceConfig::Field { field } => Self::Field(FieldSource::new(field, rng)?),
+            SourceConfig::TimeFunction { function } => Self::Time(TimeFn::new(function, rng)?),
+            SourceConfig::Markov { markov } => Self::Markov(Markov::new(markov)?),
+            SourceConfig::Path { path, lookahead } => {
+                let f = PathFollower::new(path, *lookahead, rng)?;
+                (agent.pos, agent.heading) = f.start_pose();
+                Self::Path(f)
+            }
+            SourceConfig::Mix { parts } => Self::Mix(
+                parts
+                    .iter()
+                    .map(|p| Ok((p.weight, Self::build(&p.source, rng, agent)?)))
+                    .collect::<Result<_, WanderError>>()?,
+            ),
+        })
+    }
+
+    /// The command (radians) for `step`; normalised sources are scaled by
+    /// `scale`, the clamp of the controlled quantity.
+    #[inline]
+    fn command(&mut self, step: u32, agent: &Agent, scale: f32, rng: &mut Rng) -> f32 {
+        match self {
+            Self::Random(s) => scale * s.sample(step, rng),
+            Self::Field(f) => scale * f.sample(step, agent.pos, rng),
+            Self::Time(t) => scale * t.value(step),
+            Self::Markov(m) => m.sample(rng),
+            Self::Path(p) => p.sample(agent.pos, agent.heading),
+            Self::Mix(parts) => parts
+                .iter_mut()
+                .map(|(w, s)| *w * s.command(step, agent, scale, rng))
+                .sum(),
+        }
+    }
 }
 
 /// Poses in a fixed-capacity ring, oldest overwritten first.
@@ -259,21 +347,7 @@ impl Wanderer {
             heading: crate::angle::wrap(config.agent.heading_deg.to_radians()),
             speed: config.agent.speed,
         };
-        let source = match &config.source {
-            SourceConfig::Random { distribution } => {
-                Source::Random(Sampler::new(distribution, &mut build)?)
-            }
-            SourceConfig::Field { field } => Source::Field(FieldSource::new(field, &mut build)?),
-            SourceConfig::TimeFunction { function } => {
-                Source::Time(TimeFn::new(function, &mut build)?)
-            }
-            SourceConfig::Markov { markov } => Source::Markov(Markov::new(markov)?),
-            SourceConfig::Path { path, lookahead } => {
-                let f = PathFollower::new(path, *lookahead, &mut build)?;
-                (agent.pos, agent.heading) = f.start_pose();
-                Source::Path(f)
-            }
-        };
+        let source = Source::build(&config.source, &mut build, &mut agent)?;
         let control = Control::new(&config.control, agent.heading)?;
         let hold = config.hold.as_ref().map(Hold::new).transpose()?;
         let mut trace = Trace::new(config.trace_capacity as usize);
@@ -318,14 +392,9 @@ impl Wanderer {
             None => true,
         };
         if due {
-            let scale = self.control.scale();
-            let q = match &mut self.source {
-                Source::Random(s) => scale * s.sample(self.step, &mut self.rng),
-                Source::Field(f) => scale * f.sample(self.step, self.agent.pos, &mut self.rng),
-                Source::Time(t) => scale * t.value(self.step),
-                Source::Markov(m) => m.sample(&mut self.rng),
-                Source::Path(p) => p.sample(self.agent.pos, self.agent.heading),
-            };
+            let q =
+                self.source
+                    .command(self.step, &self.agent, self.control.scale(), &mut self.rng);
             self.command = self.control.quantize(q);
         }
         self.control.apply(&mut self.agent, self.command);
