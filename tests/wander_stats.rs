@@ -11,7 +11,7 @@ use steering::wander::distribution::{Curve, DistributionConfig, Sampler};
 use steering::wander::field::{FieldConfig, FieldSource, FieldValues, VectorField};
 use steering::wander::markov::{Markov, MarkovConfig};
 use steering::wander::noise;
-use steering::wander::time_fn::{SineTerm, TimeFn, TimeFnConfig, Weight};
+use steering::wander::time_fn::{Shape, SineTerm, TimeFn, TimeFnConfig, Weight};
 use steering::wander::timed::{Hold, HoldConfig};
 use steering::wander::Wanderer;
 
@@ -493,18 +493,21 @@ fn time_function_is_the_sum_of_sines() {
                 frequency: 1.0,
                 phase: 0.0,
                 weight: Weight::One,
+                shape: Shape::Sine,
             },
             SineTerm {
                 amplitude: 0.3,
                 frequency: 10.0,
                 phase: 0.2,
                 weight: Weight::One,
+                shape: Shape::Sine,
             },
             SineTerm {
                 amplitude: 0.2,
                 frequency: 50.0,
                 phase: 0.0,
                 weight: Weight::One,
+                shape: Shape::Sine,
             },
         ],
         dt: 0.01,
@@ -595,5 +598,18 @@ fn mix_is_the_weighted_sum_of_its_parts() {
         a.step();
         b.step();
         assert!((a.command() - b.command()).abs() < 1e-5);
+    }
+}
+
+#[test]
+fn saw_and_square_waves() {
+    use core::f32::consts::PI;
+    for k in -40..40 {
+        let x = k as f32 * 0.3 + 0.01;
+        let s = Shape::Square.eval(x);
+        assert_eq!(s, if x.sin() > 0.0 { 1.0 } else { -1.0 }, "square at {x}");
+        let w = Shape::Saw.eval(x);
+        let want = (x + PI).rem_euclid(2.0 * PI) / PI - 1.0;
+        assert!((w - want).abs() < 1e-4, "saw at {x}: {w} vs {want}");
     }
 }

@@ -112,7 +112,43 @@ pub enum Weight {
     BlendReversed,
 }
 
-/// One `a · w(t) · sin(f·t + φ)` term.
+/// The periodic function of a term. The paper prefers the sine (smooth,
+/// bounded, constant frequency) and notes saw-tooth and square waves share
+/// every property but smoothness (§4); all three have period 2π, range
+/// `[-1, 1]`, and cross zero upwards at 0 like the sine.
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum Shape {
+    /// `sin x`.
+    #[default]
+    Sine,
+    /// Rising saw tooth: 0 at 0, 1 just before π, −1 at π.
+    Saw,
+    /// +1 on `(0, π)`, −1 on `(π, 2π)`.
+    Square,
+}
+
+impl Shape {
+    /// The wave at `x` (radians).
+    #[inline]
+    #[must_use]
+    pub fn eval(self, x: f32) -> f32 {
+        let turns = x * core::f32::consts::FRAC_1_PI * 0.5;
+        match self {
+            Self::Sine => math::sin(x),
+            Self::Saw => 2.0 * (turns + 0.5 - (turns + 0.5).floor()) - 1.0,
+            Self::Square => {
+                if turns - turns.floor() < 0.5 {
+                    1.0
+                } else {
+                    -1.0
+                }
+            }
+        }
+    }
+}
+
+/// One `a · w(t) · wave(f·t + φ)` term.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
 pub struct SineTerm {
@@ -126,6 +162,9 @@ pub struct SineTerm {
     /// Weight; default `one`.
     #[serde(default)]
     pub weight: Weight,
+    /// Wave shape; default `sine`.
+    #[serde(default)]
+    pub shape: Shape,
 }
 
 /// A time-function source.
@@ -232,7 +271,7 @@ impl TimeFn {
                 Weight::Complement => 1.0 - a,
                 Weight::BlendReversed => self.blend.map_or(1.0, |b| b.at(self.horizon - s)),
             };
-            sum += term.amplitude * w * math::sin(term.frequency * t + term.phase);
+            sum += term.amplitude * w * term.shape.eval(term.frequency * t + term.phase);
         }
         self.envelope.map_or(sum, |e| e.at(s) * sum)
     }
