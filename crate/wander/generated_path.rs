@@ -23,6 +23,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, in_range_u, positive, WanderError, WORLD_LIMIT};
 use super::math;
+use super::time_fn::Shape;
 use crate::rng::Rng;
 
 /// Most points a generated path may have.
@@ -71,6 +72,10 @@ pub enum PathConfig {
         /// Points around the circle (8–100 000), default 720.
         #[serde(default = "samples_default")]
         samples: u32,
+        /// Wave added to the circle: sine (default), or the saw-tooth and
+        /// square waves the paper also suggests (§7).
+        #[serde(default)]
+        shape: Shape,
     },
 }
 
@@ -172,6 +177,7 @@ impl PathConfig {
                 coefficients,
                 random_coefficients,
                 samples,
+                shape,
             } => {
                 let r: Vec<f32> = coefficients
                     .iter()
@@ -190,7 +196,7 @@ impl PathConfig {
                         let mut rad = *radius;
                         let mut f = 1.0;
                         for ri in &r {
-                            rad += ri * math::sin(f * t);
+                            rad += ri * shape.eval(f * t);
                             f *= 2.0;
                         }
                         let (s, co) = math::sin_cos(t);
@@ -223,6 +229,12 @@ fn subdivide(pts: &[Vec2], rule: Subdivision, roughness: f32, rng: &mut Rng) -> 
     out
 }
 
+/// Checks a look-ahead distance: positive and at most the world limit.
+pub fn validate_lookahead(lookahead: f32) -> Result<(), WanderError> {
+    positive("path.lookahead", lookahead)?;
+    in_range("path.lookahead", lookahead, 0.0, WORLD_LIMIT)
+}
+
 /// Follows a polyline with a look-ahead target.
 #[derive(Clone, Debug, PartialEq)]
 pub struct PathFollower {
@@ -241,7 +253,7 @@ pub struct PathFollower {
 impl PathFollower {
     /// Generates the path and prepares the follower.
     pub fn new(cfg: &PathConfig, lookahead: f32, rng: &mut Rng) -> Result<Self, WanderError> {
-        positive("path.lookahead", lookahead)?;
+        validate_lookahead(lookahead)?;
         let points = cfg.generate(rng)?;
         let closed = cfg.closed();
         let segs = if closed {

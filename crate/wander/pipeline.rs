@@ -26,9 +26,9 @@ use serde::{Deserialize, Serialize};
 
 use super::control::{Agent, Control, ControlConfig, Mode};
 use super::distribution::{DistributionConfig, Sampler};
-use super::error::{finite, in_range, in_range_u, positive, WanderError, WORLD_LIMIT};
+use super::error::{finite, in_range, in_range_u, WanderError, WORLD_LIMIT};
 use super::field::{FieldConfig, FieldSource};
-use super::generated_path::{PathConfig, PathFollower};
+use super::generated_path::{validate_lookahead, PathConfig, PathFollower};
 use super::markov::{Markov, MarkovConfig};
 use super::time_fn::{TimeFn, TimeFnConfig};
 use super::timed::{Hold, HoldConfig};
@@ -136,8 +136,7 @@ impl SourceConfig {
                 if mode != Mode::Velocity {
                     return Err(WanderError::PathNeedsVelocityMode);
                 }
-                positive("path.lookahead", *lookahead)?;
-                in_range("path.lookahead", *lookahead, 0.0, WORLD_LIMIT)?;
+                validate_lookahead(*lookahead)?;
                 path.validate()
             }
             Self::Mix { .. } if nested => Err(WanderError::NotMixable { what: "mix" }),
