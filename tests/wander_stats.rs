@@ -571,6 +571,20 @@ fn followers_stay_on_generated_paths() {
         };
         assert!(mean < lookahead / 3.0, "{}: mean {mean}", v.label);
         assert!(worst < 2.0 * radius + 4.0, "{}: {worst}", v.label);
+        if !closed {
+            // Open paths are followed back and forth.
+            let (first, last) = (path[0], path[path.len() - 1]);
+            let near = |p: &[f32], q: Vec2| Vec2::new(p[0], p[1]).distance(q) < 2.0 * lookahead;
+            let at_end = trace
+                .chunks(3)
+                .position(|p| near(p, last))
+                .expect("reaches the end");
+            assert!(
+                trace.chunks(3).skip(at_end).any(|p| near(p, first)),
+                "{}: no return",
+                v.label
+            );
+        }
     }
 }
 

@@ -325,12 +325,15 @@ impl PathFollower {
 
     /// The turn (radians) that points the agent at the look-ahead target.
     pub fn sample(&mut self, pos: Vec2, heading: f32) -> f32 {
-        // Closest point among a window of segments around the current one:
-        // O(1) per step, and it cannot jump to a far part of the path that
-        // happens to pass nearby.
+        // Closest point among a window of segments around the current one,
+        // mostly ahead in the direction of travel: O(1) per step, and it
+        // cannot jump to a far part of the path that happens to pass nearby.
+        const BEHIND: i64 = 3;
+        const AHEAD: i64 = 8;
         let n = self.segments();
         let (mut best_d, mut best_k, mut best_t) = (f32::INFINITY, self.segment, 0.0);
-        for off in -4i64..=16 {
+        for off in -BEHIND..=AHEAD {
+            let off = if self.dir > 0.0 { off } else { -off };
             let k = self.segment as i64 + off;
             let k = if self.closed {
                 k.rem_euclid(n as i64) as usize
