@@ -21,4 +21,5 @@ pub mod study;
 pub mod table;
 pub mod table_gen;
 pub mod vehicle;
+pub mod wander;
 pub mod world;
