@@ -11,4 +11,12 @@
 #![warn(missing_docs, clippy::all)]
 
 pub mod angle;
+pub mod boid_seek;
+pub mod crowd;
+pub mod crowd_config;
+pub mod crowd_error;
+pub mod crowd_metrics;
+pub mod path;
+pub mod path_follow;
 pub mod rng;
+pub mod separation;
