@@ -374,9 +374,10 @@ impl Crowd {
                 expected: "0 <= boids <= 1000000",
             });
         }
+        let was_empty = self.is_empty();
         self.resize_boids(n);
-        if self.traced >= n {
-            self.select_traced(0);
+        if self.traced >= n || was_empty {
+            self.select_traced(if was_empty { self.traced } else { 0 });
         }
         Ok(())
     }
@@ -394,6 +395,18 @@ impl Crowd {
             radius: self.path.radius(),
             closed: self.path.is_closed(),
         };
+        self.reset_metrics();
+        self.select_traced(self.traced);
+        Ok(())
+    }
+
+    /// Opens or closes the path; resets the measures and the trace.
+    ///
+    /// # Errors
+    /// See [`Path::set_closed`].
+    pub fn set_path_closed(&mut self, closed: bool) -> Result<(), CrowdError> {
+        self.path.set_closed(closed)?;
+        self.config.path.closed = closed;
         self.reset_metrics();
         self.select_traced(self.traced);
         Ok(())

@@ -17,12 +17,12 @@
 //! limit never binds and the presets run the paper's seek. A binding limit
 //! (Shiffman's ~0.1 × max speed, e.g. 0.3) makes Reynolds turn slowly and
 //! lose speed in corners; then it no longer matches Parker 100 %
-//! (measured with `crowd-metrics --max-force 0.3`).
+//! (measured with `crowd-metrics --set max_force=0.3`).
 //!
 //! Separation weight: the paper's literal sum (weight 1) flings boids at
 //! max speed away from any neighbour whatever the seek; the presets use
 //! 0.05, under which the paper's Test IV picture appears (only the 0.1 %
-//! seek is overwhelmed). `crowd-metrics --weight 1` shows the literal rule.
+//! seek is overwhelmed). `crowd-metrics --set separation_weight=1` shows the literal rule.
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};

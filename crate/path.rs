@@ -179,6 +179,18 @@ impl Path {
         self.set_points(&pts)
     }
 
+    /// Opens or closes the path (a closed path also runs from the last point
+    /// back to the first). On error the path is left unchanged.
+    ///
+    /// # Errors
+    /// Closing a 2-point path, or a closing segment of zero length.
+    pub fn set_closed(&mut self, closed: bool) -> Result<(), CrowdError> {
+        let old = self.closed;
+        self.closed = closed;
+        let points = self.points.clone();
+        self.set_points(&points).inspect_err(|_| self.closed = old)
+    }
+
     /// Sets the path radius (half-width, world units). On error the path is
     /// left unchanged.
     ///

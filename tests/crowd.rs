@@ -362,7 +362,43 @@ fn one_reynolds_boid_laps_the_rectangle_on_the_path() {
     );
     assert!(m.outside_share.unwrap() < 0.05, "{m:?}");
     assert!(m.mean_distance.unwrap() < cfg.path.radius, "{m:?}");
-    assert!(crowd.trace().len() >= 2 * 100, "a lap trace was recorded");
+    // The highlighted trace is one whole lap: it starts and ends at the start line.
+    let t = crowd.trace();
+    assert!(t.len() >= 2 * 100, "a lap trace was recorded");
+    let (first, last) = (
+        Vec2::new(t[0], t[1]),
+        Vec2::new(t[t.len() - 2], t[t.len() - 1]),
+    );
+    assert!(
+        first.distance(last) < 2.0 * cfg.path.radius,
+        "{first} .. {last}"
+    );
+}
+
+#[test]
+fn open_paths_edits_and_long_traces_stay_bounded() {
+    let mut cfg = CrowdConfig::paper(PaperTest::II, Seek::Parker { fraction: 0.1 });
+    cfg.path.closed = false;
+    let mut crowd = Crowd::new(&cfg).unwrap();
+    crowd.run(9_000);
+    assert!(
+        crowd.metrics().mean_lap_steps.is_none(),
+        "no laps on an open path"
+    );
+    let t = crowd.trace().len();
+    assert!(
+        t > 0 && t <= 2 * steering::crowd::TRACE_CAPACITY,
+        "trace length {t}"
+    );
+    crowd.set_path_closed(true).unwrap();
+    crowd
+        .set_path_points(&[0.0, 0.0, 300.0, 0.0, 300.0, 200.0])
+        .unwrap();
+    crowd.set_path_radius(30.0).unwrap();
+    assert!((crowd.path().length() - (500.0 + 360.555)).abs() < 1e-2);
+    crowd.run(1_500);
+    assert!(crowd.metrics().laps > 0, "{:?}", crowd.metrics());
+    assert!(crowd.positions().iter().all(|x| x.is_finite()));
 }
 
 #[test]
@@ -410,4 +446,60 @@ proptest! {
             prop_assert!(path.point_at(s).distance(q) >= n.distance - 1e-2);
         }
     }
+}
+
+fn short_run(test: PaperTest, seek: Seek) -> steering::crowd_metrics::CrowdMetrics {
+    let mut cfg = CrowdConfig::paper(test, seek);
+    cfg.warmup_steps = 600;
+    cfg.measure_steps = 2100;
+    Crowd::new(&cfg).unwrap().run_measured()
+}
+
+#[test]
+fn parker_100_percent_behaves_like_reynolds() {
+    // Paper, Tests I–II: "Conrad Parker's seek with 100% steering is
+    // equivalent to Craig Reynolds' seek algorithm".
+    for test in [PaperTest::I, PaperTest::III] {
+        let r = short_run(test, Seek::Reynolds);
+        let p = short_run(test, Seek::Parker { fraction: 1.0 });
+        let (lr, lp) = (r.mean_lap_steps.unwrap(), p.mean_lap_steps.unwrap());
+        assert!((lr / lp - 1.0).abs() < 0.05, "{test:?} laps {lr} vs {lp}");
+        let (dr, dp) = (r.p95_distance.unwrap(), p.p95_distance.unwrap());
+        assert!((dr / dp - 1.0).abs() < 0.1, "{test:?} p95 {dr} vs {dp}");
+        assert!(r.outside_share.unwrap() < 0.01 && p.outside_share.unwrap() < 0.01);
+    }
+}
+
+#[test]
+fn at_300_boids_the_weakest_parker_is_overwhelmed_by_separation() {
+    // Paper, Test IV: 0.1 % gives "irregular, unpredictable traversal"
+    // while the others look alike. Alone (Test I) the 0.1 % lap is the
+    // most regular of all; in the crowd its traces spread the most.
+    // One boid is cheap: use the preset's full windows, it needs ~2 laps to settle.
+    let alone = Crowd::new(&CrowdConfig::paper(
+        PaperTest::I,
+        Seek::Parker { fraction: 0.001 },
+    ))
+    .unwrap()
+    .run_measured();
+    let weak = short_run(PaperTest::IV, Seek::Parker { fraction: 0.001 });
+    let strong = short_run(PaperTest::IV, Seek::Parker { fraction: 1.0 });
+    let (a, w, s) = (
+        alone.trace_spread.unwrap(),
+        weak.trace_spread.unwrap(),
+        strong.trace_spread.unwrap(),
+    );
+    assert!(
+        a < 5.0 && w > 5.0 * a && w > 1.8 * s,
+        "spread alone {a}, weak {w}, strong {s}"
+    );
+    // Its separation outweighs its steering; the strong seek's does not.
+    assert!(
+        weak.mean_separation.unwrap() > 2.0 * weak.mean_steer.unwrap(),
+        "{weak:?}"
+    );
+    assert!(
+        strong.mean_separation.unwrap() < strong.mean_steer.unwrap(),
+        "{strong:?}"
+    );
 }

@@ -4,9 +4,9 @@
 //! `scenarios/crowd/` (test1_reynolds.json … test4_parker0.1.json), runs
 //! each with its warm-up and measurement window, and prints a markdown
 //! table. `--write-presets` (re)writes those files from
-//! `CrowdConfig::paper` instead. `--weight W` and `--max-force F`
-//! override the separation weight and Reynolds' force limit of every preset
-//! (sensitivity checks).
+//! `CrowdConfig::paper` instead. `--set key=value` (repeatable,
+//! value in JSON) overrides a config field of every preset, for sensitivity
+//! checks, e.g. `--set max_force=0.3` or `--set separation_weight=1`.
 
 use std::path::PathBuf;
 use std::time::Instant;
@@ -23,18 +23,17 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
     let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/crowd");
     let args: Vec<String> = std::env::args().skip(1).collect();
     let write = args.iter().any(|a| a == "--write-presets");
-    let weight: Option<f32> = match args.iter().position(|a| a == "--weight") {
-        Some(k) => Some(args.get(k + 1).ok_or("--weight needs a value")?.parse()?),
-        None => None,
-    };
-    let max_force: Option<f32> = match args.iter().position(|a| a == "--max-force") {
-        Some(k) => Some(
-            args.get(k + 1)
-                .ok_or("--max-force needs a value")?
-                .parse()?,
-        ),
-        None => None,
-    };
+    // `--set key=value` (repeatable): override a top-level config field of
+    // every preset, value in JSON (e.g. `--set max_force=0.3`).
+    let mut overrides = Vec::new();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        if a == "--set" {
+            let kv = it.next().ok_or("--set needs key=value")?;
+            let (k, v) = kv.split_once('=').ok_or("--set needs key=value")?;
+            overrides.push((k.to_owned(), serde_json::from_str::<serde_json::Value>(v)?));
+        }
+    }
     if write {
         std::fs::create_dir_all(&dir)?;
     }
@@ -51,11 +50,12 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             } else {
                 CrowdConfig::from_json(&std::fs::read_to_string(&file)?)?
             };
-            if let Some(w) = weight {
-                cfg.separation_weight = w;
-            }
-            if let Some(f) = max_force {
-                cfg.max_force = f;
+            if !overrides.is_empty() {
+                let mut v = serde_json::to_value(&cfg)?;
+                for (k, val) in &overrides {
+                    v[k.as_str()] = val.clone();
+                }
+                cfg = CrowdConfig::from_json(&v.to_string())?;
             }
             let mut crowd = Crowd::new(&cfg)?;
             let m = crowd.run_measured();
