@@ -69,6 +69,8 @@ pub struct CrowdMetrics {
 struct BoidTrack {
     /// Unwrapped arc-length progress (f64: many laps stay exact).
     u: f64,
+    /// Arc length at the previous record (saves an fmod per boid-step).
+    s_prev: f32,
     /// Highest lap index `floor(u / L)` reached.
     best: i64,
     /// Step at which the current timed lap started, or `NO_LAP`.
@@ -138,9 +140,11 @@ impl MetricsAccumulator {
         let old = self.tracks.len();
         self.tracks.truncate(n);
         for i in old..n {
-            let u = f64::from(s_of(i));
+            let s = s_of(i);
+            let u = f64::from(s);
             self.tracks.push(BoidTrack {
                 u,
+                s_prev: s,
                 best: (u / f64::from(self.path_length)).floor() as i64,
                 lap_start: NO_LAP,
                 station: NO_STATION,
@@ -194,17 +198,17 @@ impl MetricsAccumulator {
         let t = &mut self.tracks[i];
         let mut crossed = false;
         if self.closed {
-            let prev = t.u.rem_euclid(total);
-            let mut ds = f64::from(s) - prev;
+            let mut ds = f64::from(s) - f64::from(t.s_prev);
             if ds > total / 2.0 {
                 ds -= total;
             } else if ds < -total / 2.0 {
                 ds += total;
             }
             t.u += ds;
-            let lap = (t.u / total).floor() as i64;
-            if lap > t.best {
-                t.best = lap;
+            t.s_prev = s;
+            // Compare before dividing: a floor per boid-step shows in profiles.
+            if t.u >= (t.best + 1) as f64 * total {
+                t.best = (t.u / total).floor() as i64;
                 crossed = true;
                 if t.lap_start != NO_LAP {
                     self.laps += 1;

@@ -281,7 +281,16 @@ impl Path {
     pub fn wrap_s(&self, s: f32) -> f32 {
         let total = self.length();
         if self.closed {
-            let w = s.rem_euclid(total);
+            // Common cases first: no fmod for s in [-L, 2L).
+            let w = if (0.0..total).contains(&s) {
+                s
+            } else if (total..2.0 * total).contains(&s) {
+                s - total
+            } else if (-total..0.0).contains(&s) {
+                s + total
+            } else {
+                s.rem_euclid(total)
+            };
             if w >= total {
                 0.0
             } else {
