@@ -20,9 +20,10 @@ use serde::{Deserialize, Serialize};
 
 use crate::crowd_error::{check_range, CrowdError};
 
-/// A seek strategy (paper 003, "Seek").
+/// A seek strategy (paper 003, "Seek"). JSON: `{"kind": "reynolds"}` or
+/// `{"kind": "parker", "fraction": 0.1}`; any other field is rejected.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(tag = "kind", rename_all = "snake_case", deny_unknown_fields)]
+#[serde(try_from = "SeekJson", into = "SeekJson")]
 pub enum Seek {
     /// Reynolds: (max-speed desired velocity − velocity), limited to max force.
     Reynolds,
@@ -32,6 +33,51 @@ pub enum Seek {
         /// (1 = 100 %, 0.001 = 0.1 %); the paper's `1/x`.
         fraction: f32,
     },
+}
+
+/// Wire form of [`Seek`]: serde's internally tagged enums ignore
+/// `deny_unknown_fields` on unit variants (`{"kind": "reynolds",
+/// "fraction": 1}` would load silently), so we check by hand.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields)]
+struct SeekJson {
+    kind: SeekKind,
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    fraction: Option<f32>,
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+enum SeekKind {
+    Reynolds,
+    Parker,
+}
+
+impl TryFrom<SeekJson> for Seek {
+    type Error = String;
+    fn try_from(j: SeekJson) -> Result<Self, String> {
+        match (j.kind, j.fraction) {
+            (SeekKind::Reynolds, None) => Ok(Seek::Reynolds),
+            (SeekKind::Reynolds, Some(_)) => Err("reynolds seek takes no `fraction`".to_owned()),
+            (SeekKind::Parker, Some(fraction)) => Ok(Seek::Parker { fraction }),
+            (SeekKind::Parker, None) => Err("parker seek needs a `fraction` in (0, 1]".to_owned()),
+        }
+    }
+}
+
+impl From<Seek> for SeekJson {
+    fn from(s: Seek) -> Self {
+        match s {
+            Seek::Reynolds => SeekJson {
+                kind: SeekKind::Reynolds,
+                fraction: None,
+            },
+            Seek::Parker { fraction } => SeekJson {
+                kind: SeekKind::Parker,
+                fraction: Some(fraction),
+            },
+        }
+    }
 }
 
 impl Seek {

@@ -208,6 +208,13 @@ impl Path {
         &self.points
     }
 
+    /// The path's points as a flat `[x0, y0, x1, y1, ...]` buffer (for a
+    /// front end; allocates).
+    #[must_use]
+    pub fn points_flat(&self) -> Vec<f32> {
+        self.points.iter().flat_map(|p| p.to_array()).collect()
+    }
+
     /// The path's half-width in world units.
     #[must_use]
     pub fn radius(&self) -> f32 {

@@ -198,6 +198,21 @@ fn bad_paths_and_configs_give_typed_errors() {
             ..
         })
     ));
+    let extra = good.replacen(
+        "\"kind\": \"reynolds\"",
+        "\"kind\": \"reynolds\", \"fraction\": 1.0",
+        1,
+    );
+    assert_ne!(extra, good);
+    assert!(
+        matches!(CrowdConfig::from_json(&extra), Err(CrowdError::Json(_))),
+        "unknown seek field"
+    );
+    let missing = good.replacen("\"kind\": \"reynolds\"", "\"kind\": \"parker\"", 1);
+    assert!(
+        matches!(CrowdConfig::from_json(&missing), Err(CrowdError::Json(_))),
+        "parker needs a fraction"
+    );
     let e = Crowd::from_json("{").unwrap_err();
     assert!(
         e.to_string().starts_with("invalid crowd config JSON"),
