@@ -7,11 +7,11 @@
 //!
 //! * [`Seek::Reynolds`] — `craig_reynolds_seek`: desired velocity is the
 //!   direction to the target at max speed; steer = desired − velocity,
-//!   limited to the boid's max force (Reynolds 1999, the paper's ref. [2]).
+//!   limited to the boid's max force (Reynolds 1999, the paper's ref. 2).
 //! * [`Seek::Parker`] — `conrad_parker_seek`: steer = (target − position)/x.
 //!   The paper names its variants by the share of the way moved towards the
 //!   target per step, 100 %, 10 %, 1 %, 0.1 %, so we store that share
-//!   `fraction = 1/x`. Like Parker's pseudocode (the paper's ref. [4]) the
+//!   `fraction = 1/x`. Like Parker's pseudocode (the paper's ref. 4) the
 //!   steer is *not* force-limited; the only bound is the boid's max speed,
 //!   applied after all contributions are summed.
 

@@ -13,6 +13,17 @@
 //! Buffers are flat `f32` arrays `[x0, y0, x1, y1, ...]` so a WebAssembly
 //! front end can view them without copying; they are reused, so a step does
 //! not allocate (except the first one after the boid count grows).
+//!
+//! Binding notes: everything a front end needs is on [`Crowd`] with plain
+//! types — build from a preset ([`CrowdConfig::paper`] or the JSON files
+//! via [`Crowd::from_json`]), call [`Crowd::step`] once per frame, draw
+//! [`Crowd::positions`] / [`Crowd::velocities`] (2 floats per boid, valid
+//! until the next mutating call; their address changes only when the boid
+//! count grows), the highlighted boid's lap [`Crowd::trace`] and
+//! [`Crowd::path`]; edit with `set_boid_count`, `set_path_points` (flat),
+//! `set_path_radius`, `set_path_closed`, `set_seek`, `set_separation`.
+//! Every setter returns a [`CrowdError`] (Display-able) on bad input and
+//! leaves the crowd unchanged.
 
 use glam::Vec2;
 
