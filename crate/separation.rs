@@ -111,6 +111,15 @@ impl NeighbourGrid {
         self.starts[0] = 0;
     }
 
+    /// The `k`-th boid in bucket order (`k < n` of the last rebuild). Boids
+    /// of one cell are consecutive, so visiting boids in this order makes
+    /// consecutive neighbour queries hit the same, already cached buckets.
+    #[inline]
+    #[must_use]
+    pub fn boid_in_bucket_order(&self, k: usize) -> usize {
+        self.order[k] as usize
+    }
+
     /// Calls `f(j, pᵢ − pⱼ, |pᵢ − pⱼ|²)` for every boid `j ≠ i` with
     /// `|pᵢ − pⱼ| < reach` (`reach` ≤ the cell size given to `rebuild`),
     /// in a deterministic order.
@@ -179,7 +188,10 @@ pub fn separate(
     let n = pos.len() / 2;
     let mut ordered_pairs = 0u64;
     let nudge = 1e-3 * boid_radius;
-    for i in 0..n {
+    // Bucket order for cache locality; each boid's sum is the same whatever
+    // the visiting order, so results do not depend on it.
+    for k in 0..n {
+        let i = grid.boid_in_bucket_order(k);
         let mut sum = Vec2::ZERO;
         grid.for_each_neighbour(pos, i, reach, |j, d, d2| {
             ordered_pairs += 1;
@@ -201,7 +213,8 @@ pub fn count_overlaps(grid: &mut NeighbourGrid, pos: &[f32], boid_radius: f32) -
     let reach = 2.0 * boid_radius;
     grid.rebuild(pos, reach);
     let mut ordered_pairs = 0u64;
-    for i in 0..pos.len() / 2 {
+    for k in 0..pos.len() / 2 {
+        let i = grid.boid_in_bucket_order(k);
         grid.for_each_neighbour(pos, i, reach, |_, _, _| ordered_pairs += 1);
     }
     ordered_pairs / 2
