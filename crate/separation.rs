@@ -7,16 +7,19 @@
 //! configurable weight (1 = the paper's literal rule); the paper's Test IV
 //! discussion is about exactly this balance between separation and seek.
 //!
-//! The paper loops over every boid (O(n²)). To run thousands live we hash
+//! The paper loops over every boid (O(n²)). To run thousands live we bin
 //! boids into a uniform grid whose cell is the interaction distance (two
 //! radii), so each boid only examines the 3 × 3 cells around its own.
-//! Cells are hashed into a table of 4n to 8n buckets rather than laid out
-//! over a bounding box: boids that fly far off the path cannot make the
-//! grid's memory explode. Hash collisions only add candidates, which the
-//! exact distance test rejects. Buffers are reused between steps, so a
-//! rebuild allocates only when the boid count grows. Every candidate pair
-//! examined is counted ([`NeighbourGrid::checks`]) so tests can prove the
-//! search is not quadratic.
+//! Cells map to a table of 4n to 8n buckets by `(ix + iy·P) mod buckets`
+//! (P a large odd constant) rather than being laid out over a bounding
+//! box: boids that fly far off the path cannot make the grid's memory
+//! explode, and the three cells of a row stay in adjacent buckets, so a
+//! query reads three contiguous runs of a position array kept in bucket
+//! order (cache friendly at 30,000 boids). Cells sharing a bucket only add
+//! candidates, which the exact distance test rejects. Buffers are reused
+//! between steps, so a rebuild allocates only when the boid count grows.
+//! Every candidate pair examined is counted ([`NeighbourGrid::checks`]) so
+//! tests can prove the search is not quadratic.
 
 use glam::Vec2;
 
@@ -33,6 +36,8 @@ pub struct NeighbourGrid {
     starts: Vec<u32>,
     /// Boid indices sorted by bucket (ascending index within a bucket).
     order: Vec<u32>,
+    /// Positions in the same order as `order`.
+    sorted: Vec<Vec2>,
     checks: u64,
 }
 
@@ -50,13 +55,12 @@ fn cell_coord(v: f32, inv_cell: f32) -> i32 {
     }
 }
 
+/// Row pitch of the bucket map: odd, so rows spread over all buckets.
+const ROW_PITCH: u32 = 0x9E37_79B1;
+
 #[inline]
-fn hash_cell(ix: i32, iy: i32, mask: u32) -> u32 {
-    let mut h = (ix as u32).wrapping_mul(0x9E37_79B1) ^ (iy as u32).wrapping_mul(0x85EB_CA77);
-    h ^= h >> 16;
-    h = h.wrapping_mul(0x7FEB_352D);
-    h ^= h >> 15;
-    h & mask
+fn bucket_of_cell(ix: i32, iy: i32, mask: u32) -> u32 {
+    (ix as u32).wrapping_add((iy as u32).wrapping_mul(ROW_PITCH)) & mask
 }
 
 impl NeighbourGrid {
@@ -86,12 +90,13 @@ impl NeighbourGrid {
         self.inv_cell = 1.0 / cell;
         self.bucket_of.resize(n, 0);
         self.order.resize(n, 0);
+        self.sorted.resize(n, Vec2::ZERO);
         self.starts.clear();
         self.starts.resize(buckets + 1, 0);
         for (i, b) in self.bucket_of.iter_mut().enumerate() {
             let ix = cell_coord(pos[2 * i], self.inv_cell);
             let iy = cell_coord(pos[2 * i + 1], self.inv_cell);
-            *b = hash_cell(ix, iy, self.mask);
+            *b = bucket_of_cell(ix, iy, self.mask);
             self.starts[*b as usize + 1] += 1;
         }
         for k in 0..buckets {
@@ -103,6 +108,7 @@ impl NeighbourGrid {
             let b = self.bucket_of[i] as usize;
             let slot = self.starts[b];
             self.order[slot as usize] = i as u32;
+            self.sorted[slot as usize] = Vec2::new(pos[2 * i], pos[2 * i + 1]);
             self.starts[b] += 1;
         }
         for k in (1..=buckets).rev() {
@@ -135,33 +141,73 @@ impl NeighbourGrid {
         let r2 = reach * reach;
         let ix = cell_coord(pi.x, self.inv_cell);
         let iy = cell_coord(pi.y, self.inv_cell);
-        let mut seen = [u32::MAX; 9];
-        let mut n_seen = 0;
-        let mut checks = 0u64;
+        let buckets = self.mask + 1;
+        // Each row's three cells are buckets b, b+1, b+2 (mod buckets):
+        // at most two non-wrapping intervals per row.
+        let mut ranges = [(0u32, 0u32); 6];
+        let mut n_ranges = 0;
         for dy in -1i32..=1 {
-            for dx in -1i32..=1 {
-                let b = hash_cell(ix.wrapping_add(dx), iy.wrapping_add(dy), self.mask);
-                if seen[..n_seen].contains(&b) {
-                    continue;
-                }
-                seen[n_seen] = b;
-                n_seen += 1;
-                let (lo, hi) = (
-                    self.starts[b as usize] as usize,
-                    self.starts[b as usize + 1] as usize,
-                );
-                for &j in &self.order[lo..hi] {
-                    let j = j as usize;
-                    if j == i {
-                        continue;
+            let b = bucket_of_cell(ix.wrapping_sub(1), iy.wrapping_add(dy), self.mask);
+            if b + 3 <= buckets {
+                ranges[n_ranges] = (b, b + 3);
+                n_ranges += 1;
+            } else {
+                ranges[n_ranges] = (b, buckets);
+                ranges[n_ranges + 1] = (0, b + 3 - buckets);
+                n_ranges += 2;
+            }
+        }
+        // Rows landing on overlapping buckets (possible only when P·Δrow is
+        // within 2 of a multiple of the table size) would visit boids twice:
+        // then fall back to the nine buckets one by one, deduplicated.
+        let overlap = (1..n_ranges)
+            .any(|a| (0..a).any(|b| ranges[a].0 < ranges[b].1 && ranges[b].0 < ranges[a].1));
+        if overlap {
+            let mut seen = [u32::MAX; 9];
+            let mut n_seen = 0;
+            for dy in -1i32..=1 {
+                for dx in -1i32..=1 {
+                    let b = bucket_of_cell(ix.wrapping_add(dx), iy.wrapping_add(dy), self.mask);
+                    if !seen[..n_seen].contains(&b) {
+                        seen[n_seen] = b;
+                        n_seen += 1;
+                        self.scan(i, pi, r2, b, b + 1, &mut f);
                     }
-                    checks += 1;
-                    let d = pi - Vec2::new(pos[2 * j], pos[2 * j + 1]);
-                    let d2 = d.length_squared();
-                    if d2 < r2 {
-                        f(j, d, d2);
-                    }
                 }
+            }
+        } else {
+            for &(lo, hi) in &ranges[..n_ranges] {
+                self.scan(i, pi, r2, lo, hi, &mut f);
+            }
+        }
+    }
+
+    /// Visits the boids of buckets `lo..hi` (one contiguous run).
+    #[inline]
+    fn scan(
+        &mut self,
+        i: usize,
+        pi: Vec2,
+        r2: f32,
+        lo: u32,
+        hi: u32,
+        f: &mut impl FnMut(usize, Vec2, f32),
+    ) {
+        let (s0, s1) = (
+            self.starts[lo as usize] as usize,
+            self.starts[hi as usize] as usize,
+        );
+        let mut checks = 0u64;
+        for (&j, &pj) in self.order[s0..s1].iter().zip(&self.sorted[s0..s1]) {
+            let j = j as usize;
+            if j == i {
+                continue;
+            }
+            checks += 1;
+            let d = pi - pj;
+            let d2 = d.length_squared();
+            if d2 < r2 {
+                f(j, d, d2);
             }
         }
         self.checks += checks;
