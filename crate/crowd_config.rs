@@ -195,6 +195,16 @@ impl CrowdConfig {
         }
     }
 
+    /// All 20 paper presets (Tests I–IV × [`Seek::PAPER_VARIANTS`]), in the
+    /// order of `scenarios/crowd/` and the metrics table, e.g. for a menu.
+    #[must_use]
+    pub fn paper_presets() -> Vec<Self> {
+        PaperTest::ALL
+            .iter()
+            .flat_map(|&t| Seek::PAPER_VARIANTS.iter().map(move |&s| Self::paper(t, s)))
+            .collect()
+    }
+
     /// Parses and validates JSON.
     ///
     /// # Errors

@@ -234,6 +234,10 @@ fn presets_on_disk_match_the_paper_presets_and_validate() {
             assert_eq!(cfg.separation, test.separation());
         }
     }
+    let all = CrowdConfig::paper_presets();
+    assert_eq!(all.len(), 20);
+    let names: std::collections::HashSet<_> = all.iter().map(|c| c.name.clone()).collect();
+    assert_eq!(names.len(), 20, "preset names are unique");
 }
 
 fn random_positions(n: usize, side: f32, seed: u64) -> Vec<f32> {
