@@ -137,6 +137,27 @@ fn ratio() {
         "same-run ratio: seek step {seek:.1} ns, table lookup {look:.1} ns, lookup/seek = {:.2}",
         look / seek
     );
+    let st = states();
+    for bound in [
+        MuBound::default(),
+        MuBound::Literal,
+        MuBound::TurningRadius { factor: 12.0 },
+    ] {
+        let cfg = FunnelConfig {
+            bound,
+            ..Default::default()
+        };
+        for (name, lo, hi) in [("near 1-4 m", 1.0, 4.0), ("far 20-30 m", 20.0, 30.0)] {
+            let gs = goals(lo, hi);
+            let f = time(&mut |i| {
+                let mut s = st[i & 1023];
+                let mut m = FunnelMemory::default();
+                black_box(cfg.step(&t, &p, &mut s, black_box(&gs[i & 1023]), &mut m));
+                black_box(s);
+            });
+            println!("same-run ratio: funnelling update ({bound:?}, {name}) {f:.1} ns, funnel/seek = {:.2}", f / seek);
+        }
+    }
 }
 
 criterion_group!(benches, bench);
