@@ -12,3 +12,7 @@
 
 pub mod angle;
 pub mod rng;
+
+/// The JavaScript boundary (WebAssembly builds only).
+#[cfg(target_arch = "wasm32")]
+pub mod bindings;

@@ -1,0 +1,614 @@
+// Wiring: loads the core and the η table, builds the panel, owns the
+// simulation clock and the animation loop, and routes drags to the core.
+
+import { beginFrame, setupCanvas, type Surface } from "./canvas";
+import { button, checkbox, section, slider, type Control } from "./controls";
+import { downloadCsv, downloadJson, downloadPng } from "./export";
+import { renderHud } from "./hud";
+import { attachPointer, type Drag } from "./pointer";
+import { findPreset, PRESETS, presetNames } from "./presets";
+import { COLOURS, drawScene, type FieldDraw, type Overlay, type Scene, type TargetDraw } from "./render";
+import { defaultState, type LabState, type Overlays } from "./state";
+import { Trails } from "./trails";
+import { decodeState, encodeState } from "./urlstate";
+import { View, type Vec } from "./view";
+import {
+  createLab,
+  errorText,
+  FIELD_STRIDE,
+  GOAL_STRIDE,
+  loadCore,
+  STATE_STRIDE,
+  type GoalConfig,
+  type Internals,
+  type Lab,
+  type VehicleParams,
+} from "./wasm";
+
+const DEG = Math.PI / 180;
+const HANDLE_PX = 56;
+const TABLE_URL = "tables/eta.bin";
+
+/** What the end-to-end tests and the perf harness read (window.__lab). */
+export interface LabHook {
+  ready: boolean;
+  error: string | null;
+  problems: string[];
+  version: string;
+  /** performance.now() when the first frame with agents was drawn. */
+  firstFrameMs: number;
+  frames: number;
+  count(): number;
+  mode(): number | null;
+  internals(): Internals | null;
+  state(): LabState;
+  /** CSS-pixel canvas coordinates of the focus target's centre, rim, handles and of the vehicle. */
+  handles(): { target: Vec; rim: Vec; beta: Vec; opening: Vec; vehicle: Vec; heading: Vec } | null;
+  setPreset(name: string): Promise<void>;
+  presets(): string[];
+  setPaused(p: boolean): void;
+  perfReset(): void;
+  perfStats(): { frames: number; meanIntervalMs: number; meanWorkMs: number; p95WorkMs: number; meanStepMs: number; agents: number };
+}
+
+declare global {
+  interface Window {
+    __lab?: LabHook;
+  }
+}
+
+const $ = <T extends HTMLElement>(id: string): T => {
+  const el = document.getElementById(id);
+  if (!el) throw new Error(`#${id} missing from index.html`);
+  return el as T;
+};
+
+const messageEl = $<HTMLDivElement>("message");
+function showMessage(text: string, kind: "warn" | "error"): void {
+  messageEl.hidden = false;
+  messageEl.className = `message ${kind}`;
+  messageEl.textContent = text;
+}
+
+const hook: LabHook = {
+  ready: false,
+  error: null,
+  problems: [],
+  version: "",
+  firstFrameMs: NaN,
+  frames: 0,
+  count: () => 0,
+  mode: () => null,
+  internals: () => null,
+  state: () => defaultState(),
+  handles: () => null,
+  setPreset: async () => {},
+  presets: () => presetNames(),
+  setPaused: () => {},
+  perfReset: () => {},
+  perfStats: () => ({ frames: 0, meanIntervalMs: 0, meanWorkMs: 0, p95WorkMs: 0, meanStepMs: 0, agents: 0 }),
+};
+window.__lab = hook;
+
+async function start(): Promise<void> {
+  const decoded = decodeState(location.hash, presetNames());
+  const st: LabState = decoded.state;
+  hook.problems = decoded.problems;
+  if (decoded.problems.length > 0) {
+    showMessage(`Some of the link's state was ignored:\n• ${decoded.problems.join("\n• ")}`, "warn");
+  }
+
+  const version = await loadCore();
+  hook.version = version;
+  $("version").textContent = `core ${version}`;
+
+  let lab: Lab;
+  try {
+    lab = await createLab(TABLE_URL);
+  } catch (e) {
+    const msg = `The lab cannot start: ${errorText(e)}`;
+    hook.error = msg;
+    showMessage(msg, "error");
+    return;
+  }
+  const defaults: VehicleParams = lab.params();
+
+  const canvas = $<HTMLCanvasElement>("lab");
+  const view = new View();
+  let surface: Surface | null = null;
+  surface = setupCanvas(canvas, (s) => {
+    view.resize(s.width, s.height);
+    dirty = true;
+  });
+
+  // ---- simulation state owned by the page ----------------------------------
+  const trails = new Trails(200, 3000);
+  let paused = false;
+  let simTime = 0;
+  let acc = 0;
+  let focus = -1;
+  let dirty = true;
+  let usPerUpdate = 0;
+  let fieldCache: { key: string; samples: Float32Array } | null = null;
+  let stateBuf: Float32Array = new Float32Array(0);
+  let goalBuf: Float32Array = new Float32Array(0);
+  let count = 0;
+
+  const params = (): VehicleParams => ({ ...defaults, ...st.limits });
+  const goal = (): GoalConfig => ({
+    x: st.target.x,
+    y: st.target.y,
+    beta: st.target.theta,
+    dTol: st.dTol,
+    epsTol: st.epsTol,
+    speed: st.speed,
+    halting: st.halting,
+    relaxed: st.relaxed,
+  });
+
+  let urlTimer = 0;
+  const saveUrl = (): void => {
+    if (urlTimer) return;
+    urlTimer = window.setTimeout(() => {
+      urlTimer = 0;
+      history.replaceState(null, "", `#${encodeState(st)}`);
+    }, 250);
+  };
+
+  const pull = (): void => {
+    count = lab.count();
+    stateBuf = lab.state();
+    goalBuf = lab.goals();
+    dirty = true;
+  };
+
+  const applyParams = (): void => {
+    try {
+      lab.setParams(params());
+    } catch (e) {
+      showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
+    }
+  };
+
+  const rebuild = async (fit: boolean): Promise<void> => {
+    lab.clear();
+    applyParams();
+    trails.clear();
+    simTime = 0;
+    acc = 0;
+    focus = -1;
+    if (st.preset) {
+      const p = findPreset(st.preset);
+      try {
+        if (!p) throw new Error(`no preset named ${st.preset}`);
+        const info = lab.loadScenario(await p.load());
+        if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
+      } catch (e) {
+        showMessage(`Preset ${st.preset} could not be loaded: ${errorText(e)}`, "error");
+      }
+    } else {
+      try {
+        lab.addAgent({ x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [goal()], loopGoals: false });
+        focus = 0;
+        if (st.agents > 0) lab.spawnRandom(st.agents, st.seed, Math.max(10, Math.sqrt(st.agents) * 1.5), st.speed);
+      } catch (e) {
+        showMessage(`The playground could not be set up: ${errorText(e)}`, "error");
+      }
+      if (fit) {
+        if (st.agents > 0) {
+          const r = Math.max(10, Math.sqrt(st.agents) * 1.5) + 3;
+          view.fit(-r, -r, r, r);
+        } else {
+          const xs = [st.vehicle.x, st.target.x];
+          const ys = [st.vehicle.y, st.target.y];
+          view.fit(Math.min(...xs) - 3, Math.min(...ys) - 3, Math.max(...xs) + 3, Math.max(...ys) + 3, 60);
+        }
+      }
+    }
+    pull();
+    trails.record(0, stateBuf, STATE_STRIDE, count);
+  };
+
+  const updateGoal = (): void => {
+    if (focus < 0) return;
+    try {
+      lab.setGoal(focus, goal());
+    } catch (e) {
+      showMessage(`Goal rejected: ${errorText(e)}`, "warn");
+    }
+    pull();
+    saveUrl();
+  };
+
+  const placeVehicle = (): void => {
+    if (focus < 0) return;
+    try {
+      lab.setPose(focus, st.vehicle.x, st.vehicle.y, st.vehicle.theta);
+    } catch (e) {
+      showMessage(`Pose rejected: ${errorText(e)}`, "warn");
+    }
+    trails.clearAgent(focus);
+    pull();
+    saveUrl();
+  };
+
+  // ---- panel ---------------------------------------------------------------
+  const panel = $("panel");
+  const controls: Record<string, Control> = {};
+  const transport = $("transport");
+  const playBtn = button(transport, "play", "⏸ Pause", "Play / pause (space)", () => setPaused(!paused));
+  button(transport, "step", "Step", "Single step (s)", () => stepOnce());
+  const slowBtn = button(transport, "slow", "Slow ×¼", "Slow motion", () => {
+    st.slow = !st.slow;
+    slowBtn.setAttribute("aria-pressed", String(st.slow));
+    saveUrl();
+  });
+  slowBtn.setAttribute("aria-pressed", String(st.slow));
+  button(transport, "reset", "Reset", "Reset (r)", () => void rebuild(false));
+
+  const setPaused = (p: boolean): void => {
+    paused = p;
+    playBtn.textContent = paused ? "▶ Play" : "⏸ Pause";
+    playBtn.setAttribute("aria-pressed", String(paused));
+  };
+  const stepOnce = (): void => {
+    setPaused(true);
+    lab.step(1);
+    simTime += defaults.dt;
+    pull();
+    trails.record(simTime, stateBuf, STATE_STRIDE, count);
+  };
+
+  const goalBox = section(panel, "Target (playground)");
+  controls.speed = slider(goalBox, {
+    id: "speed", label: "desired speed v_d", unit: "m/s", min: 0.1, max: 4, step: 0.05, value: st.speed,
+    onInput: (v) => { st.speed = v; updateGoal(); },
+  });
+  controls.dTol = slider(goalBox, {
+    id: "dtol", label: "position tol. D_tol", unit: "m", min: 0.02, max: 3, step: 0.01, value: st.dTol,
+    onInput: (v) => { st.dTol = v; updateGoal(); },
+  });
+  controls.epsTol = slider(goalBox, {
+    id: "etol", label: "orient. tol. ε_tol", unit: "°", min: 0.5 * DEG, max: 90 * DEG, step: 0.5 * DEG, value: st.epsTol,
+    display: 1 / DEG, digits: 1, onInput: (v) => { st.epsTol = v; updateGoal(); },
+  });
+  controls.beta = slider(goalBox, {
+    id: "beta", label: "orientation β", unit: "°", min: -180 * DEG, max: 180 * DEG, step: DEG, value: st.target.theta,
+    display: 1 / DEG, digits: 0, onInput: (v) => { st.target.theta = v; updateGoal(); },
+  });
+  const goalRow = document.createElement("div");
+  goalRow.className = "row";
+  goalBox.append(goalRow);
+  checkbox(goalRow, "halting", "final halting", st.halting, (v) => { st.halting = v; updateGoal(); });
+  checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
+
+  const limBox = section(panel, "Vehicle limits");
+  const lim = (id: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", label: string, unit: string, max: number): void => {
+    controls[id] = slider(limBox, {
+      id, label, unit, min: 0.05, max, step: 0.05, value: st.limits[key] ?? defaults[key],
+      onInput: (v) => { st.limits[key] = v; applyParams(); saveUrl(); },
+    });
+  };
+  lim("vmax", "vMax", "max speed", "m/s", 6);
+  lim("amax", "accelMax", "max accel.", "m/s²", 10);
+  lim("wmax", "omegaMax", "max ang. speed", "rad/s", 10);
+  lim("awmax", "omegaAccelMax", "max ang. accel.", "rad/s²", 60);
+  lim("anmax", "normalAccelMax", "max normal acc. A", "m/s²", 10);
+
+  const ovBox = section(panel, "Overlays");
+  const ov = (key: keyof Overlays, label: string): void => {
+    checkbox(ovBox, `ov-${key}`, label, st.overlays[key], (v) => { st.overlays[key] = v; dirty = true; saveUrl(); });
+  };
+  ov("radial", "radial direction");
+  ov("eta", "η at target");
+  ov("gamma", "heading γ");
+  ov("ring", "nearest η ring");
+  ov("arc", "relaxed arc 𝒜, α_r");
+  ov("trails", "trails");
+  ov("field", "η field (Fig. 3b/c)");
+
+  const fieldBox = section(panel, "η field view");
+  const fieldSlider = (id: string, key: "vC" | "omegaC" | "vD", label: string, unit: string, min: number, max: number): void => {
+    controls[id] = slider(fieldBox, {
+      id, label, unit, min, max, step: 0.05, value: st.field[key],
+      onInput: (v) => { st.field[key] = v; fieldCache = null; dirty = true; saveUrl(); },
+    });
+  };
+  fieldSlider("fvc", "vC", "current v_c", "m/s", 0, 4);
+  fieldSlider("fwc", "omegaC", "current ω_c", "rad/s", -3, 3);
+  fieldSlider("fvd", "vD", "desired v_d", "m/s", 0.1, 4);
+  const fieldHelp = document.createElement("p");
+  fieldHelp.className = "help";
+  fieldHelp.textContent = "Arrows: final direction α+η at each sampled target around the vehicle; darker = unreachable at v_d (η shown for the stored v_dt).";
+  fieldBox.append(fieldHelp);
+
+  const exBox = section(panel, "Share and export");
+  const exRow = document.createElement("div");
+  exRow.className = "row";
+  exBox.append(exRow);
+  button(exRow, "copy-link", "Copy link", "Copy a link with the whole state", () => {
+    history.replaceState(null, "", `#${encodeState(st)}`);
+    void navigator.clipboard?.writeText(location.href).catch(() => {});
+  });
+  button(exRow, "csv", "CSV", "Trajectories as CSV", () => downloadCsv(trails));
+  button(exRow, "json", "JSON", "Trajectories as JSON", () => downloadJson(trails, { state: st, params: params() }));
+  button(exRow, "png", "PNG", "The canvas as PNG", () => downloadPng(canvas));
+  const keys = document.createElement("p");
+  keys.className = "help";
+  keys.innerHTML = "<kbd>space</kbd> pause · <kbd>s</kbd> step · <kbd>r</kbd> reset · drag empty space to pan, wheel to zoom.";
+  exBox.append(keys);
+
+  const presetSel = $<HTMLSelectElement>("preset");
+  const addOpt = (value: string, label: string): void => {
+    const o = document.createElement("option");
+    o.value = value;
+    o.textContent = label;
+    presetSel.append(o);
+  };
+  addOpt("", "playground");
+  for (const p of PRESETS) addOpt(p.name, p.name);
+  presetSel.value = st.preset;
+  const setPreset = async (name: string): Promise<void> => {
+    st.preset = name;
+    presetSel.value = name;
+    await rebuild(true);
+    saveUrl();
+  };
+  presetSel.addEventListener("change", () => void setPreset(presetSel.value));
+
+  window.addEventListener("keydown", (e) => {
+    const t = e.target;
+    if (t instanceof HTMLSelectElement || t instanceof HTMLButtonElement || (t instanceof HTMLInputElement && t.type === "text")) return;
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    if (e.key === " ") {
+      e.preventDefault();
+      setPaused(!paused);
+    } else if (e.key === "s" || e.key === "S") {
+      stepOnce();
+    } else if (e.key === "r" || e.key === "R") {
+      void rebuild(false);
+    }
+  });
+
+  // ---- dragging --------------------------------------------------------------
+  const agentPose = (i: number): { x: number; y: number; theta: number } => ({
+    x: stateBuf[i * STATE_STRIDE] ?? 0,
+    y: stateBuf[i * STATE_STRIDE + 1] ?? 0,
+    theta: stateBuf[i * STATE_STRIDE + 2] ?? 0,
+  });
+  const handles = (): ReturnType<LabHook["handles"]> => {
+    if (focus < 0 || focus >= count) return null;
+    const c = view.toScreen(st.target.x, st.target.y);
+    const b = st.target.theta;
+    const r = st.dTol * view.scale;
+    const v = agentPose(focus);
+    const vs = view.toScreen(v.x, v.y);
+    const a1 = b + st.epsTol;
+    return {
+      target: c,
+      rim: { x: c.x + Math.cos(b + Math.PI / 2) * r, y: c.y - Math.sin(b + Math.PI / 2) * r },
+      beta: { x: c.x + Math.cos(b) * (HANDLE_PX + 12), y: c.y - Math.sin(b) * (HANDLE_PX + 12) },
+      opening: { x: c.x + Math.cos(a1) * HANDLE_PX, y: c.y - Math.sin(a1) * HANDLE_PX },
+      vehicle: vs,
+      heading: { x: vs.x + Math.cos(v.theta) * HANDLE_PX * 0.7, y: vs.y - Math.sin(v.theta) * HANDLE_PX * 0.7 },
+    };
+  };
+  const near = (a: Vec, b: Vec, r: number): boolean => Math.hypot(a.x - b.x, a.y - b.y) <= r;
+  const screenAngle = (from: Vec, p: Vec): number => Math.atan2(-(p.y - from.y), p.x - from.x);
+
+  attachPointer(canvas, (p): Drag | null => {
+    const h = handles();
+    if (h) {
+      if (near(p, h.beta, 10)) {
+        return { move: (q) => { st.target.theta = screenAngle(h.target, q); controls.beta?.set(st.target.theta); updateGoal(); } };
+      }
+      if (near(p, h.opening, 10)) {
+        return {
+          move: (q) => {
+            const c = view.toScreen(st.target.x, st.target.y);
+            let d = Math.abs(Math.atan2(Math.sin(screenAngle(c, q) - st.target.theta), Math.cos(screenAngle(c, q) - st.target.theta)));
+            d = Math.min(90 * DEG, Math.max(0.5 * DEG, d));
+            st.epsTol = d;
+            controls.epsTol?.set(d);
+            updateGoal();
+          },
+        };
+      }
+      if (near(p, h.heading, 10)) {
+        return {
+          move: (q) => {
+            const v = view.toScreen(st.vehicle.x, st.vehicle.y);
+            st.vehicle.theta = screenAngle(v, q);
+            placeVehicle();
+          },
+        };
+      }
+      if (near(p, h.vehicle, 14)) {
+        const pose = agentPose(focus);
+        st.vehicle = { ...pose };
+        const w0 = view.toWorld(p.x, p.y);
+        const off = { x: pose.x - w0.x, y: pose.y - w0.y };
+        return {
+          move: (q) => {
+            const w = view.toWorld(q.x, q.y);
+            st.vehicle.x = w.x + off.x;
+            st.vehicle.y = w.y + off.y;
+            placeVehicle();
+          },
+        };
+      }
+      if (near(p, h.target, 10)) {
+        const w0 = view.toWorld(p.x, p.y);
+        const off = { x: st.target.x - w0.x, y: st.target.y - w0.y };
+        return {
+          move: (q) => {
+            const w = view.toWorld(q.x, q.y);
+            st.target.x = w.x + off.x;
+            st.target.y = w.y + off.y;
+            updateGoal();
+          },
+        };
+      }
+      const dc = Math.hypot(p.x - h.target.x, p.y - h.target.y);
+      if (Math.abs(dc - st.dTol * view.scale) <= 7) {
+        return {
+          move: (q) => {
+            const c = view.toScreen(st.target.x, st.target.y);
+            st.dTol = Math.min(20, Math.max(0.02, Math.hypot(q.x - c.x, q.y - c.y) / view.scale));
+            controls.dTol?.set(st.dTol);
+            updateGoal();
+          },
+        };
+      }
+    }
+    let last = p;
+    canvas.style.cursor = "grabbing";
+    return {
+      move: (q) => { view.panBy(q.x - last.x, q.y - last.y); last = q; dirty = true; },
+      end: () => { canvas.style.cursor = ""; },
+    };
+  }, (p) => {
+    const h = handles();
+    const on = p !== null && h !== null && (near(p, h.beta, 10) || near(p, h.opening, 10) || near(p, h.heading, 10)
+      || near(p, h.vehicle, 14) || near(p, h.target, 10)
+      || Math.abs(Math.hypot(p.x - h.target.x, p.y - h.target.y) - st.dTol * view.scale) <= 7);
+    canvas.style.cursor = on ? "grab" : "";
+  });
+  canvas.addEventListener("wheel", (e) => {
+    e.preventDefault();
+    const r = canvas.getBoundingClientRect();
+    view.zoomAt(e.clientX - r.left, e.clientY - r.top, Math.exp(-e.deltaY * 0.0015));
+    dirty = true;
+  }, { passive: false });
+
+  // ---- frame loop --------------------------------------------------------------
+  const hudEl = $("hud");
+  const perf = { intervals: [] as number[], work: [] as number[], step: [] as number[] };
+  let lastFrame = performance.now();
+  let frameMsEma = 0;
+
+  const targetsOf = (): TargetDraw[] => {
+    const out: TargetDraw[] = [];
+    if (count > 2000) return out;
+    for (let i = 0; i < count; i++) {
+      if (i === focus) continue;
+      const g = i * GOAL_STRIDE;
+      const x = goalBuf[g]!;
+      if (Number.isNaN(x)) continue;
+      out.push({ x, y: goalBuf[g + 1]!, beta: goalBuf[g + 2]!, dTol: goalBuf[g + 3]!, epsTol: goalBuf[g + 4]!, mode: stateBuf[i * STATE_STRIDE + 5]! });
+    }
+    return out;
+  };
+
+  const frame = (now: number): void => {
+    const interval = now - lastFrame;
+    lastFrame = now;
+    const t0 = performance.now();
+    let stepMs = 0;
+    if (!paused && count > 0) {
+      const dt = lab.params().dt;
+      acc += Math.min(0.1, interval / 1000) * (st.slow ? 0.25 : 1);
+      let k = Math.floor(acc / dt);
+      if (k > 4) { k = 4; acc = 0; } else acc -= k * dt;
+      if (k > 0) {
+        const s0 = performance.now();
+        lab.step(k);
+        stepMs = performance.now() - s0;
+        usPerUpdate = usPerUpdate === 0 ? (stepMs * 1000) / (k * count) : 0.9 * usPerUpdate + 0.1 * (stepMs * 1000) / (k * count);
+        simTime += k * dt;
+        pull();
+        if (st.overlays.trails && count <= trails.maxAgents) trails.record(simTime, stateBuf, STATE_STRIDE, count);
+      }
+    }
+    if (surface && (dirty || !paused)) {
+      beginFrame(surface, COLOURS.background);
+      const inter = focus >= 0 && focus < count ? lab.internals(focus) : count > 0 ? lab.internals(0) : null;
+      const who = focus >= 0 ? focus : 0;
+      const pose = agentPose(who);
+      let overlay: Overlay | null = null;
+      if (inter && count > 0) {
+        const g = who * GOAL_STRIDE;
+        overlay = {
+          x: pose.x, y: pose.y, theta: pose.theta,
+          targetX: goalBuf[g] ?? 0, targetY: goalBuf[g + 1] ?? 0,
+          etaDir: st.overlays.eta && Number.isFinite(inter.eta) ? pose.theta + inter.alpha + inter.eta : null,
+          gamma: st.overlays.gamma && Number.isFinite(inter.gamma) ? inter.gamma : null,
+          arc: st.overlays.arc && inter.arc ? { r: inter.arc.radius, a0: pose.theta + inter.arc.alphaMin, a1: pose.theta + inter.arc.alphaMax, ar: pose.theta + inter.arc.alphaR } : null,
+        };
+      }
+      let ring: FieldDraw | null = null;
+      if (st.overlays.ring && count > 0) {
+        ring = { samples: lab.etaRing(who), originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
+      }
+      let field: FieldDraw | null = null;
+      if (st.overlays.field && count > 0) {
+        const key = `${st.field.vC}|${st.field.omegaC}|${st.field.vD}`;
+        if (!fieldCache || fieldCache.key !== key) fieldCache = { key, samples: lab.etaField(st.field.vC, st.field.omegaC, st.field.vD) };
+        field = { samples: fieldCache.samples, originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.field, dark: COLOURS.fieldDark };
+      }
+      const focusTarget: TargetDraw | null = focus >= 0
+        ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: inter?.mode ?? 3 }
+        : null;
+      const scene: Scene = {
+        state: stateBuf, stride: STATE_STRIDE, count,
+        targets: targetsOf(),
+        trails: st.overlays.trails && count <= trails.maxAgents ? trails : null,
+        focus, focusTarget, overlay,
+        showRadial: st.overlays.radial,
+        ring, field, handlePx: HANDLE_PX,
+      };
+      drawScene(surface, view, scene);
+      renderHud(hudEl, {
+        mode: inter?.mode ?? null,
+        d: inter?.d ?? NaN, alpha: inter?.alpha ?? NaN, eta: inter?.eta ?? NaN,
+        deltaEta: inter?.deltaEta ?? NaN, mu: inter?.mu ?? NaN,
+        speed: stateBuf[who * STATE_STRIDE + 3] ?? 0,
+        reachable: inter?.reachable ?? true,
+        usPerUpdate, frameMs: frameMsEma, agents: count, time: simTime, paused, slow: st.slow,
+      });
+      dirty = false;
+      hook.frames++;
+      if (Number.isNaN(hook.firstFrameMs) && count > 0) hook.firstFrameMs = performance.now();
+    }
+    const work = performance.now() - t0;
+    frameMsEma = frameMsEma === 0 ? work : 0.95 * frameMsEma + 0.05 * work;
+    perf.intervals.push(interval);
+    perf.work.push(work);
+    perf.step.push(stepMs);
+    if (perf.intervals.length > 2000) { perf.intervals.shift(); perf.work.shift(); perf.step.shift(); }
+    requestAnimationFrame(frame);
+  };
+
+  // ---- hook ------------------------------------------------------------------
+  hook.count = () => count;
+  hook.mode = () => (count > 0 ? (lab.internals(focus >= 0 ? focus : 0)?.mode ?? null) : null);
+  hook.internals = () => (count > 0 ? lab.internals(focus >= 0 ? focus : 0) : null);
+  hook.state = () => structuredClone(st);
+  hook.handles = handles;
+  hook.setPreset = setPreset;
+  hook.setPaused = setPaused;
+  hook.perfReset = () => { perf.intervals = []; perf.work = []; perf.step = []; };
+  hook.perfStats = () => {
+    const mean = (a: number[]): number => (a.length ? a.reduce((x, y) => x + y, 0) / a.length : 0);
+    const sorted = [...perf.work].sort((a, b) => a - b);
+    return {
+      frames: perf.intervals.length,
+      meanIntervalMs: mean(perf.intervals),
+      meanWorkMs: mean(perf.work),
+      p95WorkMs: sorted[Math.floor(sorted.length * 0.95)] ?? 0,
+      meanStepMs: mean(perf.step),
+      agents: count,
+    };
+  };
+
+  await rebuild(true);
+  setPaused(false);
+  hook.ready = true;
+  requestAnimationFrame(frame);
+}
+
+start().catch((e: unknown) => {
+  const msg = `The lab failed to start: ${errorText(e)}`;
+  hook.error = msg;
+  showMessage(msg, "error");
+});
