@@ -12,6 +12,10 @@
 
 pub mod angle;
 pub mod rng;
+pub mod seek;
+pub mod table;
+pub mod table_gen;
+pub mod vehicle;
 
 /// The JavaScript boundary (WebAssembly builds only).
 #[cfg(target_arch = "wasm32")]

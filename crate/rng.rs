@@ -26,7 +26,10 @@ impl Rng {
     /// independent sequences from the same seed (one per agent, say).
     #[must_use]
     pub fn with_stream(seed: u64, stream: u64) -> Self {
-        let mut r = Self { state: 0, inc: (stream << 1) | 1 };
+        let mut r = Self {
+            state: 0,
+            inc: (stream << 1) | 1,
+        };
         r.next_u32();
         r.state = r.state.wrapping_add(seed);
         r.next_u32();

@@ -1,0 +1,381 @@
+//! The vehicle model of paper 000 §3 (DESIGN §1).
+//!
+//! A forward-only unicycle with unit mass and unit yaw inertia: the state is
+//! a 2D pose plus forward speed `v ≥ 0` and angular speed `ω`. Every limit
+//! the paper names is enforced *exactly* at every step, never just
+//! approached: forward speed and acceleration, angular speed and
+//! acceleration, and the normal acceleration `|v·ω| ≤ A`. Controllers only
+//! choose the commanded accelerations; [`VehicleParams::integrate`] clamps
+//! them into the admissible set, so no controller bug can break a limit.
+
+use core::fmt;
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
+/// How the pose is advanced from the speeds.
+///
+/// The η table must be built with the integrator the controller runs (the
+/// table header records it and the loader checks it).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum Integrator {
+    /// Explicit Euler, as in the paper: the pose moves with the speeds of
+    /// the start of the step, then the speeds are updated.
+    #[default]
+    Euler,
+    /// Semi-implicit (symplectic) Euler: speeds first, then the pose moves
+    /// with the new speeds. Slightly less orbit-prone.
+    SemiImplicitEuler,
+}
+
+impl Integrator {
+    /// Stable numeric code stored in the table header.
+    #[must_use]
+    pub fn code(self) -> u32 {
+        match self {
+            Self::Euler => 0,
+            Self::SemiImplicitEuler => 1,
+        }
+    }
+
+    /// Inverse of [`Integrator::code`].
+    #[must_use]
+    pub fn from_code(c: u32) -> Option<Self> {
+        match c {
+            0 => Some(Self::Euler),
+            1 => Some(Self::SemiImplicitEuler),
+            _ => None,
+        }
+    }
+}
+
+/// Vehicle limits and seek-controller gains. Units: metres, seconds,
+/// radians. The defaults describe a walking pedestrian (about 1.3 m/s
+/// cruising, able to jog at 2 m/s, a quarter turn in about a second).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "camelCase")]
+pub struct VehicleParams {
+    /// Fixed time step, s.
+    pub dt: f32,
+    /// Maximum forward speed, m/s.
+    pub v_max: f32,
+    /// Maximum forward acceleration and deceleration, m/s².
+    pub accel_max: f32,
+    /// Maximum angular speed, rad/s.
+    pub omega_max: f32,
+    /// Maximum angular acceleration, rad/s².
+    pub omega_accel_max: f32,
+    /// Maximum normal (centripetal) acceleration `A = |v·ω|`, m/s².
+    pub normal_accel_max: f32,
+    /// Proportional gain of the angular controller, 1/s².
+    pub kp: f32,
+    /// Damping gain of the angular controller, 1/s.
+    pub kd: f32,
+    /// Pose integrator.
+    pub integrator: Integrator,
+}
+
+impl Default for VehicleParams {
+    fn default() -> Self {
+        Self {
+            dt: 1.0 / 60.0,
+            v_max: 2.0,
+            accel_max: 1.5,
+            omega_max: 2.0,
+            omega_accel_max: 8.0,
+            normal_accel_max: 1.5,
+            kp: 12.0,
+            kd: 6.0,
+            integrator: Integrator::Euler,
+        }
+    }
+}
+
+/// Why a parameter set was refused.
+#[derive(Clone, Debug, PartialEq)]
+pub enum ParamError {
+    /// A value is NaN or infinite.
+    NotFinite(&'static str),
+    /// A value that must be strictly positive is not.
+    NotPositive(&'static str, f32),
+    /// A value lies outside the range this implementation supports.
+    OutOfRange {
+        /// Field name.
+        field: &'static str,
+        /// Offending value.
+        value: f32,
+        /// Inclusive lower bound.
+        min: f32,
+        /// Inclusive upper bound.
+        max: f32,
+    },
+}
+
+impl fmt::Display for ParamError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::NotFinite(n) => write!(f, "parameter `{n}` must be a finite number"),
+            Self::NotPositive(n, v) => write!(f, "parameter `{n}` must be > 0 (got {v})"),
+            Self::OutOfRange {
+                field,
+                value,
+                min,
+                max,
+            } => {
+                write!(f, "parameter `{field}` = {value} is outside [{min}, {max}]")
+            }
+        }
+    }
+}
+
+impl std::error::Error for ParamError {}
+
+/// Checks that `value` is finite and within `[min, max]`.
+pub(crate) fn check_range(
+    field: &'static str,
+    value: f32,
+    min: f32,
+    max: f32,
+) -> Result<(), ParamError> {
+    if !value.is_finite() {
+        return Err(ParamError::NotFinite(field));
+    }
+    if value < min || value > max {
+        return Err(ParamError::OutOfRange {
+            field,
+            value,
+            min,
+            max,
+        });
+    }
+    Ok(())
+}
+
+impl VehicleParams {
+    /// Rejects NaN, non-positive and inconsistent values with a typed error.
+    ///
+    /// # Errors
+    /// The first offending field.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        let fields: [(&'static str, f32); 8] = [
+            ("dt", self.dt),
+            ("vMax", self.v_max),
+            ("accelMax", self.accel_max),
+            ("omegaMax", self.omega_max),
+            ("omegaAccelMax", self.omega_accel_max),
+            ("normalAccelMax", self.normal_accel_max),
+            ("kp", self.kp),
+            ("kd", self.kd),
+        ];
+        for (name, v) in fields {
+            if !v.is_finite() {
+                return Err(ParamError::NotFinite(name));
+            }
+            if v <= 0.0 {
+                return Err(ParamError::NotPositive(name, v));
+            }
+        }
+        check_range("dt", self.dt, 1e-4, 0.1)?;
+        check_range("vMax", self.v_max, 0.01, 100.0)?;
+        check_range("accelMax", self.accel_max, 0.01, 1000.0)?;
+        check_range("omegaMax", self.omega_max, 0.01, 100.0)?;
+        check_range("omegaAccelMax", self.omega_accel_max, 0.01, 10_000.0)?;
+        check_range("normalAccelMax", self.normal_accel_max, 0.01, 1000.0)?;
+        check_range("kp", self.kp, 0.01, 10_000.0)?;
+        check_range("kd", self.kd, 0.01, 10_000.0)?;
+        Ok(())
+    }
+
+    /// Largest admissible angular speed at forward speed `v`:
+    /// `min(ω_max, A / v)`.
+    #[inline]
+    #[must_use]
+    pub fn omega_limit(&self, v: f32) -> f32 {
+        if v * self.omega_max > self.normal_accel_max {
+            self.normal_accel_max / v
+        } else {
+            self.omega_max
+        }
+    }
+
+    /// Largest admissible forward speed at angular speed `ω`:
+    /// `min(v_max, A / |ω|)`.
+    #[inline]
+    #[must_use]
+    pub fn speed_limit(&self, omega: f32) -> f32 {
+        let w = omega.abs();
+        if w * self.v_max > self.normal_accel_max {
+            self.normal_accel_max / w
+        } else {
+            self.v_max
+        }
+    }
+
+    /// Minimum turning radius when cruising at `v` (m): the geometric limit
+    /// used for Dubins comparisons, `v / min(ω_max, A/v)`.
+    #[must_use]
+    pub fn min_turn_radius(&self, v: f32) -> f32 {
+        let v = v.clamp(1e-3, self.v_max);
+        v / self.omega_limit(v)
+    }
+
+    /// Advances `s` by one step under the commanded angular acceleration
+    /// `ang_acc` and the desired forward speed `v_des`.
+    ///
+    /// Angular control has priority (paper 000 §3): the new ω is the
+    /// commanded one clamped to the acceleration window and to
+    /// `±min(ω_max, A/v)`; then the new v tracks `v_des` within the
+    /// acceleration window and `[0, min(v_max, A/|ω_new|)]`. Because the
+    /// previous state satisfied `|v·ω| ≤ A`, both windows are never empty,
+    /// so every limit holds exactly after every step.
+    #[inline]
+    pub fn integrate(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
+        let dt = self.dt;
+        let (v0, w0) = (s.v, s.omega);
+        let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
+        let wl = self.omega_limit(v0);
+        let w1 = (w0 + a * dt).clamp(-wl, wl);
+        let dv = self.accel_max * dt;
+        let vcap = self.speed_limit(w1);
+        let v1 = v_des.clamp(v0 - dv, v0 + dv).min(vcap).max(0.0);
+        match self.integrator {
+            Integrator::Euler => {
+                s.pos += Vec2::from_angle(s.theta) * (v0 * dt);
+                s.theta = crate::angle::wrap(s.theta + w0 * dt);
+            }
+            Integrator::SemiImplicitEuler => {
+                s.theta = crate::angle::wrap(s.theta + w1 * dt);
+                s.pos += Vec2::from_angle(s.theta) * (v1 * dt);
+            }
+        }
+        s.v = v1;
+        s.omega = w1;
+    }
+}
+
+/// The kinematic state of one vehicle.
+#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields)]
+pub struct VehicleState {
+    /// Position, m.
+    pub pos: Vec2,
+    /// Heading θ, rad, wrapped to (−π, π].
+    pub theta: f32,
+    /// Forward speed, m/s (≥ 0).
+    pub v: f32,
+    /// Angular speed, rad/s (counter-clockwise positive).
+    pub omega: f32,
+}
+
+impl VehicleState {
+    /// A state at `pos` heading `theta` with speeds `v` and `omega`.
+    #[must_use]
+    pub fn new(pos: Vec2, theta: f32, v: f32, omega: f32) -> Self {
+        Self {
+            pos,
+            theta,
+            v,
+            omega,
+        }
+    }
+
+    /// Unit forward direction.
+    #[inline]
+    #[must_use]
+    pub fn forward(&self) -> Vec2 {
+        Vec2::from_angle(self.theta)
+    }
+
+    /// True when every field is finite and the state satisfies `p`'s limits
+    /// (with a small tolerance for f32 rounding).
+    #[must_use]
+    pub fn within_limits(&self, p: &VehicleParams) -> bool {
+        let eps = 1e-4;
+        self.pos.is_finite()
+            && self.theta.is_finite()
+            && self.v.is_finite()
+            && self.omega.is_finite()
+            && self.v >= 0.0
+            && self.v <= p.v_max + eps
+            && self.omega.abs() <= p.omega_max + eps
+            && (self.v * self.omega).abs() <= p.normal_accel_max * (1.0 + eps) + eps
+    }
+
+    /// Rejects non-finite or out-of-limit states (negative speed, speed or
+    /// angular speed above the limits, normal acceleration above `A`).
+    ///
+    /// # Errors
+    /// A [`ParamError`] naming the offending field.
+    pub fn validate(&self, p: &VehicleParams) -> Result<(), ParamError> {
+        check_range("pos.x", self.pos.x, -1e6, 1e6)?;
+        check_range("pos.y", self.pos.y, -1e6, 1e6)?;
+        check_range("theta", self.theta, -1e3, 1e3)?;
+        check_range("v", self.v, 0.0, p.v_max)?;
+        check_range("omega", self.omega, -p.omega_max, p.omega_max)?;
+        let lim = p.omega_limit(self.v);
+        check_range(
+            "omega (normal acceleration |v·ω| ≤ A)",
+            self.omega,
+            -lim,
+            lim,
+        )?;
+        Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn default_params_are_valid_and_bad_ones_are_named() {
+        assert!(VehicleParams::default().validate().is_ok());
+        let p = VehicleParams {
+            kp: f32::NAN,
+            ..Default::default()
+        };
+        assert_eq!(p.validate(), Err(ParamError::NotFinite("kp")));
+        let p = VehicleParams {
+            v_max: -1.0,
+            ..Default::default()
+        };
+        assert!(matches!(
+            p.validate(),
+            Err(ParamError::NotPositive("vMax", _))
+        ));
+        let p = VehicleParams {
+            dt: 1.0,
+            ..Default::default()
+        };
+        assert!(matches!(
+            p.validate(),
+            Err(ParamError::OutOfRange { field: "dt", .. })
+        ));
+    }
+
+    #[test]
+    fn integrate_respects_every_limit_under_extreme_commands() {
+        let p = VehicleParams::default();
+        let mut s = VehicleState::default();
+        for i in 0..10_000 {
+            let prev = s;
+            let a = if (i / 37) % 2 == 0 { 1e6 } else { -1e6 };
+            let vd = if (i / 91) % 2 == 0 { 100.0 } else { 0.0 };
+            p.integrate(&mut s, a, vd);
+            assert!(s.within_limits(&p), "{s:?}");
+            assert!((s.v - prev.v).abs() <= p.accel_max * p.dt * 1.0001);
+            assert!((s.omega - prev.omega).abs() <= p.omega_accel_max * p.dt * 1.0001);
+        }
+    }
+
+    #[test]
+    fn serde_round_trip_uses_camel_case() {
+        let p = VehicleParams::default();
+        let j = serde_json::to_string(&p).unwrap();
+        assert!(j.contains("\"vMax\""), "{j}");
+        let q: VehicleParams = serde_json::from_str(&j).unwrap();
+        assert_eq!(p, q);
+        assert!(serde_json::from_str::<VehicleParams>("{\"vmax\": 1}").is_err());
+    }
+}
