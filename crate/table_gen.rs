@@ -34,6 +34,7 @@ use crate::vehicle::{VehicleParams, VehicleState};
 pub type Entry = (f32, f32, u8);
 
 /// A generated chunk: first index and its entries (`None` = mirrored).
+#[cfg(not(target_arch = "wasm32"))]
 type Chunk = (usize, Vec<Option<Entry>>);
 
 /// Samples per axis of the committed table: D, α, ω fraction, v_c, v_d.
