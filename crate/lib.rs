@@ -11,11 +11,17 @@
 #![warn(missing_docs, clippy::all)]
 
 pub mod angle;
+pub mod dubins;
+pub mod funnel;
+pub mod metrics;
 pub mod rng;
+pub mod scenario;
 pub mod seek;
+pub mod study;
 pub mod table;
 pub mod table_gen;
 pub mod vehicle;
+pub mod world;
 
 /// The JavaScript boundary (WebAssembly builds only).
 #[cfg(target_arch = "wasm32")]

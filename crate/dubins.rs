@@ -1,0 +1,207 @@
+//! Dubins shortest paths (Dubins 1957; cited by paper 000 §2): the shortest
+//! C¹ path between two oriented points with a minimum turning radius, made
+//! of arcs (L, R) and a straight (S) or three arcs. It is the geometric
+//! lower bound against which funnelling paths are compared (DESIGN §9).
+//!
+//! Formulas follow Shkel & Lumelsky (2001) in the frame where the start is
+//! at the origin and the goal on the positive x axis at normalised distance
+//! `d`; computed in f64, only lengths are returned. Each word is checked in
+//! the tests by integrating its segments to the goal pose.
+
+use core::f64::consts::TAU;
+
+/// The six Dubins words.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub enum Word {
+    /// Left, straight, left.
+    Lsl,
+    /// Right, straight, right.
+    Rsr,
+    /// Left, straight, right.
+    Lsr,
+    /// Right, straight, left.
+    Rsl,
+    /// Right, left, right.
+    Rlr,
+    /// Left, right, left.
+    Lrl,
+}
+
+/// All words, for iteration.
+pub const WORDS: [Word; 6] = [
+    Word::Lsl,
+    Word::Rsr,
+    Word::Lsr,
+    Word::Rsl,
+    Word::Rlr,
+    Word::Lrl,
+];
+
+fn m2pi(x: f64) -> f64 {
+    x.rem_euclid(TAU)
+}
+
+/// Normalised segment lengths (t, p, q) of `word` from heading `a` at the
+/// origin to heading `b` at `(d, 0)`, with unit turning radius; `None` when
+/// the word has no solution.
+#[must_use]
+pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
+    let (sa, ca, sb, cb) = (a.sin(), a.cos(), b.sin(), b.cos());
+    let cab = (a - b).cos();
+    match word {
+        Word::Lsl => {
+            let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb);
+            if p2 < 0.0 {
+                return None;
+            }
+            let th = (cb - ca).atan2(d + sa - sb);
+            Some((m2pi(th - a), p2.sqrt(), m2pi(b - th)))
+        }
+        Word::Rsr => {
+            let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sb - sa);
+            if p2 < 0.0 {
+                return None;
+            }
+            let th = (ca - cb).atan2(d - sa + sb);
+            Some((m2pi(a - th), p2.sqrt(), m2pi(th - b)))
+        }
+        Word::Lsr => {
+            let p2 = -2.0 + d * d + 2.0 * cab + 2.0 * d * (sa + sb);
+            if p2 < 0.0 {
+                return None;
+            }
+            let p = p2.sqrt();
+            let th = (-ca - cb).atan2(d + sa + sb) - (-2.0f64).atan2(p);
+            Some((m2pi(th - a), p, m2pi(th - b)))
+        }
+        Word::Rsl => {
+            let p2 = d * d - 2.0 + 2.0 * cab - 2.0 * d * (sa + sb);
+            if p2 < 0.0 {
+                return None;
+            }
+            let p = p2.sqrt();
+            let th = (ca + cb).atan2(d - sa - sb) - 2.0f64.atan2(p);
+            Some((m2pi(a - th), p, m2pi(b - th)))
+        }
+        Word::Rlr => {
+            let tmp = (6.0 - d * d + 2.0 * cab + 2.0 * d * (sa - sb)) / 8.0;
+            if tmp.abs() > 1.0 {
+                return None;
+            }
+            let p = m2pi(TAU - tmp.acos());
+            let t = m2pi(a - (ca - cb).atan2(d - sa + sb) + p / 2.0);
+            Some((t, p, m2pi(a - b - t + p)))
+        }
+        Word::Lrl => {
+            let tmp = (6.0 - d * d + 2.0 * cab + 2.0 * d * (sb - sa)) / 8.0;
+            if tmp.abs() > 1.0 {
+                return None;
+            }
+            let p = m2pi(TAU - tmp.acos());
+            let t = m2pi(-a - (ca - cb).atan2(d + sa - sb) + p / 2.0);
+            Some((t, p, m2pi(b - a - t + p)))
+        }
+    }
+}
+
+/// Length of the shortest Dubins path from `(x0, y0, θ0)` to `(x1, y1, θ1)`
+/// with minimum turning radius `rho` (> 0), in the units of the input.
+#[must_use]
+pub fn shortest_length(start: (f32, f32, f32), goal: (f32, f32, f32), rho: f32) -> f32 {
+    let rho = f64::from(rho.max(1e-6));
+    let dx = f64::from(goal.0 - start.0);
+    let dy = f64::from(goal.1 - start.1);
+    let d = (dx * dx + dy * dy).sqrt() / rho;
+    let phi = if d > 0.0 { dy.atan2(dx) } else { 0.0 };
+    let a = m2pi(f64::from(start.2) - phi);
+    let b = m2pi(f64::from(goal.2) - phi);
+    let best = WORDS
+        .iter()
+        .filter_map(|&w| segments(w, a, b, d))
+        .map(|(t, p, q)| t + p + q)
+        .fold(f64::INFINITY, f64::min);
+    (best * rho) as f32
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// Integrates a word's segments from the origin at heading `a`.
+    fn endpoint(w: Word, a: f64, (t, p, q): (f64, f64, f64)) -> (f64, f64, f64) {
+        let kinds: [char; 3] = match w {
+            Word::Lsl => ['L', 'S', 'L'],
+            Word::Rsr => ['R', 'S', 'R'],
+            Word::Lsr => ['L', 'S', 'R'],
+            Word::Rsl => ['R', 'S', 'L'],
+            Word::Rlr => ['R', 'L', 'R'],
+            Word::Lrl => ['L', 'R', 'L'],
+        };
+        let (mut x, mut y, mut th) = (0.0f64, 0.0f64, a);
+        for (k, len) in kinds.iter().zip([t, p, q]) {
+            match k {
+                'L' => {
+                    x += (th + len).sin() - th.sin();
+                    y += -(th + len).cos() + th.cos();
+                    th += len;
+                }
+                'R' => {
+                    x += -(th - len).sin() + th.sin();
+                    y += (th - len).cos() - th.cos();
+                    th -= len;
+                }
+                _ => {
+                    x += len * th.cos();
+                    y += len * th.sin();
+                }
+            }
+        }
+        (x, y, th)
+    }
+
+    #[test]
+    fn every_word_solution_ends_at_the_goal_pose() {
+        let mut r = crate::rng::Rng::new(3);
+        let mut solved = 0;
+        for _ in 0..2000 {
+            let a = f64::from(r.range(0.0, core::f32::consts::TAU));
+            let b = f64::from(r.range(0.0, core::f32::consts::TAU));
+            let d = f64::from(r.range(0.0, 6.0));
+            for w in WORDS {
+                if let Some(seg) = segments(w, a, b, d) {
+                    let (x, y, th) = endpoint(w, a, seg);
+                    assert!(
+                        (x - d).abs() < 1e-6 && y.abs() < 1e-6,
+                        "{w:?} {a} {b} {d}: ({x}, {y})"
+                    );
+                    assert!(
+                        (m2pi(th - b) + 1e-9) % TAU < 1e-6 || (TAU - m2pi(th - b)) < 1e-6,
+                        "{w:?} heading"
+                    );
+                    solved += 1;
+                }
+            }
+        }
+        assert!(solved > 6000);
+    }
+
+    #[test]
+    fn known_lengths() {
+        // Straight ahead: the distance.
+        assert!((shortest_length((0.0, 0.0, 0.0), (10.0, 0.0, 0.0), 1.0) - 10.0).abs() < 1e-4);
+        // A half turn to the point beside: π·ρ.
+        let l = shortest_length((0.0, 0.0, 0.0), (0.0, 2.0, core::f32::consts::PI), 1.0);
+        assert!((l - core::f32::consts::PI).abs() < 1e-4, "{l}");
+        // Reversing in place is impossible: a full teardrop, longer than 2π·ρ... not
+        // exactly: same point, opposite heading, needs > π·ρ and ≤ (2 + π)ρ·something.
+        let l = shortest_length((0.0, 0.0, 0.0), (0.0, 0.0, core::f32::consts::PI), 1.0);
+        assert!(l > 3.0 && l < 8.0, "{l}");
+        // Scale invariance.
+        let a = shortest_length((0.0, 0.0, 0.3), (4.0, 1.0, 2.0), 1.0);
+        let b = shortest_length((0.0, 0.0, 0.3), (8.0, 2.0, 2.0), 2.0);
+        assert!((2.0 * a - b).abs() < 1e-3);
+        // Never shorter than the straight distance.
+        let l = shortest_length((0.0, 0.0, 2.0), (5.0, -3.0, -1.0), 0.7);
+        assert!(l >= 34f32.sqrt());
+    }
+}

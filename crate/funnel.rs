@@ -1,0 +1,330 @@
+//! Funnelling control (paper 000 §4–5, Figs. 4 and 5; DESIGN §4–5): reach a
+//! target position *with a prescribed orientation* β by modulating the
+//! heading fed to the plain seek controller.
+//!
+//! One update (Fig. 4): D and α in the vehicle frame; η interpolated from
+//! the table (with the proactive fallback speed `v_dt` where the target
+//! appears unreachable); Δη = β − (θ + α + η), the error between the target
+//! orientation and the predicted final direction; μ = −Δη bounded by
+//! [`MuBound`]; the modulated heading γ = θ + α + μ goes to the seek
+//! controller with speed `min(v_dt, A/|ω|)`. At most two table
+//! interpolations (the lookup, plus the literal bound's), constant cost,
+//! no allocation.
+
+use core::f32::consts::FRAC_PI_2;
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
+use crate::angle::{diff, wrap};
+use crate::seek::seek_step;
+use crate::table::EtaTable;
+use crate::vehicle::{VehicleParams, VehicleState};
+
+/// The control mode chosen every step (paper 000 Fig. 5).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+#[repr(u8)]
+pub enum Mode {
+    /// Within both tolerances: done (brakes to rest when halting).
+    EndOfSteering = 0,
+    /// Within the position tolerance: turn to β regardless of position.
+    OrientationOnly = 1,
+    /// Plain seek: closer than `D_η`, or no orientation correction needed.
+    PositionOnly = 2,
+    /// Heading modulated to reach the orientation too.
+    #[default]
+    Funnelling = 3,
+}
+
+/// How the modulation μ = −Δη is bounded (paper 000 §4: the bound must
+/// vanish as D → ∞ so that distant targets are approached like a seek).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase", tag = "kind")]
+pub enum MuBound {
+    /// The paper's literal reading: `|η(D, Δη, 0, v_c, v_dt)|`, the η of a
+    /// target at distance D seen at angle Δη with no rotation.
+    Literal,
+    /// The literal bound scaled by `gain` and capped at π/2: keeps the
+    /// literal shape (→ 0 as D → ∞) with more authority near the target.
+    ScaledLiteral {
+        /// Multiplier of the literal bound.
+        gain: f32,
+    },
+    /// A geometric bound `atan(factor·R_min / D)` capped at π/2, where
+    /// `R_min` is the minimum turning radius at the current desired speed:
+    /// the lateral offset worth aiming at is a few turning radii whatever
+    /// the distance, so the angle vanishes as D → ∞. One table
+    /// interpolation per update only.
+    TurningRadius {
+        /// Multiple of the minimum turning radius.
+        factor: f32,
+    },
+    /// A constant π/2 (for comparison: does not vanish with distance).
+    Constant,
+}
+
+/// A goal: an oriented target with tolerances (paper 000 §5).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "camelCase")]
+pub struct Goal {
+    /// Target position, m.
+    pub pos: Vec2,
+    /// Target orientation β, rad.
+    pub beta: f32,
+    /// Position tolerance `D_tol`, m (circle radius in the drawing).
+    pub d_tol: f32,
+    /// Orientation tolerance `ε_tol`, rad (triangle half-opening).
+    pub eps_tol: f32,
+    /// Desired forward speed `v_d`, m/s.
+    pub speed: f32,
+    /// Arrive at rest (final halting).
+    pub halting: bool,
+}
+
+impl Default for Goal {
+    fn default() -> Self {
+        Self {
+            pos: Vec2::ZERO,
+            beta: 0.0,
+            d_tol: 0.25,
+            eps_tol: 5f32.to_radians(),
+            speed: 1.3,
+            halting: false,
+        }
+    }
+}
+
+impl Goal {
+    /// Rejects non-finite or out-of-range goals.
+    ///
+    /// # Errors
+    /// The offending field.
+    pub fn validate(&self, p: &VehicleParams) -> Result<(), crate::vehicle::ParamError> {
+        use crate::vehicle::check_range;
+        check_range("goal.pos.x", self.pos.x, -1e6, 1e6)?;
+        check_range("goal.pos.y", self.pos.y, -1e6, 1e6)?;
+        check_range("goal.beta", self.beta, -1e3, 1e3)?;
+        check_range("goal.dTol", self.d_tol, 0.01, 1e3)?;
+        check_range("goal.epsTol", self.eps_tol, 1e-3, core::f32::consts::PI)?;
+        check_range("goal.speed", self.speed, 0.0, p.v_max)?;
+        Ok(())
+    }
+}
+
+/// Everything one update computed, for the front end and the tests.
+#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct Internals {
+    /// Mode chosen this step.
+    pub mode: Mode,
+    /// Distance to the target, m.
+    pub d: f32,
+    /// Radial angle α (target bearing in the vehicle frame), rad.
+    pub alpha: f32,
+    /// Interpolated η, rad (0 when not looked up).
+    pub eta: f32,
+    /// Δη = β − (θ + α + η), rad.
+    pub delta_eta: f32,
+    /// Applied modulation μ, rad.
+    pub mu: f32,
+    /// Bound on |μ| this step, rad.
+    pub mu_max: f32,
+    /// Modulated heading γ (absolute), rad.
+    pub gamma: f32,
+    /// Whether the table says reachable at the desired speed.
+    pub reachable: bool,
+    /// Desired speed used (fallback when unreachable), m/s.
+    pub v_dt: f32,
+}
+
+/// The default, chosen from the measurements in the README: the literal
+/// bound's shape (vanishing with distance) with six times its authority.
+impl Default for MuBound {
+    fn default() -> Self {
+        Self::ScaledLiteral { gain: 6.0 }
+    }
+}
+
+/// The funnelling controller's settings.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "camelCase")]
+pub struct FunnelConfig {
+    /// How μ is bounded.
+    pub bound: MuBound,
+    /// Fraction of `ε_tol` below which |Δη| counts as "no orientation
+    /// correction needed" (Position_only). Paper 000 Fig. 5 compares with
+    /// `ε_tol` itself (1.0, the default). Smaller values keep funnelling
+    /// longer; measured, they do not improve arrivals (close to the target
+    /// the corrections over-shoot), see the README figures.
+    pub seek_threshold: f32,
+}
+
+impl Default for FunnelConfig {
+    fn default() -> Self {
+        Self {
+            bound: MuBound::default(),
+            seek_threshold: 1.0,
+        }
+    }
+}
+
+/// Per-agent memory of the mode logic: whether the position tolerance has
+/// been met. Paper 000 §5 achieves position and orientation *sequentially*
+/// near the target: once inside the tolerance circle the controller "does
+/// not care anymore about the position" (paper 001 §4.1). A forward-only
+/// vehicle entering at speed cannot stop inside a small circle, so the
+/// fact is latched until the target is farther than
+/// [`FunnelMemory::release_radius`] (a moving target can walk away).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+pub struct FunnelMemory {
+    /// The position tolerance has been met.
+    pub position_met: bool,
+}
+
+impl FunnelMemory {
+    /// Distance beyond which a met position is forgotten: twice the
+    /// tolerance plus the braking distance from full speed.
+    #[must_use]
+    pub fn release_radius(p: &VehicleParams, g: &Goal) -> f32 {
+        2.0 * g.d_tol + p.v_max * p.v_max / (2.0 * p.accel_max)
+    }
+}
+
+/// Speed cap for final halting: the speed from which the vehicle can
+/// still brake to rest at the target with 80 % of its deceleration.
+#[inline]
+#[must_use]
+pub fn halting_speed(p: &VehicleParams, d: f32) -> f32 {
+    (2.0 * 0.8 * p.accel_max * d.max(0.0)).sqrt()
+}
+
+impl FunnelConfig {
+    /// Rejects non-finite or out-of-range settings.
+    ///
+    /// # Errors
+    /// The offending field.
+    pub fn validate(&self) -> Result<(), crate::vehicle::ParamError> {
+        use crate::vehicle::check_range;
+        check_range("funnel.seekThreshold", self.seek_threshold, 0.0, 1.0)?;
+        match self.bound {
+            MuBound::ScaledLiteral { gain } => check_range("funnel.bound.gain", gain, 0.0, 100.0),
+            MuBound::TurningRadius { factor } => {
+                check_range("funnel.bound.factor", factor, 0.0, 1000.0)
+            }
+            MuBound::Literal | MuBound::Constant => Ok(()),
+        }
+    }
+
+    /// The bound on |μ| at distance `d` for orientation error `delta_eta`.
+    #[inline]
+    #[must_use]
+    pub fn mu_max(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        d: f32,
+        delta_eta: f32,
+        v: f32,
+        v_dt: f32,
+    ) -> f32 {
+        match self.bound {
+            MuBound::Literal => table.eta(d, delta_eta, 0.0, v, v_dt).map_or(0.0, f32::abs),
+            MuBound::ScaledLiteral { gain } => {
+                (gain * table.eta(d, delta_eta, 0.0, v, v_dt).map_or(0.0, f32::abs)).min(FRAC_PI_2)
+            }
+            MuBound::TurningRadius { factor } => {
+                let r = factor * p.min_turn_radius(v_dt.max(v));
+                (r / d).atan().min(FRAC_PI_2)
+            }
+            MuBound::Constant => FRAC_PI_2,
+        }
+    }
+
+    /// Chooses the mode and the seek command for one step, without moving
+    /// the vehicle. Returns the internals; `gamma` and `v_dt` are the
+    /// heading and desired speed to feed the seek controller.
+    #[must_use]
+    pub fn plan(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+    ) -> Internals {
+        let rel = g.pos - s.pos;
+        let d = rel.length();
+        let bearing = if d > 1e-6 {
+            rel.y.atan2(rel.x)
+        } else {
+            s.theta
+        };
+        let alpha = diff(bearing, s.theta);
+        let mut v_d = g.speed;
+        if g.halting {
+            v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
+        }
+        let mut out = Internals {
+            d,
+            alpha,
+            gamma: bearing,
+            v_dt: v_d,
+            reachable: true,
+            ..Default::default()
+        };
+        let heading_err = diff(g.beta, s.theta);
+        if d < g.d_tol {
+            mem.position_met = true;
+        } else if d > FunnelMemory::release_radius(p, g) {
+            mem.position_met = false;
+        }
+        if mem.position_met {
+            out.delta_eta = heading_err;
+            if heading_err.abs() < g.eps_tol {
+                out.mode = Mode::EndOfSteering;
+                out.gamma = s.theta;
+                out.v_dt = if g.halting { 0.0 } else { g.speed };
+            } else {
+                out.mode = Mode::OrientationOnly;
+                out.gamma = g.beta;
+                out.v_dt = 0.0;
+            }
+            return out;
+        }
+        let lk = table.lookup(d, alpha, s.omega, s.v, v_d.max(table.axis(4)[0]));
+        out.reachable = lk.reachable;
+        out.v_dt = if lk.reachable { v_d } else { lk.v_dt };
+        out.eta = lk.eta;
+        let final_dir = s.theta + alpha + lk.eta;
+        out.delta_eta = diff(g.beta, final_dir);
+        if d < table.d_eta()
+            || out.delta_eta.abs() < self.seek_threshold * g.eps_tol
+            || !lk.eta_valid
+        {
+            out.mode = Mode::PositionOnly;
+            return out;
+        }
+        out.mode = Mode::Funnelling;
+        out.mu_max = self.mu_max(table, p, d, out.delta_eta, s.v, out.v_dt);
+        out.mu = (-out.delta_eta).clamp(-out.mu_max, out.mu_max);
+        out.gamma = wrap(bearing + out.mu);
+        out
+    }
+
+    /// One funnelling update: plan, then one seek step with the modulated
+    /// heading γ and the desired speed `v_dt` (the vehicle model relaxes
+    /// it to `min(v_dt, A/|ω|)`).
+    pub fn step(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &mut VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+    ) -> Internals {
+        let out = self.plan(table, p, s, g, mem);
+        seek_step(p, s, out.gamma, out.v_dt);
+        out
+    }
+}

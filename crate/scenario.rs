@@ -1,0 +1,248 @@
+//! Scenario files: a documented JSON schema for the runner (`steer run`),
+//! the presets in `scenarios/` and the browser lab.
+//!
+//! Angles are in **degrees** in files (fields ending in `Deg`), distances
+//! in metres, speeds in m/s, times in seconds; everything else in the code
+//! is radians. Unknown fields are rejected, so a typo never silently falls
+//! back to a default.
+//!
+//! ```json
+//! {
+//!   "name": "fig7", "description": "…", "source": "paper 000 Fig. 7",
+//!   "duration": 40,
+//!   "vehicle": { "vMax": 2.0 },                 // optional, VehicleParams
+//!   "funnel": { "bound": { "kind": "literal" } }, // optional, FunnelConfig
+//!   "agents": [{
+//!     "x": 0, "y": 0, "thetaDeg": 0, "v": 0, "omega": 0,
+//!     "goals": [{
+//!       "x": 10, "y": 5, "betaDeg": 90, "dTol": 0.25, "epsTolDeg": 5,
+//!       "speed": 1.3, "halting": true, "switch": "endOfSteering",
+//!       "motion": { "kind": "linear", "velocity": [0.3, 0] }
+//!     }]
+//!   }]
+//! }
+//! ```
+
+use core::fmt;
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
+use crate::funnel::{FunnelConfig, Goal};
+use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
+
+/// A scenario file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+pub struct Scenario {
+    /// Short name.
+    pub name: String,
+    /// What it shows.
+    #[serde(default)]
+    pub description: String,
+    /// Which paper figure it reproduces, if any.
+    #[serde(default)]
+    pub source: String,
+    /// Simulated duration, s.
+    #[serde(default = "default_duration")]
+    pub duration: f32,
+    /// Vehicle parameters (defaults: pedestrian).
+    #[serde(default)]
+    pub vehicle: VehicleParams,
+    /// Funnelling settings.
+    #[serde(default)]
+    pub funnel: FunnelConfig,
+    /// The agents.
+    pub agents: Vec<AgentSpec>,
+}
+
+fn default_duration() -> f32 {
+    60.0
+}
+
+/// An agent in a scenario file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+pub struct AgentSpec {
+    /// Start x, m.
+    pub x: f32,
+    /// Start y, m.
+    pub y: f32,
+    /// Start heading, degrees.
+    #[serde(default)]
+    pub theta_deg: f32,
+    /// Start speed, m/s.
+    #[serde(default)]
+    pub v: f32,
+    /// Start angular speed, rad/s.
+    #[serde(default)]
+    pub omega: f32,
+    /// Goal queue.
+    #[serde(default)]
+    pub goals: Vec<GoalFile>,
+}
+
+/// A goal in a scenario file.
+#[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+pub struct GoalFile {
+    /// Target x, m.
+    pub x: f32,
+    /// Target y, m.
+    pub y: f32,
+    /// Target orientation β, degrees.
+    #[serde(default)]
+    pub beta_deg: f32,
+    /// Position tolerance, m.
+    #[serde(default = "default_d_tol")]
+    pub d_tol: f32,
+    /// Orientation tolerance, degrees.
+    #[serde(default = "default_eps_deg")]
+    pub eps_tol_deg: f32,
+    /// Desired speed, m/s.
+    #[serde(default = "default_speed")]
+    pub speed: f32,
+    /// Arrive at rest.
+    #[serde(default)]
+    pub halting: bool,
+    /// When to move on to the next goal.
+    #[serde(default)]
+    pub switch: SwitchRule,
+    /// How the goal moves.
+    #[serde(default)]
+    pub motion: GoalMotion,
+}
+
+fn default_d_tol() -> f32 {
+    0.25
+}
+fn default_eps_deg() -> f32 {
+    5.0
+}
+fn default_speed() -> f32 {
+    1.3
+}
+
+/// Why a scenario was refused.
+#[derive(Debug)]
+pub enum ScenarioError {
+    /// Not valid JSON for the schema (message from the parser, with line).
+    Parse(String),
+    /// A value is invalid.
+    Param(ParamError),
+    /// Something else is inconsistent.
+    Invalid(String),
+}
+
+impl fmt::Display for ScenarioError {
+    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
+        match self {
+            Self::Parse(m) => write!(f, "scenario is not valid: {m}"),
+            Self::Param(e) => write!(f, "scenario has an invalid value: {e}"),
+            Self::Invalid(m) => write!(f, "scenario is inconsistent: {m}"),
+        }
+    }
+}
+
+impl std::error::Error for ScenarioError {}
+
+impl From<ParamError> for ScenarioError {
+    fn from(e: ParamError) -> Self {
+        Self::Param(e)
+    }
+}
+
+impl GoalFile {
+    /// Converts to the internal (radian) form.
+    #[must_use]
+    pub fn to_spec(&self) -> GoalSpec {
+        GoalSpec {
+            goal: Goal {
+                pos: Vec2::new(self.x, self.y),
+                beta: self.beta_deg.to_radians(),
+                d_tol: self.d_tol,
+                eps_tol: self.eps_tol_deg.to_radians(),
+                speed: self.speed,
+                halting: self.halting,
+            },
+            motion: self.motion,
+            switch: self.switch,
+        }
+    }
+}
+
+impl Scenario {
+    /// Parses a scenario from JSON text.
+    ///
+    /// # Errors
+    /// [`ScenarioError::Parse`] with the parser's message and position.
+    pub fn from_json(text: &str) -> Result<Self, ScenarioError> {
+        let s: Self =
+            serde_json::from_str(text).map_err(|e| ScenarioError::Parse(e.to_string()))?;
+        s.validate()?;
+        Ok(s)
+    }
+
+    /// Checks every value.
+    ///
+    /// # Errors
+    /// The first invalid value.
+    pub fn validate(&self) -> Result<(), ScenarioError> {
+        self.vehicle.validate()?;
+        self.funnel.validate()?;
+        crate::vehicle::check_range("duration", self.duration, 0.0, 3600.0)?;
+        if self.agents.len() > 100_000 {
+            return Err(ScenarioError::Invalid(format!(
+                "{} agents (at most 100,000)",
+                self.agents.len()
+            )));
+        }
+        for (i, a) in self.agents.iter().enumerate() {
+            let st = VehicleState::new(Vec2::new(a.x, a.y), a.theta_deg.to_radians(), a.v, a.omega);
+            st.validate(&self.vehicle)
+                .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
+            for g in &a.goals {
+                g.to_spec()
+                    .goal
+                    .validate(&self.vehicle)
+                    .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
+                if let GoalMotion::FaceAgent { agent, .. } = g.motion {
+                    if agent >= self.agents.len() || agent == i {
+                        return Err(ScenarioError::Invalid(format!(
+                            "agent {i} faces agent {agent}, which does not exist or is itself"
+                        )));
+                    }
+                }
+            }
+        }
+        Ok(())
+    }
+
+    /// Builds the world.
+    ///
+    /// # Errors
+    /// Any invalid agent or goal, naming the agent.
+    pub fn world(&self) -> Result<World, ScenarioError> {
+        self.validate()?;
+        let mut w = World::new(self.vehicle, self.funnel)?;
+        for (i, a) in self.agents.iter().enumerate() {
+            let st = VehicleState::new(
+                Vec2::new(a.x, a.y),
+                crate::angle::wrap(a.theta_deg.to_radians()),
+                a.v,
+                a.omega,
+            );
+            let goals = a.goals.iter().map(GoalFile::to_spec).collect();
+            w.add_agent(st, goals)
+                .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
+        }
+        Ok(w)
+    }
+
+    /// Number of steps for the duration.
+    #[must_use]
+    pub fn steps(&self) -> u32 {
+        (self.duration / self.vehicle.dt).round() as u32
+    }
+}

@@ -1,0 +1,87 @@
+#!/usr/bin/env python3
+"""Writes the paper-figure presets in this folder (deterministic: fixed seeds).
+
+Run from the repository root: python3 scenarios/make_presets.py
+Schema: crate/scenario.rs. Angles in degrees, distances in metres.
+"""
+import json, math, random, os
+
+HERE = os.path.dirname(os.path.abspath(__file__))
+
+def goal(x, y, beta, **kw):
+    g = {"x": round(x, 3), "y": round(y, 3), "betaDeg": round(beta, 2)}
+    g.update(kw)
+    return g
+
+def agent(x, y, theta, goals, v=0.0):
+    return {"x": round(x, 3), "y": round(y, 3), "thetaDeg": round(theta, 2), "v": v, "goals": goals}
+
+def write(name, source, description, agents, duration=40.0, **extra):
+    sc = {"name": name, "source": source, "description": description, "duration": duration, "agents": agents}
+    sc.update(extra)
+    with open(os.path.join(HERE, name + ".json"), "w") as f:
+        json.dump(sc, f, indent=1)
+        f.write("\n")
+
+# Paper 000 Fig. 1 / paper 001 Fig. 1a: plain seek to three position goals
+# (orientation tolerance 180 degrees, so no orientation is enforced).
+write("p000_fig1_seek", "paper 000 Fig. 1, paper 001 Fig. 1a",
+      "Seek: three agents reach three position targets without a prescribed orientation (red circles).",
+      [agent(0, 0, 0, [goal(6, 4, 0, epsTolDeg=180, halting=True)]),
+       agent(0, -1, 0, [goal(7, -2, 0, epsTolDeg=180, halting=True)]),
+       agent(0, -2, 0, [goal(-3, -5, 0, epsTolDeg=180, halting=True)])], duration=20)
+
+# Paper 000 Fig. 3 / paper 001 Fig. 1b: the same targets with prescribed orientations.
+write("p000_fig3_funnel", "paper 000 Fig. 3, paper 001 Fig. 1b",
+      "Funnelling: the same three targets, now each with a prescribed orientation (circle + triangle).",
+      [agent(0, 0, 0, [goal(6, 4, -90, halting=True)]),
+       agent(0, -1, 0, [goal(7, -2, 90, halting=True)]),
+       agent(0, -2, 0, [goal(-3, -5, 0, halting=True)])], duration=25)
+
+# Paper 000 Fig. 6: pairs meeting face to face, each goal is the other's pose, with halting.
+pairs = []
+for k, (ax, ay, at, bx, by, bt) in enumerate([(-6, 4, 0, 6, 6, 180), (-5, 0, 30, 7, -1, 150), (-6, -5, -20, 4, -7, 90)]):
+    i = 2 * k
+    pairs.append(agent(ax, ay, at, [goal(bx, by, 0, dTol=1.2, epsTolDeg=10, speed=1.2, halting=True,
+                                         motion={"kind": "faceAgent", "agent": i + 1, "distance": 0.0})], v=1.0))
+    pairs.append(agent(bx, by, bt, [goal(ax, ay, 0, dTol=1.2, epsTolDeg=10, speed=1.2, halting=True,
+                                         motion={"kind": "faceAgent", "agent": i, "distance": 0.0})], v=1.0))
+write("p000_fig6_face_to_face", "paper 000 Fig. 6",
+      "Dynamic targets with final halting: pairs of agents whose goals are each other's pose meet face to face.",
+      pairs, duration=30)
+
+# Paper 000 Fig. 7: a wide variety of relative orientations and distances, successive targets, halting.
+rnd = random.Random(7)
+agents = []
+for i in range(8):
+    a = i * 45.0
+    x, y = 12 * math.cos(math.radians(a)), 12 * math.sin(math.radians(a))
+    goals = []
+    for j in range(3):
+        r = rnd.uniform(3, 16)
+        b = rnd.uniform(-180, 180)
+        gx, gy = x + r * math.cos(math.radians(b)), y + r * math.sin(math.radians(b))
+        goals.append(goal(gx, gy, rnd.uniform(-180, 180), halting=(j == 2), switch="endOfSteering"))
+        x, y = gx, gy
+    agents.append(agent(12 * math.cos(math.radians(a)), 12 * math.sin(math.radians(a)), rnd.uniform(-180, 180), goals))
+write("p000_fig7_variety", "paper 000 Fig. 7",
+      "A wide variety of relative orientations and distances, three successive targets each, final halting.",
+      agents, duration=90)
+
+# Paper 000 Fig. 8: 80 entities assigned to five moving targets (targets circle slowly).
+rnd = random.Random(8)
+agents = []
+centres = [(0, 0), (25, 10), (-25, 12), (15, -22), (-18, -20)]
+for i in range(80):
+    t = i % 5
+    cx, cy = centres[t]
+    a = rnd.uniform(0, 360)
+    r = rnd.uniform(15, 35)
+    x, y = cx + r * math.cos(math.radians(a)), cy + r * math.sin(math.radians(a))
+    agents.append(agent(x, y, rnd.uniform(-180, 180), [goal(cx + 3, cy, 90, dTol=0.5, epsTolDeg=10, speed=rnd.uniform(1.0, 1.8),
+                                                             motion={"kind": "circle", "center": [cx, cy], "angularSpeed": 0.05})],
+                        v=rnd.uniform(0, 1.5)))
+write("p000_fig8_eighty", "paper 000 Fig. 8",
+      "Performance case: 80 agents assigned to five slowly moving oriented targets; draw 500-point traces.",
+      agents, duration=60)
+print("presets written to", HERE)
