@@ -5,7 +5,7 @@ import { readFileSync, readdirSync, existsSync } from "node:fs";
 import { resolve, basename } from "node:path";
 import type { IncomingMessage, ServerResponse } from "node:http";
 
-const TABLES = resolve(__dirname, "../tables");
+const TABLES = resolve(import.meta.dirname, "../tables");
 
 function serveTables(req: IncomingMessage, res: ServerResponse, next: () => void): void {
   const url = req.url ?? "";
@@ -40,10 +40,14 @@ function tables(): Plugin {
   };
 }
 
+// Cross-origin isolation gives performance.now() 5 µs resolution (instead
+// of 100 µs), which the HUD's µs-per-update figure needs.
+const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
+
 export default defineConfig({
   base: "./",
   plugins: [tables()],
-  server: { host: "127.0.0.1", fs: { allow: [".."] } },
-  preview: { host: "127.0.0.1" },
+  server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
+  preview: { host: "127.0.0.1", headers: ISOLATION },
   build: { target: "es2022", sourcemap: false },
 });

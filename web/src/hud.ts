@@ -37,7 +37,7 @@ export function renderHud(el: HTMLElement, h: HudData): void {
     `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
     `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,
-    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${h.paused ? "  ⏸" : ""}${h.slow ? "  ×¼" : ""}`,
+    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`,
   ];
   el.textContent = lines.join("\n");
 }

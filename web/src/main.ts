@@ -16,8 +16,8 @@ import {
   createLab,
   errorText,
   FIELD_STRIDE,
-  GOAL_STRIDE,
   loadCore,
+  S,
   STATE_STRIDE,
   type GoalConfig,
   type Internals,
@@ -28,6 +28,9 @@ import {
 const DEG = Math.PI / 180;
 const HANDLE_PX = 56;
 const TABLE_URL = "tables/eta.bin";
+const PLAYGROUND_HELP =
+  "Playground: drag the vehicle (body: position, white knob: heading), the target (centre), its β knob, " +
+  "the tolerance circle's rim and the triangle's corner. The target shows the controller's mode live.";
 
 /** What the end-to-end tests and the perf harness read (window.__lab). */
 export interface LabHook {
@@ -113,14 +116,6 @@ async function start(): Promise<void> {
   }
   const defaults: VehicleParams = lab.params();
 
-  const canvas = $<HTMLCanvasElement>("lab");
-  const view = new View();
-  let surface: Surface | null = null;
-  surface = setupCanvas(canvas, (s) => {
-    view.resize(s.width, s.height);
-    dirty = true;
-  });
-
   // ---- simulation state owned by the page ----------------------------------
   const trails = new Trails(200, 3000);
   let paused = false;
@@ -131,8 +126,14 @@ async function start(): Promise<void> {
   let usPerUpdate = 0;
   let fieldCache: { key: string; samples: Float32Array } | null = null;
   let stateBuf: Float32Array = new Float32Array(0);
-  let goalBuf: Float32Array = new Float32Array(0);
   let count = 0;
+
+  const canvas = $<HTMLCanvasElement>("lab");
+  const view = new View();
+  const surface: Surface = setupCanvas(canvas, (sf) => {
+    view.resize(sf.width, sf.height);
+    dirty = true;
+  });
 
   const params = (): VehicleParams => ({ ...defaults, ...st.limits });
   const goal = (): GoalConfig => ({
@@ -158,20 +159,34 @@ async function start(): Promise<void> {
   const pull = (): void => {
     count = lab.count();
     stateBuf = lab.state();
-    goalBuf = lab.goals();
     dirty = true;
+  };
+
+  /** Internals of agent i, or null (no such agent: the world is being rebuilt). */
+  const internalsOf = (i: number): Internals | null => {
+    if (i < 0 || i >= count) return null;
+    try {
+      return lab.internals(i);
+    } catch {
+      return null;
+    }
   };
 
   const applyParams = (): void => {
     try {
-      lab.setParams(params());
+      const warning = lab.setParams(params());
+      if (warning) showMessage(`Vehicle limits: ${warning}`, "warn");
     } catch (e) {
       showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
     }
   };
 
+  let generation = 0;
+  let dt = defaults.dt;
   const rebuild = async (fit: boolean): Promise<void> => {
+    const gen = ++generation;
     lab.clear();
+    pull();
     applyParams();
     trails.clear();
     simTime = 0;
@@ -181,14 +196,19 @@ async function start(): Promise<void> {
       const p = findPreset(st.preset);
       try {
         if (!p) throw new Error(`no preset named ${st.preset}`);
-        const info = lab.loadScenario(await p.load());
+        const text = await p.load();
+        if (gen !== generation) return;
+        const info = lab.loadScenario(text);
+        caption.textContent = `${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`;
+        if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
         if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
       } catch (e) {
         showMessage(`Preset ${st.preset} could not be loaded: ${errorText(e)}`, "error");
       }
     } else {
+      caption.textContent = PLAYGROUND_HELP;
       try {
-        lab.addAgent({ x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [goal()], loopGoals: false });
+        lab.addAgent({ x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [goal()] });
         focus = 0;
         if (st.agents > 0) lab.spawnRandom(st.agents, st.seed, Math.max(10, Math.sqrt(st.agents) * 1.5), st.speed);
       } catch (e) {
@@ -205,6 +225,7 @@ async function start(): Promise<void> {
         }
       }
     }
+    dt = lab.params().dt;
     pull();
     trails.record(0, stateBuf, STATE_STRIDE, count);
   };
@@ -234,9 +255,10 @@ async function start(): Promise<void> {
 
   // ---- panel ---------------------------------------------------------------
   const panel = $("panel");
+  const caption = $("caption");
   const controls: Record<string, Control> = {};
   const transport = $("transport");
-  const playBtn = button(transport, "play", "⏸ Pause", "Play / pause (space)", () => setPaused(!paused));
+  const playBtn = button(transport, "play", "Pause", "Play / pause (space)", () => setPaused(!paused));
   button(transport, "step", "Step", "Single step (s)", () => stepOnce());
   const slowBtn = button(transport, "slow", "Slow ×¼", "Slow motion", () => {
     st.slow = !st.slow;
@@ -248,13 +270,13 @@ async function start(): Promise<void> {
 
   const setPaused = (p: boolean): void => {
     paused = p;
-    playBtn.textContent = paused ? "▶ Play" : "⏸ Pause";
+    playBtn.textContent = paused ? "▶ Play" : "Pause";
     playBtn.setAttribute("aria-pressed", String(paused));
   };
   const stepOnce = (): void => {
     setPaused(true);
     lab.step(1);
-    simTime += defaults.dt;
+    simTime += dt;
     pull();
     trails.record(simTime, stateBuf, STATE_STRIDE, count);
   };
@@ -492,10 +514,11 @@ async function start(): Promise<void> {
     if (count > 2000) return out;
     for (let i = 0; i < count; i++) {
       if (i === focus) continue;
-      const g = i * GOAL_STRIDE;
-      const x = goalBuf[g]!;
-      if (Number.isNaN(x)) continue;
-      out.push({ x, y: goalBuf[g + 1]!, beta: goalBuf[g + 2]!, dTol: goalBuf[g + 3]!, epsTol: goalBuf[g + 4]!, mode: stateBuf[i * STATE_STRIDE + 5]! });
+      const o = i * STATE_STRIDE;
+      out.push({
+        x: stateBuf[o + S.goalX]!, y: stateBuf[o + S.goalY]!, beta: stateBuf[o + S.goalBeta]!,
+        dTol: stateBuf[o + S.goalDTol]!, epsTol: stateBuf[o + S.goalEpsTol]!, mode: stateBuf[o + S.mode]!,
+      });
     }
     return out;
   };
@@ -506,7 +529,6 @@ async function start(): Promise<void> {
     const t0 = performance.now();
     let stepMs = 0;
     if (!paused && count > 0) {
-      const dt = lab.params().dt;
       acc += Math.min(0.1, interval / 1000) * (st.slow ? 0.25 : 1);
       let k = Math.floor(acc / dt);
       if (k > 4) { k = 4; acc = 0; } else acc -= k * dt;
@@ -520,17 +542,17 @@ async function start(): Promise<void> {
         if (st.overlays.trails && count <= trails.maxAgents) trails.record(simTime, stateBuf, STATE_STRIDE, count);
       }
     }
-    if (surface && (dirty || !paused)) {
+    if (dirty || !paused) {
       beginFrame(surface, COLOURS.background);
-      const inter = focus >= 0 && focus < count ? lab.internals(focus) : count > 0 ? lab.internals(0) : null;
+      const inter = internalsOf(focus >= 0 ? focus : 0);
       const who = focus >= 0 ? focus : 0;
       const pose = agentPose(who);
       let overlay: Overlay | null = null;
       if (inter && count > 0) {
-        const g = who * GOAL_STRIDE;
+        const g = who * STATE_STRIDE;
         overlay = {
           x: pose.x, y: pose.y, theta: pose.theta,
-          targetX: goalBuf[g] ?? 0, targetY: goalBuf[g + 1] ?? 0,
+          targetX: stateBuf[g + S.goalX] ?? 0, targetY: stateBuf[g + S.goalY] ?? 0,
           etaDir: st.overlays.eta && Number.isFinite(inter.eta) ? pose.theta + inter.alpha + inter.eta : null,
           gamma: st.overlays.gamma && Number.isFinite(inter.gamma) ? inter.gamma : null,
           arc: st.overlays.arc && inter.arc ? { r: inter.arc.radius, a0: pose.theta + inter.arc.alphaMin, a1: pose.theta + inter.arc.alphaMax, ar: pose.theta + inter.arc.alphaR } : null,
@@ -538,7 +560,7 @@ async function start(): Promise<void> {
       }
       let ring: FieldDraw | null = null;
       if (st.overlays.ring && count > 0) {
-        ring = { samples: lab.etaRing(who), originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
+        ring = { samples: count > who ? lab.etaRing(who) : new Float32Array(0), originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
       }
       let field: FieldDraw | null = null;
       if (st.overlays.field && count > 0) {
@@ -581,8 +603,8 @@ async function start(): Promise<void> {
 
   // ---- hook ------------------------------------------------------------------
   hook.count = () => count;
-  hook.mode = () => (count > 0 ? (lab.internals(focus >= 0 ? focus : 0)?.mode ?? null) : null);
-  hook.internals = () => (count > 0 ? lab.internals(focus >= 0 ? focus : 0) : null);
+  hook.mode = () => internalsOf(focus >= 0 ? focus : 0)?.mode ?? null;
+  hook.internals = () => internalsOf(focus >= 0 ? focus : 0);
   hook.state = () => structuredClone(st);
   hook.handles = handles;
   hook.setPreset = setPreset;

@@ -14,10 +14,14 @@ import type {
 export type { AgentConfig, GoalConfig, Internals, ScenarioInfo, TableInfo, VehicleParams };
 export { Lab };
 
-/** Floats per agent in `Lab.state()`: x, y, θ, v, ω, mode. */
-export const STATE_STRIDE = 6;
-/** Floats per agent in `Lab.goals()`: x, y, β, D_tol, ε_tol (NaN: no goal). */
-export const GOAL_STRIDE = 5;
+/** Floats per agent in `Lab.state()` (crate::world::STATE_STRIDE). */
+export const STATE_STRIDE = 19;
+/** Offsets within one agent's record of `Lab.state()`. */
+export const S = {
+  x: 0, y: 1, theta: 2, v: 3, omega: 4, mode: 5,
+  d: 6, alpha: 7, eta: 8, deltaEta: 9, mu: 10, gamma: 11, reachable: 12, vDt: 13,
+  goalX: 14, goalY: 15, goalBeta: 16, goalDTol: 17, goalEpsTol: 18,
+} as const;
 /** Floats per sample in `Lab.etaField()` / `Lab.etaRing()`: D, α, α+η, reachable. */
 export const FIELD_STRIDE = 4;
 
@@ -25,7 +29,12 @@ let ready: Promise<string> | null = null;
 
 /** Instantiates the wasm module once; resolves to the core's version. */
 export function loadCore(): Promise<string> {
-  ready ??= init().then(() => version());
+  ready ??= init().then(() => {
+    if (Lab.stateStride() !== STATE_STRIDE) {
+      throw new Error(`the core writes ${Lab.stateStride()} floats per agent, the page expects ${STATE_STRIDE}: rebuild both`);
+    }
+    return version();
+  });
   return ready;
 }
 

@@ -26,7 +26,13 @@ const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}
 async function colours(page, at, radius) {
   return page.evaluate(({ at, radius }) => {
     const c = document.getElementById("lab");
-    const ctx = c.getContext("2d");
+    // Read a copy: repeated getImageData on the page's own context would
+    // (rightly) make Chromium warn about readbacks.
+    const copy = document.createElement("canvas");
+    copy.width = c.width;
+    copy.height = c.height;
+    const ctx = copy.getContext("2d", { willReadFrequently: true });
+    ctx.drawImage(c, 0, 0);
     const k = c.width / c.getBoundingClientRect().width;
     const x0 = Math.max(0, Math.round((at.x - radius) * k));
     const y0 = Math.max(0, Math.round((at.y - radius) * k));
