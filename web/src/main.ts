@@ -7,7 +7,7 @@ import { downloadCsv, downloadJson, downloadPng } from "./export";
 import { renderHud } from "./hud";
 import { attachPointer, type Drag } from "./pointer";
 import { findPreset, PRESETS, presetNames } from "./presets";
-import { COLOURS, drawScene, type FieldDraw, type Overlay, type Scene, type TargetDraw } from "./render";
+import { COLOURS, CROWD_THRESHOLD, drawScene, type FieldDraw, type Overlay, type Scene, type TargetDraw } from "./render";
 import { defaultState, type LabState, type Overlays } from "./state";
 import { Trails } from "./trails";
 import { decodeState, encodeState } from "./urlstate";
@@ -51,7 +51,7 @@ export interface LabHook {
   presets(): string[];
   setPaused(p: boolean): void;
   perfReset(): void;
-  perfStats(): { frames: number; meanIntervalMs: number; meanWorkMs: number; p95WorkMs: number; meanStepMs: number; agents: number };
+  perfStats(): { frames: number; meanIntervalMs: number; meanWorkMs: number; p95WorkMs: number; meanStepMs: number; meanDrawMs: number; agents: number };
 }
 
 declare global {
@@ -89,7 +89,7 @@ const hook: LabHook = {
   presets: () => presetNames(),
   setPaused: () => {},
   perfReset: () => {},
-  perfStats: () => ({ frames: 0, meanIntervalMs: 0, meanWorkMs: 0, p95WorkMs: 0, meanStepMs: 0, agents: 0 }),
+  perfStats: () => ({ frames: 0, meanIntervalMs: 0, meanWorkMs: 0, p95WorkMs: 0, meanStepMs: 0, meanDrawMs: 0, agents: 0 }),
 };
 window.__lab = hook;
 
@@ -505,13 +505,13 @@ async function start(): Promise<void> {
 
   // ---- frame loop --------------------------------------------------------------
   const hudEl = $("hud");
-  const perf = { intervals: [] as number[], work: [] as number[], step: [] as number[] };
+  const perf = { intervals: [] as number[], work: [] as number[], step: [] as number[], draw: [] as number[] };
   let lastFrame = performance.now();
   let frameMsEma = 0;
 
   const targetsOf = (): TargetDraw[] => {
     const out: TargetDraw[] = [];
-    if (count > 2000) return out;
+    if (count > CROWD_THRESHOLD) return out;
     for (let i = 0; i < count; i++) {
       if (i === focus) continue;
       const o = i * STATE_STRIDE;
@@ -528,6 +528,7 @@ async function start(): Promise<void> {
     lastFrame = now;
     const t0 = performance.now();
     let stepMs = 0;
+    let drawMs = 0;
     if (!paused && count > 0) {
       acc += Math.min(0.1, interval / 1000) * (st.slow ? 0.25 : 1);
       let k = Math.floor(acc / dt);
@@ -579,7 +580,9 @@ async function start(): Promise<void> {
         showRadial: st.overlays.radial,
         ring, field, handlePx: HANDLE_PX,
       };
+      const d0 = performance.now();
       drawScene(surface, view, scene);
+      drawMs = performance.now() - d0;
       renderHud(hudEl, {
         mode: inter?.mode ?? null,
         d: inter?.d ?? NaN, alpha: inter?.alpha ?? NaN, eta: inter?.eta ?? NaN,
@@ -597,7 +600,8 @@ async function start(): Promise<void> {
     perf.intervals.push(interval);
     perf.work.push(work);
     perf.step.push(stepMs);
-    if (perf.intervals.length > 2000) { perf.intervals.shift(); perf.work.shift(); perf.step.shift(); }
+    perf.draw.push(drawMs);
+    if (perf.intervals.length > 2000) { perf.intervals.shift(); perf.work.shift(); perf.step.shift(); perf.draw.shift(); }
     requestAnimationFrame(frame);
   };
 
@@ -609,7 +613,7 @@ async function start(): Promise<void> {
   hook.handles = handles;
   hook.setPreset = setPreset;
   hook.setPaused = setPaused;
-  hook.perfReset = () => { perf.intervals = []; perf.work = []; perf.step = []; };
+  hook.perfReset = () => { perf.intervals = []; perf.work = []; perf.step = []; perf.draw = []; };
   hook.perfStats = () => {
     const mean = (a: number[]): number => (a.length ? a.reduce((x, y) => x + y, 0) / a.length : 0);
     const sorted = [...perf.work].sort((a, b) => a - b);
@@ -619,6 +623,7 @@ async function start(): Promise<void> {
       meanWorkMs: mean(perf.work),
       p95WorkMs: sorted[Math.floor(sorted.length * 0.95)] ?? 0,
       meanStepMs: mean(perf.step),
+      meanDrawMs: mean(perf.draw),
       agents: count,
     };
   };
