@@ -21,6 +21,7 @@ pub mod study;
 pub mod table;
 pub mod table_gen;
 pub mod vehicle;
+pub mod wander;
 pub mod world;
 
 /// The JavaScript boundary (WebAssembly builds only).
