@@ -280,12 +280,16 @@ struct GoalConfig {
     #[serde(default)]
     halting: bool,
     #[serde(default)]
-    #[allow(dead_code)]
     relaxed: bool,
 }
 
 impl GoalConfig {
     fn to_spec(&self, p: &VehicleParams) -> Result<GoalSpec, JsError> {
+        if self.relaxed {
+            return Err(JsError::new(
+                "relaxed funnelling (paper 001) is not in the core yet: untick \"relaxed\"",
+            ));
+        }
         let goal = Goal {
             pos: Vec2::new(self.x, self.y),
             beta: self.beta,

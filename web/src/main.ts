@@ -302,7 +302,13 @@ async function start(): Promise<void> {
   goalRow.className = "row";
   goalBox.append(goalRow);
   checkbox(goalRow, "halting", "final halting", st.halting, (v) => { st.halting = v; updateGoal(); });
-  checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
+  const relaxedBox = checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
+  if (!st.relaxed) {
+    // Relaxed funnelling (paper 001 §4) is not in the core yet; the core
+    // refuses `relaxed: true` with a message, so a link asking for it says so.
+    relaxedBox.el.querySelector("input")?.setAttribute("disabled", "");
+    relaxedBox.el.title = "relaxed funnelling (paper 001) is not in the core yet";
+  }
 
   const limBox = section(panel, "Vehicle limits");
   const lim = (id: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", label: string, unit: string, max: number): void => {
@@ -326,6 +332,9 @@ async function start(): Promise<void> {
   ov("gamma", "heading γ");
   ov("ring", "nearest η ring");
   ov("arc", "relaxed arc 𝒜, α_r");
+  const arcInput = document.getElementById("ov-arc");
+  arcInput?.setAttribute("disabled", "");
+  if (arcInput?.parentElement) arcInput.parentElement.title = "drawn once the core has relaxed funnelling (paper 001)";
   ov("trails", "trails");
   ov("field", "η field (Fig. 3b/c)");
 

@@ -7,6 +7,7 @@
 import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
+import { readFileSync, copyFileSync } from "node:fs";
 
 let passed = 0;
 let failed = 0;
@@ -157,6 +158,44 @@ try {
     await page.locator("#ov-ring").uncheck();
   });
 
+  await check("exports: trajectories as CSV and JSON, the canvas as PNG", async () => {
+    await page.evaluate(() => window.__lab.setPaused(false));
+    await page.waitForTimeout(500);
+    const grab = async (id, name) => {
+      const [dl] = await Promise.all([page.waitForEvent("download"), page.click(`#${id}`)]);
+      const dest = resolve(artifacts, name);
+      copyFileSync(await dl.path(), dest);
+      assert.equal(dl.suggestedFilename(), name);
+      return readFileSync(dest);
+    };
+    const csv = (await grab("csv", "trajectories.csv")).toString("utf8").split("\n");
+    assert.equal(csv[0], "agent,t_s,x_m,y_m,theta_rad,v_mps,omega_radps,mode");
+    assert.ok(csv.length > 10, `${csv.length} CSV lines`);
+    assert.match(csv[5], /^0,[0-9.]+,-?[0-9.]+,-?[0-9.]+,-?[0-9.]+,[0-9.]+,-?[0-9.]+,(Funnelling|Position_only|Orientation_only|End_of_Steering)$/);
+    const json = JSON.parse((await grab("json", "trajectories.json")).toString("utf8"));
+    assert.equal(json.agents.length, 1);
+    assert.ok(json.agents[0].x.length > 5 && json.units.theta === "rad");
+    const png = await grab("png", "steering-lab.png");
+    assert.deepEqual([...png.subarray(0, 4)], [0x89, 0x50, 0x4e, 0x47]);
+    await page.evaluate(() => window.__lab.setPaused(true));
+  });
+
+  await check("the canvas follows the window size (HiDPI kept)", async () => {
+    const size = () => page.evaluate(() => {
+      const c = document.getElementById("lab");
+      return { w: c.width, h: c.height, cw: c.getBoundingClientRect().width };
+    });
+    const a = await size();
+    await page.setViewportSize({ width: 900, height: 640 });
+    await page.waitForTimeout(200);
+    const b = await size();
+    assert.ok(b.w < a.w && b.h < a.h, `${JSON.stringify(a)} -> ${JSON.stringify(b)}`);
+    assert.ok(Math.abs(b.w - b.cw * 2) <= 2);
+    await shot(page, "09-resized-900x640");
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.waitForTimeout(200);
+  });
+
   await check("the URL state round-trips into a fresh page", async () => {
     await page.waitForTimeout(400);
     const href = page.url();
@@ -204,6 +243,27 @@ try {
     await shot(p4.page, "07-corrupt-table-message");
     allProblems.push(...p4.problems);
     await p4.context.close();
+  });
+
+  await check("touch: a finger drags the target (pointer events with capture)", async () => {
+    const t = await openPage(browser, { width: 800, height: 600 }, 1, { hasTouch: true, isMobile: false });
+    await t.page.goto(url);
+    assert.equal(await waitReady(t.page), null);
+    await t.page.evaluate(() => window.__lab.setPaused(true));
+    const h = await t.page.evaluate(() => window.__lab.handles());
+    const box = await t.page.locator("#lab").boundingBox();
+    const cdp = await t.context.newCDPSession(t.page);
+    const at = (p) => [{ x: box.x + p.x, y: box.y + p.y }];
+    await cdp.send("Input.dispatchTouchEvent", { type: "touchStart", touchPoints: at(h.target) });
+    for (let i = 1; i <= 10; i++) {
+      await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: at({ x: h.target.x - 12 * i, y: h.target.y + 8 * i }) });
+    }
+    await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
+    await t.page.waitForTimeout(50);
+    const h2 = await t.page.evaluate(() => window.__lab.handles());
+    assert.ok(Math.abs(h2.target.x - (h.target.x - 120)) < 3 && Math.abs(h2.target.y - (h.target.y + 80)) < 3, `${JSON.stringify(h.target)} -> ${JSON.stringify(h2.target)}`);
+    allProblems.push(...t.problems);
+    await t.context.close();
   });
 
   const presets = await page.evaluate(() => window.__lab.presets());

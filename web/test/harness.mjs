@@ -43,8 +43,8 @@ export async function launch() {
 }
 
 /** Opens a page that records console errors/warnings and page errors. */
-export async function openPage(browser, viewport = { width: 1280, height: 800 }, deviceScaleFactor = 1) {
-  const context = await browser.newContext({ viewport, deviceScaleFactor });
+export async function openPage(browser, viewport = { width: 1280, height: 800 }, deviceScaleFactor = 1, extra = {}) {
+  const context = await browser.newContext({ viewport, deviceScaleFactor, ...extra });
   const page = await context.newPage();
   const problems = [];
   page.on("console", (m) => {
