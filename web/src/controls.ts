@@ -84,7 +84,7 @@ export function button(parent: HTMLElement, id: string, label: string, title: st
   return b;
 }
 
-export function section(parent: HTMLElement, title: string): HTMLElement {
+export function section(parent: HTMLElement, title: string): HTMLFieldSetElement {
   const box = document.createElement("fieldset");
   const legend = document.createElement("legend");
   legend.textContent = title;

@@ -199,6 +199,7 @@ async function start(): Promise<void> {
         const text = await p.load();
         if (gen !== generation) return;
         const info = lab.loadScenario(text);
+        goalBox.disabled = true;
         caption.textContent = `${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`;
         if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
         if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
@@ -207,6 +208,7 @@ async function start(): Promise<void> {
       }
     } else {
       caption.textContent = PLAYGROUND_HELP;
+      goalBox.disabled = false;
       try {
         lab.addAgent({ x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [goal()] });
         focus = 0;

@@ -60,7 +60,7 @@ export function defaultState(): LabState {
     halting: true,
     relaxed: false,
     limits: {},
-    overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: true },
+    overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     preset: "",
     agents: 0,
