@@ -5,17 +5,16 @@ import { beginFrame, setupCanvas, type Surface } from "./canvas";
 import { button, checkbox, section, slider, type Control } from "./controls";
 import { downloadCsv, downloadJson, downloadPng } from "./export";
 import { renderHud } from "./hud";
-import { attachPointer, type Drag } from "./pointer";
+import { attachDrags, handlePositions, type Handles } from "./handles";
 import { findPreset, PRESETS, presetNames } from "./presets";
 import { COLOURS, CROWD_THRESHOLD, drawScene, type FieldDraw, type Overlay, type Scene, type TargetDraw } from "./render";
-import { defaultState, type LabState, type Overlays } from "./state";
+import { defaultState, type LabState, type Overlays, type Pose } from "./state";
 import { Trails } from "./trails";
 import { decodeState, encodeState } from "./urlstate";
-import { View, type Vec } from "./view";
+import { View } from "./view";
 import {
   createLab,
   errorText,
-  FIELD_STRIDE,
   loadCore,
   S,
   STATE_STRIDE,
@@ -46,7 +45,7 @@ export interface LabHook {
   internals(): Internals | null;
   state(): LabState;
   /** CSS-pixel canvas coordinates of the focus target's centre, rim, handles and of the vehicle. */
-  handles(): { target: Vec; rim: Vec; beta: Vec; opening: Vec; vehicle: Vec; heading: Vec } | null;
+  handles(): Handles | null;
   setPreset(name: string): Promise<void>;
   presets(): string[];
   setPaused(p: boolean): void;
@@ -404,115 +403,22 @@ async function start(): Promise<void> {
   });
 
   // ---- dragging --------------------------------------------------------------
-  const agentPose = (i: number): { x: number; y: number; theta: number } => ({
-    x: stateBuf[i * STATE_STRIDE] ?? 0,
-    y: stateBuf[i * STATE_STRIDE + 1] ?? 0,
-    theta: stateBuf[i * STATE_STRIDE + 2] ?? 0,
+  const agentPose = (i: number): Pose => ({
+    x: stateBuf[i * STATE_STRIDE + S.x] ?? 0,
+    y: stateBuf[i * STATE_STRIDE + S.y] ?? 0,
+    theta: stateBuf[i * STATE_STRIDE + S.theta] ?? 0,
   });
-  const handles = (): ReturnType<LabHook["handles"]> => {
-    if (focus < 0 || focus >= count) return null;
-    const c = view.toScreen(st.target.x, st.target.y);
-    const b = st.target.theta;
-    const r = st.dTol * view.scale;
-    const v = agentPose(focus);
-    const vs = view.toScreen(v.x, v.y);
-    const a1 = b + st.epsTol;
-    return {
-      target: c,
-      rim: { x: c.x + Math.cos(b + Math.PI / 2) * r, y: c.y - Math.sin(b + Math.PI / 2) * r },
-      beta: { x: c.x + Math.cos(b) * (HANDLE_PX + 12), y: c.y - Math.sin(b) * (HANDLE_PX + 12) },
-      opening: { x: c.x + Math.cos(a1) * HANDLE_PX, y: c.y - Math.sin(a1) * HANDLE_PX },
-      vehicle: vs,
-      heading: { x: vs.x + Math.cos(v.theta) * HANDLE_PX * 0.7, y: vs.y - Math.sin(v.theta) * HANDLE_PX * 0.7 },
-    };
-  };
-  const near = (a: Vec, b: Vec, r: number): boolean => Math.hypot(a.x - b.x, a.y - b.y) <= r;
-  const screenAngle = (from: Vec, p: Vec): number => Math.atan2(-(p.y - from.y), p.x - from.x);
-
-  attachPointer(canvas, (p): Drag | null => {
-    const h = handles();
-    if (h) {
-      if (near(p, h.beta, 10)) {
-        return { move: (q) => { st.target.theta = screenAngle(h.target, q); controls.beta?.set(st.target.theta); updateGoal(); } };
-      }
-      if (near(p, h.opening, 10)) {
-        return {
-          move: (q) => {
-            const c = view.toScreen(st.target.x, st.target.y);
-            let d = Math.abs(Math.atan2(Math.sin(screenAngle(c, q) - st.target.theta), Math.cos(screenAngle(c, q) - st.target.theta)));
-            d = Math.min(90 * DEG, Math.max(0.5 * DEG, d));
-            st.epsTol = d;
-            controls.epsTol?.set(d);
-            updateGoal();
-          },
-        };
-      }
-      if (near(p, h.heading, 10)) {
-        return {
-          move: (q) => {
-            const v = view.toScreen(st.vehicle.x, st.vehicle.y);
-            st.vehicle.theta = screenAngle(v, q);
-            placeVehicle();
-          },
-        };
-      }
-      if (near(p, h.vehicle, 14)) {
-        const pose = agentPose(focus);
-        st.vehicle = { ...pose };
-        const w0 = view.toWorld(p.x, p.y);
-        const off = { x: pose.x - w0.x, y: pose.y - w0.y };
-        return {
-          move: (q) => {
-            const w = view.toWorld(q.x, q.y);
-            st.vehicle.x = w.x + off.x;
-            st.vehicle.y = w.y + off.y;
-            placeVehicle();
-          },
-        };
-      }
-      if (near(p, h.target, 10)) {
-        const w0 = view.toWorld(p.x, p.y);
-        const off = { x: st.target.x - w0.x, y: st.target.y - w0.y };
-        return {
-          move: (q) => {
-            const w = view.toWorld(q.x, q.y);
-            st.target.x = w.x + off.x;
-            st.target.y = w.y + off.y;
-            updateGoal();
-          },
-        };
-      }
-      const dc = Math.hypot(p.x - h.target.x, p.y - h.target.y);
-      if (Math.abs(dc - st.dTol * view.scale) <= 7) {
-        return {
-          move: (q) => {
-            const c = view.toScreen(st.target.x, st.target.y);
-            st.dTol = Math.min(20, Math.max(0.02, Math.hypot(q.x - c.x, q.y - c.y) / view.scale));
-            controls.dTol?.set(st.dTol);
-            updateGoal();
-          },
-        };
-      }
-    }
-    let last = p;
-    canvas.style.cursor = "grabbing";
-    return {
-      move: (q) => { view.panBy(q.x - last.x, q.y - last.y); last = q; dirty = true; },
-      end: () => { canvas.style.cursor = ""; },
-    };
-  }, (p) => {
-    const h = handles();
-    const on = p !== null && h !== null && (near(p, h.beta, 10) || near(p, h.opening, 10) || near(p, h.heading, 10)
-      || near(p, h.vehicle, 14) || near(p, h.target, 10)
-      || Math.abs(Math.hypot(p.x - h.target.x, p.y - h.target.y) - st.dTol * view.scale) <= 7);
-    canvas.style.cursor = on ? "grab" : "";
+  const handles = (): Handles | null =>
+    focus >= 0 && focus < count ? handlePositions(view, st, agentPose(focus), HANDLE_PX) : null;
+  attachDrags(canvas, view, handles, {
+    target: (x, y) => { st.target.x = x; st.target.y = y; updateGoal(); },
+    beta: (b) => { st.target.theta = b; controls.beta?.set(b); updateGoal(); },
+    epsTol: (e) => { st.epsTol = e; controls.epsTol?.set(e); updateGoal(); },
+    dTol: (d) => { st.dTol = d; controls.dTol?.set(d); updateGoal(); },
+    vehicle: (pose) => { st.vehicle = pose; placeVehicle(); },
+    vehiclePose: () => ({ ...agentPose(focus) }),
+    redraw: () => { dirty = true; },
   });
-  canvas.addEventListener("wheel", (e) => {
-    e.preventDefault();
-    const r = canvas.getBoundingClientRect();
-    view.zoomAt(e.clientX - r.left, e.clientY - r.top, Math.exp(-e.deltaY * 0.0015));
-    dirty = true;
-  }, { passive: false });
 
   // ---- frame loop --------------------------------------------------------------
   const hudEl = $("hud");
