@@ -151,6 +151,7 @@ async function start(): Promise<void> {
     if (urlTimer) return;
     urlTimer = window.setTimeout(() => {
       urlTimer = 0;
+      st.view = { cx: view.cx, cy: view.cy, scale: view.scale };
       history.replaceState(null, "", `#${encodeState(st)}`);
     }, 250);
   };
@@ -182,7 +183,16 @@ async function start(): Promise<void> {
 
   let generation = 0;
   let dt = defaults.dt;
-  const rebuild = async (fit: boolean): Promise<void> => {
+  /** Shows the URL's view once (the first build), else fits when asked. */
+  let sharedView = st.view;
+  const rebuild = async (fitAsked: boolean): Promise<void> => {
+    const fit = fitAsked && sharedView === null;
+    if (sharedView) {
+      view.cx = sharedView.cx;
+      view.cy = sharedView.cy;
+      view.scale = sharedView.scale;
+      sharedView = null;
+    }
     const gen = ++generation;
     lab.clear();
     pull();
@@ -359,6 +369,7 @@ async function start(): Promise<void> {
   exRow.className = "row";
   exBox.append(exRow);
   button(exRow, "copy-link", "Copy link", "Copy a link with the whole state", () => {
+    st.view = { cx: view.cx, cy: view.cy, scale: view.scale };
     history.replaceState(null, "", `#${encodeState(st)}`);
     void navigator.clipboard?.writeText(location.href).catch(() => {});
   });
@@ -417,7 +428,7 @@ async function start(): Promise<void> {
     dTol: (d) => { st.dTol = d; controls.dTol?.set(d); updateGoal(); },
     vehicle: (pose) => { st.vehicle = pose; placeVehicle(); },
     vehiclePose: () => ({ ...agentPose(focus) }),
-    redraw: () => { dirty = true; },
+    redraw: () => { dirty = true; saveUrl(); },
   });
 
   // ---- frame loop --------------------------------------------------------------

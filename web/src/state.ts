@@ -48,6 +48,8 @@ export interface LabState {
   agents: number;
   seed: number;
   slow: boolean;
+  /** The view (world point at the canvas centre, px per m); null = fit. */
+  view: { cx: number; cy: number; scale: number } | null;
 }
 
 export function defaultState(): LabState {
@@ -66,5 +68,6 @@ export function defaultState(): LabState {
     agents: 0,
     seed: 1,
     slow: false,
+    view: null,
   };
 }

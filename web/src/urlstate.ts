@@ -57,6 +57,11 @@ export function encodeState(s: LabState): string {
   for (const k of FLAGS) p.set(k, s[k] ? "1" : "0");
   p.set("ov", OVERLAY_KEYS.filter((k) => s.overlays[k]).join(","));
   if (s.preset) p.set("preset", s.preset);
+  if (s.view) {
+    p.set("zx", fmt(s.view.cx));
+    p.set("zy", fmt(s.view.cy));
+    p.set("zs", fmt(s.view.scale));
+  }
   return p.toString();
 }
 
@@ -79,7 +84,7 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["ov", "preset", ...FLAGS, ...NUMS.map((f) => f.key), ...LIMIT_KEYS.map((l) => l[0])]);
+  const known = new Set<string>(["ov", "preset", "zx", "zy", "zs", ...FLAGS, ...NUMS.map((f) => f.key), ...LIMIT_KEYS.map((l) => l[0])]);
   for (const key of p.keys()) {
     if (!known.has(key)) problems.push(`unknown field "${key}" ignored`);
   }
@@ -113,6 +118,13 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
     const bad = names.filter((n) => !(OVERLAY_KEYS as readonly string[]).includes(n));
     if (bad.length > 0) problems.push(`unknown overlay(s) ${bad.join(", ")} ignored`);
     for (const k of OVERLAY_KEYS) s.overlays[k] = names.includes(k);
+  }
+  if (p.has("zx") || p.has("zy") || p.has("zs")) {
+    const cx = num("zx", -1e5, 1e5, false);
+    const cy = num("zy", -1e5, 1e5, false);
+    const scale = num("zs", 2, 2000, false);
+    if (cx !== undefined && cy !== undefined && scale !== undefined) s.view = { cx, cy, scale };
+    else problems.push("the view (zx, zy, zs) needs all three; fitted instead");
   }
   const preset = p.get("preset");
   if (preset !== null && preset !== "") {

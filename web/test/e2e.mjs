@@ -211,6 +211,8 @@ try {
       assert.ok(Math.abs(got.vehicle[k] - want.vehicle[k]) < 1e-3, `vehicle.${k}`);
     }
     assert.deepEqual(got.overlays, want.overlays);
+    assert.ok(want.view && got.view, "the view is in the link");
+    for (const k of ["cx", "cy", "scale"]) assert.ok(Math.abs(got.view[k] - want.view[k]) < 1e-3, `view.${k}: ${got.view[k]} vs ${want.view[k]}`);
     allProblems.push(...p2.problems);
     await p2.context.close();
   });
