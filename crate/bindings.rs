@@ -358,7 +358,9 @@ impl From<Internals> for InternalsOut {
 /// Steps a single call may ask for (a frame needs a handful).
 const MAX_STEPS_PER_CALL: u32 = 10_000;
 /// Agents a page may hold.
-const MAX_AGENTS: usize = 200_000;
+const MAX_AGENTS: usize = 100_001;
+/// Goals queued per agent by [`Lab::spawn_random`] (minutes of funnelling).
+const RANDOM_GOALS: usize = 16;
 
 impl Lab {
     fn agent(&self, i: u32) -> Result<&crate::world::Agent, JsError> {
@@ -464,7 +466,7 @@ impl Lab {
     }
 
     /// Adds `n` funnelling agents for performance runs: random poses in a
-    /// square of half-side `extent`, each with a queue of 64 random oriented
+    /// square of half-side `extent`, each with a queue of 16 random oriented
     /// goals in the same square at desired speed `speed` (seeded PCG32).
     #[wasm_bindgen(js_name = spawnRandom)]
     pub fn spawn_random(
@@ -479,13 +481,18 @@ impl Lab {
                 "extent {extent} must be in (0, 1e5]"
             )));
         }
+        if self.world.agents.len() + n as usize > MAX_AGENTS {
+            return Err(JsError::new(&format!(
+                "{n} more agents would exceed {MAX_AGENTS}"
+            )));
+        }
         let p = self.world.params;
         let speed = speed.clamp(0.1, p.v_max);
         let mut rng = Rng::new(u64::from(seed));
         for _ in 0..n {
             let pos = Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent));
             let state = VehicleState::new(pos, rng.range(-PI, PI), 0.0, 0.0);
-            let goals = (0..64)
+            let goals = (0..RANDOM_GOALS)
                 .map(|_| GoalSpec {
                     goal: Goal {
                         pos: Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent)),

@@ -10,6 +10,17 @@ const { server, url } = await serve();
 const browser = await launch();
 let bad = 0;
 try {
+  const firsts = [];
+  for (let k = 0; k < 5; k++) {
+    const { page, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
+    await page.goto(url);
+    const err = await waitReady(page, 60000);
+    if (err) throw new Error(err);
+    firsts.push(await page.evaluate(() => window.__lab.firstFrameMs));
+    await context.close();
+  }
+  firsts.sort((a, b) => a - b);
+  console.log(`first drawn frame after navigation start: median ${firsts[2].toFixed(0)} ms (min ${firsts[0].toFixed(0)}, max ${firsts[4].toFixed(0)}) over 5 loads`);
   for (const n of sizes) {
     const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
     await page.goto(`${url}#n=${n}&ov=`);
