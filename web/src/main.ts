@@ -50,7 +50,7 @@ export interface LabHook {
   presets(): string[];
   setPaused(p: boolean): void;
   perfReset(): void;
-  perfStats(): { frames: number; meanIntervalMs: number; meanWorkMs: number; p95WorkMs: number; meanStepMs: number; meanDrawMs: number; agents: number };
+  perfStats(): { frames: number; meanIntervalMs: number; meanWorkMs: number; p95WorkMs: number; meanStepMs: number; meanDrawMs: number; usPerUpdate: number; agents: number };
 }
 
 declare global {
@@ -88,7 +88,7 @@ const hook: LabHook = {
   presets: () => presetNames(),
   setPaused: () => {},
   perfReset: () => {},
-  perfStats: () => ({ frames: 0, meanIntervalMs: 0, meanWorkMs: 0, p95WorkMs: 0, meanStepMs: 0, meanDrawMs: 0, agents: 0 }),
+  perfStats: () => ({ frames: 0, meanIntervalMs: 0, meanWorkMs: 0, p95WorkMs: 0, meanStepMs: 0, meanDrawMs: 0, usPerUpdate: 0, agents: 0 }),
 };
 window.__lab = hook;
 
@@ -433,7 +433,7 @@ async function start(): Promise<void> {
 
   // ---- frame loop --------------------------------------------------------------
   const hudEl = $("hud");
-  const perf = { intervals: [] as number[], work: [] as number[], step: [] as number[], draw: [] as number[] };
+  const perf = { intervals: [] as number[], work: [] as number[], step: [] as number[], draw: [] as number[], updates: 0, updateMs: 0 };
   let lastFrame = performance.now();
   let frameMsEma = 0;
 
@@ -465,6 +465,8 @@ async function start(): Promise<void> {
         const s0 = performance.now();
         lab.step(k);
         stepMs = performance.now() - s0;
+        perf.updates += k * count;
+        perf.updateMs += stepMs;
         usPerUpdate = usPerUpdate === 0 ? (stepMs * 1000) / (k * count) : 0.9 * usPerUpdate + 0.1 * (stepMs * 1000) / (k * count);
         simTime += k * dt;
         pull();
@@ -541,7 +543,7 @@ async function start(): Promise<void> {
   hook.handles = handles;
   hook.setPreset = setPreset;
   hook.setPaused = setPaused;
-  hook.perfReset = () => { perf.intervals = []; perf.work = []; perf.step = []; perf.draw = []; };
+  hook.perfReset = () => { perf.intervals = []; perf.work = []; perf.step = []; perf.draw = []; perf.updates = 0; perf.updateMs = 0; };
   hook.perfStats = () => {
     const mean = (a: number[]): number => (a.length ? a.reduce((x, y) => x + y, 0) / a.length : 0);
     const sorted = [...perf.work].sort((a, b) => a - b);
@@ -552,6 +554,7 @@ async function start(): Promise<void> {
       p95WorkMs: sorted[Math.floor(sorted.length * 0.95)] ?? 0,
       meanStepMs: mean(perf.step),
       meanDrawMs: mean(perf.draw),
+      usPerUpdate: perf.updates ? (perf.updateMs * 1000) / perf.updates : 0,
       agents: count,
     };
   };

@@ -34,7 +34,8 @@ try {
     console.log(
       `perf n=${s.agents - 1}+1 agents: ${s.frames} frames in ~2 s, rAF interval ${s.meanIntervalMs.toFixed(2)} ms ` +
         `(${(1000 / s.meanIntervalMs).toFixed(1)} fps), work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
-        `core step/frame ${s.meanStepMs.toFixed(2)} ms, drawing/frame ${s.meanDrawMs.toFixed(2)} ms`,
+        `core step/frame ${s.meanStepMs.toFixed(2)} ms, drawing/frame ${s.meanDrawMs.toFixed(2)} ms, ` +
+        `core ${s.usPerUpdate.toFixed(2)} µs per agent update`,
     );
     if (problems.length) { bad++; console.log(problems.join("\n")); }
     await context.close();
