@@ -166,6 +166,36 @@ pub fn crc32(bytes: &[u8]) -> u32 {
     !c
 }
 
+/// One entry in memory, laid out for a branch-free blend: η as a unit
+/// vector (so that blending is angle-safe across ±π by construction),
+/// split into the part from samples reachable at their desired speed and
+/// the part from fallback samples, with the reach indicator and fallback
+/// speed. The 32 corners of a lookup then accumulate eight multiply-adds
+/// each (vectorisable), and one `atan2` recovers η.
+#[derive(Clone, Copy, Debug, PartialEq, Default)]
+#[repr(C, align(32))]
+struct Cell([f32; 8]);
+
+impl Cell {
+    fn new(eta: f32, speed: f32, flags: u8) -> Self {
+        let (s, c) = eta.sin_cos();
+        let valid = flags & FLAG_ETA_VALID != 0;
+        let reach = flags & FLAG_REACHABLE != 0;
+        let r = if reach && valid { 1.0 } else { 0.0 };
+        let o = if !reach && valid { 1.0 } else { 0.0 };
+        Self([
+            r * c,
+            r * s,
+            o * c,
+            o * s,
+            r,
+            o,
+            if reach { 0.0 } else { speed },
+            0.0,
+        ])
+    }
+}
+
 /// The η table in memory.
 #[derive(Clone, Debug, PartialEq)]
 pub struct EtaTable {
@@ -174,6 +204,7 @@ pub struct EtaTable {
     eta: Vec<f32>,
     v_fallback: Vec<f32>,
     flags: Vec<u8>,
+    cells: Vec<Cell>,
     strides: [usize; AXES],
 }
 
@@ -220,11 +251,7 @@ fn axis_pos(axis: &[f32], x: f32, clamped: &mut bool) -> AxisPos {
             t: 1.0,
         };
     }
-    // Axes are short (≤ a few dozen samples): a linear scan beats bisection.
-    let mut i = 0;
-    while axis[i + 1] <= x {
-        i += 1;
-    }
+    let i = axis.partition_point(|&a| a <= x) - 1;
     AxisPos {
         i0: i,
         i1: i + 1,
@@ -271,15 +298,19 @@ impl EtaTable {
         for k in (0..AXES - 1).rev() {
             strides[k] = strides[k + 1] * axes[k + 1].len();
         }
-        let t = Self {
+        let mut t = Self {
             params,
             axes,
             eta,
             v_fallback,
             flags,
+            cells: Vec::new(),
             strides,
         };
         t.validate()?;
+        t.cells = (0..t.eta.len())
+            .map(|i| Cell::new(t.eta[i], t.v_fallback[i], t.flags[i]))
+            .collect();
         Ok(t)
     }
 
@@ -659,46 +690,49 @@ impl EtaTable {
     }
 
     /// Interpolates η, the reachability vote and the fallback speed at the
-    /// 32 corners around `pos`. η is blended as an angle: each corner is
-    /// unwrapped relative to the first valid one before averaging, so
-    /// samples on both sides of ±π never average to 0. Corners reachable at
-    /// their desired speed are blended on their own whenever there are any:
-    /// a fallback η belongs to another speed and would bias the result.
+    /// 32 corners around `pos` (fewer when the query sits on a sample).
+    /// η is blended as a unit vector, so samples on both sides of ±π never
+    /// average to 0. Corners reachable at their desired speed are blended
+    /// on their own whenever there are any: a fallback η belongs to another
+    /// speed and would bias the result.
     #[inline]
-    fn blend(&self, pos: &[AxisPos; AXES], v_d: f32) -> Blend {
-        let mut b = Blend::default();
-        let mut reference = f32::NAN;
-        for corner in 0..32u32 {
-            let mut w = 1.0f32;
-            let mut i = 0usize;
-            for (k, p) in pos.iter().enumerate() {
-                let hi = corner >> (AXES - 1 - k) & 1 == 1;
-                w *= if hi { p.t } else { 1.0 - p.t };
-                i += (if hi { p.i1 } else { p.i0 }) * self.strides[k];
-            }
-            if w == 0.0 {
-                continue;
-            }
-            let flags = self.flags[i];
-            if flags & FLAG_ETA_VALID == 0 {
-                continue;
-            }
-            let e = self.eta[i];
-            if reference.is_nan() {
-                reference = e;
-            }
-            let e = w * (reference + wrap(e - reference));
-            if flags & FLAG_REACHABLE != 0 {
-                b.reach += w;
-                b.speed += w * v_d;
-                b.eta_reach += e;
-            } else {
-                b.speed += w * self.v_fallback[i];
-                b.eta_other += e;
-                b.w_other += w;
+    fn blend(&self, pos: &[AxisPos; AXES]) -> Blend {
+        let mut off = [[0usize; 2]; AXES];
+        let mut wt = [[0f32; 2]; AXES];
+        let mut n = [2usize; AXES];
+        for k in 0..AXES {
+            let p = pos[k];
+            off[k] = [p.i0 * self.strides[k], p.i1 * self.strides[k]];
+            wt[k] = [1.0 - p.t, p.t];
+            if p.t == 0.0 {
+                n[k] = 1;
+            } else if p.t == 1.0 {
+                off[k][0] = off[k][1];
+                wt[k][0] = 1.0;
+                n[k] = 1;
             }
         }
-        b
+        let mut acc = [0f32; 8];
+        for a in 0..n[0] {
+            let (ia, wa) = (off[0][a], wt[0][a]);
+            for c in 0..n[1] {
+                let (ic, wc) = (ia + off[1][c], wa * wt[1][c]);
+                for d in 0..n[2] {
+                    let (id, wd) = (ic + off[2][d], wc * wt[2][d]);
+                    for e in 0..n[3] {
+                        let (ie, we) = (id + off[3][e], wd * wt[3][e]);
+                        for f in 0..n[4] {
+                            let w = we * wt[4][f];
+                            let cell = &self.cells[ie + off[4][f]].0;
+                            for (x, y) in acc.iter_mut().zip(cell) {
+                                *x += w * y;
+                            }
+                        }
+                    }
+                }
+            }
+        }
+        Blend(acc)
     }
 
     /// η alone at `(D, α, ω_c, v_c, v_d)`: one multilinear interpolation.
@@ -707,7 +741,7 @@ impl EtaTable {
     pub fn eta(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Option<f32> {
         let mut clamped = false;
         let pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
-        self.blend(&pos, v_d).eta()
+        self.blend(&pos).eta()
     }
 
     /// The funnelling lookup of paper 000 Fig. 4, first half: reachability
@@ -719,17 +753,17 @@ impl EtaTable {
     pub fn lookup(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Lookup {
         let mut clamped = false;
         let mut pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
-        let b = self.blend(&pos, v_d);
-        let reachable = b.reach >= 0.5;
+        let b = self.blend(&pos);
+        let reachable = b.reach() >= 0.5;
         let mut v_dt = v_d;
         let mut eta = b.eta();
         if !reachable {
-            v_dt = b.speed.min(v_d).max(0.0);
+            v_dt = b.speed(v_d).min(v_d).max(0.0);
             eta = None;
             if v_dt > 0.0 {
                 let mut c2 = false;
                 pos[4] = axis_pos(&self.axes[4], v_dt, &mut c2);
-                eta = self.blend(&pos, v_dt).eta();
+                eta = self.blend(&pos).eta();
             }
         }
         Lookup {
@@ -742,27 +776,30 @@ impl EtaTable {
     }
 }
 
-/// Accumulators of one 32-corner blend.
+/// Accumulators of one blend, in [`Cell`] order.
 #[derive(Clone, Copy, Debug, Default)]
-struct Blend {
-    /// Weight of corners reachable at their desired speed.
-    reach: f32,
-    /// Weighted desired-or-fallback speed.
-    speed: f32,
-    /// Weighted (unwrapped) η of reachable corners.
-    eta_reach: f32,
-    /// Weighted η and weight of corners with a fallback η only.
-    eta_other: f32,
-    w_other: f32,
-}
+struct Blend([f32; 8]);
 
 impl Blend {
+    /// Weight of corners reachable at their desired speed.
+    #[inline]
+    fn reach(&self) -> f32 {
+        self.0[4]
+    }
+
+    /// Blended speed: the query's `v_d` where reachable, else the fallback.
+    #[inline]
+    fn speed(&self, v_d: f32) -> f32 {
+        self.0[4] * v_d + self.0[6]
+    }
+
     #[inline]
     fn eta(&self) -> Option<f32> {
-        if self.reach > 1e-6 {
-            Some(wrap(self.eta_reach / self.reach))
-        } else if self.w_other > 1e-6 {
-            Some(wrap(self.eta_other / self.w_other))
+        let a = &self.0;
+        if a[4] > 1e-6 {
+            Some(a[1].atan2(a[0]))
+        } else if a[5] > 1e-6 {
+            Some(a[3].atan2(a[2]))
         } else {
             None
         }

@@ -1,0 +1,65 @@
+//! Deterministic cost measure for a loaded machine: run under callgrind and
+//! difference two iteration counts to get instructions per call, e.g.
+//!
+//! ```sh
+//! cargo build --release --example icount
+//! for n in 20000 40000; do valgrind --tool=callgrind --callgrind-out-file=/dev/null \
+//!   target/release/examples/icount funnel $n 2>&1 | grep Collected; done
+//! ```
+//! `seek`, `lookup` or `funnel` (default funnelling update), N iterations.
+
+use glam::Vec2;
+use std::hint::black_box;
+use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::rng::Rng;
+use steering::seek::seek_point;
+use steering::table::EtaTable;
+use steering::vehicle::{VehicleParams, VehicleState};
+fn main() {
+    let what = std::env::args().nth(1).unwrap_or_else(|| "funnel".into());
+    let n: usize = std::env::args()
+        .nth(2)
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(10_000);
+    let t = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
+        .expect("tables/eta.bin (run from the repository root)");
+    let p = VehicleParams::default();
+    let mut r = Rng::new(9);
+    let qs: Vec<[f32; 6]> = (0..1024)
+        .map(|_| {
+            let v = r.range(0.0, 2.0);
+            [
+                r.range(1.0, 30.0),
+                r.range(-3.1, 3.1),
+                r.range(-1.0, 1.0) * p.omega_limit(v),
+                v,
+                r.range(0.3, 2.0),
+                r.range(-3.1, 3.1),
+            ]
+        })
+        .collect();
+    let cfg = FunnelConfig::default();
+    let mut s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
+    for i in 0..n {
+        let q = qs[i & 1023];
+        match what.as_str() {
+            "seek" => {
+                let tg = s.pos + Vec2::from_angle(q[1]) * q[0];
+                seek_point(&p, &mut s, black_box(tg), 1.3);
+            }
+            "lookup" => {
+                black_box(t.lookup(black_box(q[0]), q[1], q[2], q[3], q[4]));
+            }
+            _ => {
+                let mut st = VehicleState::new(Vec2::ZERO, 0.0, q[3], q[2]);
+                let g = Goal {
+                    pos: Vec2::from_angle(q[1]) * q[0],
+                    beta: q[5],
+                    ..Default::default()
+                };
+                black_box(cfg.step(&t, &p, &mut st, &g, &mut FunnelMemory::default()));
+            }
+        }
+    }
+    black_box(s);
+}
