@@ -7,9 +7,10 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 WASM_PACK_VERSION := 0.15.1
 WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"/,"",$$3); print $$3; exit}' Cargo.lock)
 
-.PHONY: setup setup-rust setup-browser test test-native lint table bench demo
+.PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
+	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web
 
-setup: setup-rust setup-browser
+setup: setup-rust setup-browser setup-web
 
 setup-rust:
 	rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
@@ -24,15 +25,53 @@ setup-browser:
 	if [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends chromium chromium-driver; fi
 
+setup-web:
+	if [ ! -f web/node_modules/.package-lock.json ] || [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
+	  cd web && npm ci --no-audit --no-fund; fi
+
 lint:
 	cargo fmt --all -- --check
 	cargo clippy --all-targets -- -D warnings
+	cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
 
 test-native:
 	cargo test --all-targets
 
-test: setup lint test-native
+# The release wasm package the page and the smoke test load (wasm-opt is
+# disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).
+wasm: setup-rust
+	wasm-pack build --target web --release --out-dir web/pkg --no-pack
+	@ls -l web/pkg/steering_bg.wasm | awk '{print "wasm size: " $$5 " bytes"}'
+	@gzip -9 -c web/pkg/steering_bg.wasm | wc -c | awk '{print "wasm gzipped: " $$1 " bytes"}'
+
+web-build: setup-web wasm
+	cd web && npx vite build --logLevel warn
+
+# The bindings in headless Chromium (webdriver.json carries the flags).
+test-wasm: setup-rust setup-browser
+	wasm-pack test --headless --chrome --release
+
+# Loads the *release* package in Node with initSync: catches broken post-processing.
+test-smoke: setup-web wasm
+	node web/test/smoke.mjs
+
+test-tsc: setup-web wasm
+	cd web && npx tsc --noEmit -p tsconfig.json
+
+# Playwright (playwright-core + Debian's chromium) against the built page.
+test-e2e: setup-browser web-build
+	node web/test/e2e.mjs
+
+# Frame time with 1,000 and 10,000 funnelling agents in headless Chromium.
+bench-web: setup-browser web-build
+	node web/test/perf.mjs
+
+test: setup lint test-native test-wasm test-smoke test-tsc test-e2e
 	@echo "make test: all suites passed"
+
+demo: setup web-build
+	@echo "the steering lab: http://127.0.0.1:5173/"
+	cd web && npx vite preview --host 127.0.0.1 --port 5173 --strictPort
 
 table:
 	cargo run --release --bin eta-table -- --out tables/eta.bin

@@ -31,3 +31,7 @@ pub mod table_gen;
 pub mod vehicle;
 pub mod wander;
 pub mod world;
+
+/// The JavaScript boundary (WebAssembly builds only).
+#[cfg(target_arch = "wasm32")]
+pub mod bindings;

@@ -9,6 +9,11 @@
 //! `reach` runs the seeded random reach study for every μ-bound variant and
 //! prints the acceptance figures of the funnelling issue.
 
+// `wasm-pack test` builds every binary for wasm32, where the threaded
+// studies do not exist: there this binary is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
 use std::fmt::Write as _;
 use std::process::ExitCode;
 

@@ -1,0 +1,623 @@
+//! The JavaScript boundary: the one module that knows about wasm-bindgen.
+//!
+//! Rules kept here (issue 5):
+//! - thin: conversion only, no steering logic; every value from JavaScript
+//!   is validated and turned into a `JsError` with a readable message, never
+//!   a panic (indices are checked, configs go through the core's `validate`);
+//! - typed: configuration objects cross via serde-wasm-bindgen and carry real
+//!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`);
+//! - bulk per-agent state crosses as `Float32Array` (one copy per call).
+
+use core::f32::consts::PI;
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+use wasm_bindgen::prelude::*;
+
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::rng::Rng;
+use crate::scenario::Scenario;
+use crate::table::EtaTable;
+use crate::vehicle::{VehicleParams, VehicleState};
+use crate::world::{GoalMotion, GoalSpec, SwitchRule, World, STATE_STRIDE};
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &'static str = r#"
+/** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
+export interface VehicleParams {
+  dt: number;
+  vMax: number;
+  accelMax: number;
+  omegaMax: number;
+  omegaAccelMax: number;
+  normalAccelMax: number;
+  kp: number;
+  kd: number;
+  integrator: "euler" | "semiImplicitEuler";
+}
+/** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
+export interface GoalConfig {
+  x: number;
+  y: number;
+  beta: number;
+  dTol: number;
+  epsTol: number;
+  speed: number;
+  halting: boolean;
+  relaxed: boolean;
+}
+/** One agent: start pose and its goal queue (each reached in turn). */
+export interface AgentConfig {
+  x: number;
+  y: number;
+  theta: number;
+  v?: number;
+  omega?: number;
+  goals: GoalConfig[];
+}
+/** What one controller update computed (crate::funnel::Internals). Angles in rad. */
+export interface Internals {
+  /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
+  mode: 0 | 1 | 2 | 3;
+  d: number;
+  alpha: number;
+  eta: number;
+  deltaEta: number;
+  mu: number;
+  muMax: number;
+  gamma: number;
+  reachable: boolean;
+  vDt: number;
+  /** Relaxed funnelling: arc 𝒜 = [alphaMin, alphaMax] on the ring `radius`, chosen α_r (vehicle frame). */
+  arc?: { alphaMin: number; alphaMax: number; alphaR: number; radius: number } | null;
+}
+/** The loaded η table's shape. */
+export interface TableInfo {
+  entries: number;
+  distances: number[];
+  alphas: number[];
+  omegaFractions: number[];
+  speeds: number[];
+  desiredSpeeds: number[];
+  /** Smallest sampled distance D_η, m. */
+  dEta: number;
+  params: VehicleParams;
+}
+/** A loaded scenario: its name, description and the world box to show. */
+export interface ScenarioInfo {
+  name: string;
+  description: string;
+  source: string;
+  /** Non-empty when the scenario's vehicle differs from the table's. */
+  warning: string;
+  agents: number;
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+"#;
+
+fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
+    JsError::new(&format!("{context}: {e}"))
+}
+
+fn from_js<T: for<'de> Deserialize<'de>>(what: &str, v: JsValue) -> Result<T, JsError> {
+    serde_wasm_bindgen::from_value(v).map_err(|e| js_err(what, e))
+}
+
+fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(|e| js_err("conversion to JavaScript", e))
+}
+
+/// The crate version, to show on the page and check the package loaded.
+#[wasm_bindgen]
+#[must_use]
+pub fn version() -> String {
+    env!("CARGO_PKG_VERSION").to_owned()
+}
+
+/// `n` uniform samples in `[0, 1)` from the shared PCG32 generator, seeded:
+/// the same seed gives the same numbers natively and in the browser.
+#[wasm_bindgen(js_name = randomSamples)]
+#[must_use]
+pub fn random_samples(seed: u32, n: u32) -> Vec<f32> {
+    let mut rng = Rng::new(u64::from(seed));
+    (0..n).map(|_| rng.next_f32()).collect()
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct TableInfo<'a> {
+    entries: usize,
+    distances: &'a [f32],
+    alphas: &'a [f32],
+    omega_fractions: &'a [f32],
+    speeds: &'a [f32],
+    desired_speeds: &'a [f32],
+    d_eta: f32,
+    params: VehicleParams,
+}
+
+/// Appends one η-field sample per (distance, α) pair: `D, α, α+η, reachable`
+/// (paper 001 Fig. 3b/c; samples without any η are left out).
+fn field_samples(
+    table: &EtaTable,
+    distances: &[f32],
+    omega_c: f32,
+    v_c: f32,
+    v_d: f32,
+    out: &mut Vec<f32>,
+) {
+    for &d in distances {
+        for &a in table.axis(1) {
+            let lk = table.lookup(d, a, omega_c, v_c, v_d);
+            if lk.eta_valid {
+                out.extend_from_slice(&[d, a, a + lk.eta, f32::from(u8::from(lk.reachable))]);
+            }
+        }
+    }
+}
+
+/// The lab: the η table, the vehicle parameters and the agents.
+#[wasm_bindgen]
+pub struct Lab {
+    table: EtaTable,
+    world: World,
+    buf: Vec<f32>,
+}
+
+#[wasm_bindgen]
+impl Lab {
+    /// Loads an η table from the bytes of `tables/eta.bin`; a corrupt,
+    /// truncated or mismatched table is a `JsError` with the loader's message.
+    #[wasm_bindgen(constructor)]
+    pub fn new(table: &[u8]) -> Result<Lab, JsError> {
+        let table = EtaTable::from_bytes(table).map_err(|e| js_err("η table", e))?;
+        let params = table.params().vehicle;
+        let world = World::new(params, FunnelConfig::default())
+            .map_err(|e| js_err("η table parameters", e))?;
+        Ok(Lab {
+            table,
+            world,
+            buf: Vec::new(),
+        })
+    }
+
+    /// The table's axes and build parameters.
+    #[wasm_bindgen(js_name = tableInfo, unchecked_return_type = "TableInfo")]
+    pub fn table_info(&self) -> Result<JsValue, JsError> {
+        to_js(&TableInfo {
+            entries: self.table.len(),
+            distances: self.table.axis(0),
+            alphas: self.table.axis(1),
+            omega_fractions: self.table.axis(2),
+            speeds: self.table.axis(3),
+            desired_speeds: self.table.axis(4),
+            d_eta: self.table.d_eta(),
+            params: self.table.params().vehicle,
+        })
+    }
+
+    /// The vehicle parameters in force.
+    #[wasm_bindgen(unchecked_return_type = "VehicleParams")]
+    pub fn params(&self) -> Result<JsValue, JsError> {
+        to_js(&self.world.params)
+    }
+
+    /// Replaces the vehicle parameters (validated). Returns a warning when
+    /// they differ from the ones the table was built with (its η values are
+    /// then only approximate), else an empty string.
+    #[wasm_bindgen(js_name = setParams)]
+    pub fn set_params(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "VehicleParams")] params: JsValue,
+    ) -> Result<String, JsError> {
+        let p: VehicleParams = from_js("vehicle parameters", params)?;
+        p.validate().map_err(|e| js_err("vehicle parameters", e))?;
+        self.world.params = p;
+        Ok(match self.table.check_params(&p) {
+            Ok(()) => String::new(),
+            Err(e) => format!("{e} (η predictions are approximate until then)"),
+        })
+    }
+
+    /// The η field around a vehicle (paper 001 Fig. 3b/c): for every sampled
+    /// target (D, α) at current speed `v_c`, angular speed `omega_c` and
+    /// desired speed `v_d`, the final direction α+η in the vehicle frame.
+    /// Four floats per sample: D, α, α+η, reachable (1/0).
+    #[wasm_bindgen(js_name = etaField)]
+    #[must_use]
+    pub fn eta_field(&self, v_c: f32, omega_c: f32, v_d: f32) -> Vec<f32> {
+        let mut out = Vec::new();
+        if v_c.is_finite() && omega_c.is_finite() && v_d.is_finite() {
+            field_samples(
+                &self.table,
+                self.table.distances(),
+                omega_c,
+                v_c,
+                v_d,
+                &mut out,
+            );
+        }
+        out
+    }
+
+    /// The sampled ring of the table nearest to distance `d` (paper 001
+    /// Fig. 4), same layout as [`Lab::eta_field`].
+    #[wasm_bindgen(js_name = etaRingAt)]
+    #[must_use]
+    pub fn eta_ring_at(&self, d: f32, v_c: f32, omega_c: f32, v_d: f32) -> Vec<f32> {
+        let mut out = Vec::new();
+        if !(d.is_finite() && v_c.is_finite() && omega_c.is_finite() && v_d.is_finite()) {
+            return out;
+        }
+        let ring = self
+            .table
+            .distances()
+            .iter()
+            .copied()
+            .min_by(|a, b| (a - d).abs().total_cmp(&(b - d).abs()));
+        if let Some(r) = ring {
+            field_samples(&self.table, &[r], omega_c, v_c, v_d, &mut out);
+        }
+        out
+    }
+}
+
+/// A goal as the page edits it (flat, camelCase); `relaxed` selects relaxed
+/// funnelling towards the region goal once the core offers it.
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+struct GoalConfig {
+    x: f32,
+    y: f32,
+    beta: f32,
+    d_tol: f32,
+    eps_tol: f32,
+    speed: f32,
+    #[serde(default)]
+    halting: bool,
+    #[serde(default)]
+    relaxed: bool,
+}
+
+impl GoalConfig {
+    fn to_spec(&self, p: &VehicleParams) -> Result<GoalSpec, JsError> {
+        if self.relaxed {
+            return Err(JsError::new(
+                "relaxed funnelling (paper 001) is not in the core yet: untick \"relaxed\"",
+            ));
+        }
+        let goal = Goal {
+            pos: Vec2::new(self.x, self.y),
+            beta: self.beta,
+            d_tol: self.d_tol,
+            eps_tol: self.eps_tol,
+            speed: self.speed,
+            halting: self.halting,
+        };
+        goal.validate(p).map_err(|e| js_err("goal", e))?;
+        Ok(GoalSpec {
+            goal,
+            motion: GoalMotion::Static,
+            switch: SwitchRule::EndOfSteering,
+        })
+    }
+}
+
+#[derive(Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+struct AgentConfig {
+    x: f32,
+    y: f32,
+    theta: f32,
+    #[serde(default)]
+    v: f32,
+    #[serde(default)]
+    omega: f32,
+    goals: Vec<GoalConfig>,
+}
+
+/// Internals as the page reads them: the mode as its number.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct InternalsOut {
+    mode: u8,
+    d: f32,
+    alpha: f32,
+    eta: f32,
+    delta_eta: f32,
+    mu: f32,
+    mu_max: f32,
+    gamma: f32,
+    reachable: bool,
+    v_dt: f32,
+    arc: Option<()>,
+}
+
+impl From<Internals> for InternalsOut {
+    fn from(i: Internals) -> Self {
+        Self {
+            mode: i.mode as u8,
+            d: i.d,
+            alpha: i.alpha,
+            eta: i.eta,
+            delta_eta: i.delta_eta,
+            mu: i.mu,
+            mu_max: i.mu_max,
+            gamma: i.gamma,
+            reachable: i.reachable,
+            v_dt: i.v_dt,
+            arc: None,
+        }
+    }
+}
+
+/// Steps a single call may ask for (a frame needs a handful).
+const MAX_STEPS_PER_CALL: u32 = 10_000;
+/// Agents a page may hold.
+const MAX_AGENTS: usize = 100_001;
+/// Goals queued per agent by [`Lab::spawn_random`] (minutes of funnelling).
+const RANDOM_GOALS: usize = 16;
+
+impl Lab {
+    fn agent(&self, i: u32) -> Result<&crate::world::Agent, JsError> {
+        self.world.agents.get(i as usize).ok_or_else(|| {
+            JsError::new(&format!(
+                "no agent {i} (there are {})",
+                self.world.agents.len()
+            ))
+        })
+    }
+
+    fn agent_mut(&mut self, i: u32) -> Result<&mut crate::world::Agent, JsError> {
+        let n = self.world.agents.len();
+        self.world
+            .agents
+            .get_mut(i as usize)
+            .ok_or_else(|| JsError::new(&format!("no agent {i} (there are {n})")))
+    }
+
+    fn push_agent(&mut self, state: VehicleState, goals: Vec<GoalSpec>) -> Result<u32, JsError> {
+        if self.world.agents.len() >= MAX_AGENTS {
+            return Err(JsError::new(&format!("at most {MAX_AGENTS} agents")));
+        }
+        let i = self
+            .world
+            .add_agent(state, goals)
+            .map_err(|e| js_err("agent", e))?;
+        Ok(i as u32)
+    }
+}
+
+#[wasm_bindgen]
+impl Lab {
+    /// Removes every agent and restarts the clock.
+    pub fn clear(&mut self) -> Result<(), JsError> {
+        self.world =
+            World::new(self.world.params, self.world.config).map_err(|e| js_err("world", e))?;
+        Ok(())
+    }
+
+    /// Number of agents.
+    #[must_use]
+    pub fn count(&self) -> u32 {
+        self.world.agents.len() as u32
+    }
+
+    /// Simulated time, s.
+    #[must_use]
+    pub fn time(&self) -> f32 {
+        self.world.time
+    }
+
+    /// Adds an agent with its goal queue; returns its index.
+    #[wasm_bindgen(js_name = addAgent)]
+    pub fn add_agent(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "AgentConfig")] agent: JsValue,
+    ) -> Result<u32, JsError> {
+        let a: AgentConfig = from_js("agent", agent)?;
+        let p = self.world.params;
+        let goals = a
+            .goals
+            .iter()
+            .map(|g| g.to_spec(&p))
+            .collect::<Result<Vec<_>, _>>()?;
+        self.push_agent(
+            VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega),
+            goals,
+        )
+    }
+
+    /// Puts agent `i` at rest at a pose (a drag on the page); its goal
+    /// queue restarts.
+    #[wasm_bindgen(js_name = setPose)]
+    pub fn set_pose(&mut self, i: u32, x: f32, y: f32, theta: f32) -> Result<(), JsError> {
+        let s = VehicleState::new(Vec2::new(x, y), crate::angle::wrap(theta), 0.0, 0.0);
+        s.validate(&self.world.params)
+            .map_err(|e| js_err("pose", e))?;
+        let a = self.agent_mut(i)?;
+        a.state = s;
+        a.current = 0;
+        a.memory = FunnelMemory::default();
+        a.finished_at = None;
+        Ok(())
+    }
+
+    /// Replaces agent `i`'s goal queue with one goal (a drag or a slider).
+    #[wasm_bindgen(js_name = setGoal)]
+    pub fn set_goal(
+        &mut self,
+        i: u32,
+        #[wasm_bindgen(unchecked_param_type = "GoalConfig")] goal: JsValue,
+    ) -> Result<(), JsError> {
+        let g: GoalConfig = from_js("goal", goal)?;
+        let spec = g.to_spec(&self.world.params)?;
+        let a = self.agent_mut(i)?;
+        a.goals = vec![spec];
+        a.current = 0;
+        a.goal_now = spec.goal;
+        a.memory = FunnelMemory::default();
+        a.finished_at = None;
+        Ok(())
+    }
+
+    /// Adds `n` funnelling agents for performance runs: random poses in a
+    /// square of half-side `extent`, each with a queue of 16 random oriented
+    /// goals in the same square at desired speed `speed` (seeded PCG32).
+    #[wasm_bindgen(js_name = spawnRandom)]
+    pub fn spawn_random(
+        &mut self,
+        n: u32,
+        seed: u32,
+        extent: f32,
+        speed: f32,
+    ) -> Result<(), JsError> {
+        if !(extent.is_finite() && extent > 0.0 && extent <= 1e5) {
+            return Err(JsError::new(&format!(
+                "extent {extent} must be in (0, 1e5]"
+            )));
+        }
+        if self.world.agents.len() + n as usize > MAX_AGENTS {
+            return Err(JsError::new(&format!(
+                "{n} more agents would exceed {MAX_AGENTS}"
+            )));
+        }
+        let p = self.world.params;
+        let speed = speed.clamp(0.1, p.v_max);
+        let mut rng = Rng::new(u64::from(seed));
+        for _ in 0..n {
+            let pos = Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent));
+            let state = VehicleState::new(pos, rng.range(-PI, PI), 0.0, 0.0);
+            let goals = (0..RANDOM_GOALS)
+                .map(|_| GoalSpec {
+                    goal: Goal {
+                        pos: Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent)),
+                        beta: rng.range(-PI, PI),
+                        d_tol: 0.3,
+                        eps_tol: 10f32.to_radians(),
+                        speed,
+                        halting: false,
+                    },
+                    motion: GoalMotion::Static,
+                    switch: SwitchRule::Tolerance,
+                })
+                .collect();
+            self.push_agent(state, goals)?;
+        }
+        Ok(())
+    }
+
+    /// Advances the world by `n` steps of `dt`.
+    pub fn step(&mut self, n: u32) {
+        for _ in 0..n.min(MAX_STEPS_PER_CALL) {
+            self.world.step(&self.table);
+        }
+    }
+
+    /// Every agent's state, [`STATE_STRIDE`] floats each: x, y, θ, v, ω,
+    /// mode, D, α, η, Δη, μ, γ, reachable, v_dt, goal x, goal y, goal β,
+    /// goal D_tol, goal ε_tol.
+    #[must_use]
+    pub fn state(&mut self) -> Vec<f32> {
+        self.world.write_state(&mut self.buf);
+        self.buf.clone()
+    }
+
+    /// Floats per agent in [`Lab::state`].
+    #[wasm_bindgen(js_name = stateStride)]
+    #[must_use]
+    pub fn state_stride() -> u32 {
+        STATE_STRIDE as u32
+    }
+
+    /// Agent `i`'s controller internals for its *current* state and goal,
+    /// evaluated without stepping (so a drag while paused shows the new
+    /// mode at once).
+    #[wasm_bindgen(unchecked_return_type = "Internals")]
+    pub fn internals(&self, i: u32) -> Result<JsValue, JsError> {
+        let a = self.agent(i)?;
+        let out = if a.done() {
+            Internals {
+                mode: Mode::EndOfSteering,
+                gamma: a.state.theta,
+                ..Default::default()
+            }
+        } else {
+            let mut mem = a.memory;
+            self.world.config.plan(
+                &self.table,
+                &self.world.params,
+                &a.state,
+                &a.goal_now,
+                &mut mem,
+            )
+        };
+        to_js(&InternalsOut::from(out))
+    }
+
+    /// The table ring nearest to agent `i`'s target distance, in its frame,
+    /// for its current speeds and goal speed (paper 001 Fig. 4).
+    #[wasm_bindgen(js_name = etaRing)]
+    pub fn eta_ring(&self, i: u32) -> Result<Vec<f32>, JsError> {
+        let a = self.agent(i)?;
+        let d = (a.goal_now.pos - a.state.pos).length();
+        Ok(self.eta_ring_at(d, a.state.v, a.state.omega, a.goal_now.speed))
+    }
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct ScenarioInfo {
+    name: String,
+    description: String,
+    source: String,
+    agents: usize,
+    min_x: f32,
+    min_y: f32,
+    max_x: f32,
+    max_y: f32,
+    warning: String,
+}
+
+#[wasm_bindgen]
+impl Lab {
+    /// Replaces the world with a scenario file's (scenarios/*.json, see
+    /// crate::scenario); returns its name, description and bounding box.
+    #[wasm_bindgen(js_name = loadScenario, unchecked_return_type = "ScenarioInfo")]
+    pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
+        let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;
+        let world = sc.world().map_err(|e| js_err("scenario", e))?;
+        let (mut lo, mut hi) = (Vec2::splat(f32::INFINITY), Vec2::splat(f32::NEG_INFINITY));
+        for a in &sc.agents {
+            for p in core::iter::once(Vec2::new(a.x, a.y))
+                .chain(a.goals.iter().map(|g| Vec2::new(g.x, g.y)))
+            {
+                lo = lo.min(p);
+                hi = hi.max(p);
+            }
+        }
+        if !lo.is_finite() || !hi.is_finite() {
+            (lo, hi) = (Vec2::splat(-5.0), Vec2::splat(5.0));
+        }
+        let warning = match self.table.check_params(&world.params) {
+            Ok(()) => String::new(),
+            Err(e) => e.to_string(),
+        };
+        self.world = world;
+        to_js(&ScenarioInfo {
+            name: sc.name,
+            description: sc.description,
+            source: sc.source,
+            agents: sc.agents.len(),
+            min_x: lo.x - 1.0,
+            min_y: lo.y - 1.0,
+            max_x: hi.x + 1.0,
+            max_y: hi.y + 1.0,
+            warning,
+        })
+    }
+}

@@ -1,0 +1,184 @@
+//! The JavaScript bindings in a real browser (`wasm-pack test --headless --chrome`):
+//! the committed η table loads, a corrupt one is a `JsError` with a message,
+//! agents step, and bulk state comes back as typed arrays.
+#![cfg(target_arch = "wasm32")]
+
+use steering::bindings::{self, Lab};
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
+
+fn message(e: wasm_bindgen::JsError) -> String {
+    let v: JsValue = e.into();
+    js_sys::Error::from(v).message().into()
+}
+
+#[wasm_bindgen_test]
+fn version_matches_the_crate() {
+    assert_eq!(bindings::version(), env!("CARGO_PKG_VERSION"));
+}
+
+#[wasm_bindgen_test]
+fn random_samples_are_seeded_and_in_range() {
+    let a = bindings::random_samples(7, 64);
+    let b = bindings::random_samples(7, 64);
+    assert_eq!(a, b);
+    assert!(a.iter().all(|x| (0.0..1.0).contains(x)));
+    assert_ne!(a, bindings::random_samples(8, 64));
+}
+
+#[wasm_bindgen_test]
+fn the_committed_table_loads_and_gives_a_field() {
+    let lab = Lab::new(TABLE).map_err(message).unwrap();
+    let field = lab.eta_field(1.0, 0.0, 1.3);
+    assert!(
+        field.len() >= 4 * 100 && field.len() % 4 == 0,
+        "{}",
+        field.len()
+    );
+    assert!(field.iter().all(|x| x.is_finite()));
+    let ring = lab.eta_ring_at(3.0, 1.0, 0.0, 1.3);
+    assert!(!ring.is_empty() && ring.len() % 4 == 0);
+    let d0 = ring[0];
+    assert!(ring.chunks(4).all(|c| c[0] == d0), "one ring, one distance");
+}
+
+#[wasm_bindgen_test]
+fn corrupt_tables_are_errors_with_a_message() {
+    let m = message(
+        Lab::new(b"not a table")
+            .err()
+            .expect("garbage must be refused"),
+    );
+    assert!(m.contains("η table"), "{m}");
+    let mut flipped = TABLE.to_vec();
+    let mid = flipped.len() / 2;
+    flipped[mid] ^= 0x40;
+    let m = message(
+        Lab::new(&flipped)
+            .err()
+            .expect("a flipped bit must be refused"),
+    );
+    assert!(m.contains("checksum") || m.contains("corrupt"), "{m}");
+    let m = message(
+        Lab::new(&TABLE[..TABLE.len() - 7])
+            .err()
+            .expect("truncation must be refused"),
+    );
+    assert!(m.contains("truncated") || m.contains("η table"), "{m}");
+}
+
+fn goal(x: f64, y: f64, beta: f64) -> JsValue {
+    let o = js_sys::Object::new();
+    for (k, v) in [
+        ("x", x),
+        ("y", y),
+        ("beta", beta),
+        ("dTol", 0.3),
+        ("epsTol", 0.17),
+        ("speed", 1.3),
+    ] {
+        js_sys::Reflect::set(&o, &k.into(), &v.into()).unwrap();
+    }
+    js_sys::Reflect::set(&o, &"halting".into(), &true.into()).unwrap();
+    o.into()
+}
+
+fn agent(x: f64, y: f64, theta: f64, goals: &[JsValue]) -> JsValue {
+    let o = js_sys::Object::new();
+    for (k, v) in [("x", x), ("y", y), ("theta", theta)] {
+        js_sys::Reflect::set(&o, &k.into(), &v.into()).unwrap();
+    }
+    let arr = js_sys::Array::new();
+    for g in goals {
+        arr.push(g);
+    }
+    js_sys::Reflect::set(&o, &"goals".into(), &arr).unwrap();
+    o.into()
+}
+
+fn get(v: &JsValue, k: &str) -> JsValue {
+    js_sys::Reflect::get(v, &k.into()).unwrap()
+}
+
+#[wasm_bindgen_test]
+fn agents_step_and_state_comes_back_as_a_typed_array() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let i = lab
+        .add_agent(agent(-4.0, 0.0, 0.0, &[goal(4.0, 2.0, 1.57)]))
+        .map_err(message)
+        .unwrap();
+    assert_eq!(i, 0);
+    let stride = Lab::state_stride() as usize;
+    let s0 = lab.state();
+    assert_eq!(s0.len(), stride);
+    let inter = lab.internals(0).map_err(message).unwrap();
+    let mode = get(&inter, "mode").as_f64().unwrap();
+    assert!(
+        mode == 2.0 || mode == 3.0,
+        "far target: Position_only or Funnelling, got {mode}"
+    );
+    assert!(get(&inter, "d").as_f64().unwrap() > 8.0);
+    lab.step(120);
+    let s1 = lab.state();
+    assert!(s1[3] > 0.5, "moving after 2 s: v = {}", s1[3]);
+    assert!((s1[0] - s0[0]).abs() > 0.5);
+    assert!(s1.iter().all(|x| x.is_finite()));
+    // The Float32Array the page sees.
+    let arr = js_sys::Float32Array::from(&s1[..]);
+    assert_eq!(arr.length() as usize, stride);
+    // Target dragged onto the vehicle: Orientation_only (or done) at once.
+    lab.set_goal(0, goal(f64::from(s1[0]), f64::from(s1[1]), 3.0))
+        .map_err(message)
+        .unwrap();
+    let m = get(&lab.internals(0).map_err(message).unwrap(), "mode")
+        .as_f64()
+        .unwrap();
+    assert!(m == 1.0 || m == 0.0, "inside the tolerance: {m}");
+    // Many agents.
+    lab.spawn_random(500, 3, 20.0, 1.3)
+        .map_err(message)
+        .unwrap();
+    assert_eq!(lab.count(), 501);
+    lab.step(10);
+    assert_eq!(lab.state().len(), 501 * stride);
+}
+
+#[wasm_bindgen_test]
+fn bad_inputs_are_errors_not_panics() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let m = message(lab.internals(3).err().unwrap());
+    assert!(m.contains("no agent 3"), "{m}");
+    let m = message(lab.add_agent(JsValue::from_str("nope")).err().unwrap());
+    assert!(m.contains("agent"), "{m}");
+    let m = message(lab.add_agent(agent(f64::NAN, 0.0, 0.0, &[])).err().unwrap());
+    assert!(m.contains("pos.x") || m.contains("finite"), "{m}");
+    let m = message(lab.set_pose(0, 0.0, 0.0, 0.0).err().unwrap());
+    assert!(m.contains("no agent 0"), "{m}");
+    let m = message(lab.load_scenario("{\"name\": 1}").err().unwrap());
+    assert!(m.contains("scenario"), "{m}");
+    let params = lab.params().map_err(message).unwrap();
+    js_sys::Reflect::set(&params, &"vMax".into(), &(-1.0).into()).unwrap();
+    let m = message(lab.set_params(params).err().unwrap());
+    assert!(m.contains("vMax"), "{m}");
+    let m = message(lab.spawn_random(1, 1, f32::NAN, 1.0).err().unwrap());
+    assert!(m.contains("extent"), "{m}");
+}
+
+#[wasm_bindgen_test]
+fn the_presets_load() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    for json in [
+        include_str!("../scenarios/p000_fig1_seek.json"),
+        include_str!("../scenarios/p000_fig3_funnel.json"),
+        include_str!("../scenarios/p000_fig8_eighty.json"),
+    ] {
+        let info = lab.load_scenario(json).map_err(message).unwrap();
+        assert!(get(&info, "agents").as_f64().unwrap() >= 1.0);
+        lab.step(60);
+        assert!(lab.state().iter().all(|x| x.is_finite()));
+    }
+}

@@ -1,0 +1,94 @@
+// Sliders with units, checkboxes and buttons, built into a panel element.
+// Each control writes through a callback; `set` updates it from outside
+// (a drag on the canvas, a preset, the URL) without firing the callback.
+
+export interface SliderSpec {
+  id: string;
+  label: string;
+  unit: string;
+  min: number;
+  max: number;
+  step: number;
+  value: number;
+  /** Displayed value = value × display (e.g. rad → deg). */
+  display?: number;
+  digits?: number;
+  onInput(v: number): void;
+}
+
+export interface Control {
+  set(v: number): void;
+  el: HTMLElement;
+}
+
+export function slider(parent: HTMLElement, s: SliderSpec): Control {
+  const k = s.display ?? 1;
+  const row = document.createElement("label");
+  row.className = "slider";
+  const name = document.createElement("span");
+  name.className = "name";
+  name.textContent = s.label;
+  const input = document.createElement("input");
+  input.type = "range";
+  input.id = s.id;
+  input.min = String(s.min * k);
+  input.max = String(s.max * k);
+  input.step = String(s.step * k);
+  const out = document.createElement("output");
+  out.htmlFor.add(s.id);
+  const show = (v: number): void => {
+    out.textContent = `${(v * k).toFixed(s.digits ?? 2)} ${s.unit}`;
+  };
+  const set = (v: number): void => {
+    input.value = String(v * k);
+    show(v);
+  };
+  input.addEventListener("input", () => {
+    const v = Number(input.value) / k;
+    show(v);
+    s.onInput(v);
+  });
+  set(s.value);
+  row.append(name, input, out);
+  parent.append(row);
+  return { set, el: row };
+}
+
+export function checkbox(
+  parent: HTMLElement,
+  id: string,
+  label: string,
+  value: boolean,
+  onChange: (v: boolean) => void,
+): { set(v: boolean): void; el: HTMLElement } {
+  const row = document.createElement("label");
+  row.className = "check";
+  const input = document.createElement("input");
+  input.type = "checkbox";
+  input.id = id;
+  input.checked = value;
+  input.addEventListener("change", () => onChange(input.checked));
+  row.append(input, document.createTextNode(` ${label}`));
+  parent.append(row);
+  return { set: (v) => { input.checked = v; }, el: row };
+}
+
+export function button(parent: HTMLElement, id: string, label: string, title: string, onClick: () => void): HTMLButtonElement {
+  const b = document.createElement("button");
+  b.type = "button";
+  b.id = id;
+  b.textContent = label;
+  b.title = title;
+  b.addEventListener("click", onClick);
+  parent.append(b);
+  return b;
+}
+
+export function section(parent: HTMLElement, title: string): HTMLFieldSetElement {
+  const box = document.createElement("fieldset");
+  const legend = document.createElement("legend");
+  legend.textContent = title;
+  box.append(legend);
+  parent.append(box);
+  return box;
+}

@@ -1,0 +1,43 @@
+// The heads-up display: the focus agent's controller internals and timing.
+
+import { MODE_NAMES } from "./render";
+
+export interface HudData {
+  mode: number | null;
+  d: number;
+  alpha: number;
+  eta: number;
+  deltaEta: number;
+  mu: number;
+  speed: number;
+  reachable: boolean;
+  usPerUpdate: number;
+  frameMs: number;
+  agents: number;
+  time: number;
+  paused: boolean;
+  slow: boolean;
+}
+
+const DEG = 180 / Math.PI;
+
+function deg(a: number): string {
+  return Number.isFinite(a) ? `${(a * DEG).toFixed(1).padStart(7)}°` : "      —";
+}
+
+export function renderHud(el: HTMLElement, h: HudData): void {
+  const mode = h.mode === null ? "—" : (MODE_NAMES[h.mode] ?? `mode ${h.mode}`);
+  const lines = [
+    `mode   ${mode}${h.reachable ? "" : " (unreachable: v_dt)"}`,
+    `D      ${Number.isFinite(h.d) ? h.d.toFixed(3).padStart(7) : "      —"} m`,
+    `α      ${deg(h.alpha)}`,
+    `η      ${deg(h.eta)}`,
+    `Δη     ${deg(h.deltaEta)}`,
+    `μ      ${deg(h.mu)}`,
+    `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
+    `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
+    `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,
+    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`,
+  ];
+  el.textContent = lines.join("\n");
+}

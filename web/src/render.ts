@@ -1,0 +1,390 @@
+// Drawing only: grid, trails, agents, targets in the paper's mode colours,
+// and the overlays (radial direction, η at the target, γ, the nearest η ring,
+// the η field, the relaxed arc 𝒜 and α_r). No state, no simulation.
+
+import type { Surface } from "./canvas";
+import { View } from "./view";
+import type { Trails } from "./trails";
+
+/** Mode numbering shared with the core (funnel::Mode). */
+export const MODE_NAMES = ["End_of_Steering", "Orientation_only", "Position_only", "Funnelling"] as const;
+export const MODE = { EndOfSteering: 0, OrientationOnly: 1, PositionOnly: 2, Funnelling: 3 } as const;
+
+/** Paper 000 §6: red circle = seek, blue triangle = orientation only,
+ *  red circle + triangle = funnelling; our neutral grey = end of steering. */
+export const COLOURS = {
+  seek: "#d62728",
+  orientation: "#1f5fd1",
+  end: "#8a8f98",
+  background: "#fbfaf7",
+  grid: "#e6e3dc",
+  axis: "#cfcac0",
+  vehicle: "#2b2b2b",
+  radial: "#222222",
+  eta: "#9c27b0",
+  gamma: "#138a36",
+  ring: "#e08a00",
+  ringDark: "#7a4b00",
+  field: "#5f7fa8",
+  fieldDark: "#1f2f48",
+  arc: "#00a3a3",
+  trail: "rgba(60, 60, 60, 0.35)",
+} as const;
+
+export interface TargetDraw {
+  x: number;
+  y: number;
+  beta: number;
+  dTol: number;
+  epsTol: number;
+  mode: number;
+}
+
+/** Samples in the vehicle frame: (distance, α, α+η, reachable 0/1) ×n. */
+export interface FieldDraw {
+  samples: Float32Array;
+  originX: number;
+  originY: number;
+  theta: number;
+  dark: string;
+  light: string;
+}
+
+export interface Overlay {
+  x: number;
+  y: number;
+  theta: number;
+  targetX: number;
+  targetY: number;
+  /** θ+α+η: predicted final tangential direction (world). */
+  etaDir: number | null;
+  /** Modulated heading γ (world). */
+  gamma: number | null;
+  /** Relaxed arc 𝒜 (world angles from the vehicle) on radius `arcR`, and α_r. */
+  arc: { r: number; a0: number; a1: number; ar: number } | null;
+}
+
+export interface Scene {
+  state: Float32Array;
+  stride: number;
+  count: number;
+  targets: TargetDraw[];
+  trails: Trails | null;
+  /** Index of the editable agent (handles drawn), or -1. */
+  focus: number;
+  focusTarget: TargetDraw | null;
+  overlay: Overlay | null;
+  showRadial: boolean;
+  ring: FieldDraw | null;
+  field: FieldDraw | null;
+  /** Screen length of the orientation/heading handles, CSS px. */
+  handlePx: number;
+}
+
+function arrow(ctx: CanvasRenderingContext2D, x: number, y: number, ang: number, len: number, head = 6): void {
+  const ex = x + Math.cos(ang) * len;
+  const ey = y - Math.sin(ang) * len;
+  ctx.beginPath();
+  ctx.moveTo(x, y);
+  ctx.lineTo(ex, ey);
+  ctx.moveTo(ex, ey);
+  ctx.lineTo(ex - Math.cos(ang - 0.45) * head, ey + Math.sin(ang - 0.45) * head);
+  ctx.moveTo(ex, ey);
+  ctx.lineTo(ex - Math.cos(ang + 0.45) * head, ey + Math.sin(ang + 0.45) * head);
+  ctx.stroke();
+}
+
+function grid(s: Surface, v: View): void {
+  const { ctx } = s;
+  let step = 1;
+  while (step * v.scale < 18) step *= 5;
+  const a = v.toWorld(0, s.height);
+  const b = v.toWorld(s.width, 0);
+  ctx.lineWidth = 1;
+  ctx.strokeStyle = COLOURS.grid;
+  ctx.beginPath();
+  for (let x = Math.floor(a.x / step) * step; x <= b.x; x += step) {
+    const p = v.toScreen(x, 0);
+    ctx.moveTo(Math.round(p.x) + 0.5, 0);
+    ctx.lineTo(Math.round(p.x) + 0.5, s.height);
+  }
+  for (let y = Math.floor(a.y / step) * step; y <= b.y; y += step) {
+    const p = v.toScreen(0, y);
+    ctx.moveTo(0, Math.round(p.y) + 0.5);
+    ctx.lineTo(s.width, Math.round(p.y) + 0.5);
+  }
+  ctx.stroke();
+  ctx.strokeStyle = COLOURS.axis;
+  const o = v.toScreen(0, 0);
+  ctx.beginPath();
+  ctx.moveTo(o.x, 0);
+  ctx.lineTo(o.x, s.height);
+  ctx.moveTo(0, o.y);
+  ctx.lineTo(s.width, o.y);
+  ctx.stroke();
+}
+
+/** Draws a target in its mode's colours (paper 000 §6). */
+export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw, handlePx: number, handles: boolean): void {
+  const c = v.toScreen(t.x, t.y);
+  const r = Math.max(2, t.dTol * v.scale);
+  const circle = t.mode === MODE.PositionOnly || t.mode === MODE.Funnelling || t.mode === MODE.EndOfSteering;
+  const triangle = t.mode === MODE.OrientationOnly || t.mode === MODE.Funnelling || t.mode === MODE.EndOfSteering;
+  const colour = t.mode === MODE.EndOfSteering ? COLOURS.end : t.mode === MODE.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
+  ctx.lineWidth = 2;
+  ctx.strokeStyle = colour;
+  ctx.fillStyle = colour;
+  if (circle) {
+    ctx.beginPath();
+    ctx.arc(c.x, c.y, r, 0, Math.PI * 2);
+    ctx.stroke();
+  } else {
+    // The tolerance circle stays visible (dashed, faint) for dragging.
+    ctx.save();
+    ctx.setLineDash([4, 4]);
+    ctx.globalAlpha = 0.35;
+    ctx.beginPath();
+    ctx.arc(c.x, c.y, r, 0, Math.PI * 2);
+    ctx.stroke();
+    ctx.restore();
+  }
+  const L = handlePx;
+  const a0 = t.beta - t.epsTol;
+  const a1 = t.beta + t.epsTol;
+  ctx.save();
+  if (!triangle) ctx.globalAlpha = 0.3;
+  ctx.globalAlpha *= 0.22;
+  ctx.beginPath();
+  ctx.moveTo(c.x, c.y);
+  ctx.lineTo(c.x + Math.cos(a0) * L, c.y - Math.sin(a0) * L);
+  ctx.lineTo(c.x + Math.cos(a1) * L, c.y - Math.sin(a1) * L);
+  ctx.closePath();
+  ctx.fill();
+  ctx.globalAlpha /= 0.22;
+  if (!triangle) ctx.setLineDash([4, 4]);
+  ctx.stroke();
+  ctx.restore();
+  // The orientation needle β.
+  ctx.beginPath();
+  ctx.moveTo(c.x, c.y);
+  ctx.lineTo(c.x + Math.cos(t.beta) * (L + 12), c.y - Math.sin(t.beta) * (L + 12));
+  ctx.stroke();
+  ctx.beginPath();
+  ctx.arc(c.x, c.y, 3, 0, Math.PI * 2);
+  ctx.fill();
+  if (handles) {
+    ctx.fillStyle = "#ffffff";
+    ctx.lineWidth = 1.5;
+    for (const [hx, hy] of [
+      [c.x + Math.cos(t.beta) * (L + 12), c.y - Math.sin(t.beta) * (L + 12)],
+      [c.x + Math.cos(a1) * L, c.y - Math.sin(a1) * L],
+    ] as const) {
+      ctx.beginPath();
+      ctx.arc(hx, hy, 5, 0, Math.PI * 2);
+      ctx.fill();
+      ctx.stroke();
+    }
+  }
+}
+
+function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: number, lineWidth: number): void {
+  const n = Math.floor(f.samples.length / 4);
+  const cos = Math.cos(f.theta);
+  const sin = Math.sin(f.theta);
+  for (const reach of [1, 0]) {
+    ctx.strokeStyle = reach ? f.light : f.dark;
+    ctx.lineWidth = lineWidth;
+    ctx.beginPath();
+    for (let k = 0; k < n; k++) {
+      const o = k * 4;
+      if ((f.samples[o + 3]! > 0.5 ? 1 : 0) !== reach) continue;
+      const d = f.samples[o]!;
+      const a = f.samples[o + 1]!;
+      const dir = f.samples[o + 2]! + f.theta;
+      const lx = d * Math.cos(a);
+      const ly = d * Math.sin(a);
+      const p = v.toScreen(f.originX + lx * cos - ly * sin, f.originY + lx * sin + ly * cos);
+      const ex = p.x + Math.cos(dir) * lenPx;
+      const ey = p.y - Math.sin(dir) * lenPx;
+      ctx.moveTo(p.x, p.y);
+      ctx.lineTo(ex, ey);
+      ctx.moveTo(ex, ey);
+      ctx.lineTo(ex - Math.cos(dir - 0.5) * lenPx * 0.35, ey + Math.sin(dir - 0.5) * lenPx * 0.35);
+    }
+    ctx.stroke();
+  }
+}
+
+function modeColour(mode: number): string {
+  return mode === MODE.EndOfSteering ? COLOURS.end : mode === MODE.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
+}
+
+/** Agents above this count are drawn as pixel sprites (one putImageData)
+ *  instead of canvas paths: path filling costs ~20 µs per agent in
+ *  software-rasterised Chromium, pixels cost well under 1 µs. */
+export const CROWD_THRESHOLD = 400;
+
+interface Sprite {
+  canvas: HTMLCanvasElement;
+  ctx: CanvasRenderingContext2D;
+  img: ImageData;
+  px: Uint32Array;
+}
+let sprite: Sprite | null = null;
+
+/** ABGR (little-endian RGBA bytes) of a #rrggbb colour. */
+function abgr(hex: string): number {
+  const n = parseInt(hex.slice(1), 16);
+  return (0xff << 24 | (n & 0xff) << 16 | (n & 0xff00) | (n >> 16 & 0xff)) >>> 0;
+}
+
+function drawCrowd(s: Surface, v: View, sc: Scene): void {
+  const W = s.canvas.width;
+  const H = s.canvas.height;
+  if (!sprite || sprite.canvas.width !== W || sprite.canvas.height !== H) {
+    const canvas = document.createElement("canvas");
+    canvas.width = W;
+    canvas.height = H;
+    const ctx = canvas.getContext("2d");
+    if (!ctx) return;
+    const img = ctx.createImageData(W, H);
+    sprite = { canvas, ctx, img, px: new Uint32Array(img.data.buffer) };
+  }
+  const { px } = sprite;
+  px.fill(0);
+  const k = s.dpr;
+  const colour = [abgr(COLOURS.end), abgr(COLOURS.orientation), abgr(COLOURS.vehicle), abgr(COLOURS.vehicle)];
+  const ox = v.width / 2;
+  const oy = v.height / 2;
+  const r = Math.max(1, Math.round(k));
+  const nose = 3 * k;
+  for (let i = 0; i < sc.count; i++) {
+    const o = i * sc.stride;
+    const sx = Math.round(((sc.state[o]! - v.cx) * v.scale + ox) * k);
+    const sy = Math.round((oy - (sc.state[o + 1]! - v.cy) * v.scale) * k);
+    if (sx < r + 4 * k || sy < r + 4 * k || sx >= W - r - 4 * k || sy >= H - r - 4 * k) continue;
+    const c = colour[sc.state[o + 5]! | 0] ?? colour[3]!;
+    for (let dy = -r; dy <= r; dy++) {
+      const row = (sy + dy) * W;
+      for (let dx = -r; dx <= r; dx++) px[row + sx + dx] = c;
+    }
+    const th = sc.state[o + 2]!;
+    const nx = Math.round(sx + Math.cos(th) * nose);
+    const ny = Math.round(sy - Math.sin(th) * nose);
+    px[ny * W + nx] = c;
+    px[Math.round((sy + ny) / 2) * W + Math.round((sx + nx) / 2)] = c;
+  }
+  sprite.ctx.putImageData(sprite.img, 0, 0);
+  s.ctx.drawImage(sprite.canvas, 0, 0, s.width, s.height);
+}
+
+function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
+  const size = Math.max(5, Math.min(14, 0.45 * v.scale));
+  const many = sc.count > 400;
+  const s = many ? Math.max(3, size * 0.6) : size;
+  // One path per mode colour: cheap enough for 10⁴ agents.
+  for (const mode of [0, 1, 2, 3]) {
+    ctx.fillStyle = mode === MODE.Funnelling || mode === MODE.PositionOnly ? COLOURS.vehicle : modeColour(mode);
+    ctx.beginPath();
+    for (let i = 0; i < sc.count; i++) {
+      const o = i * sc.stride;
+      if (sc.state[o + 5] !== mode) continue;
+      const p = v.toScreen(sc.state[o]!, sc.state[o + 1]!);
+      if (p.x < -20 || p.y < -20 || p.x > v.width + 20 || p.y > v.height + 20) continue;
+      const th = sc.state[o + 2]!;
+      const c = Math.cos(th);
+      const sn = -Math.sin(th);
+      ctx.moveTo(p.x + c * s, p.y + sn * s);
+      ctx.lineTo(p.x - c * s * 0.6 - sn * s * 0.55, p.y - sn * s * 0.6 + c * s * 0.55);
+      ctx.lineTo(p.x - c * s * 0.6 + sn * s * 0.55, p.y - sn * s * 0.6 - c * s * 0.55);
+      ctx.closePath();
+    }
+    ctx.fill();
+  }
+}
+
+export function drawScene(s: Surface, v: View, sc: Scene): void {
+  const { ctx } = s;
+  grid(s, v);
+  if (sc.field) drawField(ctx, v, sc.field, 10, 1);
+  if (sc.trails) {
+    ctx.strokeStyle = COLOURS.trail;
+    ctx.lineWidth = 1.25;
+    for (let i = 0; i < sc.trails.agents; i++) {
+      ctx.beginPath();
+      sc.trails.forEachPoint(i, (x, y, k) => {
+        const p = v.toScreen(x, y);
+        if (k === 0) ctx.moveTo(p.x, p.y);
+        else ctx.lineTo(p.x, p.y);
+      });
+      ctx.stroke();
+    }
+  }
+  const drawn = new Set<string>();
+  for (const t of sc.targets) {
+    const key = `${t.x.toFixed(2)},${t.y.toFixed(2)},${t.beta.toFixed(2)},${t.mode}`;
+    if (drawn.has(key)) continue;
+    drawn.add(key);
+    drawTarget(ctx, v, t, Math.min(sc.handlePx, 0.9 * sc.handlePx), false);
+  }
+  if (sc.focusTarget) drawTarget(ctx, v, sc.focusTarget, sc.handlePx, true);
+  const o = sc.overlay;
+  if (o) {
+    const p = v.toScreen(o.x, o.y);
+    const t = v.toScreen(o.targetX, o.targetY);
+    if (sc.showRadial) {
+      ctx.strokeStyle = COLOURS.radial;
+      ctx.lineWidth = 1;
+      ctx.setLineDash([6, 4]);
+      ctx.beginPath();
+      ctx.moveTo(p.x, p.y);
+      ctx.lineTo(t.x, t.y);
+      ctx.stroke();
+      ctx.setLineDash([]);
+    }
+    if (o.etaDir !== null) {
+      ctx.strokeStyle = COLOURS.eta;
+      ctx.lineWidth = 2;
+      arrow(ctx, t.x, t.y, o.etaDir, 50, 8);
+    }
+    if (o.gamma !== null) {
+      ctx.strokeStyle = COLOURS.gamma;
+      ctx.lineWidth = 2;
+      arrow(ctx, p.x, p.y, o.gamma, 55, 8);
+    }
+    if (o.arc) {
+      const r = o.arc.r * v.scale;
+      ctx.strokeStyle = COLOURS.arc;
+      ctx.lineWidth = 4;
+      ctx.beginPath();
+      ctx.arc(p.x, p.y, r, -o.arc.a1, -o.arc.a0);
+      ctx.stroke();
+      ctx.lineWidth = 1.5;
+      ctx.beginPath();
+      ctx.moveTo(p.x, p.y);
+      ctx.lineTo(p.x + Math.cos(o.arc.ar) * r, p.y - Math.sin(o.arc.ar) * r);
+      ctx.stroke();
+    }
+  }
+  if (sc.ring) drawField(ctx, v, sc.ring, 22, 1.5);
+  if (sc.count > CROWD_THRESHOLD) drawCrowd(s, v, sc);
+  else drawAgents(ctx, v, sc);
+  if (sc.focus >= 0 && sc.focus < sc.count) {
+    const q = sc.focus * sc.stride;
+    const p = v.toScreen(sc.state[q]!, sc.state[q + 1]!);
+    const th = sc.state[q + 2]!;
+    ctx.strokeStyle = COLOURS.vehicle;
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    ctx.moveTo(p.x, p.y);
+    const hx = p.x + Math.cos(th) * sc.handlePx * 0.7;
+    const hy = p.y - Math.sin(th) * sc.handlePx * 0.7;
+    ctx.lineTo(hx, hy);
+    ctx.stroke();
+    ctx.fillStyle = "#ffffff";
+    ctx.beginPath();
+    ctx.arc(hx, hy, 5, 0, Math.PI * 2);
+    ctx.fill();
+    ctx.stroke();
+  }
+}

@@ -1,0 +1,73 @@
+// The lab's user-editable state: everything the URL shares. Plain data.
+
+export interface Pose {
+  x: number;
+  y: number;
+  theta: number;
+}
+
+export interface Overlays {
+  radial: boolean;
+  eta: boolean;
+  gamma: boolean;
+  ring: boolean;
+  field: boolean;
+  trails: boolean;
+  arc: boolean;
+}
+
+/** Vehicle limits the sliders edit; absent = the core's default. */
+export interface Limits {
+  vMax?: number;
+  accelMax?: number;
+  omegaMax?: number;
+  omegaAccelMax?: number;
+  normalAccelMax?: number;
+}
+
+export interface LabState {
+  /** Start pose of the playground vehicle (agent 0). */
+  vehicle: Pose;
+  /** Target position and orientation β (rad). */
+  target: Pose;
+  /** Position tolerance (m) = circle radius. */
+  dTol: number;
+  /** Orientation tolerance (rad) = triangle half-opening. */
+  epsTol: number;
+  /** Desired speed (m/s). */
+  speed: number;
+  halting: boolean;
+  relaxed: boolean;
+  limits: Limits;
+  overlays: Overlays;
+  /** η field view inputs: current speed, angular speed, desired speed. */
+  field: { vC: number; omegaC: number; vD: number };
+  /** Scenario file name without .json; "" = playground. */
+  preset: string;
+  /** Extra funnelling agents spawned at random (performance runs). */
+  agents: number;
+  seed: number;
+  slow: boolean;
+  /** The view (world point at the canvas centre, px per m); null = fit. */
+  view: { cx: number; cy: number; scale: number } | null;
+}
+
+export function defaultState(): LabState {
+  return {
+    vehicle: { x: -4, y: -1, theta: 0 },
+    target: { x: 3, y: 1.5, theta: Math.PI / 2 },
+    dTol: 0.3,
+    epsTol: (10 * Math.PI) / 180,
+    speed: 1.3,
+    halting: true,
+    relaxed: false,
+    limits: {},
+    overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false },
+    field: { vC: 0.5, omegaC: 0, vD: 1.3 },
+    preset: "",
+    agents: 0,
+    seed: 1,
+    slow: false,
+    view: null,
+  };
+}

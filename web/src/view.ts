@@ -1,0 +1,66 @@
+// World ↔ screen transform. World: metres, y up, angles CCW from +x.
+// Screen: CSS pixels, y down. One View per canvas.
+
+export interface Vec {
+  x: number;
+  y: number;
+}
+
+export class View {
+  /** World point at the centre of the canvas. */
+  cx = 0;
+  cy = 0;
+  /** CSS pixels per metre. */
+  scale = 40;
+  width = 1;
+  height = 1;
+
+  resize(width: number, height: number): void {
+    this.width = Math.max(1, width);
+    this.height = Math.max(1, height);
+  }
+
+  toScreen(x: number, y: number): Vec {
+    return {
+      x: (x - this.cx) * this.scale + this.width / 2,
+      y: this.height / 2 - (y - this.cy) * this.scale,
+    };
+  }
+
+  toWorld(sx: number, sy: number): Vec {
+    return {
+      x: (sx - this.width / 2) / this.scale + this.cx,
+      y: (this.height / 2 - sy) / this.scale + this.cy,
+    };
+  }
+
+  /** A world angle (CCW, y up) as a screen angle for canvas arcs (CW, y down). */
+  static screenAngle(a: number): number {
+    return -a;
+  }
+
+  /** Zooms by `factor` keeping the world point under (sx, sy) fixed. */
+  zoomAt(sx: number, sy: number, factor: number): void {
+    const before = this.toWorld(sx, sy);
+    this.scale = Math.min(2000, Math.max(2, this.scale * factor));
+    const after = this.toWorld(sx, sy);
+    this.cx += before.x - after.x;
+    this.cy += before.y - after.y;
+  }
+
+  panBy(dxScreen: number, dyScreen: number): void {
+    this.cx -= dxScreen / this.scale;
+    this.cy += dyScreen / this.scale;
+  }
+
+  /** Fits the world box [x0,x1]×[y0,y1] with a margin in CSS pixels. */
+  fit(x0: number, y0: number, x1: number, y1: number, margin = 40): void {
+    const w = Math.max(1e-3, x1 - x0);
+    const h = Math.max(1e-3, y1 - y0);
+    this.cx = (x0 + x1) / 2;
+    this.cy = (y0 + y1) / 2;
+    const sx = (this.width - 2 * margin) / w;
+    const sy = (this.height - 2 * margin) / h;
+    this.scale = Math.min(2000, Math.max(2, Math.min(sx, sy)));
+  }
+}

@@ -1,0 +1,295 @@
+// Browser end-to-end test: the built page (web/dist) in Debian's headless
+// Chromium via playwright-core. Checks: no console errors or warnings; drags
+// change the target's mode colouring (hook state AND canvas pixels); tolerance
+// and orientation handles; presets; keyboard; URL state round trip and a
+// malformed link; a corrupt table shows a readable message. Screenshots go
+// to artifacts/ (gitignored). Prints "e2e: N passed, M failed".
+import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
+import { resolve } from "node:path";
+import assert from "node:assert/strict";
+import { readFileSync, copyFileSync } from "node:fs";
+
+let passed = 0;
+let failed = 0;
+async function check(name, f) {
+  try {
+    await f();
+    passed++;
+    console.log(`ok - ${name}`);
+  } catch (e) {
+    failed++;
+    console.log(`not ok - ${name}\n  ${String(e && e.stack ? e.stack : e).split("\n").slice(0, 6).join("\n  ")}`);
+  }
+}
+const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
+
+/** Canvas-pixel colour census around a CSS-pixel point of the lab canvas. */
+async function colours(page, at, radius) {
+  return page.evaluate(({ at, radius }) => {
+    const c = document.getElementById("lab");
+    // Read a copy: repeated getImageData on the page's own context would
+    // (rightly) make Chromium warn about readbacks.
+    const copy = document.createElement("canvas");
+    copy.width = c.width;
+    copy.height = c.height;
+    const ctx = copy.getContext("2d", { willReadFrequently: true });
+    ctx.drawImage(c, 0, 0);
+    const k = c.width / c.getBoundingClientRect().width;
+    const x0 = Math.max(0, Math.round((at.x - radius) * k));
+    const y0 = Math.max(0, Math.round((at.y - radius) * k));
+    const w = Math.min(c.width - x0, Math.round(2 * radius * k));
+    const h = Math.min(c.height - y0, Math.round(2 * radius * k));
+    const d = ctx.getImageData(x0, y0, w, h).data;
+    let red = 0, blue = 0, grey = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
+      if (r > 170 && g < 90 && b < 90) red++;
+      else if (b > 160 && r < 90 && g < 140) blue++;
+      else if (Math.abs(r - 138) < 12 && Math.abs(g - 143) < 12 && Math.abs(b - 152) < 12) grey++;
+    }
+    return { red, blue, grey };
+  }, { at, radius });
+}
+
+async function drag(page, from, to, steps = 12) {
+  const box = await page.locator("#lab").boundingBox();
+  await page.mouse.move(box.x + from.x, box.y + from.y);
+  await page.mouse.down();
+  await page.mouse.move(box.x + to.x, box.y + to.y, { steps });
+  await page.mouse.up();
+  await page.waitForTimeout(60);
+}
+
+const { server, url } = await serve();
+const browser = await launch();
+const allProblems = [];
+try {
+  // ---------------------------------------------------------------- playground
+  const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 2);
+  const t0 = Date.now();
+  await page.goto(url);
+  const err = await waitReady(page);
+  const first = await page.evaluate(() => window.__lab.firstFrameMs);
+  console.log(`# first drawn frame ${first.toFixed(0)} ms after navigation start (wall ${Date.now() - t0} ms)`);
+  await check("page loads with the table and draws", async () => {
+    assert.equal(err, null);
+    assert.ok((await page.evaluate(() => window.__lab.count())) >= 1);
+    assert.equal(await page.locator("#message").isHidden(), true);
+  });
+  await check("HiDPI: the backing store is devicePixelRatio × CSS size", async () => {
+    const r = await page.evaluate(() => {
+      const c = document.getElementById("lab");
+      return { w: c.width, cw: c.getBoundingClientRect().width, dpr: devicePixelRatio };
+    });
+    assert.equal(r.dpr, 2);
+    assert.ok(Math.abs(r.w - r.cw * 2) <= 2, JSON.stringify(r));
+  });
+  await page.waitForTimeout(1500);
+  await shot(page, "01-playground-running");
+
+  await check("keyboard: space pauses, s steps, r resets", async () => {
+    await page.locator("#lab").click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press("Space");
+    assert.equal(await page.locator("#play").getAttribute("aria-pressed"), "true");
+    const before = await page.evaluate(() => window.__lab.internals()?.d);
+    await page.keyboard.press("s");
+    const after = await page.evaluate(() => window.__lab.internals()?.d);
+    assert.notEqual(before, after);
+    await page.keyboard.press("r");
+    await page.waitForTimeout(50);
+    const st = await page.evaluate(() => window.__lab.state());
+    const h = await page.evaluate(() => window.__lab.handles());
+    assert.ok(h && Math.abs(h.vehicle.x - h.target.x) > 10);
+    assert.ok(st.vehicle);
+  });
+
+  await check("dragging the target onto the vehicle turns it blue (Orientation_only), out again red", async () => {
+    await page.evaluate(() => window.__lab.setPaused(true));
+    let h = await page.evaluate(() => window.__lab.handles());
+    const outMode = await page.evaluate(() => window.__lab.mode());
+    assert.ok(outMode === 2 || outMode === 3, `outside mode ${outMode}`);
+    await drag(page, h.target, h.vehicle);
+    h = await page.evaluate(() => window.__lab.handles());
+    const inMode = await page.evaluate(() => window.__lab.mode());
+    assert.ok(inMode === 1 || inMode === 0, `inside mode ${inMode}`);
+    const cin = await colours(page, h.target, 70);
+    await shot(page, "02-target-on-vehicle-orientation-only");
+    assert.ok(cin.blue > 50 || cin.grey > 50, `blue/grey pixels near target: ${JSON.stringify(cin)}`);
+    const far = { x: h.target.x + 300, y: h.target.y - 150 };
+    await drag(page, h.target, far);
+    h = await page.evaluate(() => window.__lab.handles());
+    const outMode2 = await page.evaluate(() => window.__lab.mode());
+    assert.ok(outMode2 === 2 || outMode2 === 3, `outside again mode ${outMode2}`);
+    const cout = await colours(page, h.target, 70);
+    await shot(page, "03-target-away-funnelling");
+    assert.ok(cout.red > 50 && cout.blue < cin.blue, `red pixels near target: ${JSON.stringify(cout)}`);
+  });
+
+  await check("tolerance circle rim and triangle corner and β handle drag", async () => {
+    let h = await page.evaluate(() => window.__lab.handles());
+    const s0 = await page.evaluate(() => window.__lab.state());
+    const dx = h.rim.x - h.target.x, dy = h.rim.y - h.target.y, n = Math.hypot(dx, dy);
+    await drag(page, h.rim, { x: h.rim.x + (dx / n) * 40, y: h.rim.y + (dy / n) * 40 });
+    const s1 = await page.evaluate(() => window.__lab.state());
+    assert.ok(s1.dTol > s0.dTol + 0.2, `dTol ${s0.dTol} -> ${s1.dTol}`);
+    h = await page.evaluate(() => window.__lab.handles());
+    await drag(page, h.opening, { x: h.target.x + (h.opening.x - h.target.x) * 0.2 + (h.target.y - h.opening.y) * -0.8, y: h.target.y + (h.opening.y - h.target.y) * 0.2 + (h.opening.x - h.target.x) * 0.8 });
+    const s2 = await page.evaluate(() => window.__lab.state());
+    assert.ok(Math.abs(s2.epsTol - s1.epsTol) > 0.1, `epsTol ${s1.epsTol} -> ${s2.epsTol}`);
+    h = await page.evaluate(() => window.__lab.handles());
+    await drag(page, h.beta, { x: h.target.x, y: h.target.y + 80 });
+    const s3 = await page.evaluate(() => window.__lab.state());
+    assert.ok(Math.abs(s3.target.theta - -Math.PI / 2) < 0.05, `beta ${s3.target.theta}`);
+    h = await page.evaluate(() => window.__lab.handles());
+    await drag(page, h.heading, { x: h.vehicle.x, y: h.vehicle.y - 80 });
+    const s4 = await page.evaluate(() => window.__lab.state());
+    assert.ok(Math.abs(s4.vehicle.theta - Math.PI / 2) < 0.05, `vehicle heading ${s4.vehicle.theta}`);
+    await shot(page, "04-handles-dragged");
+  });
+
+  await check("overlays and the η field view draw", async () => {
+    await page.locator("#ov-ring").check();
+    await page.locator("#ov-field").check();
+    await page.evaluate(() => window.__lab.setPaused(false));
+    await page.waitForTimeout(800);
+    await page.evaluate(() => window.__lab.setPaused(true));
+    await shot(page, "05-eta-field-and-ring");
+    await page.locator("#ov-field").uncheck();
+    await page.locator("#ov-ring").uncheck();
+  });
+
+  await check("exports: trajectories as CSV and JSON, the canvas as PNG", async () => {
+    await page.evaluate(() => window.__lab.setPaused(false));
+    await page.waitForTimeout(500);
+    const grab = async (id, name) => {
+      const [dl] = await Promise.all([page.waitForEvent("download"), page.click(`#${id}`)]);
+      const dest = resolve(artifacts, name);
+      copyFileSync(await dl.path(), dest);
+      assert.equal(dl.suggestedFilename(), name);
+      return readFileSync(dest);
+    };
+    const csv = (await grab("csv", "trajectories.csv")).toString("utf8").split("\n");
+    assert.equal(csv[0], "agent,t_s,x_m,y_m,theta_rad,v_mps,omega_radps,mode");
+    assert.ok(csv.length > 10, `${csv.length} CSV lines`);
+    assert.match(csv[5], /^0,[0-9.]+,-?[0-9.]+,-?[0-9.]+,-?[0-9.]+,[0-9.]+,-?[0-9.]+,(Funnelling|Position_only|Orientation_only|End_of_Steering)$/);
+    const json = JSON.parse((await grab("json", "trajectories.json")).toString("utf8"));
+    assert.equal(json.agents.length, 1);
+    assert.ok(json.agents[0].x.length > 5 && json.units.theta === "rad");
+    const png = await grab("png", "steering-lab.png");
+    assert.deepEqual([...png.subarray(0, 4)], [0x89, 0x50, 0x4e, 0x47]);
+    await page.evaluate(() => window.__lab.setPaused(true));
+  });
+
+  await check("the canvas follows the window size (HiDPI kept)", async () => {
+    const size = () => page.evaluate(() => {
+      const c = document.getElementById("lab");
+      return { w: c.width, h: c.height, cw: c.getBoundingClientRect().width };
+    });
+    const a = await size();
+    await page.setViewportSize({ width: 900, height: 640 });
+    await page.waitForTimeout(200);
+    const b = await size();
+    assert.ok(b.w < a.w && b.h < a.h, `${JSON.stringify(a)} -> ${JSON.stringify(b)}`);
+    assert.ok(Math.abs(b.w - b.cw * 2) <= 2);
+    await shot(page, "09-resized-900x640");
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.waitForTimeout(200);
+  });
+
+  await check("the URL state round-trips into a fresh page", async () => {
+    await page.waitForTimeout(400);
+    const href = page.url();
+    assert.ok(href.includes("#"), href);
+    const want = await page.evaluate(() => window.__lab.state());
+    const p2 = await openPage(browser);
+    await p2.page.goto(href);
+    assert.equal(await waitReady(p2.page), null);
+    const got = await p2.page.evaluate(() => window.__lab.state());
+    for (const k of ["dTol", "epsTol", "speed"]) assert.ok(Math.abs(got[k] - want[k]) < 1e-3, `${k}: ${got[k]} vs ${want[k]}`);
+    for (const k of ["x", "y", "theta"]) {
+      assert.ok(Math.abs(got.target[k] - want.target[k]) < 1e-3, `target.${k}`);
+      assert.ok(Math.abs(got.vehicle[k] - want.vehicle[k]) < 1e-3, `vehicle.${k}`);
+    }
+    assert.deepEqual(got.overlays, want.overlays);
+    assert.ok(want.view && got.view, "the view is in the link");
+    for (const k of ["cx", "cy", "scale"]) assert.ok(Math.abs(got.view[k] - want.view[k]) < 1e-3, `view.${k}: ${got.view[k]} vs ${want.view[k]}`);
+    allProblems.push(...p2.problems);
+    await p2.context.close();
+  });
+
+  await check("a malformed link falls back to defaults with a visible message", async () => {
+    const p3 = await openPage(browser);
+    await p3.page.goto(`${url}#vx=abc&dtol=-4&bogus=1&ov=radial,nope&preset=missing`);
+    assert.equal(await waitReady(p3.page), null);
+    const msg = p3.page.locator("#message");
+    assert.equal(await msg.isVisible(), true);
+    const text = await msg.textContent();
+    assert.match(text, /vx="abc"/);
+    assert.match(text, /bogus/);
+    const st = await p3.page.evaluate(() => window.__lab.state());
+    assert.equal(st.vehicle.x, -4);
+    assert.equal(st.preset, "");
+    await shot(p3.page, "06-malformed-link-message");
+    allProblems.push(...p3.problems);
+    await p3.context.close();
+  });
+
+  await check("a corrupt table shows a readable message on the page", async () => {
+    const p4 = await openPage(browser);
+    await p4.page.route("**/tables/eta.bin", (r) => r.fulfill({ status: 200, contentType: "application/octet-stream", body: Buffer.from("this is not an eta table at all") }));
+    await p4.page.goto(url);
+    const e = await waitReady(p4.page);
+    assert.ok(e && /η table/.test(e), String(e));
+    const text = await p4.page.locator("#message").textContent();
+    assert.match(text, /η table .* rejected/);
+    await shot(p4.page, "07-corrupt-table-message");
+    allProblems.push(...p4.problems);
+    await p4.context.close();
+  });
+
+  await check("touch: a finger drags the target (pointer events with capture)", async () => {
+    const t = await openPage(browser, { width: 800, height: 600 }, 1, { hasTouch: true, isMobile: false });
+    await t.page.goto(url);
+    assert.equal(await waitReady(t.page), null);
+    await t.page.evaluate(() => window.__lab.setPaused(true));
+    const h = await t.page.evaluate(() => window.__lab.handles());
+    const box = await t.page.locator("#lab").boundingBox();
+    const cdp = await t.context.newCDPSession(t.page);
+    const at = (p) => [{ x: box.x + p.x, y: box.y + p.y }];
+    await cdp.send("Input.dispatchTouchEvent", { type: "touchStart", touchPoints: at(h.target) });
+    for (let i = 1; i <= 10; i++) {
+      await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: at({ x: h.target.x - 12 * i, y: h.target.y + 8 * i }) });
+    }
+    await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
+    await t.page.waitForTimeout(50);
+    const h2 = await t.page.evaluate(() => window.__lab.handles());
+    assert.ok(Math.abs(h2.target.x - (h.target.x - 120)) < 3 && Math.abs(h2.target.y - (h.target.y + 80)) < 3, `${JSON.stringify(h.target)} -> ${JSON.stringify(h2.target)}`);
+    allProblems.push(...t.problems);
+    await t.context.close();
+  });
+
+  const presets = await page.evaluate(() => window.__lab.presets());
+  console.log(`# presets: ${presets.join(", ") || "(none)"}`);
+  for (const name of presets) {
+    await check(`preset ${name} loads from the selector and runs`, async () => {
+      await page.selectOption("#preset", name);
+      await page.waitForFunction((n) => window.__lab.state().preset === n && window.__lab.count() > 0, name, { timeout: 5000 });
+      assert.equal(await page.locator("#message").isHidden(), true, await page.locator("#message").textContent());
+      await page.evaluate(() => window.__lab.setPaused(false));
+      await page.waitForTimeout(1500);
+      await shot(page, `08-preset-${name}`);
+      assert.ok(page.url().includes(`preset=${encodeURIComponent(name)}`) || page.url().includes(`preset=${name}`));
+    });
+  }
+
+  allProblems.push(...problems);
+  await check("no console errors or warnings on any page", async () => {
+    assert.deepEqual(allProblems, []);
+  });
+  await context.close();
+} finally {
+  await browser.close();
+  await server.close();
+}
+console.log(`e2e: ${passed} passed, ${failed} failed`);
+process.exit(failed === 0 ? 0 : 1);

@@ -1,0 +1,63 @@
+// Shared by the e2e and perf scripts: serves web/dist with Vite's preview
+// server on 127.0.0.1 and launches Debian's Chromium via playwright-core.
+import { preview } from "vite";
+import { chromium } from "playwright-core";
+import { fileURLToPath } from "node:url";
+import { dirname, resolve } from "node:path";
+import { mkdirSync } from "node:fs";
+
+export const webDir = resolve(dirname(fileURLToPath(import.meta.url)), "..");
+export const artifacts = resolve(webDir, "../artifacts");
+mkdirSync(artifacts, { recursive: true });
+
+export const CHROMIUM_ARGS = [
+  "--headless=new",
+  "--no-sandbox",
+  "--disable-gpu",
+  "--disable-dev-shm-usage",
+  "--disable-background-networking",
+  "--disable-component-update",
+  "--disable-sync",
+  "--disable-quic",
+  "--no-first-run",
+];
+
+export async function serve() {
+  const server = await preview({
+    root: webDir,
+    configFile: resolve(webDir, "vite.config.ts"),
+    logLevel: "warn",
+    preview: { host: "127.0.0.1", port: 0, strictPort: false },
+  });
+  const url = server.resolvedUrls?.local?.[0];
+  if (!url) throw new Error("vite preview gave no URL");
+  return { server, url };
+}
+
+export async function launch() {
+  return chromium.launch({
+    executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
+    headless: true,
+    args: CHROMIUM_ARGS,
+  });
+}
+
+/** Opens a page that records console errors/warnings and page errors. */
+export async function openPage(browser, viewport = { width: 1280, height: 800 }, deviceScaleFactor = 1, extra = {}) {
+  const context = await browser.newContext({ viewport, deviceScaleFactor, ...extra });
+  const page = await context.newPage();
+  const problems = [];
+  page.on("console", (m) => {
+    if (m.type() === "error" || m.type() === "warning") problems.push(`console.${m.type()}: ${m.text()}`);
+  });
+  page.on("pageerror", (e) => problems.push(`pageerror: ${e.message}`));
+  return { context, page, problems };
+}
+
+export async function waitReady(page, timeout = 20000) {
+  await page.waitForFunction(() => {
+    const l = window.__lab;
+    return l && (l.error !== null || (l.ready && l.frames > 1));
+  }, null, { timeout });
+  return page.evaluate(() => window.__lab.error);
+}

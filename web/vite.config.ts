@@ -1,0 +1,53 @@
+// Vite config: serves web/ and hands the committed η table (../tables/) to
+// the page at /tables/*, in dev, in preview and in the built dist/.
+import { defineConfig, type Plugin } from "vite";
+import { readFileSync, readdirSync, existsSync } from "node:fs";
+import { resolve, basename } from "node:path";
+import type { IncomingMessage, ServerResponse } from "node:http";
+
+const TABLES = resolve(import.meta.dirname, "../tables");
+
+function serveTables(req: IncomingMessage, res: ServerResponse, next: () => void): void {
+  const url = req.url ?? "";
+  const m = /^\/tables\/([A-Za-z0-9_.-]+)(\?.*)?$/.exec(url);
+  if (!m || m[1] === undefined) return next();
+  const file = resolve(TABLES, basename(m[1]));
+  if (!existsSync(file)) {
+    res.statusCode = 404;
+    res.end("not found");
+    return;
+  }
+  res.setHeader("Content-Type", "application/octet-stream");
+  res.end(readFileSync(file));
+}
+
+function tables(): Plugin {
+  return {
+    name: "steering-tables",
+    configureServer(server) {
+      server.middlewares.use(serveTables);
+    },
+    configurePreviewServer(server) {
+      server.middlewares.use(serveTables);
+    },
+    generateBundle() {
+      if (!existsSync(TABLES)) return;
+      for (const f of readdirSync(TABLES)) {
+        if (!f.endsWith(".bin")) continue;
+        this.emitFile({ type: "asset", fileName: `tables/${f}`, source: readFileSync(resolve(TABLES, f)) });
+      }
+    },
+  };
+}
+
+// Cross-origin isolation gives performance.now() 5 µs resolution (instead
+// of 100 µs), which the HUD's µs-per-update figure needs.
+const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
+
+export default defineConfig({
+  base: "./",
+  plugins: [tables()],
+  server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
+  preview: { host: "127.0.0.1", headers: ISOLATION },
+  build: { target: "es2022", sourcemap: false },
+});
