@@ -56,6 +56,51 @@ pub struct BuildParams {
     pub max_time: f32,
 }
 
+impl BuildParams {
+    /// The 11 f32 parameters in header order: dt, v_max, accel_max,
+    /// omega_max, omega_accel_max, normal_accel_max, kp, kd, reach_radius,
+    /// orbit_turns, max_time.
+    #[must_use]
+    pub fn to_array(&self) -> [f32; 11] {
+        let v = &self.vehicle;
+        [
+            v.dt,
+            v.v_max,
+            v.accel_max,
+            v.omega_max,
+            v.omega_accel_max,
+            v.normal_accel_max,
+            v.kp,
+            v.kd,
+            self.reach_radius,
+            self.orbit_turns,
+            self.max_time,
+        ]
+    }
+
+    /// Inverse of [`BuildParams::to_array`].
+    #[must_use]
+    pub fn from_array(a: [f32; 11], integrator: Integrator) -> Self {
+        let vehicle = VehicleParams {
+            dt: a[0],
+            v_max: a[1],
+            accel_max: a[2],
+            omega_max: a[3],
+            omega_accel_max: a[4],
+            normal_accel_max: a[5],
+            kp: a[6],
+            kd: a[7],
+            integrator,
+        };
+        Self {
+            vehicle,
+            reach_radius: a[8],
+            orbit_turns: a[9],
+            max_time: a[10],
+        }
+    }
+}
+
 /// Why a table file was refused. Every variant has a readable message.
 #[derive(Clone, Debug, PartialEq)]
 pub enum TableError {
@@ -316,20 +361,7 @@ impl EtaTable {
 
     fn validate(&self) -> Result<(), TableError> {
         let v = &self.params.vehicle;
-        let pf = [
-            v.dt,
-            v.v_max,
-            v.accel_max,
-            v.omega_max,
-            v.omega_accel_max,
-            v.normal_accel_max,
-            v.kp,
-            v.kd,
-            self.params.reach_radius,
-            self.params.orbit_turns,
-            self.params.max_time,
-        ];
-        for (i, x) in pf.iter().enumerate() {
+        for (i, x) in self.params.to_array().iter().enumerate() {
             if !x.is_finite() {
                 return Err(TableError::NonFinite {
                     what: "build parameter",
@@ -443,21 +475,8 @@ impl EtaTable {
         let mut b = Vec::with_capacity(self.encoded_len());
         b.extend_from_slice(&MAGIC);
         b.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
-        let v = &self.params.vehicle;
-        b.extend_from_slice(&v.integrator.code().to_le_bytes());
-        for x in [
-            v.dt,
-            v.v_max,
-            v.accel_max,
-            v.omega_max,
-            v.omega_accel_max,
-            v.normal_accel_max,
-            v.kp,
-            v.kd,
-            self.params.reach_radius,
-            self.params.orbit_turns,
-            self.params.max_time,
-        ] {
+        b.extend_from_slice(&self.params.vehicle.integrator.code().to_le_bytes());
+        for x in self.params.to_array() {
             b.extend_from_slice(&x.to_le_bytes());
         }
         for a in &self.axes {
