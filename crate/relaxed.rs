@@ -42,13 +42,14 @@
 //!   uses a shrunk disk and interval (`disk_margin`, `orientation_margin`)
 //!   to absorb the table's interpolation error. The mode logic and the
 //!   end-of-steering test use the true tolerances.
-//! - **η at the arc ends**: the paper used a cheaper plain linear
-//!   interpolation. Here `R` is a sampled ring, so the multilinear lookup
-//!   has zero weight on the distance axis and blends 16 corners, not 32; we
-//!   use that (it keeps the accuracy of the standard lookup).
+//! - **η at the arc ends** ([`EndEta`]): like the paper, a cheap plain
+//!   linear interpolation by default (linear in α on the sampled ring,
+//!   nearest sample on the other axes: 2 entries read); the full
+//!   multilinear lookup is an option. Either way the decision that matters
+//!   (Δη at α_r, hence seek or funnel) is re-measured with the full lookup.
 //!
-//! Cost: constant per update — at most three η interpolations plus the μ
-//! bound's, no allocation, and a ≤ 16-sample scan for the nearest ring.
+//! Cost: constant per update — two cheap η reads, one full lookup and the
+//! μ bound's interpolation, no allocation, a ≤ 16-sample ring scan.
 
 use core::f32::consts::{PI, TAU};
 
@@ -95,6 +96,18 @@ impl ControllerKind {
     }
 }
 
+/// How η is evaluated at the two ends of the restricted arc 𝒜.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum EndEta {
+    /// The paper's cheaper reading (§4.2.4): linear in α on the ring,
+    /// nearest sample on ω, v_c, v_d ([`EtaTable::eta_ring_linear`]).
+    #[default]
+    Linear,
+    /// The full multilinear interpolation (16 non-zero corners on a ring).
+    Multilinear,
+}
+
 /// Settings of the relaxed controller (the μ bound is the shared
 /// [`FunnelConfig`]'s).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -104,6 +117,8 @@ pub struct RelaxedConfig {
     pub disk_margin: f32,
     /// Fraction of τ used for the interval T searched (0, 1].
     pub orientation_margin: f32,
+    /// η at the arc ends.
+    pub end_eta: EndEta,
 }
 
 impl Default for RelaxedConfig {
@@ -111,6 +126,7 @@ impl Default for RelaxedConfig {
         Self {
             disk_margin: 0.8,
             orientation_margin: 0.8,
+            end_eta: EndEta::Linear,
         }
     }
 }
@@ -376,12 +392,13 @@ impl RelaxedConfig {
         }
         // 1. The restricted arc 𝒜 on the ring nearest the disk centre.
         let r = self.disk_margin * g.d_tol;
-        let mut ring = table.distances()[0];
-        for &x in table.distances() {
-            if (x - d).abs() < (ring - d).abs() {
-                ring = x;
+        let mut ring_i = 0;
+        for (i, &x) in table.distances().iter().enumerate() {
+            if (x - d).abs() < (table.distances()[ring_i] - d).abs() {
+                ring_i = i;
             }
         }
+        let mut ring = table.distances()[ring_i];
         ri.ring_sampled = (ring - d).abs() <= r;
         if !ri.ring_sampled {
             ring = d;
@@ -392,10 +409,18 @@ impl RelaxedConfig {
         let a_max = (alpha_c + h).min(PI);
         // 2. F from η at the two arc ends.
         let v_q = v_d.max(table.axis(4)[0]);
-        let (Some(e0), Some(e1)) = (
-            table.eta(ring, a_min, s.omega, s.v, v_q),
-            table.eta(ring, a_max, s.omega, s.v, v_q),
-        ) else {
+        let ends = if self.end_eta == EndEta::Linear && ri.ring_sampled {
+            (
+                table.eta_ring_linear(ring_i, a_min, s.omega, s.v, v_q),
+                table.eta_ring_linear(ring_i, a_max, s.omega, s.v, v_q),
+            )
+        } else {
+            (
+                table.eta(ring, a_min, s.omega, s.v, v_q),
+                table.eta(ring, a_max, s.omega, s.v, v_q),
+            )
+        };
+        let (Some(e0), Some(e1)) = ends else {
             ri.branch = Fig7Branch::Fallback;
             return funnel.plan(table, p, s, g, mem);
         };

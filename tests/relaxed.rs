@@ -337,3 +337,29 @@ fn scenario_controller_field_is_parsed_and_checked() {
         .to_string();
     assert!(e.contains("diskMargin"), "{e}");
 }
+
+#[test]
+fn ring_linear_eta_matches_the_table_at_samples_and_stays_close() {
+    let t = table();
+    let p = VehicleParams::default();
+    let (n2, n3, n4) = (t.axis(2).len(), t.axis(3).len(), t.axis(4).len());
+    let mut checked = 0;
+    for ring in [0, 5, t.distances().len() - 1] {
+        for ia in [0, 7, 20, t.axis(1).len() - 1] {
+            let idx = [ring, ia, n2 / 2, n3 / 2, n4 / 2];
+            let (eta, _, flags) = t.entry(idx);
+            let v = t.axis(3)[idx[3]];
+            let omega = t.axis(2)[idx[2]] * p.omega_limit(v);
+            let got = t.eta_ring_linear(ring, t.axis(1)[ia], omega, v, t.axis(4)[idx[4]]);
+            if flags & steering::table::FLAG_ETA_VALID != 0 {
+                assert!(
+                    (got.unwrap() - eta).abs() < 1e-5,
+                    "{idx:?}: {got:?} vs {eta}"
+                );
+                checked += 1;
+            }
+        }
+    }
+    assert!(checked > 0);
+    assert_eq!(t.eta_ring_linear(999, 0.0, 0.0, 1.0, 1.0), None);
+}
