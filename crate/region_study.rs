@@ -60,6 +60,9 @@ pub struct RegionRun {
     pub reached: bool,
     /// Path metrics up to the end.
     pub path: PathMetrics,
+    /// Part of `path.curvature` turned in Orientation_only mode (inside
+    /// the disk, turning towards T at low speed), rad.
+    pub in_place_turn: f32,
     /// Distance to the centre at the end, m.
     pub final_distance: f32,
     /// |β − θ| at the end, rad.
@@ -93,6 +96,9 @@ pub fn run_region(
             break;
         }
         r.path.add(p, &prev, &s);
+        if out.mode == Mode::OrientationOnly {
+            r.in_place_turn += diff(s.theta, prev.theta).abs();
+        }
     }
     if !r.ended {
         r.time = max_time;

@@ -3,7 +3,7 @@
 //! ```text
 //! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE]
 //! steer reach [--n N] [--seed S] [--table FILE]
-//! steer relaxed [--n N] [--seed S] [--table FILE]
+//! steer relaxed [--n N] [--seed S] [--table FILE] [--disk-margin F] [--orientation-margin F]
 //! ```
 //! `run --controller standard|relaxed` overrides the scenario's controller.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
@@ -28,7 +28,7 @@ use steering::scenario::Scenario;
 use steering::study::{summarise, ReachStudy};
 use steering::table::EtaTable;
 
-const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE]";
+const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F]";
 
 #[derive(Serialize, Default)]
 #[serde(rename_all = "camelCase")]
@@ -319,6 +319,7 @@ fn relaxed(args: &[String]) -> Result<(), String> {
     let mut study = RegionStudy::default();
     let mut table_path = "tables/eta.bin".to_string();
     let mut dir = "scenarios".to_string();
+    let mut rcfg = steering::relaxed::RelaxedConfig::default();
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
@@ -336,12 +337,26 @@ fn relaxed(args: &[String]) -> Result<(), String> {
             }
             "--table" => table_path = it.next().cloned().ok_or("--table wants a file")?,
             "--scenarios" => dir = it.next().cloned().ok_or("--scenarios wants a folder")?,
+            "--disk-margin" => {
+                rcfg.disk_margin = it
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .ok_or("--disk-margin wants a number")?
+            }
+            "--orientation-margin" => {
+                rcfg.orientation_margin = it
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .ok_or("--orientation-margin wants a number")?
+            }
             s => return Err(format!("unknown argument `{s}`\n{USAGE}")),
         }
     }
+    rcfg.validate().map_err(|e| e.to_string())?;
     let table = load_table(&table_path)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
+    println!("Relaxed settings: {rcfg:?}");
     println!("Paper 001 presets (per agent, whole run; reach = finished every goal):");
     println!("| preset | agents | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
     println!("|---|---|---|---|---|---|---|");
@@ -359,6 +374,7 @@ fn relaxed(args: &[String]) -> Result<(), String> {
         sc.controller = ControllerKind::Standard;
         let st = simulate(&sc, &table)?;
         sc.controller = ControllerKind::Relaxed;
+        sc.relaxed = rcfg;
         let re = simulate(&sc, &table)?;
         print_row(n.trim_end_matches("_standard.json"), &compare(&st, &re));
         all_s.extend(st);
@@ -383,12 +399,7 @@ fn relaxed(args: &[String]) -> Result<(), String> {
     println!("|---|---|---|---|---|---|---|");
     let f = FunnelConfig::default();
     let rs = study.run_all(&table, &p, &Controller::Standard(f), threads);
-    let rr = study.run_all(
-        &table,
-        &p,
-        &Controller::Relaxed(f, steering::relaxed::RelaxedConfig::default()),
-        threads,
-    );
+    let rr = study.run_all(&table, &p, &Controller::Relaxed(f, rcfg), threads);
     let pick = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
         v.iter().map(|r| (r.path, r.reached)).collect()
     };
@@ -400,6 +411,19 @@ fn relaxed(args: &[String]) -> Result<(), String> {
         both.iter().map(|&i| (v[i].path, v[i].reached)).collect()
     };
     print_row("random, both reached", &compare(&sub(&rs), &sub(&rr)));
+    let mean = |v: &[steering::region_study::RegionRun],
+                f: fn(&steering::region_study::RegionRun) -> f32| {
+        v.iter().map(|r| f64::from(f(r))).sum::<f64>() / v.len().max(1) as f64
+    };
+    println!(
+        "∫|κ| split, std / rel: on the way {:.2} / {:.2} rad, turning in Orientation_only {:.2} / {:.2} rad; runs needing an in-place turn {:.1} % / {:.1} %",
+        mean(&rs, |r| r.path.curvature - r.in_place_turn),
+        mean(&rr, |r| r.path.curvature - r.in_place_turn),
+        mean(&rs, |r| r.in_place_turn),
+        mean(&rr, |r| r.in_place_turn),
+        100.0 * mean(&rs, |r| f32::from(u8::from(r.in_place_turn > 1e-3))),
+        100.0 * mean(&rr, |r| f32::from(u8::from(r.in_place_turn > 1e-3)))
+    );
     let viol: u32 = rr.iter().map(|r| r.path.violations).sum();
     println!("relaxed limit violations: {viol}");
     Ok(())
