@@ -199,6 +199,42 @@ pub fn halting_speed(p: &VehicleParams, d: f32) -> f32 {
     (2.0 * 0.8 * p.accel_max * d.max(0.0)).sqrt()
 }
 
+/// The position-tolerance phase of paper 000 Fig. 5, shared by the
+/// standard and the relaxed controllers ([`crate::relaxed`]): latches
+/// [`FunnelMemory::position_met`] from the distance `d` to the goal centre
+/// and, once met, fills `out` with End_of_Steering or Orientation_only.
+/// Returns true when the position tolerance is met (then `out` is final).
+#[inline]
+pub fn tolerance_phase(
+    p: &VehicleParams,
+    s: &VehicleState,
+    g: &Goal,
+    mem: &mut FunnelMemory,
+    d: f32,
+    out: &mut Internals,
+) -> bool {
+    let heading_err = diff(g.beta, s.theta);
+    if d < g.d_tol {
+        mem.position_met = true;
+    } else if d > FunnelMemory::release_radius(p, g) {
+        mem.position_met = false;
+    }
+    if mem.position_met {
+        out.delta_eta = heading_err;
+        if heading_err.abs() < g.eps_tol {
+            out.mode = Mode::EndOfSteering;
+            out.gamma = s.theta;
+            out.v_dt = if g.halting { 0.0 } else { g.speed };
+        } else {
+            out.mode = Mode::OrientationOnly;
+            out.gamma = g.beta;
+            out.v_dt = 0.0;
+        }
+        return true;
+    }
+    false
+}
+
 impl FunnelConfig {
     /// Rejects non-finite or out-of-range settings.
     ///
@@ -273,23 +309,7 @@ impl FunnelConfig {
             reachable: true,
             ..Default::default()
         };
-        let heading_err = diff(g.beta, s.theta);
-        if d < g.d_tol {
-            mem.position_met = true;
-        } else if d > FunnelMemory::release_radius(p, g) {
-            mem.position_met = false;
-        }
-        if mem.position_met {
-            out.delta_eta = heading_err;
-            if heading_err.abs() < g.eps_tol {
-                out.mode = Mode::EndOfSteering;
-                out.gamma = s.theta;
-                out.v_dt = if g.halting { 0.0 } else { g.speed };
-            } else {
-                out.mode = Mode::OrientationOnly;
-                out.gamma = g.beta;
-                out.v_dt = 0.0;
-            }
+        if tolerance_phase(p, s, g, mem, d, &mut out) {
             return out;
         }
         let lk = table.lookup(d, alpha, s.omega, s.v, v_d.max(table.axis(4)[0]));

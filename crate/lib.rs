@@ -21,6 +21,8 @@ pub mod funnel;
 pub mod metrics;
 pub mod path;
 pub mod path_follow;
+pub mod region_study;
+pub mod relaxed;
 pub mod rng;
 pub mod scenario;
 pub mod seek;

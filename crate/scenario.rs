@@ -12,6 +12,8 @@
 //!   "duration": 40,
 //!   "vehicle": { "vMax": 2.0 },                 // optional, VehicleParams
 //!   "funnel": { "bound": { "kind": "literal" } }, // optional, FunnelConfig
+//!   "controller": "relaxed",                    // optional: standard (default) | relaxed
+//!   "relaxed": { "diskMargin": 0.8 },           // optional, RelaxedConfig
 //!   "agents": [{
 //!     "x": 0, "y": 0, "thetaDeg": 0, "v": 0, "omega": 0,
 //!     "goals": [{
@@ -29,6 +31,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::funnel::{FunnelConfig, Goal};
+use crate::relaxed::{ControllerKind, RelaxedConfig};
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
 
@@ -53,6 +56,13 @@ pub struct Scenario {
     /// Funnelling settings.
     #[serde(default)]
     pub funnel: FunnelConfig,
+    /// Which controller (paper 001: region goals with `dTol` the disk
+    /// radius and `epsTolDeg` the half-width τ of T).
+    #[serde(default)]
+    pub controller: ControllerKind,
+    /// Relaxed-controller settings.
+    #[serde(default)]
+    pub relaxed: RelaxedConfig,
     /// The agents.
     pub agents: Vec<AgentSpec>,
 }
@@ -191,6 +201,7 @@ impl Scenario {
     pub fn validate(&self) -> Result<(), ScenarioError> {
         self.vehicle.validate()?;
         self.funnel.validate()?;
+        self.relaxed.validate()?;
         crate::vehicle::check_range("duration", self.duration, 0.0, 3600.0)?;
         if self.agents.len() > 100_000 {
             return Err(ScenarioError::Invalid(format!(
@@ -226,6 +237,7 @@ impl Scenario {
     pub fn world(&self) -> Result<World, ScenarioError> {
         self.validate()?;
         let mut w = World::new(self.vehicle, self.funnel)?;
+        w.set_controller(self.controller, self.relaxed)?;
         for (i, a) in self.agents.iter().enumerate() {
             let st = VehicleState::new(
                 Vec2::new(a.x, a.y),

@@ -763,6 +763,53 @@ impl EtaTable {
         self.blend(&pos).eta()
     }
 
+    /// η on the sampled distance ring `ring` (an index into
+    /// [`EtaTable::distances`]): linear in α between the two neighbouring
+    /// α samples, nearest sample on the ω, v_c and v_d axes. This is the
+    /// cheaper "simple linear interpolation" paper 001 §4.2.4 uses for the
+    /// two arc ends of the relaxed search (2 entries read instead of 32).
+    /// `None` when neither neighbour has an η or `ring` is out of range.
+    #[must_use]
+    pub fn eta_ring_linear(
+        &self,
+        ring: usize,
+        alpha: f32,
+        omega: f32,
+        v_c: f32,
+        v_d: f32,
+    ) -> Option<f32> {
+        if ring >= self.axes[0].len() {
+            return None;
+        }
+        let pa = periodic_pos(&self.axes[1], wrap(alpha));
+        let near = |k: usize, x: f32| {
+            let mut c = false;
+            let p = axis_pos(&self.axes[k], x, &mut c);
+            if p.t < 0.5 {
+                p.i0
+            } else {
+                p.i1
+            }
+        };
+        let base = ring * self.strides[0]
+            + near(2, self.omega_fraction(omega, v_c)) * self.strides[2]
+            + near(3, v_c) * self.strides[3]
+            + near(4, v_d) * self.strides[4];
+        let ia = base + pa.i0 * self.strides[1];
+        let ib = base + pa.i1 * self.strides[1];
+        let va = self.flags[ia] & FLAG_ETA_VALID != 0;
+        let vb = self.flags[ib] & FLAG_ETA_VALID != 0;
+        match (va, vb) {
+            (true, true) => {
+                let ea = self.eta[ia];
+                Some(wrap(ea + pa.t * wrap(self.eta[ib] - ea)))
+            }
+            (true, false) => Some(self.eta[ia]),
+            (false, true) => Some(self.eta[ib]),
+            (false, false) => None,
+        }
+    }
+
     /// The funnelling lookup of paper 000 Fig. 4, first half: reachability
     /// at the desired speed; if unreachable, the fallback speed `v_dt`, and
     /// η interpolated at `v_dt` (a second interpolation). Reachability is

@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::metrics::PathMetrics;
+use crate::relaxed::{ControllerKind, RelaxedConfig, RelaxedInternals};
 use crate::seek::seek_step;
 use crate::table::EtaTable;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
@@ -109,6 +110,10 @@ pub struct Agent {
     pub memory: FunnelMemory,
     /// Internals of the last update.
     pub internals: Internals,
+    /// Relaxed-search internals of the last update (paper 001 Fig. 7:
+    /// 𝒜, F, T, α_r, Δη, relaxed point); default when the standard
+    /// controller runs or the position is met.
+    pub relaxed: RelaxedInternals,
     /// The current goal as it was last evaluated (moving goals move).
     pub goal_now: Goal,
     /// Path metrics since the start.
@@ -132,6 +137,10 @@ pub struct World {
     pub params: VehicleParams,
     /// Funnelling settings shared by every agent.
     pub config: FunnelConfig,
+    /// Which controller steers the agents (standard unless set).
+    pub controller: ControllerKind,
+    /// Relaxed-controller settings (used when `controller` is relaxed).
+    pub relaxed: RelaxedConfig,
     /// The agents.
     pub agents: Vec<Agent>,
     /// Simulated time, s.
@@ -150,10 +159,34 @@ impl World {
         Ok(Self {
             params,
             config,
+            controller: ControllerKind::Standard,
+            relaxed: RelaxedConfig::default(),
             agents: Vec::new(),
             time: 0.0,
             snapshot: Vec::new(),
         })
+    }
+
+    /// Chooses the controller (paper 001: standard or relaxed funnelling).
+    ///
+    /// # Errors
+    /// Invalid relaxed settings.
+    pub fn set_controller(
+        &mut self,
+        kind: ControllerKind,
+        relaxed: RelaxedConfig,
+    ) -> Result<(), ParamError> {
+        relaxed.validate()?;
+        self.controller = kind;
+        self.relaxed = relaxed;
+        Ok(())
+    }
+
+    /// Relaxed internals of agent `i` from its last update (for the
+    /// bindings and the front end), `None` if there is no such agent.
+    #[must_use]
+    pub fn relaxed_internals(&self, i: usize) -> Option<&RelaxedInternals> {
+        self.agents.get(i).map(|a| &a.relaxed)
     }
 
     /// Adds an agent; returns its index.
@@ -203,6 +236,7 @@ impl World {
                 mode: Mode::EndOfSteering,
                 ..Default::default()
             },
+            relaxed: RelaxedInternals::default(),
             goal_now,
             metrics: PathMetrics::default(),
             finished_at: None,
@@ -231,6 +265,7 @@ impl World {
                 };
                 let hold = a.state.theta;
                 seek_step(&p, &mut a.state, hold, speed);
+                a.relaxed = RelaxedInternals::default();
                 a.internals = Internals {
                     mode: Mode::EndOfSteering,
                     v_dt: speed,
@@ -241,9 +276,21 @@ impl World {
                 let spec = a.goals[a.current];
                 let goal = spec.at(t, &self.snapshot);
                 a.goal_now = goal;
-                a.internals = self
-                    .config
-                    .step(table, &p, &mut a.state, &goal, &mut a.memory);
+                a.internals = match self.controller {
+                    ControllerKind::Standard => {
+                        self.config
+                            .step(table, &p, &mut a.state, &goal, &mut a.memory)
+                    }
+                    ControllerKind::Relaxed => self.relaxed.step(
+                        &self.config,
+                        table,
+                        &p,
+                        &mut a.state,
+                        &goal,
+                        &mut a.memory,
+                        &mut a.relaxed,
+                    ),
+                };
                 let switch = match spec.switch {
                     SwitchRule::EndOfSteering => a.internals.mode == Mode::EndOfSteering,
                     SwitchRule::Tolerance => a.memory.position_met,

@@ -84,4 +84,36 @@ for i in range(80):
 write("p000_fig8_eighty", "paper 000 Fig. 8",
       "Performance case: 80 agents assigned to five slowly moving oriented targets; draw 500-point traces.",
       agents, duration=60)
+
+# Paper 001 Figs. 10-12: relaxed vs standard funnelling towards region goals
+# (tolerance disk of radius dTol, orientation interval betaDeg +/- epsTolDeg).
+# Each case is written twice, identical except for "controller"; `steer run
+# --controller` overrides it, `steer relaxed` compares both.
+def nine_from_left(goals, x0=-14.0):
+    return [agent(x0, y, 0, goals, v=1.3) for y in [-4, -3, -2, -1, 0, 1, 2, 3, 4]]
+
+def both(name, source, description, agents, duration):
+    for ctl in ("standard", "relaxed"):
+        write(name + "_" + ctl, source, description + " Controller: " + ctl + ".", agents,
+              duration=duration, controller=ctl)
+
+def far(beta, dist=25.0):
+    b = math.radians(beta)
+    return goal(dist * math.cos(b), dist * math.sin(b), beta, dTol=1.0, epsTolDeg=180, halting=True)
+
+for beta, letters in [(0, "a/d"), (45, "b/e"), (120, "c/f")]:
+    both("p001_fig10_beta%d" % beta, "paper 001 Fig. 10%s" % letters,
+         "Nine entities enter from the left towards a 2 m region goal oriented %d deg (tolerance 10 deg), then a distant goal in that direction." % beta,
+         nine_from_left([goal(0, 0, beta, dTol=2.0, epsTolDeg=10), far(beta)]), 50)
+
+for tol in [5, 15, 30, 45]:
+    both("p001_fig11_tol%d" % tol, "paper 001 Fig. 11",
+         "Widening orientation tolerance: a 2 m region goal oriented 90 deg with +/- %d deg, then a distant goal." % tol,
+         nine_from_left([goal(0, 0, 90, dTol=2.0, epsTolDeg=tol), far(90)]), 50)
+
+chain = [(0, 0, 30), (12, 8, -20), (24, 2, -60), (30, -10, -90)]
+both("p001_fig12_successive", "paper 001 Fig. 12",
+     "Successive region goals (2 m disks, 10 deg tolerance); the last one halts.",
+     nine_from_left([goal(x, y, b, dTol=2.0, epsTolDeg=10, halting=(i == len(chain) - 1))
+                     for i, (x, y, b) in enumerate(chain)]), 70)
 print("presets written to", HERE)

@@ -3,7 +3,12 @@
 //! ```text
 //! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE]
 //! steer reach [--n N] [--seed S] [--table FILE]
+//! steer relaxed [--n N] [--seed S] [--table FILE] [--disk-margin F] [--orientation-margin F]
 //! ```
+//! `run --controller standard|relaxed` overrides the scenario's controller.
+//! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
+//! controllers, then the seeded random region-goal study, and prints the
+//! comparison of paper 001 (path length, integrated |curvature|, reach).
 //! `run` simulates a scenario file (schema: `crate/scenario.rs`) and writes
 //! the per-step pose, speeds and mode of every agent plus its metrics.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
@@ -21,11 +26,14 @@ use serde::Serialize;
 use steering::angle::diff;
 use steering::dubins;
 use steering::funnel::{FunnelConfig, MuBound};
+use steering::metrics::PathMetrics;
+use steering::region_study::{compare, Comparison, RegionStudy};
+use steering::relaxed::{Controller, ControllerKind};
 use steering::scenario::Scenario;
 use steering::study::{summarise, ReachStudy};
 use steering::table::EtaTable;
 
-const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE]\n  steer reach [--n N] [--seed S] [--table FILE]";
+const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F]";
 
 #[derive(Serialize, Default)]
 #[serde(rename_all = "camelCase")]
@@ -80,10 +88,18 @@ fn run(args: &[String]) -> Result<(), String> {
     let mut out = None;
     let mut every = 1u32;
     let mut table_path = "tables/eta.bin".to_string();
+    let mut controller = None;
     let mut it = args.iter();
     while let Some(a) = it.next() {
         match a.as_str() {
             "--out" => out = it.next().cloned(),
+            "--controller" => {
+                controller = Some(
+                    it.next()
+                        .and_then(|s| ControllerKind::parse(s))
+                        .ok_or("--controller wants standard or relaxed")?,
+                )
+            }
             "--every" => {
                 every = it
                     .next()
@@ -100,7 +116,10 @@ fn run(args: &[String]) -> Result<(), String> {
     let out = out.ok_or("--out TRAJ.json|TRAJ.csv is required")?;
     let text =
         std::fs::read_to_string(&scenario).map_err(|e| format!("cannot read {scenario}: {e}"))?;
-    let sc = Scenario::from_json(&text).map_err(|e| format!("{scenario}: {e}"))?;
+    let mut sc = Scenario::from_json(&text).map_err(|e| format!("{scenario}: {e}"))?;
+    if let Some(c) = controller {
+        sc.controller = c;
+    }
     let table = load_table(&table_path)?;
     table
         .check_params(&sc.vehicle)
@@ -193,8 +212,9 @@ fn run(args: &[String]) -> Result<(), String> {
         .map(|a| a.metrics.limit_violations)
         .sum();
     println!(
-        "steer: {} — {} agents, {steps} steps, {done} finished all goals, {viol} limit violations -> {out}",
+        "steer: {} ({}) — {} agents, {steps} steps, {done} finished all goals, {viol} limit violations -> {out}",
         sc.name,
+        sc.controller.name(),
         result.agents.len()
     );
     Ok(())
@@ -275,11 +295,151 @@ fn reach(args: &[String]) -> Result<(), String> {
     Ok(())
 }
 
+/// Runs a scenario to its duration; per agent: path metrics and whether
+/// every goal was completed.
+fn simulate(sc: &Scenario, table: &EtaTable) -> Result<Vec<(PathMetrics, bool)>, String> {
+    let mut w = sc.world().map_err(|e| e.to_string())?;
+    for _ in 0..sc.steps() {
+        w.step(table);
+    }
+    Ok(w.agents.iter().map(|a| (a.metrics, a.done())).collect())
+}
+
+fn print_row(name: &str, c: &Comparison) {
+    println!(
+        "| {name} | {} | {:.2} / {:.2} | {:.2} / {:.2} | {:.1} % | {:.1} % | {:.1} % / {:.1} % |",
+        c.n,
+        c.length.0,
+        c.length.1,
+        c.curvature.0,
+        c.curvature.1,
+        100.0 * c.relaxed_shorter,
+        100.0 * c.relaxed_less_curved,
+        100.0 * c.reach.0,
+        100.0 * c.reach.1
+    );
+}
+
+fn relaxed(args: &[String]) -> Result<(), String> {
+    let mut study = RegionStudy::default();
+    let mut table_path = "tables/eta.bin".to_string();
+    let mut dir = "scenarios".to_string();
+    let mut rcfg = steering::relaxed::RelaxedConfig::default();
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        match a.as_str() {
+            "--n" => {
+                study.n = it
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .ok_or("--n wants an integer")?
+            }
+            "--seed" => {
+                study.seed = it
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .ok_or("--seed wants an integer")?
+            }
+            "--table" => table_path = it.next().cloned().ok_or("--table wants a file")?,
+            "--scenarios" => dir = it.next().cloned().ok_or("--scenarios wants a folder")?,
+            "--disk-margin" => {
+                rcfg.disk_margin = it
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .ok_or("--disk-margin wants a number")?
+            }
+            "--orientation-margin" => {
+                rcfg.orientation_margin = it
+                    .next()
+                    .and_then(|s| s.parse().ok())
+                    .ok_or("--orientation-margin wants a number")?
+            }
+            s => return Err(format!("unknown argument `{s}`\n{USAGE}")),
+        }
+    }
+    rcfg.validate().map_err(|e| e.to_string())?;
+    let table = load_table(&table_path)?;
+    let p = steering::vehicle::VehicleParams::default();
+    table.check_params(&p).map_err(|e| e.to_string())?;
+    println!("Relaxed settings: {rcfg:?}");
+    println!("Paper 001 presets (per agent, whole run; reach = finished every goal):");
+    println!("| preset | agents | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
+    println!("|---|---|---|---|---|---|---|");
+    let mut names: Vec<String> = std::fs::read_dir(&dir)
+        .map_err(|e| format!("cannot read {dir}: {e}"))?
+        .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
+        .filter(|n| n.starts_with("p001_") && n.ends_with("_standard.json"))
+        .collect();
+    names.sort();
+    let (mut all_s, mut all_r) = (Vec::new(), Vec::new());
+    for n in &names {
+        let path = format!("{dir}/{n}");
+        let text = std::fs::read_to_string(&path).map_err(|e| format!("{path}: {e}"))?;
+        let mut sc = Scenario::from_json(&text).map_err(|e| format!("{path}: {e}"))?;
+        sc.controller = ControllerKind::Standard;
+        let st = simulate(&sc, &table)?;
+        sc.controller = ControllerKind::Relaxed;
+        sc.relaxed = rcfg;
+        let re = simulate(&sc, &table)?;
+        print_row(n.trim_end_matches("_standard.json"), &compare(&st, &re));
+        all_s.extend(st);
+        all_r.extend(re);
+    }
+    print_row("all presets", &compare(&all_s, &all_r));
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    println!(
+        "\nRandom region goals: {} scenarios, seed {}, D in [{}, {}] m, radius in [{}, {}] m, tau in [{:.0}, {:.0}] deg, v_d {} m/s, limit {} s (reach = ends inside the disk with heading inside T):",
+        study.n,
+        study.seed,
+        study.d_range.0,
+        study.d_range.1,
+        study.r_range.0,
+        study.r_range.1,
+        study.tau_range.0.to_degrees(),
+        study.tau_range.1.to_degrees(),
+        study.speed,
+        study.max_time
+    );
+    println!("| study | n | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
+    println!("|---|---|---|---|---|---|---|");
+    let f = FunnelConfig::default();
+    let rs = study.run_all(&table, &p, &Controller::Standard(f), threads);
+    let rr = study.run_all(&table, &p, &Controller::Relaxed(f, rcfg), threads);
+    let pick = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
+        v.iter().map(|r| (r.path, r.reached)).collect()
+    };
+    print_row("random", &compare(&pick(&rs), &pick(&rr)));
+    let both: Vec<usize> = (0..rs.len().min(rr.len()))
+        .filter(|&i| rs[i].reached && rr[i].reached)
+        .collect();
+    let sub = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
+        both.iter().map(|&i| (v[i].path, v[i].reached)).collect()
+    };
+    print_row("random, both reached", &compare(&sub(&rs), &sub(&rr)));
+    let mean = |v: &[steering::region_study::RegionRun],
+                f: fn(&steering::region_study::RegionRun) -> f32| {
+        v.iter().map(|r| f64::from(f(r))).sum::<f64>() / v.len().max(1) as f64
+    };
+    println!(
+        "∫|κ| split, std / rel: on the way {:.2} / {:.2} rad, turning in Orientation_only {:.2} / {:.2} rad; runs needing an in-place turn {:.1} % / {:.1} %",
+        mean(&rs, |r| r.path.curvature - r.in_place_turn),
+        mean(&rr, |r| r.path.curvature - r.in_place_turn),
+        mean(&rs, |r| r.in_place_turn),
+        mean(&rr, |r| r.in_place_turn),
+        100.0 * mean(&rs, |r| f32::from(u8::from(r.in_place_turn > 1e-3))),
+        100.0 * mean(&rr, |r| f32::from(u8::from(r.in_place_turn > 1e-3)))
+    );
+    let viol: u32 = rr.iter().map(|r| r.path.violations).sum();
+    println!("relaxed limit violations: {viol}");
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         Some("run") => run(&args[1..]),
         Some("reach") => reach(&args[1..]),
+        Some("relaxed") => relaxed(&args[1..]),
         Some("-h" | "--help") => {
             println!("{USAGE}");
             Ok(())

@@ -1,0 +1,170 @@
+//! Paper 001 Table 1 analogue: ns per control update (plan + one seek
+//! step), standard vs relaxed funnelling, for small (0.1 m, 1°) and large
+//! (2.5 m, 15°) tolerances, measured side by side in one run; the relaxed
+//! controller with the paper's cheap arc-end η (default) and with the full
+//! multilinear one.
+//!
+//! `cargo bench --bench relaxed -- --warm-up-time 1 --measurement-time 2`
+//! Criterion times each controller over a mix of goal parameters; then a
+//! plain timing loop gives the [min, max] over 16 goal-parameter bins
+//! (centre distance 1.5, 4, 10, 25 m × β offset 0°, 60°, 120°, 180° from the
+//! bearing; 256 random bearings and (v, ω) per bin), as in Table 1.
+
+use std::hint::black_box;
+use std::time::Instant;
+
+use criterion::{criterion_group, Criterion};
+use glam::Vec2;
+use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::relaxed::{Controller, EndEta, RelaxedConfig, RelaxedInternals};
+use steering::rng::Rng;
+use steering::table::EtaTable;
+use steering::vehicle::{VehicleParams, VehicleState};
+
+fn table() -> EtaTable {
+    EtaTable::from_bytes(
+        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
+    )
+    .unwrap()
+}
+
+const DISTANCES: [f32; 4] = [1.5, 4.0, 10.0, 25.0];
+const BETAS_DEG: [f32; 4] = [0.0, 60.0, 120.0, 180.0];
+
+/// 256 (state, goal) cases of one bin: start at the origin, random heading
+/// offset to the centre, random admissible (v, ω), β = bearing + offset.
+fn bin(d: f32, beta_deg: f32, tol: (f32, f32), seed: u64) -> Vec<(VehicleState, Goal)> {
+    let p = VehicleParams::default();
+    let mut r = Rng::new(seed);
+    (0..256)
+        .map(|_| {
+            let bearing = r.range(-3.1, 3.1);
+            let v = r.range(0.0, p.v_max);
+            let w = r.range(-1.0, 1.0) * p.omega_limit(v);
+            let sign = if r.range(0.0, 1.0) < 0.5 { -1.0 } else { 1.0 };
+            (
+                VehicleState::new(Vec2::ZERO, 0.0, v, w),
+                Goal {
+                    pos: Vec2::from_angle(bearing) * d,
+                    beta: bearing + sign * beta_deg.to_radians(),
+                    d_tol: tol.0,
+                    eps_tol: tol.1.to_radians(),
+                    speed: 1.3,
+                    halting: false,
+                },
+            )
+        })
+        .collect()
+}
+
+fn mixed(tol: (f32, f32)) -> Vec<(VehicleState, Goal)> {
+    let mut v = Vec::new();
+    for (i, d) in DISTANCES.iter().enumerate() {
+        for (j, b) in BETAS_DEG.iter().enumerate() {
+            v.extend(bin(*d, *b, tol, (i * 4 + j) as u64).into_iter().take(64));
+        }
+    }
+    v
+}
+
+#[inline]
+fn update(t: &EtaTable, p: &VehicleParams, c: &Controller, case: &(VehicleState, Goal)) {
+    let mut s = case.0;
+    let mut mem = FunnelMemory::default();
+    let mut ri = RelaxedInternals::default();
+    black_box(c.step(t, p, &mut s, black_box(&case.1), &mut mem, &mut ri));
+    black_box(&s);
+}
+
+const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15.0))];
+
+fn controllers() -> [(&'static str, Controller); 3] {
+    let f = FunnelConfig::default();
+    [
+        ("standard", Controller::Standard(f)),
+        ("relaxed", Controller::Relaxed(f, RelaxedConfig::default())),
+        (
+            "relaxed_multilinear_ends",
+            Controller::Relaxed(
+                f,
+                RelaxedConfig {
+                    end_eta: EndEta::Multilinear,
+                    ..Default::default()
+                },
+            ),
+        ),
+    ]
+}
+
+fn bench(c: &mut Criterion) {
+    let p = VehicleParams::default();
+    let t = table();
+    let mut g = c.benchmark_group("relaxed");
+    for (tn, tol) in TOLS {
+        let cases = mixed(tol);
+        for (cn, ctl) in controllers() {
+            g.bench_function(format!("{cn}_{tn}"), |b| {
+                let mut k = 0usize;
+                b.iter(|| {
+                    k = (k + 1) % cases.len();
+                    update(&t, &p, &ctl, &cases[k]);
+                });
+            });
+        }
+    }
+    g.finish();
+}
+
+/// Table 1: [min, max] over the bins of the mean ns per update.
+fn table1() {
+    let p = VehicleParams::default();
+    let t = table();
+    let n = 100_000usize;
+    println!(
+        "\nTable 1 analogue (ns per update, [min, max] over 16 goal-parameter bins; same run):"
+    );
+    println!("| controller | small tolerances (0.1 m, 1°) | large tolerances (2.5 m, 15°) |");
+    println!("|---|---|---|");
+    let mut means = [[0.0f64; 2]; 3];
+    let mut rows = Vec::new();
+    for (ci, (cn, ctl)) in controllers().iter().enumerate() {
+        let mut cells = Vec::new();
+        for (ti, (_, tol)) in TOLS.iter().enumerate() {
+            let (mut lo, mut hi, mut sum) = (f64::INFINITY, 0.0f64, 0.0);
+            for (i, d) in DISTANCES.iter().enumerate() {
+                for (j, b) in BETAS_DEG.iter().enumerate() {
+                    let cases = bin(*d, *b, *tol, (i * 4 + j) as u64);
+                    let t0 = Instant::now();
+                    for k in 0..n {
+                        update(&t, &p, ctl, &cases[k & 255]);
+                    }
+                    let ns = t0.elapsed().as_secs_f64() * 1e9 / n as f64;
+                    lo = lo.min(ns);
+                    hi = hi.max(ns);
+                    sum += ns;
+                }
+            }
+            means[ci][ti] = sum / 16.0;
+            cells.push(format!("[{lo:.0}, {hi:.0}] (mean {:.0})", sum / 16.0));
+        }
+        rows.push(format!("| {cn} | {} | {} |", cells[0], cells[1]));
+    }
+    for r in rows {
+        println!("{r}");
+    }
+    println!(
+        "relaxed / standard mean cost: small {:.2}, large {:.2}; with multilinear ends: small {:.2}, large {:.2}",
+        means[1][0] / means[0][0],
+        means[1][1] / means[0][1],
+        means[2][0] / means[0][0],
+        means[2][1] / means[0][1]
+    );
+}
+
+criterion_group!(benches, bench);
+
+fn main() {
+    benches();
+    table1();
+    Criterion::default().configure_from_args().final_summary();
+}

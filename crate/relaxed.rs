@@ -1,0 +1,538 @@
+//! Relaxed funnelling towards oriented *region goals* (paper 001 §4,
+//! Fig. 7; DESIGN §6).
+//!
+//! A region goal is a tolerance disk (centre `Goal::pos`, radius
+//! `Goal::d_tol`) and an orientation interval T = [β − τ, β + τ]
+//! (τ = `Goal::eps_tol`): any point of the disk is a valid target and any
+//! final orientation in T is valid. The standard controller
+//! ([`crate::funnel`]) still aims at the disk centre and at β exactly,
+//! which curves paths artificially (paper 001 Fig. 6b). The relaxed
+//! controller instead, every update:
+//!
+//! 1. takes the table ring (a sampled distance `R` of [`EtaTable::distances`])
+//!    nearest the disk centre and intersects it with the disk: the
+//!    restricted arc 𝒜 = [α_min, α_max] of candidate directions (paper 001
+//!    §4.2.3: the search is restricted to keep the cost constant);
+//! 2. evaluates η at the two arc ends only and forms the final-orientation
+//!    span F = [α_min + η(α_min), α_max + η(α_max)] (§4.2.4: α + η is
+//!    assumed monotonic over 𝒜, so the two ends bound it; F may extend past
+//!    ±π, hence every comparison with T is made modulo 2π);
+//! 3. picks the relaxed direction α_r ∈ 𝒜 minimising |Δη| (primary
+//!    criterion §4.2.1: Δη = 0 means the funnelling reduces to a seek, the
+//!    cheapest control) and then |α| (secondary criterion §4.2.2: prefer
+//!    straight lines) with the boundary-only procedure of Fig. 7
+//!    ([`relaxed_direction`]);
+//! 4. funnels towards the relaxed point `pos + R·(cos, sin)(θ + α_r)` with
+//!    the standard machinery: one full table lookup there (reachability and
+//!    proactive speed `v_dt`), Δη re-measured against T with that η, then
+//!    seek (Δη = 0) or the bounded modulation μ of [`FunnelConfig`].
+//!
+//! Choices where the paper is silent (written down as DESIGN asks):
+//! - **Ring misses the disk** (a small disk between two sparse far rings):
+//!   the ring of radius equal to the centre distance is used instead, so 𝒜
+//!   is the disk's angular extent seen from the vehicle.
+//! - **𝒜 crossing ±π** (disk behind the vehicle): the paper handles only
+//!   𝒜 ⊂ [−π, π] (α + η jumps where the turn direction flips behind the
+//!   vehicle), so 𝒜 is clipped at ±π on the side of the centre's bearing.
+//! - **Vehicle inside the disk**: the position is met; orientation is then
+//!   completed exactly as in the standard controller
+//!   ([`crate::funnel::tolerance_phase`]).
+//! - **Margins**: the relaxed point lies on the disk boundary at the arc
+//!   ends and Δη = 0 only puts the prediction at T's edge, so the search
+//!   uses a shrunk disk and interval (`disk_margin`, `orientation_margin`)
+//!   to absorb the table's interpolation error. The mode logic and the
+//!   end-of-steering test use the true tolerances.
+//! - **η at the arc ends** ([`EndEta`]): like the paper, a cheap plain
+//!   linear interpolation by default (linear in α on the sampled ring,
+//!   nearest sample on the other axes: 2 entries read); the full
+//!   multilinear lookup is an option. Either way the decision that matters
+//!   (Δη at α_r, hence seek or funnel) is re-measured with the full lookup.
+//!
+//! Cost: constant per update — two cheap η reads, one full lookup and the
+//! μ bound's interpolation, no allocation, a ≤ 16-sample ring scan.
+
+use core::f32::consts::{PI, TAU};
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
+use crate::angle::{diff, wrap};
+use crate::funnel::{
+    halting_speed, tolerance_phase, FunnelConfig, FunnelMemory, Goal, Internals, Mode,
+};
+use crate::seek::seek_step;
+use crate::table::EtaTable;
+use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+
+/// Which controller steers the agents of a [`crate::world::World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum ControllerKind {
+    /// Standard funnelling towards the disk centre and β (paper 000).
+    #[default]
+    Standard,
+    /// Relaxed funnelling towards the region goal (paper 001 §4).
+    Relaxed,
+}
+
+impl ControllerKind {
+    /// Parses `standard` or `relaxed`.
+    #[must_use]
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "standard" => Some(Self::Standard),
+            "relaxed" => Some(Self::Relaxed),
+            _ => None,
+        }
+    }
+
+    /// `standard` or `relaxed`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Standard => "standard",
+            Self::Relaxed => "relaxed",
+        }
+    }
+}
+
+/// How η is evaluated at the two ends of the restricted arc 𝒜.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum EndEta {
+    /// The paper's cheaper reading (§4.2.4): linear in α on the ring,
+    /// nearest sample on ω, v_c, v_d ([`EtaTable::eta_ring_linear`]).
+    #[default]
+    Linear,
+    /// The full multilinear interpolation (16 non-zero corners on a ring).
+    Multilinear,
+}
+
+/// Settings of the relaxed controller (the μ bound is the shared
+/// [`FunnelConfig`]'s).
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
+#[serde(default, deny_unknown_fields, rename_all = "camelCase")]
+pub struct RelaxedConfig {
+    /// Fraction of the disk radius searched for the relaxed point (0, 1].
+    pub disk_margin: f32,
+    /// Fraction of τ used for the interval T searched (0, 1].
+    pub orientation_margin: f32,
+    /// η at the arc ends.
+    pub end_eta: EndEta,
+}
+
+impl Default for RelaxedConfig {
+    fn default() -> Self {
+        Self {
+            disk_margin: 0.8,
+            orientation_margin: 0.8,
+            end_eta: EndEta::Linear,
+        }
+    }
+}
+
+/// Which branch of paper 001 Fig. 7 decided α_r.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+#[repr(u8)]
+pub enum Fig7Branch {
+    /// Not computed (inside the disk, no goal, or the standard controller).
+    #[default]
+    None = 0,
+    /// Centres of F and T of opposite signs, straight ahead (α = 0) valid:
+    /// Δη = 0, α_r = 0.
+    OppositeStraight = 1,
+    /// Centres of opposite signs, overlap of F with T or T ± 2π: Δη = 0,
+    /// α_r the overlap point of smallest |α|.
+    OppositeOverlap = 2,
+    /// Centres of opposite signs, no overlap: α_r the 𝒜 end of smallest gap.
+    OppositeGap = 3,
+    /// Centres of the same sign, straight ahead valid: Δη = 0, α_r = 0.
+    SameStraight = 4,
+    /// Same sign, overlap: Δη = 0, α_r the overlap point of smallest |α|.
+    SameOverlap = 5,
+    /// Same sign, no overlap: α_r the 𝒜 end of smallest gap.
+    SameGap = 6,
+    /// No η available at the arc ends: the standard controller was used.
+    Fallback = 7,
+}
+
+/// The outcome of [`relaxed_direction`].
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct Choice {
+    /// Relaxed direction α_r ∈ 𝒜, rad (vehicle frame).
+    pub alpha_r: f32,
+    /// Δη = (nearest orientation of T) − (predicted final orientation at
+    /// α_r), rad; 0 when F overlaps T.
+    pub delta_eta: f32,
+    /// The branch taken.
+    pub branch: Fig7Branch,
+}
+
+/// Signed Δη of a predicted final orientation `f` against the interval
+/// T = [tc − τ, tc + τ] modulo 2π: 0 inside, else the signed distance to
+/// the nearest bound (target − prediction, like the standard Δη).
+#[inline]
+#[must_use]
+pub fn interval_delta(f: f32, tc: f32, tau: f32) -> f32 {
+    let d = wrap(f - tc);
+    if d > tau {
+        tau - d
+    } else if d < -tau {
+        -tau - d
+    } else {
+        0.0
+    }
+}
+
+/// Paper 001 Fig. 7: the optimal relaxed direction from boundaries only.
+///
+/// Inputs, all in the vehicle frame (angles relative to the heading θ):
+/// the arc 𝒜 = [`a_min`, `a_max`] ⊂ [−π, π], the predicted final
+/// orientations at its ends `f_min` = α_min + η(α_min) and `f_max` =
+/// α_max + η(α_max) (unwrapped so that `f_max − f_min` is the span, which
+/// may cross ±π), and T = [`tc` − `tau`, `tc` + `tau`].
+///
+/// Under the monotonic hypothesis α + η is taken linear between the ends
+/// ("mapped 𝒜 value" of Fig. 7). Fig. 7's early exits ("Δη = 0, α_r = 0"
+/// for opposite-sign centres with partial overlap, and for same-sign
+/// centres with boundaries of opposite signs) both mean that straight
+/// ahead is a valid choice; we test that exactly (0 ∈ 𝒜 and F(0) ∈ T mod
+/// 2π) instead of through the centres' signs, which is only a proxy, and
+/// keep the signs to label the branch. Otherwise F is compared with T
+/// and its 2π-translates (T ± 2π, T ± 4π since F spans up to [−3π, 3π]):
+/// an overlap gives Δη = 0 and α_r the point of the overlap's pre-image
+/// closest to 0; without overlap, F lies within one gap of the periodic
+/// set, where the distance is a tent, so the best point is an 𝒜 end:
+/// the end with the smallest |gap| (ties: smallest |α|). O(1).
+#[must_use]
+pub fn relaxed_direction(
+    a_min: f32,
+    a_max: f32,
+    f_min: f32,
+    f_max: f32,
+    tc: f32,
+    tau: f32,
+) -> Choice {
+    let tc = wrap(tc);
+    let centre_f = wrap(0.5 * (f_min + f_max));
+    let opposite = (centre_f < 0.0) != (tc < 0.0);
+    let span = f_max - f_min;
+    let da = a_max - a_min;
+    let flat = span.abs() < 1e-7;
+    // α of a final orientation f on 𝒜 (linear map, monotonic hypothesis).
+    let to_alpha = |f: f32| -> f32 {
+        if flat {
+            a_min
+        } else {
+            (a_min + (f - f_min) / span * da).clamp(a_min, a_max)
+        }
+    };
+    // Early exit: straight ahead valid.
+    if a_min <= 0.0 && 0.0 <= a_max {
+        let f0 = if da > 0.0 {
+            f_min + (0.0 - a_min) / da * span
+        } else {
+            f_min
+        };
+        if interval_delta(f0, tc, tau) == 0.0 {
+            return Choice {
+                alpha_r: 0.0,
+                delta_eta: 0.0,
+                branch: if opposite {
+                    Fig7Branch::OppositeStraight
+                } else {
+                    Fig7Branch::SameStraight
+                },
+            };
+        }
+    }
+    // Overlaps of F with T + 2πk.
+    let (lo_f, hi_f) = if span >= 0.0 {
+        (f_min, f_max)
+    } else {
+        (f_max, f_min)
+    };
+    let mut best = f32::INFINITY;
+    for k in -2i32..=2 {
+        let shift = TAU * k as f32;
+        let lo = lo_f.max(tc - tau + shift);
+        let hi = hi_f.min(tc + tau + shift);
+        if lo <= hi {
+            let (x, y) = if flat {
+                (a_min, a_max)
+            } else {
+                let (x, y) = (to_alpha(lo), to_alpha(hi));
+                (x.min(y), x.max(y))
+            };
+            let c = 0.0f32.clamp(x, y);
+            if c.abs() < best.abs() {
+                best = c;
+            }
+        }
+    }
+    if best.is_finite() {
+        return Choice {
+            alpha_r: best,
+            delta_eta: 0.0,
+            branch: if opposite {
+                Fig7Branch::OppositeOverlap
+            } else {
+                Fig7Branch::SameOverlap
+            },
+        };
+    }
+    // Gaps: the best end of 𝒜.
+    let g0 = interval_delta(f_min, tc, tau);
+    let g1 = interval_delta(f_max, tc, tau);
+    let take_max = g1.abs() < g0.abs() || (g1.abs() == g0.abs() && a_max.abs() < a_min.abs());
+    let (alpha_r, delta_eta) = if take_max { (a_max, g1) } else { (a_min, g0) };
+    Choice {
+        alpha_r,
+        delta_eta,
+        branch: if opposite {
+            Fig7Branch::OppositeGap
+        } else {
+            Fig7Branch::SameGap
+        },
+    }
+}
+
+/// Everything the relaxed search computed in one update, for the front
+/// end. Angles are radians in the **vehicle frame** (relative to the
+/// heading θ at the update); add θ for world angles. F may extend past ±π.
+#[derive(Clone, Copy, Debug, PartialEq, Default, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct RelaxedInternals {
+    /// Fig. 7 branch taken (`None` when not searched this update).
+    pub branch: Fig7Branch,
+    /// Radius of the ring used, m.
+    pub ring: f32,
+    /// Whether that ring is a table sample (false: it missed the disk and
+    /// the centre-distance ring was used).
+    pub ring_sampled: bool,
+    /// 𝒜 lower end α_min.
+    pub arc_min: f32,
+    /// 𝒜 upper end α_max.
+    pub arc_max: f32,
+    /// F at α_min: α_min + η(α_min).
+    pub f_min: f32,
+    /// F at α_max: α_max + η(α_max) (unwrapped relative to `f_min`).
+    pub f_max: f32,
+    /// T lower bound (searched interval, margin applied).
+    pub t_min: f32,
+    /// T upper bound.
+    pub t_max: f32,
+    /// Relaxed direction α_r.
+    pub alpha_r: f32,
+    /// Δη of Fig. 7 (from the arc-end values).
+    pub delta_eta: f32,
+    /// Relaxed point, world x, m.
+    pub point_x: f32,
+    /// Relaxed point, world y, m.
+    pub point_y: f32,
+}
+
+impl RelaxedConfig {
+    /// Rejects out-of-range margins.
+    ///
+    /// # Errors
+    /// The offending field.
+    pub fn validate(&self) -> Result<(), ParamError> {
+        use crate::vehicle::check_range;
+        check_range("relaxed.diskMargin", self.disk_margin, 0.05, 1.0)?;
+        check_range(
+            "relaxed.orientationMargin",
+            self.orientation_margin,
+            0.05,
+            1.0,
+        )
+    }
+
+    /// Chooses the mode and seek command for one step (no motion).
+    /// `ri` receives the relaxed internals; the returned [`Internals`] are
+    /// those of the standard controller with `d`, `alpha` measured to the
+    /// disk centre and `eta`, `delta_eta`, `mu`, `gamma` to the relaxed
+    /// point (Δη re-measured against T with the full lookup's η).
+    #[must_use]
+    #[allow(clippy::too_many_arguments)]
+    pub fn plan(
+        &self,
+        funnel: &FunnelConfig,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        *ri = RelaxedInternals::default();
+        let rel = g.pos - s.pos;
+        let d = rel.length();
+        let bearing = if d > 1e-6 {
+            rel.y.atan2(rel.x)
+        } else {
+            s.theta
+        };
+        let alpha_c = diff(bearing, s.theta);
+        let mut v_d = g.speed;
+        if g.halting {
+            v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
+        }
+        let mut out = Internals {
+            d,
+            alpha: alpha_c,
+            gamma: bearing,
+            v_dt: v_d,
+            reachable: true,
+            ..Default::default()
+        };
+        if tolerance_phase(p, s, g, mem, d, &mut out) {
+            return out;
+        }
+        // 1. The restricted arc 𝒜 on the ring nearest the disk centre.
+        let r = self.disk_margin * g.d_tol;
+        let mut ring_i = 0;
+        for (i, &x) in table.distances().iter().enumerate() {
+            if (x - d).abs() < (table.distances()[ring_i] - d).abs() {
+                ring_i = i;
+            }
+        }
+        let mut ring = table.distances()[ring_i];
+        ri.ring_sampled = (ring - d).abs() <= r;
+        if !ri.ring_sampled {
+            ring = d;
+        }
+        let cos_h = ((ring * ring + d * d - r * r) / (2.0 * ring * d)).clamp(-1.0, 1.0);
+        let h = cos_h.acos();
+        let a_min = (alpha_c - h).max(-PI);
+        let a_max = (alpha_c + h).min(PI);
+        // 2. F from η at the two arc ends.
+        let v_q = v_d.max(table.axis(4)[0]);
+        let ends = if self.end_eta == EndEta::Linear && ri.ring_sampled {
+            (
+                table.eta_ring_linear(ring_i, a_min, s.omega, s.v, v_q),
+                table.eta_ring_linear(ring_i, a_max, s.omega, s.v, v_q),
+            )
+        } else {
+            (
+                table.eta(ring, a_min, s.omega, s.v, v_q),
+                table.eta(ring, a_max, s.omega, s.v, v_q),
+            )
+        };
+        let (Some(e0), Some(e1)) = ends else {
+            ri.branch = Fig7Branch::Fallback;
+            return funnel.plan(table, p, s, g, mem);
+        };
+        let f_min = a_min + e0;
+        let f_max = f_min + wrap(a_max + e1 - f_min);
+        // 3. Fig. 7.
+        let tc = diff(g.beta, s.theta);
+        let tau = self.orientation_margin * g.eps_tol;
+        let c = relaxed_direction(a_min, a_max, f_min, f_max, tc, tau);
+        let dir = s.theta + c.alpha_r;
+        let point = s.pos + Vec2::from_angle(dir) * ring;
+        *ri = RelaxedInternals {
+            branch: c.branch,
+            ring,
+            ring_sampled: ri.ring_sampled,
+            arc_min: a_min,
+            arc_max: a_max,
+            f_min,
+            f_max,
+            t_min: tc - tau,
+            t_max: tc + tau,
+            alpha_r: c.alpha_r,
+            delta_eta: c.delta_eta,
+            point_x: point.x,
+            point_y: point.y,
+        };
+        // 4. Funnel towards the relaxed point.
+        let lk = table.lookup(ring, c.alpha_r, s.omega, s.v, v_q);
+        out.reachable = lk.reachable;
+        out.v_dt = if lk.reachable { v_d } else { lk.v_dt };
+        out.eta = lk.eta;
+        out.delta_eta = if lk.eta_valid {
+            interval_delta(c.alpha_r + lk.eta, tc, tau)
+        } else {
+            c.delta_eta
+        };
+        out.gamma = wrap(dir);
+        if ring < table.d_eta() || out.delta_eta == 0.0 || !lk.eta_valid {
+            out.mode = Mode::PositionOnly;
+            return out;
+        }
+        out.mode = Mode::Funnelling;
+        out.mu_max = funnel.mu_max(table, p, ring, out.delta_eta, s.v, out.v_dt);
+        out.mu = (-out.delta_eta).clamp(-out.mu_max, out.mu_max);
+        out.gamma = wrap(dir + out.mu);
+        out
+    }
+
+    /// One relaxed update: plan, then one seek step.
+    #[allow(clippy::too_many_arguments)]
+    pub fn step(
+        &self,
+        funnel: &FunnelConfig,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &mut VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        let out = self.plan(funnel, table, p, s, g, mem, ri);
+        seek_step(p, s, out.gamma, out.v_dt);
+        out
+    }
+}
+
+/// A controller with its settings: what a study or a world runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Controller {
+    /// Standard funnelling.
+    Standard(FunnelConfig),
+    /// Relaxed funnelling (the μ bound from the [`FunnelConfig`]).
+    Relaxed(FunnelConfig, RelaxedConfig),
+}
+
+impl Controller {
+    /// One update with whichever controller; `ri` is reset for the
+    /// standard one.
+    #[inline]
+    pub fn step(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &mut VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        match self {
+            Self::Standard(f) => {
+                *ri = RelaxedInternals::default();
+                f.step(table, p, s, g, mem)
+            }
+            Self::Relaxed(f, r) => r.step(f, table, p, s, g, mem, ri),
+        }
+    }
+
+    /// One plan (no motion), for the benches.
+    #[inline]
+    #[must_use]
+    pub fn plan(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        match self {
+            Self::Standard(f) => f.plan(table, p, s, g, mem),
+            Self::Relaxed(f, r) => r.plan(f, table, p, s, g, mem, ri),
+        }
+    }
+}
