@@ -15,6 +15,7 @@ use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
 use crate::scenario::Scenario;
 use crate::table::EtaTable;
@@ -267,7 +268,8 @@ impl Lab {
 }
 
 /// A goal as the page edits it (flat, camelCase); `relaxed` selects relaxed
-/// funnelling towards the region goal once the core offers it.
+/// funnelling towards the region goal (paper 001): the disk is `dTol`, the
+/// orientation interval is β ± `epsTol`. The controller is world-wide.
 #[derive(Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "camelCase")]
 struct GoalConfig {
@@ -285,11 +287,6 @@ struct GoalConfig {
 
 impl GoalConfig {
     fn to_spec(&self, p: &VehicleParams) -> Result<GoalSpec, JsError> {
-        if self.relaxed {
-            return Err(JsError::new(
-                "relaxed funnelling (paper 001) is not in the core yet: untick \"relaxed\"",
-            ));
-        }
         let goal = Goal {
             pos: Vec2::new(self.x, self.y),
             beta: self.beta,
@@ -334,7 +331,17 @@ struct InternalsOut {
     gamma: f32,
     reachable: bool,
     v_dt: f32,
-    arc: Option<()>,
+    arc: Option<ArcOut>,
+}
+
+/// Relaxed funnelling's restricted arc 𝒜 and chosen α_r (vehicle frame).
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+struct ArcOut {
+    alpha_min: f32,
+    alpha_max: f32,
+    alpha_r: f32,
+    radius: f32,
 }
 
 impl From<Internals> for InternalsOut {
@@ -426,10 +433,26 @@ impl Lab {
             .iter()
             .map(|g| g.to_spec(&p))
             .collect::<Result<Vec<_>, _>>()?;
+        if a.goals.iter().any(|g| g.relaxed) {
+            self.use_controller(true)?;
+        }
         self.push_agent(
             VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega),
             goals,
         )
+    }
+
+    /// Switches the world between standard and relaxed funnelling.
+    fn use_controller(&mut self, relaxed: bool) -> Result<(), JsError> {
+        let kind = if relaxed {
+            ControllerKind::Relaxed
+        } else {
+            ControllerKind::Standard
+        };
+        let cfg = self.world.relaxed;
+        self.world
+            .set_controller(kind, cfg)
+            .map_err(|e| js_err("relaxed settings", e))
     }
 
     /// Puts agent `i` at rest at a pose (a drag on the page); its goal
@@ -456,6 +479,8 @@ impl Lab {
     ) -> Result<(), JsError> {
         let g: GoalConfig = from_js("goal", goal)?;
         let spec = g.to_spec(&self.world.params)?;
+        self.agent(i)?;
+        self.use_controller(g.relaxed)?;
         let a = self.agent_mut(i)?;
         a.goals = vec![spec];
         a.current = 0;
@@ -556,7 +581,17 @@ impl Lab {
                 &mut mem,
             )
         };
-        to_js(&InternalsOut::from(out))
+        let mut out = InternalsOut::from(out);
+        if self.world.controller == ControllerKind::Relaxed && !a.done() {
+            let r = &a.relaxed;
+            out.arc = Some(ArcOut {
+                alpha_min: r.arc_min,
+                alpha_max: r.arc_max,
+                alpha_r: r.alpha_r,
+                radius: r.ring,
+            });
+        }
+        to_js(&out)
     }
 
     /// The table ring nearest to agent `i`'s target distance, in its frame,

@@ -182,3 +182,31 @@ fn the_presets_load() {
         assert!(lab.state().iter().all(|x| x.is_finite()));
     }
 }
+
+#[wasm_bindgen_test]
+fn relaxed_goals_expose_the_arc_and_reach_the_region() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let g = goal(10.0, 3.0, 0.8);
+    js_sys::Reflect::set(&g, &"relaxed".into(), &true.into()).unwrap();
+    js_sys::Reflect::set(&g, &"dTol".into(), &1.5.into()).unwrap();
+    js_sys::Reflect::set(&g, &"epsTol".into(), &0.26.into()).unwrap();
+    lab.add_agent(agent(0.0, 0.0, 0.0, &[g]))
+        .map_err(message)
+        .unwrap();
+    lab.step(30);
+    let arc = get(&lab.internals(0).map_err(message).unwrap(), "arc");
+    assert!(arc.is_object(), "relaxed internals carry the arc 𝒜");
+    let (a0, a1, ar) = (
+        get(&arc, "alphaMin").as_f64().unwrap(),
+        get(&arc, "alphaMax").as_f64().unwrap(),
+        get(&arc, "alphaR").as_f64().unwrap(),
+    );
+    assert!(
+        a0 <= ar + 1e-6 && ar <= a1 + 1e-6,
+        "α_r in 𝒜: {a0} {ar} {a1}"
+    );
+    lab.step(1800);
+    let s = lab.state();
+    let d = ((s[0] - 10.0).powi(2) + (s[1] - 3.0).powi(2)).sqrt();
+    assert!(d < 1.5 + 0.3, "ends in the disk: {d}");
+}

@@ -314,12 +314,7 @@ async function start(): Promise<void> {
   goalBox.append(goalRow);
   checkbox(goalRow, "halting", "final halting", st.halting, (v) => { st.halting = v; updateGoal(); });
   const relaxedBox = checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
-  if (!st.relaxed) {
-    // Relaxed funnelling (paper 001 §4) is not in the core yet; the core
-    // refuses `relaxed: true` with a message, so a link asking for it says so.
-    relaxedBox.el.querySelector("input")?.setAttribute("disabled", "");
-    relaxedBox.el.title = "relaxed funnelling (paper 001) is not in the core yet";
-  }
+  relaxedBox.el.title = "paper 001: any point of the disk and any heading within β ± ε_tol is a valid goal";
 
   const limBox = section(panel, "Vehicle limits");
   const lim = (id: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", label: string, unit: string, max: number): void => {
@@ -343,9 +338,6 @@ async function start(): Promise<void> {
   ov("gamma", "heading γ");
   ov("ring", "nearest η ring");
   ov("arc", "relaxed arc 𝒜, α_r");
-  const arcInput = document.getElementById("ov-arc");
-  arcInput?.setAttribute("disabled", "");
-  if (arcInput?.parentElement) arcInput.parentElement.title = "drawn once the core has relaxed funnelling (paper 001)";
   ov("trails", "trails");
   ov("field", "η field (Fig. 3b/c)");
 
