@@ -191,6 +191,17 @@ impl FunnelMemory {
     }
 }
 
+/// Largest speed whose turning circle still passes through a target at
+/// distance `d` and bearing `alpha`: the circle tangent to the heading
+/// through the target has radius `d / (2|sin α|)`, and the vehicle turns on
+/// radius `max(v/ω_max, v²/A)` at speed v.
+#[inline]
+#[must_use]
+pub fn orbit_free_speed(p: &VehicleParams, d: f32, alpha: f32) -> f32 {
+    let r = d / (2.0 * alpha.sin().abs()).max(1e-3);
+    (p.omega_max * r).min((p.normal_accel_max * r).sqrt())
+}
+
 /// Speed cap for final halting: the speed from which the vehicle can
 /// still brake to rest at the target with 80 % of its deceleration.
 #[inline]
@@ -318,10 +329,15 @@ impl FunnelConfig {
         out.eta = lk.eta;
         let final_dir = s.theta + alpha + lk.eta;
         out.delta_eta = diff(g.beta, final_dir);
-        if d < table.d_eta()
-            || out.delta_eta.abs() < self.seek_threshold * g.eps_tol
-            || !lk.eta_valid
-        {
+        if d < table.d_eta() {
+            // Closer than the first sampled ring the table cannot slow the
+            // vehicle down proactively; do it geometrically instead, so a
+            // near target is never orbited (paper 000 §3).
+            out.v_dt = out.v_dt.min(orbit_free_speed(p, d, alpha));
+            out.mode = Mode::PositionOnly;
+            return out;
+        }
+        if out.delta_eta.abs() < self.seek_threshold * g.eps_tol || !lk.eta_valid {
             out.mode = Mode::PositionOnly;
             return out;
         }
