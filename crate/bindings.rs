@@ -571,6 +571,10 @@ impl Lab {
                 gamma: a.state.theta,
                 ..Default::default()
             }
+        } else if self.world.controller == ControllerKind::Relaxed {
+            // Relaxed funnelling plans towards the relaxed point: show what
+            // its last update did.
+            a.internals
         } else {
             let mut mem = a.memory;
             self.world.config.plan(
