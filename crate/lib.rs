@@ -11,12 +11,20 @@
 #![warn(missing_docs, clippy::all)]
 
 pub mod angle;
+pub mod boid_seek;
+pub mod crowd;
+pub mod crowd_config;
+pub mod crowd_error;
+pub mod crowd_metrics;
 pub mod dubins;
 pub mod funnel;
 pub mod metrics;
+pub mod path;
+pub mod path_follow;
 pub mod rng;
 pub mod scenario;
 pub mod seek;
+pub mod separation;
 pub mod study;
 pub mod table;
 pub mod table_gen;

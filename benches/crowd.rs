@@ -1,0 +1,112 @@
+//! Step cost of the crowd (paper 003) at 300, 3,000 and 30,000 boids.
+//!
+//! The pathway is scaled with the boid count (perimeter ∝ boids, same
+//! radius), so crowd density — and the work separation does per boid — is
+//! that of the paper's Test IV at every size: near-linear growth means a
+//! flat cost per boid. Throughput is per boid, so criterion prints
+//! boids/s; ns per boid per step = 1e9 / that.
+//!
+//! Groups:
+//! * `crowd_step` — wall-clock time, metrics on (the live default);
+//! * `crowd_step_cpu` — the same step timed with this thread's CPU clock
+//!   (Linux `CLOCK_THREAD_CPUTIME_ID`), so time spent preempted on a busy
+//!   shared machine is not counted; falls back to wall time elsewhere;
+//! * `crowd_step_cpu_no_metrics` — CPU time with metrics off.
+//!
+//! Run with `cargo bench --bench crowd -- --warm-up-time 1 --measurement-time 2`.
+
+use std::hint::black_box;
+use std::time::{Duration, Instant};
+
+use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use steering::boid_seek::Seek;
+use steering::crowd::Crowd;
+use steering::crowd_config::{CrowdConfig, PaperTest};
+
+#[cfg(target_os = "linux")]
+mod cpu_clock {
+    #[repr(C)]
+    struct Timespec {
+        tv_sec: i64,
+        tv_nsec: i64,
+    }
+    extern "C" {
+        fn clock_gettime(clock: i32, ts: *mut Timespec) -> i32;
+    }
+    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
+
+    /// This thread's CPU time in ns, if the clock is available.
+    pub fn now_ns() -> Option<u128> {
+        let mut ts = Timespec {
+            tv_sec: 0,
+            tv_nsec: 0,
+        };
+        // SAFETY: `ts` is a valid, writable timespec for the call.
+        #[allow(unsafe_code)]
+        let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut ts) };
+        (rc == 0).then(|| ts.tv_sec as u128 * 1_000_000_000 + ts.tv_nsec as u128)
+    }
+}
+
+#[cfg(not(target_os = "linux"))]
+mod cpu_clock {
+    pub fn now_ns() -> Option<u128> {
+        None
+    }
+}
+
+fn crowd(n: usize, metrics: bool) -> Crowd {
+    let scale = n as f32 / 300.0;
+    let mut cfg = CrowdConfig::paper(PaperTest::IV, Seek::Reynolds);
+    cfg.boids = n;
+    for p in &mut cfg.path.points {
+        p[0] *= scale;
+        p[1] *= scale;
+    }
+    let mut c = Crowd::new(&cfg).expect("valid preset");
+    c.set_metrics_enabled(metrics);
+    // Let the spawn settle into a moving crowd.
+    c.run(100);
+    c
+}
+
+/// Runs `iters` steps and returns their CPU time (wall time if no CPU clock).
+fn cpu_timed(w: &mut Crowd, iters: u64) -> Duration {
+    let (t0, w0) = (cpu_clock::now_ns(), Instant::now());
+    for _ in 0..iters {
+        w.step();
+        black_box(w.positions()[0]);
+    }
+    match (t0, cpu_clock::now_ns()) {
+        (Some(a), Some(b)) => Duration::from_nanos((b - a) as u64),
+        _ => w0.elapsed(),
+    }
+}
+
+fn bench(c: &mut Criterion) {
+    for (group_name, metrics, cpu) in [
+        ("crowd_step", true, false),
+        ("crowd_step_cpu", true, true),
+        ("crowd_step_cpu_no_metrics", false, true),
+    ] {
+        let mut g = c.benchmark_group(group_name);
+        for n in [300usize, 3_000, 30_000] {
+            let mut w = crowd(n, metrics);
+            g.throughput(Throughput::Elements(n as u64));
+            g.bench_function(BenchmarkId::from_parameter(n), |b| {
+                if cpu {
+                    b.iter_custom(|iters| cpu_timed(&mut w, iters));
+                } else {
+                    b.iter(|| {
+                        w.step();
+                        black_box(w.positions()[0]);
+                    });
+                }
+            });
+        }
+        g.finish();
+    }
+}
+
+criterion_group!(benches, bench);
+criterion_main!(benches);
