@@ -1,0 +1,135 @@
+// Draws the crowd: the pathway band (its radius), the centre line, the
+// path's editable points, the highlighted boid's lap and the boids. Boids are
+// oriented triangles up to TRIANGLE_LIMIT, beyond that 2×2-pixel squares; in
+// both cases one path and one fill for all boids (10,000 boids draw in ~1 ms).
+
+import { beginFrame, type Surface } from "../canvas";
+import type { View } from "../view";
+
+export const COLOURS = {
+  background: "#f4f3ee",
+  band: "#dfe6d8",
+  bandEdge: "#b9c7ae",
+  centre: "#8aa07a",
+  boid: "#2b4a7a",
+  traced: "#d62728",
+  lap: "#d62728",
+  handle: "#b06000",
+  selected: "#ffb000",
+} as const;
+
+/** Above this many boids they are drawn as squares, not triangles. */
+export const TRIANGLE_LIMIT = 3000;
+
+export interface CrowdScene {
+  path: Float32Array;
+  radius: number;
+  closed: boolean;
+  positions: Float32Array;
+  velocities: Float32Array;
+  trace: Float32Array;
+  traced: number;
+  boidRadius: number;
+  showTrace: boolean;
+  showHandles: boolean;
+  selected: number | null;
+  hover: number | null;
+}
+
+function polyline(ctx: CanvasRenderingContext2D, view: View, xy: Float32Array, closed: boolean): void {
+  ctx.beginPath();
+  for (let i = 0; i + 1 < xy.length; i += 2) {
+    const p = view.toScreen(xy[i] ?? 0, xy[i + 1] ?? 0);
+    if (i === 0) ctx.moveTo(p.x, p.y);
+    else ctx.lineTo(p.x, p.y);
+  }
+  if (closed) ctx.closePath();
+}
+
+export function drawCrowd(s: Surface, view: View, sc: CrowdScene): void {
+  const ctx = s.ctx;
+  beginFrame(s, COLOURS.background);
+  ctx.lineJoin = "round";
+  ctx.lineCap = "round";
+
+  // Pathway band: a line 2 × radius wide, its edge a slightly wider one below.
+  const w = 2 * sc.radius * view.scale;
+  polyline(ctx, view, sc.path, sc.closed);
+  ctx.strokeStyle = COLOURS.bandEdge;
+  ctx.lineWidth = w + 2;
+  ctx.stroke();
+  ctx.strokeStyle = COLOURS.band;
+  ctx.lineWidth = w;
+  ctx.stroke();
+  ctx.setLineDash([6, 5]);
+  ctx.strokeStyle = COLOURS.centre;
+  ctx.lineWidth = 1;
+  ctx.stroke();
+  ctx.setLineDash([]);
+
+  // Boids, all in one path.
+  const pos = sc.positions;
+  const vel = sc.velocities;
+  const n = pos.length >> 1;
+  ctx.beginPath();
+  if (n <= TRIANGLE_LIMIT) {
+    const r = Math.max(2.5, sc.boidRadius * view.scale);
+    for (let i = 0; i < n; i++) {
+      const p = view.toScreen(pos[2 * i] ?? 0, pos[2 * i + 1] ?? 0);
+      const vx = vel[2 * i] ?? 0;
+      const vy = vel[2 * i + 1] ?? 0;
+      const len = Math.hypot(vx, vy) || 1;
+      // Screen y is down: flip the world direction's y.
+      const ux = vx / len;
+      const uy = -vy / len;
+      ctx.moveTo(p.x + ux * r, p.y + uy * r);
+      ctx.lineTo(p.x - ux * r * 0.7 - uy * r * 0.55, p.y - uy * r * 0.7 + ux * r * 0.55);
+      ctx.lineTo(p.x - ux * r * 0.7 + uy * r * 0.55, p.y - uy * r * 0.7 - ux * r * 0.55);
+      ctx.closePath();
+    }
+  } else {
+    const k = view.scale;
+    const ox = view.width / 2 - view.cx * k;
+    const oy = view.height / 2 + view.cy * k;
+    for (let i = 0; i < n; i++) {
+      ctx.rect(ox + (pos[2 * i] ?? 0) * k - 1, oy - (pos[2 * i + 1] ?? 0) * k - 1, 2, 2);
+    }
+  }
+  ctx.fillStyle = COLOURS.boid;
+  ctx.fill();
+
+  // The highlighted boid's lap, and the boid itself.
+  if (sc.showTrace && sc.trace.length >= 4) {
+    polyline(ctx, view, sc.trace, false);
+    ctx.strokeStyle = COLOURS.lap;
+    ctx.lineWidth = 1.5;
+    ctx.stroke();
+  }
+  if (sc.traced < n) {
+    const p = view.toScreen(pos[2 * sc.traced] ?? 0, pos[2 * sc.traced + 1] ?? 0);
+    ctx.beginPath();
+    ctx.arc(p.x, p.y, Math.max(3.5, sc.boidRadius * view.scale), 0, 2 * Math.PI);
+    ctx.strokeStyle = COLOURS.traced;
+    ctx.lineWidth = 2;
+    ctx.stroke();
+  }
+
+  // Editable points.
+  if (sc.showHandles) {
+    for (let i = 0; 2 * i + 1 < sc.path.length; i++) {
+      const p = view.toScreen(sc.path[2 * i] ?? 0, sc.path[2 * i + 1] ?? 0);
+      ctx.beginPath();
+      ctx.arc(p.x, p.y, i === sc.hover || i === sc.selected ? 8 : 6, 0, 2 * Math.PI);
+      ctx.fillStyle = i === sc.selected ? COLOURS.selected : "#ffffff";
+      ctx.fill();
+      ctx.strokeStyle = COLOURS.handle;
+      ctx.lineWidth = 2;
+      ctx.stroke();
+      if (i === 0) {
+        ctx.fillStyle = COLOURS.handle;
+        ctx.font = "11px system-ui, sans-serif";
+        ctx.fillText("start", p.x + 9, p.y - 8);
+      }
+    }
+  }
+}
