@@ -17,7 +17,10 @@ import { drawCrowd } from "./render";
 /** Per-N step cost, from CrowdHook.bench. */
 export interface BenchRow {
   boids: number;
-  metrics: boolean;
+  /** "paper": Test IV's pathway and separation (density grows with N);
+   *  "scaled": separation on, pathway stretched by N/300 (Test IV's density);
+   *  "no-sep": Test IV's pathway, separation off (path following alone). */
+  setup: "paper" | "scaled" | "no-sep";
   steps: number;
   msPerStep: number;
   boidsPerFrame: number;
@@ -43,7 +46,7 @@ export interface CrowdHook {
   selected(): number | null;
   metrics(): CrowdMetrics | null;
   toScreen(x: number, y: number): Vec;
-  /** Step cost at each boid count (Test IV set-up, Parker 10 %, separation on), timed with performance.now. */
+  /** Step cost (metrics on, as on the page) at each boid count, three set-ups (see BenchRow), timed with performance.now. */
   bench(counts: number[], minMs: number): BenchRow[];
 }
 
@@ -149,7 +152,7 @@ function fitView(): void {
     y1 = Math.max(y1, y);
   }
   if (!Number.isFinite(x0)) return;
-  view.fit(x0 - r, y0 - r, x1 + r, y1 + r, 24);
+  view.fit(x0 - r, y0 - r, x1 + r, y1 + r, 40);
   dirty = true;
 }
 
@@ -195,9 +198,15 @@ function bench(counts: number[], minMs: number): BenchRow[] {
   if (!base) return [];
   const rows: BenchRow[] = [];
   for (const n of counts) {
-    for (const metrics of [true, false]) {
-      const l = new CrowdLab({ ...base, boids: n });
-      l.setMetricsEnabled(metrics);
+    for (const setup of ["paper", "scaled", "no-sep"] as const) {
+      const k = n / 300;
+      const cfg: CrowdConfig = {
+        ...base,
+        boids: n,
+        separation: setup !== "no-sep",
+        path: setup === "scaled" ? { ...base.path, points: base.path.points.map(([x, y]) => [x * k, y * k]) } : base.path,
+      };
+      const l = new CrowdLab(cfg);
       l.step(20);
       let steps = 0;
       const t0 = performance.now();
@@ -209,7 +218,7 @@ function bench(counts: number[], minMs: number): BenchRow[] {
       }
       l.free();
       const ms = (t - t0) / steps;
-      rows.push({ boids: n, metrics, steps, msPerStep: ms, boidsPerFrame: Math.round((n * (1000 / 60)) / ms) });
+      rows.push({ boids: n, setup, steps, msPerStep: ms, boidsPerFrame: Math.round((n * (1000 / 60)) / ms) });
     }
   }
   return rows;
@@ -351,16 +360,17 @@ function frame(now: number): void {
   if (now - lastMetrics > 250) {
     lastMetrics = now;
     panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
-    const seek = lab.config().seek;
+    const c = lab.config();
+    const seek = c.seek;
     hud.textContent = [
-      `step      ${lab.time().toFixed(0)}`,
-      `boids     ${lab.count().toLocaleString("en")}`,
-      `seek      ${seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`}`,
-      `sep.      ${lab.config().separation ? `on (${lab.config().separation_weight})` : "off"}`,
-      `fps       ${hook.fps.toFixed(0)}`,
-      `step      ${hook.stepMs.toFixed(2)} ms/frame`,
-      `draw      ${hook.drawMs.toFixed(2)} ms`,
-    ].join("\n");
+      `step ${lab.time().toFixed(0)}`,
+      `${lab.count().toLocaleString("en")} boids`,
+      seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
+      c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
+      `${hook.fps.toFixed(0)} fps`,
+      `step ${hook.stepMs.toFixed(2)} ms`,
+      `draw ${hook.drawMs.toFixed(2)} ms`,
+    ].join("  ·  ");
   }
 }
 
