@@ -75,7 +75,9 @@ fn crowd_presets_cross_the_boundary() {
 fn bad_crowd_input_is_a_js_error_with_a_message() {
     let mut cfg = crowd_preset(10);
     cfg.path.radius = -1.0;
-    let e = CrowdLab::new(js(&cfg)).err().expect("negative radius rejected");
+    let e = CrowdLab::new(js(&cfg))
+        .err()
+        .expect("negative radius rejected");
     assert!(message(e).contains("radius"));
 
     let e = CrowdLab::new(JsValue::from_str("not a config"))
