@@ -234,6 +234,25 @@ try {
       }
       assert.equal(await page.locator("#message").isVisible(), true);
     });
+    await check("crowd: laps are timed; the lap trace and metrics panel (Test IV, Reynolds, 20 steps / frame)", async () => {
+      const value = await page.$eval("#preset", (sel) => [...sel.options].find((o) => o.text === "Test IV — Reynolds").value);
+      await page.selectOption("#preset", value);
+      await page.$eval("#speed", (el) => {
+        el.value = "20";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+      await page.waitForFunction(() => window.__crowd.metrics().laps > 20, null, { timeout: 30000 });
+      const m = await page.evaluate(() => window.__crowd.metrics());
+      assert.ok(m.mean_lap_steps > 300 && m.mean_lap_steps < 3000, `mean lap ${m.mean_lap_steps}`);
+      assert.ok(m.trace_spread !== null);
+      await page.waitForTimeout(300);
+      await shot(page, "crowd-test4-reynolds-lap");
+      await page.locator("#metrics").screenshot({ path: resolve(artifacts, "crowd-metrics.png") });
+      await page.$eval("#speed", (el) => {
+        el.value = "1";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+    });
     await check("crowd: step cost per boid count (performance.now in the page)", async () => {
       const rows = await page.evaluate(() => window.__crowd.bench([300, 3000, 30000], 600));
       report.bench = rows;
