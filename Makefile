@@ -8,7 +8,7 @@ WASM_PACK_VERSION := 0.15.1
 WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"/,"",$$3); print $$3; exit}' Cargo.lock)
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
-	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web
+	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery
 
 setup: setup-rust setup-browser setup-web
 
@@ -62,11 +62,16 @@ test-tsc: setup-web wasm
 test-e2e: setup-browser web-build
 	node web/test/e2e.mjs
 
+# Playwright against the gallery pages (crowd.html, wander.html); also prints
+# the crowd's step cost (boids stepped per 16.7 ms frame at 300/3,000/30,000).
+test-e2e-gallery: setup-browser web-build
+	node web/test/e2e-gallery.mjs
+
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium.
 bench-web: setup-browser web-build
 	node web/test/perf.mjs
 
-test: setup lint test-native test-wasm test-smoke test-tsc test-e2e
+test: setup lint test-native test-wasm test-smoke test-tsc test-e2e test-e2e-gallery
 	@echo "make test: all suites passed"
 
 demo: setup web-build

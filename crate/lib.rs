@@ -37,3 +37,9 @@ pub mod world;
 /// The JavaScript boundary (WebAssembly builds only).
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
+/// The JavaScript boundary of crowded path following (WebAssembly builds only).
+#[cfg(target_arch = "wasm32")]
+pub mod bindings_crowd;
+/// The JavaScript boundary of the random steering toolkit (WebAssembly builds only).
+#[cfg(target_arch = "wasm32")]
+pub mod bindings_wander;

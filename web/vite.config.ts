@@ -49,5 +49,16 @@ export default defineConfig({
   plugins: [tables()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
-  build: { target: "es2022", sourcemap: false },
+  build: {
+    target: "es2022",
+    sourcemap: false,
+    // The gallery pages (crowd path following, random steering) beside the funnelling lab.
+    rolldownOptions: {
+      input: {
+        index: resolve(import.meta.dirname, "index.html"),
+        crowd: resolve(import.meta.dirname, "crowd.html"),
+        wander: resolve(import.meta.dirname, "wander.html"),
+      },
+    },
+  },
 });

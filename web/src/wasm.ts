@@ -60,3 +60,34 @@ export async function createLab(tableUrl: string): Promise<Lab> {
 export function errorText(e: unknown): string {
   return e instanceof Error ? e.message : String(e);
 }
+
+// --- The gallery pages (crowd.html, wander.html): crowded path following
+// (paper 003) and the random steering toolkit (paper 004). Both call
+// loadCore() first; errors are JsErrors whose message is fit to show.
+import { CrowdLab, WanderLab } from "../pkg/steering.js";
+import type {
+  CrowdConfig,
+  CrowdMetrics,
+  CrowdPathConfig,
+  CrowdSeek,
+  WanderConfig,
+  WanderControl,
+  WanderHold,
+  WanderPreset,
+  WanderSource,
+  WanderVariant,
+} from "../pkg/steering.js";
+
+export { CrowdLab, WanderLab };
+export type {
+  CrowdConfig,
+  CrowdMetrics,
+  CrowdPathConfig,
+  CrowdSeek,
+  WanderConfig,
+  WanderControl,
+  WanderHold,
+  WanderPreset,
+  WanderSource,
+  WanderVariant,
+};

@@ -1,0 +1,276 @@
+//! The JavaScript boundary of crowded path following (paper 003): the
+//! `CrowdLab` class the crowd page drives.
+//!
+//! Same rules as [`crate::bindings`]: conversion only, every value from
+//! JavaScript is checked by the core (a [`crate::crowd_error::CrowdError`]
+//! becomes a `JsError` with its message, never a panic), configuration
+//! objects carry real TypeScript types, bulk per-boid data crosses as
+//! `Float32Array` (one copy per call). Units: world units and steps (one
+//! step is one paper frame).
+
+use serde::{Deserialize, Serialize};
+use wasm_bindgen::prelude::*;
+
+use crate::boid_seek::Seek;
+use crate::crowd::Crowd;
+use crate::crowd_config::CrowdConfig;
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_CROWD_TYPES: &'static str = r#"
+/** A seek strategy (crate::boid_seek::Seek): Reynolds, or Parker with the share of the way to the target per step, in (0, 1]. */
+export type CrowdSeek = { kind: "reynolds" } | { kind: "parker"; fraction: number };
+/** The pathway (crate::crowd_config::PathConfig): polyline points [x, y] in travel order, radius (half-width). World units. */
+export interface CrowdPathConfig {
+  points: [number, number][];
+  radius: number;
+  closed: boolean;
+}
+/** A crowd run (crate::crowd_config::CrowdConfig). Lengths in world units, time in steps. */
+export interface CrowdConfig {
+  name?: string;
+  seed: number;
+  boids: number;
+  seek: CrowdSeek;
+  separation: boolean;
+  separation_weight: number;
+  boid_radius: number;
+  max_speed: number;
+  max_force: number;
+  predict_distance: number;
+  lookahead: number;
+  spawn_spread: number;
+  path: CrowdPathConfig;
+  warmup_steps: number;
+  measure_steps: number;
+}
+/** Measures since the last reset (crate::crowd_metrics::CrowdMetrics); null when undefined. */
+export interface CrowdMetrics {
+  steps: number;
+  laps: number;
+  mean_lap_steps: number | null;
+  mean_distance: number | null;
+  p95_distance: number | null;
+  outside_share: number | null;
+  mean_offset: number | null;
+  mean_steer: number | null;
+  mean_separation: number | null;
+  overlapping_pairs_per_step: number | null;
+  trace_spread: number | null;
+}
+"#;
+
+fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
+    JsError::new(&format!("{context}: {e}"))
+}
+
+fn from_js<T: for<'de> Deserialize<'de>>(what: &str, v: JsValue) -> Result<T, JsError> {
+    serde_wasm_bindgen::from_value(v).map_err(|e| js_err(what, e))
+}
+
+fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .map_err(|e| js_err("conversion to JavaScript", e))
+}
+
+/// Steps a single [`CrowdLab::step`] call may ask for.
+const MAX_STEPS_PER_CALL: u32 = 10_000;
+
+/// A crowd of boids following a pathway.
+#[wasm_bindgen]
+pub struct CrowdLab {
+    crowd: Crowd,
+}
+
+#[wasm_bindgen]
+impl CrowdLab {
+    /// A crowd from a configuration object; a malformed or out-of-range
+    /// configuration is a `JsError` naming the field.
+    #[wasm_bindgen(constructor)]
+    pub fn new(
+        #[wasm_bindgen(unchecked_param_type = "CrowdConfig")] config: JsValue,
+    ) -> Result<CrowdLab, JsError> {
+        let cfg: CrowdConfig = from_js("crowd configuration", config)?;
+        let crowd = Crowd::new(&cfg).map_err(|e| js_err("crowd configuration", e))?;
+        Ok(CrowdLab { crowd })
+    }
+
+    /// A crowd from the JSON text of a preset (`scenarios/crowd/*.json`).
+    #[wasm_bindgen(js_name = fromJson)]
+    pub fn from_json(text: &str) -> Result<CrowdLab, JsError> {
+        let crowd = Crowd::from_json(text).map_err(|e| js_err("crowd preset", e))?;
+        Ok(CrowdLab { crowd })
+    }
+
+    /// The paper's presets: Tests I–IV × (Reynolds, Parker 100 %, 10 %,
+    /// 1 %, 0.1 %), in that order.
+    #[wasm_bindgen(js_name = paperPresets, unchecked_return_type = "CrowdConfig[]")]
+    pub fn paper_presets() -> Result<JsValue, JsError> {
+        to_js(&CrowdConfig::paper_presets())
+    }
+
+    /// The current configuration (boid count and edits included).
+    #[wasm_bindgen(unchecked_return_type = "CrowdConfig")]
+    pub fn config(&self) -> Result<JsValue, JsError> {
+        to_js(self.crowd.config())
+    }
+
+    /// Advances `n` steps (at most 10,000 per call).
+    pub fn step(&mut self, n: u32) {
+        for _ in 0..n.min(MAX_STEPS_PER_CALL) {
+            self.crowd.step();
+        }
+    }
+
+    /// Number of boids.
+    #[must_use]
+    pub fn count(&self) -> u32 {
+        self.crowd.len() as u32
+    }
+
+    /// Steps since construction.
+    #[must_use]
+    pub fn time(&self) -> f64 {
+        self.crowd.time() as f64
+    }
+
+    /// Boid positions, flat `[x0, y0, x1, y1, ...]`.
+    #[must_use]
+    pub fn positions(&self) -> Vec<f32> {
+        self.crowd.positions().to_vec()
+    }
+
+    /// Boid velocities, flat `[vx0, vy0, ...]`, world units per step.
+    #[must_use]
+    pub fn velocities(&self) -> Vec<f32> {
+        self.crowd.velocities().to_vec()
+    }
+
+    /// The highlighted boid's last complete lap, flat `[x, y, ...]` (its
+    /// current partial lap until it completes one).
+    #[must_use]
+    pub fn trace(&self) -> Vec<f32> {
+        self.crowd.trace().to_vec()
+    }
+
+    /// Index of the highlighted boid.
+    #[wasm_bindgen(js_name = tracedBoid)]
+    #[must_use]
+    pub fn traced_boid(&self) -> u32 {
+        self.crowd.traced_boid() as u32
+    }
+
+    /// Highlights boid `i` (clears the trace).
+    #[wasm_bindgen(js_name = selectTraced)]
+    pub fn select_traced(&mut self, i: u32) -> Result<(), JsError> {
+        let n = self.crowd.len();
+        if i as usize >= n {
+            return Err(JsError::new(&format!("no boid {i} (there are {n})")));
+        }
+        self.crowd.select_traced(i as usize);
+        Ok(())
+    }
+
+    /// The path's points, flat `[x0, y0, ...]`.
+    #[wasm_bindgen(js_name = pathPoints)]
+    #[must_use]
+    pub fn path_points(&self) -> Vec<f32> {
+        self.crowd.path().points_flat()
+    }
+
+    /// The path radius (half-width), world units.
+    #[wasm_bindgen(js_name = pathRadius)]
+    #[must_use]
+    pub fn path_radius(&self) -> f32 {
+        self.crowd.path().radius()
+    }
+
+    /// Whether the path is a closed circuit.
+    #[wasm_bindgen(js_name = pathClosed)]
+    #[must_use]
+    pub fn path_closed(&self) -> bool {
+        self.crowd.path().is_closed()
+    }
+
+    /// The boid radius, world units.
+    #[wasm_bindgen(js_name = boidRadius)]
+    #[must_use]
+    pub fn boid_radius(&self) -> f32 {
+        self.crowd.config().boid_radius
+    }
+
+    /// Changes the boid count (existing boids keep their state).
+    #[wasm_bindgen(js_name = setBoidCount)]
+    pub fn set_boid_count(&mut self, n: u32) -> Result<(), JsError> {
+        self.crowd
+            .set_boid_count(n as usize)
+            .map_err(|e| js_err("boid count", e))
+    }
+
+    /// Replaces the path points (flat `[x0, y0, ...]`); resets the measures
+    /// and the trace. On error nothing changes.
+    #[wasm_bindgen(js_name = setPathPoints)]
+    pub fn set_path_points(&mut self, xy: &[f32]) -> Result<(), JsError> {
+        self.crowd
+            .set_path_points(xy)
+            .map_err(|e| js_err("path points", e))
+    }
+
+    /// Sets the path radius; resets the measures.
+    #[wasm_bindgen(js_name = setPathRadius)]
+    pub fn set_path_radius(&mut self, radius: f32) -> Result<(), JsError> {
+        self.crowd
+            .set_path_radius(radius)
+            .map_err(|e| js_err("path radius", e))
+    }
+
+    /// Opens or closes the path; resets the measures and the trace.
+    #[wasm_bindgen(js_name = setPathClosed)]
+    pub fn set_path_closed(&mut self, closed: bool) -> Result<(), JsError> {
+        self.crowd
+            .set_path_closed(closed)
+            .map_err(|e| js_err("path", e))
+    }
+
+    /// Switches the seek strategy (next step).
+    #[wasm_bindgen(js_name = setSeek)]
+    pub fn set_seek(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "CrowdSeek")] seek: JsValue,
+    ) -> Result<(), JsError> {
+        let s: Seek = from_js("seek", seek)?;
+        self.crowd.set_seek(s).map_err(|e| js_err("seek", e))
+    }
+
+    /// Switches separation and sets its weight (in `[0, 10]`).
+    #[wasm_bindgen(js_name = setSeparation)]
+    pub fn set_separation(&mut self, on: bool, weight: f32) -> Result<(), JsError> {
+        self.crowd
+            .set_separation(on, weight)
+            .map_err(|e| js_err("separation", e))
+    }
+
+    /// The measures since the last reset.
+    #[wasm_bindgen(unchecked_return_type = "CrowdMetrics")]
+    pub fn metrics(&self) -> Result<JsValue, JsError> {
+        to_js(&self.crowd.metrics())
+    }
+
+    /// Clears the measures (boids keep their state).
+    #[wasm_bindgen(js_name = resetMetrics)]
+    pub fn reset_metrics(&mut self) {
+        self.crowd.reset_metrics();
+    }
+
+    /// Overlapping pairs at the last step.
+    #[wasm_bindgen(js_name = lastOverlaps)]
+    #[must_use]
+    pub fn last_overlaps(&self) -> f64 {
+        self.crowd.last_overlaps() as f64
+    }
+
+    /// Switches metric recording (on by default).
+    #[wasm_bindgen(js_name = setMetricsEnabled)]
+    pub fn set_metrics_enabled(&mut self, on: bool) {
+        self.crowd.set_metrics_enabled(on);
+    }
+}

@@ -1,0 +1,210 @@
+//! The gallery bindings in a real browser (`wasm-pack test --headless --chrome`):
+//! `CrowdLab` steps a paper preset and returns per-boid typed arrays, bad
+//! crowd input is a `JsError` with a message, `WanderLab` builds every
+//! variant of every wander preset file through the JavaScript object path
+//! and gives the same traces, bit for bit, as the native golden hashes of
+//! `tests/wander_determinism.rs`.
+#![cfg(target_arch = "wasm32")]
+
+use steering::bindings_crowd::CrowdLab;
+use steering::bindings_wander::WanderLab;
+use steering::crowd_config::CrowdConfig;
+use steering::wander::WanderPreset;
+use wasm_bindgen::JsValue;
+use wasm_bindgen_test::*;
+
+wasm_bindgen_test_configure!(run_in_browser);
+
+fn message(e: wasm_bindgen::JsError) -> String {
+    let v: JsValue = e.into();
+    js_sys::Error::from(v).message().into()
+}
+
+/// A Rust value as the page would hand it over (a plain JS object).
+fn js<T: serde::Serialize>(v: &T) -> JsValue {
+    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
+        .unwrap()
+}
+
+fn crowd_preset(boids: usize) -> CrowdConfig {
+    let mut cfg = CrowdConfig::paper_presets()
+        .into_iter()
+        .find(|c| c.boids == 300 && c.name.contains("parker 10%"))
+        .expect("Test IV, Parker 10 % exists");
+    cfg.boids = boids;
+    cfg
+}
+
+#[wasm_bindgen_test]
+fn crowd_steps_from_a_preset_and_returns_typed_arrays() {
+    let mut lab = CrowdLab::new(js(&crowd_preset(300))).unwrap();
+    assert_eq!(lab.count(), 300);
+    let before = lab.positions();
+    lab.step(10);
+    assert_eq!(lab.time(), 10.0);
+    let pos = lab.positions();
+    assert_eq!(pos.len(), 600);
+    assert_eq!(lab.velocities().len(), 600);
+    assert!(pos.iter().all(|x| x.is_finite()));
+    assert_ne!(pos, before);
+    assert!(lab.trace().len() >= 2);
+    assert!(lab.traced_boid() < 300);
+    assert_eq!(lab.path_points().len(), 8);
+    assert!(lab.metrics().unwrap().is_object());
+    lab.set_boid_count(10_000).unwrap();
+    lab.step(1);
+    assert_eq!(lab.positions().len(), 20_000);
+}
+
+#[wasm_bindgen_test]
+fn crowd_presets_cross_the_boundary() {
+    let presets = CrowdLab::paper_presets().unwrap();
+    let arr = js_sys::Array::from(&presets);
+    assert_eq!(arr.length(), 20);
+    for v in arr.iter() {
+        let mut lab = CrowdLab::new(v).unwrap();
+        lab.step(2);
+    }
+    let json = include_str!("../scenarios/crowd/test3_reynolds.json");
+    let mut lab = CrowdLab::from_json(json).unwrap();
+    lab.step(3);
+    assert_eq!(lab.count(), 100);
+}
+
+#[wasm_bindgen_test]
+fn bad_crowd_input_is_a_js_error_with_a_message() {
+    let mut cfg = crowd_preset(10);
+    cfg.path.radius = -1.0;
+    let e = CrowdLab::new(js(&cfg))
+        .err()
+        .expect("negative radius rejected");
+    assert!(message(e).contains("radius"));
+
+    let e = CrowdLab::new(JsValue::from_str("not a config"))
+        .err()
+        .unwrap();
+    assert!(message(e).starts_with("crowd configuration"));
+
+    let e = CrowdLab::from_json("{").err().unwrap();
+    assert!(!message(e).is_empty());
+
+    let mut lab = CrowdLab::new(js(&crowd_preset(10))).unwrap();
+    let e = lab.set_path_points(&[0.0, 0.0, f32::NAN, 1.0]).unwrap_err();
+    assert!(message(e).starts_with("path points"));
+    assert_eq!(lab.path_points().len(), 8, "unchanged after an error");
+    let seek = js_sys::JSON::parse(r#"{"kind": "parker", "fraction": 2}"#).unwrap();
+    assert!(!message(lab.set_seek(seek).unwrap_err()).is_empty());
+    let seek = js_sys::JSON::parse(r#"{"kind": "reynolds", "fraction": 1}"#).unwrap();
+    assert!(lab.set_seek(seek).is_err());
+    assert!(lab.set_separation(true, f32::INFINITY).is_err());
+    assert!(lab.set_path_radius(0.0).is_err());
+    assert!(lab.select_traced(10).is_err());
+    assert!(lab.set_boid_count(2_000_000).is_err());
+    // Still usable.
+    lab.step(5);
+    assert_eq!(lab.positions().len(), 20);
+}
+
+#[wasm_bindgen_test]
+fn a_dragged_path_point_moves_the_path() {
+    let mut lab = CrowdLab::new(js(&crowd_preset(50))).unwrap();
+    let mut pts = lab.path_points();
+    pts[0] -= 40.0;
+    lab.set_path_points(&pts).unwrap();
+    assert_eq!(lab.path_points(), pts);
+    lab.set_path_radius(30.0).unwrap();
+    assert_eq!(lab.path_radius(), 30.0);
+    lab.step(5);
+}
+
+const PRESETS: [(&str, &str); 8] = [
+    ("control", include_str!("../scenarios/wander/control.json")),
+    (
+        "distributions",
+        include_str!("../scenarios/wander/distributions.json"),
+    ),
+    ("fields", include_str!("../scenarios/wander/fields.json")),
+    (
+        "time-functions",
+        include_str!("../scenarios/wander/time-functions.json"),
+    ),
+    ("timed", include_str!("../scenarios/wander/timed.json")),
+    ("markov", include_str!("../scenarios/wander/markov.json")),
+    ("paths", include_str!("../scenarios/wander/paths.json")),
+    (
+        "composed",
+        include_str!("../scenarios/wander/composed.json"),
+    ),
+];
+
+/// Golden hashes recorded natively (same values as
+/// `tests/wander_determinism.rs`).
+const GOLDEN: [u64; 8] = [
+    0x6702_72c9_62be_c822,
+    0xc42c_6aa1_c02e_38e6,
+    0x01b0_fbfa_2720_c9ea,
+    0x726c_e934_4cce_4617,
+    0xce45_f541_9125_e52f,
+    0x7cb6_c4f8_9c41_4986,
+    0xc74c_cb35_7874_d1a3,
+    0x432a_7cfe_efec_d26e,
+];
+
+/// FNV-1a over the f32 bit patterns.
+fn fnv(hash: &mut u64, values: &[f32]) {
+    for v in values {
+        for b in v.to_bits().to_le_bytes() {
+            *hash ^= u64::from(b);
+            *hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+}
+
+#[wasm_bindgen_test]
+fn wander_presets_give_the_native_traces_through_the_bindings() {
+    for ((name, json), golden) in PRESETS.iter().zip(GOLDEN) {
+        // The preset as the page receives it, each variant's config handed
+        // back as a plain JS object.
+        let parsed = WanderLab::parse_preset(json).unwrap();
+        let variants = js_sys::Reflect::get(&parsed, &JsValue::from_str("variants")).unwrap();
+        let variants = js_sys::Array::from(&variants);
+        let preset = WanderPreset::from_json(json).unwrap();
+        assert_eq!(variants.length() as usize, preset.variants.len());
+        let mut h = 0xcbf2_9ce4_8422_2325;
+        for v in variants.iter() {
+            let config = js_sys::Reflect::get(&v, &JsValue::from_str("config")).unwrap();
+            let mut lab = WanderLab::new(config).unwrap();
+            lab.run(preset.steps);
+            let trace = lab.trace();
+            assert_eq!(trace.len(), 3 * (preset.steps as usize + 1), "{name}");
+            assert_eq!(lab.trace_len() as usize, preset.steps as usize + 1);
+            fnv(&mut h, &trace);
+            // Reset replays.
+            lab.reset();
+            lab.run(preset.steps);
+            assert_eq!(lab.trace(), trace, "{name}: reset replays");
+        }
+        assert_eq!(h, golden, "preset {name}: got {h:#018x}");
+    }
+}
+
+#[wasm_bindgen_test]
+fn wander_paths_expose_the_generated_path_and_json_works() {
+    let preset = WanderPreset::from_json(PRESETS[6].1).unwrap();
+    let cfg = serde_json::to_string(&preset.variants[0].config).unwrap();
+    let lab = WanderLab::from_json(&cfg).unwrap();
+    let pts = lab.path_points();
+    assert!(pts.len() >= 4 && pts.len() % 2 == 0);
+    assert_eq!(lab.pose().len(), 3);
+}
+
+#[wasm_bindgen_test]
+fn bad_wander_input_is_a_js_error_with_a_message() {
+    let e = WanderLab::from_json(r#"{"control": {"mode": "velocity", "max_velocity_deg": 500}, "source": {"kind": "random", "distribution": {"kind": "uniform"}}}"#)
+        .err()
+        .unwrap();
+    assert!(message(e).contains("max_velocity_deg"));
+    let e = WanderLab::new(JsValue::NULL).err().unwrap();
+    assert!(message(e).starts_with("wander configuration"));
+    assert!(WanderLab::parse_preset("[]").is_err());
+}

@@ -1,0 +1,231 @@
+// The crowd page's side panel: seek, separation, boid count, path radius,
+// display switches, path editing buttons, metrics. Built on ../controls.
+
+import { button, checkbox, section, slider } from "../controls";
+import type { CrowdMetrics, CrowdSeek } from "../wasm";
+
+/** The paper's five seeks, in preset order. */
+export const SEEKS: { tag: string; label: string; seek: CrowdSeek }[] = [
+  { tag: "reynolds", label: "Reynolds", seek: { kind: "reynolds" } },
+  { tag: "parker100", label: "Parker 100 %", seek: { kind: "parker", fraction: 1 } },
+  { tag: "parker10", label: "Parker 10 %", seek: { kind: "parker", fraction: 0.1 } },
+  { tag: "parker1", label: "Parker 1 %", seek: { kind: "parker", fraction: 0.01 } },
+  { tag: "parker0.1", label: "Parker 0.1 %", seek: { kind: "parker", fraction: 0.001 } },
+];
+
+/** Index into SEEKS of a seek (nearest Parker fraction), or -1. */
+export function seekIndex(s: CrowdSeek): number {
+  if (s.kind === "reynolds") return 0;
+  let best = -1;
+  let bestD = Infinity;
+  SEEKS.forEach((o, i) => {
+    if (o.seek.kind !== "parker") return;
+    const d = Math.abs(Math.log(o.seek.fraction) - Math.log(s.fraction));
+    if (d < bestD) {
+      bestD = d;
+      best = i;
+    }
+  });
+  return bestD < 1e-3 ? best : -1;
+}
+
+export interface PanelActions {
+  seek(s: CrowdSeek): void;
+  separation(on: boolean, weight: number): void;
+  boids(n: number): void;
+  radius(r: number): void;
+  closed(c: boolean): void;
+  speed(stepsPerFrame: number): void;
+  showTrace(on: boolean): void;
+  showHandles(on: boolean): void;
+  addPoint(): void;
+  removePoint(): void;
+  fit(): void;
+  resetMetrics(): void;
+  newTrace(): void;
+  png(): void;
+}
+
+export interface PanelState {
+  seek: CrowdSeek;
+  separation: boolean;
+  weight: number;
+  boids: number;
+  radius: number;
+  closed: boolean;
+}
+
+export interface Panel {
+  set(s: PanelState): void;
+  showMetrics(m: CrowdMetrics, overlapsNow: number, boids: number): void;
+}
+
+/** Largest count on the boid slider (the number box goes further). */
+export const SLIDER_MAX_BOIDS = 30_000;
+const LOG_MAX = Math.log10(SLIDER_MAX_BOIDS + 1);
+
+const toSlider = (n: number): number => Math.log10(n + 1) / LOG_MAX;
+const fromSlider = (x: number): number => Math.round(10 ** (x * LOG_MAX) - 1);
+
+function fmt(v: number | null, digits: number, unit = ""): string {
+  return v === null ? "—" : `${v.toFixed(digits)}${unit}`;
+}
+
+export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelActions): Panel {
+  // Strategy.
+  const strat = section(parent, "Steering");
+  const seekRow = document.createElement("label");
+  seekRow.className = "numrow";
+  seekRow.append("Seek");
+  const seekSel = document.createElement("select");
+  seekSel.id = "seek";
+  for (const s of SEEKS) seekSel.add(new Option(s.label, s.tag));
+  seekSel.addEventListener("change", () => {
+    const o = SEEKS[seekSel.selectedIndex];
+    if (o) a.seek(o.seek);
+  });
+  seekRow.append(seekSel);
+  strat.append(seekRow);
+  let weight = initial.weight;
+  let sepOn = initial.separation;
+  const sep = checkbox(strat, "separation", "separation", initial.separation, (on) => {
+    sepOn = on;
+    a.separation(on, weight);
+  });
+  const w = slider(strat, {
+    id: "sepweight", label: "separation weight", unit: "", min: 0, max: 1, step: 0.005, value: initial.weight, digits: 3,
+    onInput: (v) => {
+      weight = v;
+      a.separation(sepOn, v);
+    },
+  });
+  const help = document.createElement("p");
+  help.className = "help";
+  help.textContent = "Weight 1 is the paper's literal separation sum; the presets use 0.05.";
+  strat.append(help);
+
+  // Crowd.
+  const crowd = section(parent, "Crowd");
+  const count = slider(crowd, {
+    id: "boids-slider", label: "boids", unit: "", min: 0, max: 1, step: 0.001, value: toSlider(initial.boids), digits: 0,
+    onInput: (x) => {
+      const n = fromSlider(x);
+      num.value = String(n);
+      a.boids(n);
+    },
+  });
+  // Show the boid count, not the slider position.
+  const countOut = count.el.querySelector("output");
+  const showCount = (n: number): void => {
+    if (countOut) countOut.textContent = n.toLocaleString("en");
+  };
+  count.el.querySelector("input")?.addEventListener("input", () => showCount(Number(num.value)));
+  const numRow = document.createElement("label");
+  numRow.className = "numrow";
+  numRow.append("boid count");
+  const num = document.createElement("input");
+  num.type = "number";
+  num.id = "boids";
+  num.min = "0";
+  num.max = "200000";
+  num.step = "1";
+  num.value = String(initial.boids);
+  num.addEventListener("change", () => {
+    const n = Math.max(0, Math.min(200_000, Math.round(Number(num.value) || 0)));
+    num.value = String(n);
+    count.set(toSlider(n));
+    showCount(n);
+    a.boids(n);
+  });
+  numRow.append(num);
+  crowd.append(numRow);
+  const quick = document.createElement("div");
+  quick.className = "row";
+  for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
+    button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => {
+      num.value = String(n);
+      count.set(toSlider(n));
+      showCount(n);
+      a.boids(n);
+    });
+  }
+  crowd.append(quick);
+  slider(crowd, {
+    id: "speed", label: "steps / frame", unit: "", min: 1, max: 20, step: 1, value: 1, digits: 0, onInput: a.speed,
+  });
+
+  // Path.
+  const path = section(parent, "Pathway");
+  const radius = slider(path, {
+    id: "radius", label: "radius", unit: "u", min: 2, max: 150, step: 1, value: initial.radius, digits: 0, onInput: a.radius,
+  });
+  const closed = checkbox(path, "closed", "closed circuit", initial.closed, a.closed);
+  const prow = document.createElement("div");
+  prow.className = "row";
+  button(prow, "add-point", "Add point", "split the segment after the selected point (or the longest); double-click a segment also adds one", a.addPoint);
+  button(prow, "remove-point", "Remove point", "remove the selected path point (also Delete)", a.removePoint);
+  button(prow, "fit", "Fit view", "fit the pathway in the canvas", a.fit);
+  path.append(prow);
+  const phelp = document.createElement("p");
+  phelp.className = "help";
+  phelp.innerHTML = "Drag a point to move it; double-click a segment to add one; click a point and press <kbd>Delete</kbd> to remove it. Drag elsewhere to pan, wheel to zoom.";
+  path.append(phelp);
+
+  // Display.
+  const disp = section(parent, "Display");
+  checkbox(disp, "show-trace", "lap trace", true, a.showTrace);
+  checkbox(disp, "show-handles", "path points", true, a.showHandles);
+  const drow = document.createElement("div");
+  drow.className = "row";
+  button(drow, "new-trace", "Another boid", "highlight another random boid's lap", a.newTrace);
+  button(drow, "png", "PNG", "download the canvas as PNG", a.png);
+  disp.append(drow);
+
+  // Metrics.
+  const met = section(parent, "Metrics (since reset)");
+  const pre = document.createElement("pre");
+  pre.className = "metrics";
+  pre.id = "metrics";
+  met.append(pre);
+  const mrow = document.createElement("div");
+  mrow.className = "row";
+  button(mrow, "reset-metrics", "Reset metrics", "start measuring again from now", a.resetMetrics);
+  met.append(mrow);
+  const mhelp = document.createElement("p");
+  mhelp.className = "help";
+  mhelp.textContent = "Distance: boid to the closest path point. Outside: share of boid-steps beyond the radius. Trace spread: how much laps differ (std of lateral offset per stretch; near 0 = one ideal line).";
+  met.append(mhelp);
+
+  const panel: Panel = {
+    set(s) {
+      seekSel.selectedIndex = seekIndex(s.seek);
+      sep.set(s.separation);
+      sepOn = s.separation;
+      weight = s.weight;
+      w.set(s.weight);
+      num.value = String(s.boids);
+      count.set(toSlider(s.boids));
+      showCount(s.boids);
+      radius.set(s.radius);
+      closed.set(s.closed);
+    },
+    showMetrics(m, overlapsNow, boids) {
+      pre.textContent = [
+        `steps measured   ${m.steps}`,
+        `laps timed       ${m.laps}`,
+        `mean lap         ${fmt(m.mean_lap_steps, 1, " steps")}`,
+        `mean distance    ${fmt(m.mean_distance, 2, " u")}`,
+        `p95 distance     ${fmt(m.p95_distance, 2, " u")}`,
+        `outside radius   ${m.outside_share === null ? "—" : `${(100 * m.outside_share).toFixed(2)} %`}`,
+        `mean offset      ${fmt(m.mean_offset, 2, " u")} (+ left)`,
+        `overlaps / step  ${fmt(m.overlapping_pairs_per_step, 2)} (now ${overlapsNow})`,
+        `trace spread     ${fmt(m.trace_spread, 2, " u")}`,
+        `steer / sep      ${fmt(m.mean_steer, 3)} / ${fmt(m.mean_separation, 3)}`,
+        `boids            ${boids.toLocaleString("en")}`,
+      ].join("\n");
+    },
+  };
+  panel.set(initial);
+  return panel;
+}
+

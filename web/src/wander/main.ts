@@ -1,0 +1,107 @@
+// The random steering gallery (paper 004): one panel per toolkit component,
+// reproducing its figure series from the preset files scenarios/wander/*.json
+// (loaded at runtime as separate chunks, like the funnelling page's presets).
+
+import { button } from "../controls";
+import { errorText, loadCore, WanderLab } from "../wasm";
+import { GalleryPanel, type PanelStatus } from "./gallery";
+
+/** The components in the paper's order. */
+export const COMPONENTS = ["control", "distributions", "fields", "time-functions", "timed", "markov", "paths", "composed"] as const;
+
+const files = import.meta.glob<string>("../../../scenarios/wander/*.json", { query: "?raw", import: "default" });
+
+/** What the end-to-end test reads and drives (window.__wander). */
+export interface WanderHook {
+  ready: boolean;
+  error: string | null;
+  frames: number;
+  panels(): PanelStatus[];
+  busy(): boolean;
+  rerun(name?: string): void;
+}
+
+declare global {
+  interface Window {
+    __wander?: WanderHook;
+  }
+}
+
+const $ = (id: string): HTMLElement => {
+  const e = document.getElementById(id);
+  if (!e) throw new Error(`#${id} missing from wander.html`);
+  return e;
+};
+
+const message = $("message");
+function showMessage(text: string, error = false): void {
+  message.hidden = false;
+  message.textContent = text;
+  message.classList.toggle("error", error);
+}
+
+const panels: GalleryPanel[] = [];
+let busy = false;
+
+const hook: WanderHook = {
+  ready: false,
+  error: null,
+  frames: 0,
+  panels: () => panels.map((p) => p.status()),
+  busy: () => busy,
+  rerun: (name) => {
+    for (const p of panels) if (name === undefined || p.name === name) p.rerun();
+    busy = true;
+  },
+};
+window.__wander = hook;
+
+function frame(): void {
+  requestAnimationFrame(frame);
+  hook.frames++;
+  let b = false;
+  for (const p of panels) b = p.tick() || b;
+  busy = b;
+}
+
+async function start(): Promise<void> {
+  const gallery = $("gallery");
+  const problems: string[] = [];
+  try {
+    $("version").textContent = `core ${await loadCore()}`;
+  } catch (e) {
+    hook.error = errorText(e);
+    showMessage(`could not load the steering core: ${hook.error}`, true);
+    return;
+  }
+  const texts = await Promise.all(COMPONENTS.map(async (name) => {
+    const load = files[`../../../scenarios/wander/${name}.json`];
+    if (!load) return { name, text: null, error: "preset file missing" };
+    try {
+      return { name, text: await load(), error: null };
+    } catch (e) {
+      return { name, text: null, error: errorText(e) };
+    }
+  }));
+  for (const { name, text, error } of texts) {
+    if (text === null) {
+      problems.push(`${name}.json: ${error ?? "?"}`);
+      continue;
+    }
+    try {
+      panels.push(new GalleryPanel(gallery, name, WanderLab.parsePreset(text)));
+    } catch (e) {
+      problems.push(`${name}.json: ${errorText(e)}`);
+    }
+  }
+  if (problems.length > 0) {
+    hook.error = problems.join("\n");
+    showMessage(hook.error, true);
+  }
+  button($("transport"), "rerun-all", "Re-run all", "replay every panel from step 0", () => hook.rerun());
+  hook.rerun();
+  hook.ready = true;
+  requestAnimationFrame(frame);
+}
+
+void start();

@@ -1,0 +1,110 @@
+// Draws one gallery tile: the agent's trace fitted to the tile (equal
+// aspect), shaded light → dark with time, the generated path under it, a
+// start dot, the agent at the end and a scale bar.
+
+import { beginFrame, type Surface } from "../canvas";
+import { WideView } from "../wideview";
+
+const SHADES = 8;
+
+function shade(k: number): string {
+  // Light steel blue → dark navy.
+  const t = k / (SHADES - 1);
+  const r = Math.round(150 - 130 * t);
+  const g = Math.round(180 - 140 * t);
+  const b = Math.round(220 - 110 * t);
+  return `rgb(${r},${g},${b})`;
+}
+
+/** A round number of world units about a fifth of `span`. */
+function niceLength(span: number): number {
+  const raw = span / 5;
+  const p = 10 ** Math.floor(Math.log10(raw));
+  const m = raw / p;
+  return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
+}
+
+/** `trace` is flat [x, y, θ, ...]; `path` flat [x, y, ...] (may be empty). */
+export function drawTile(s: Surface, view: WideView, trace: Float32Array, path: Float32Array): void {
+  const ctx = s.ctx;
+  beginFrame(s, "#ffffff");
+  const n = Math.floor(trace.length / 3);
+  let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+  const grow = (x: number, y: number): void => {
+    x0 = Math.min(x0, x);
+    x1 = Math.max(x1, x);
+    y0 = Math.min(y0, y);
+    y1 = Math.max(y1, y);
+  };
+  for (let i = 0; i < n; i++) grow(trace[3 * i] ?? 0, trace[3 * i + 1] ?? 0);
+  for (let i = 0; i + 1 < path.length; i += 2) grow(path[i] ?? 0, path[i + 1] ?? 0);
+  if (!Number.isFinite(x0)) return;
+  const pad = Math.max(4, 0.02 * Math.max(x1 - x0, y1 - y0));
+  view.resize(s.width, s.height);
+  view.fit(x0 - pad, y0 - pad, x1 + pad, y1 + pad, 8);
+
+  ctx.lineJoin = "round";
+  ctx.lineCap = "round";
+  if (path.length >= 4) {
+    ctx.beginPath();
+    for (let i = 0; i + 1 < path.length; i += 2) {
+      const p = view.toScreen(path[i] ?? 0, path[i + 1] ?? 0);
+      if (i === 0) ctx.moveTo(p.x, p.y);
+      else ctx.lineTo(p.x, p.y);
+    }
+    ctx.strokeStyle = "#c9c9c9";
+    ctx.lineWidth = 3;
+    ctx.stroke();
+  }
+
+  // The trace in SHADES stretches of time, each one path.
+  ctx.lineWidth = 1;
+  for (let k = 0; k < SHADES; k++) {
+    const a = Math.floor((k * (n - 1)) / SHADES);
+    const b = Math.floor(((k + 1) * (n - 1)) / SHADES);
+    if (b <= a) continue;
+    ctx.beginPath();
+    for (let i = a; i <= b; i++) {
+      const p = view.toScreen(trace[3 * i] ?? 0, trace[3 * i + 1] ?? 0);
+      if (i === a) ctx.moveTo(p.x, p.y);
+      else ctx.lineTo(p.x, p.y);
+    }
+    ctx.strokeStyle = shade(k);
+    ctx.stroke();
+  }
+
+  // Start and end.
+  if (n > 0) {
+    const s0 = view.toScreen(trace[0] ?? 0, trace[1] ?? 0);
+    ctx.beginPath();
+    ctx.arc(s0.x, s0.y, 3.5, 0, 2 * Math.PI);
+    ctx.fillStyle = "#2ca02c";
+    ctx.fill();
+    const e = 3 * (n - 1);
+    const p = view.toScreen(trace[e] ?? 0, trace[e + 1] ?? 0);
+    const th = trace[e + 2] ?? 0;
+    const ux = Math.cos(th);
+    const uy = -Math.sin(th);
+    const r = 6;
+    ctx.beginPath();
+    ctx.moveTo(p.x + ux * r, p.y + uy * r);
+    ctx.lineTo(p.x - ux * r * 0.7 - uy * r * 0.55, p.y - uy * r * 0.7 + ux * r * 0.55);
+    ctx.lineTo(p.x - ux * r * 0.7 + uy * r * 0.55, p.y - uy * r * 0.7 - ux * r * 0.55);
+    ctx.closePath();
+    ctx.fillStyle = "#d62728";
+    ctx.fill();
+  }
+
+  // Scale bar.
+  const len = niceLength(Math.max(x1 - x0, y1 - y0));
+  const px = len * view.scale;
+  ctx.strokeStyle = "#555";
+  ctx.lineWidth = 1.5;
+  ctx.beginPath();
+  ctx.moveTo(8, s.height - 8);
+  ctx.lineTo(8 + px, s.height - 8);
+  ctx.stroke();
+  ctx.fillStyle = "#555";
+  ctx.font = "10px system-ui, sans-serif";
+  ctx.fillText(`${len} u`, 10, s.height - 12);
+}

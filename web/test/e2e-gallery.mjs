@@ -1,0 +1,349 @@
+// Browser end-to-end test of the gallery pages (web/dist, built by
+// `make web-build`) in Debian's headless Chromium via playwright-core.
+// crowd.html: loads without console errors or warnings, switching seek and
+// preset reaches the core, 10,000 boids run, dragging a path point moves it,
+// double-click adds a point and Delete removes it, keys; it also measures the
+// step cost (boids stepped per 16.7 ms frame) at 300 / 3,000 / 30,000 boids.
+// wander.html: loads without console errors, every panel draws every tile
+// (non-blank canvases), a knob rebuilds, a bad JSON edit shows the core's
+// message. Screenshots go to artifacts/ (gitignored).
+// Prints "e2e-gallery: N passed, M failed".
+import { serve, launch, openPage, artifacts } from "./harness.mjs";
+import { resolve } from "node:path";
+import { writeFileSync } from "node:fs";
+import assert from "node:assert/strict";
+
+let passed = 0;
+let failed = 0;
+async function check(name, f) {
+  try {
+    await f();
+    passed++;
+    console.log(`ok - ${name}`);
+  } catch (e) {
+    failed++;
+    console.log(`not ok - ${name}\n  ${String(e && e.stack ? e.stack : e).split("\n").slice(0, 6).join("\n  ")}`);
+  }
+}
+const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
+
+async function waitCrowd(page) {
+  await page.waitForFunction(() => {
+    const c = window.__crowd;
+    return c && (c.error !== null || (c.ready && c.frames > 2));
+  }, null, { timeout: 20000 });
+  return page.evaluate(() => window.__crowd.error);
+}
+
+/** Share of non-background pixels of a canvas (read from a copy). */
+async function inked(page, selector, index = 0) {
+  return page.evaluate(({ selector, index }) => {
+    const c = document.querySelectorAll(selector)[index];
+    const copy = document.createElement("canvas");
+    copy.width = c.width;
+    copy.height = c.height;
+    const ctx = copy.getContext("2d", { willReadFrequently: true });
+    ctx.drawImage(c, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    const [r0, g0, b0] = [d[0], d[1], d[2]];
+    let ink = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      if (Math.abs(d[i] - r0) + Math.abs(d[i + 1] - g0) + Math.abs(d[i + 2] - b0) > 30) ink++;
+    }
+    return ink / (d.length / 4);
+  }, { selector, index });
+}
+
+const { server, url } = await serve();
+const browser = await launch();
+const allProblems = [];
+const report = {};
+try {
+  // ------------------------------------------------------------------ crowd
+  {
+    const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 2);
+    await page.goto(new URL("crowd.html", url).href);
+    const err = await waitCrowd(page);
+    await check("crowd: page loads, the core steps the default preset (Test IV, Parker 10 %)", async () => {
+      assert.equal(err, null);
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 300);
+      const t0 = await page.evaluate(() => window.__crowd.time());
+      await page.waitForTimeout(300);
+      assert.ok((await page.evaluate(() => window.__crowd.time())) > t0);
+      assert.equal(await page.locator("#message").isHidden(), true);
+      assert.ok((await inked(page, "#crowd")) > 0.05, "canvas drawn");
+    });
+    await check("crowd: nav bar links the three pages", async () => {
+      const hrefs = await page.$$eval("nav.labnav a", (as) => as.map((a) => a.getAttribute("href")));
+      assert.deepEqual(hrefs, ["./index.html", "./crowd.html", "./wander.html"]);
+    });
+    await check("crowd: HiDPI backing store", async () => {
+      const r = await page.evaluate(() => {
+        const c = document.getElementById("crowd");
+        return { w: c.width, cw: c.getBoundingClientRect().width };
+      });
+      assert.equal(r.w, Math.round(r.cw * 2));
+    });
+    await page.waitForTimeout(1200);
+    await shot(page, "crowd-test4-parker10");
+
+    await check("crowd: seek menu switches the core's seek", async () => {
+      await page.selectOption("#seek", "reynolds");
+      assert.deepEqual(await page.evaluate(() => window.__crowd.seek()), { kind: "reynolds" });
+      await page.selectOption("#seek", "parker0.1");
+      const s = await page.evaluate(() => window.__crowd.seek());
+      assert.equal(s.kind, "parker");
+      assert.ok(Math.abs(s.fraction - 0.001) < 1e-6);
+    });
+    await check("crowd: separation switch", async () => {
+      const before = await page.evaluate(() => window.__crowd.separation());
+      await page.click("#separation");
+      assert.equal(await page.evaluate(() => window.__crowd.separation()), !before);
+      await page.click("#separation");
+    });
+    await check("crowd: preset menu loads Test II Reynolds (10 boids, no separation)", async () => {
+      const value = await page.$eval("#preset", (sel) => {
+        const o = [...sel.options].find((o) => o.text === "Test II — Reynolds");
+        return o ? o.value : null;
+      });
+      assert.notEqual(value, null);
+      await page.selectOption("#preset", value);
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 10);
+      assert.equal(await page.evaluate(() => window.__crowd.separation()), false);
+      assert.equal(await page.$eval("#seek", (s) => s.value), "reynolds");
+      assert.equal(await page.$eval("#boids", (s) => s.value), "10");
+      await page.waitForTimeout(1500);
+      await shot(page, "crowd-test2-reynolds");
+    });
+    await check("crowd: dragging a path point moves it (mouse, pointer capture)", async () => {
+      const before = await page.evaluate(() => window.__crowd.pathPoints());
+      const p = await page.evaluate(([x, y]) => window.__crowd.toScreen(x, y), before.slice(0, 2));
+      const box = await page.locator("#crowd").boundingBox();
+      await page.mouse.move(box.x + p.x, box.y + p.y);
+      await page.mouse.down();
+      await page.mouse.move(box.x + p.x - 60, box.y + p.y - 40, { steps: 10 });
+      await page.mouse.up();
+      const after = await page.evaluate(() => window.__crowd.pathPoints());
+      const k = await page.evaluate(() => {
+        const a = window.__crowd.toScreen(0, 0);
+        const b = window.__crowd.toScreen(1, 0);
+        return b.x - a.x;
+      });
+      assert.ok(Math.abs(after[0] - (before[0] - 60 / k)) < 1.5 / k + 0.5, `x ${before[0]} → ${after[0]}`);
+      assert.ok(Math.abs(after[1] - (before[1] + 40 / k)) < 1.5 / k + 0.5, `y ${before[1]} → ${after[1]}`);
+      assert.deepEqual(after.slice(2), before.slice(2));
+      assert.equal(await page.evaluate(() => window.__crowd.selected()), 0);
+    });
+    await check("crowd: a finger drags a path point too (touch → pointer events with capture)", async () => {
+      const context = await browser.newContext({ viewport: { width: 900, height: 700 }, deviceScaleFactor: 1, hasTouch: true });
+      const t = await context.newPage();
+      const tproblems = [];
+      t.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") tproblems.push(m.text()); });
+      t.on("pageerror", (e) => tproblems.push(e.message));
+      await t.goto(new URL("crowd.html", url).href);
+      assert.equal(await waitCrowd(t), null);
+      const before = await t.evaluate(() => window.__crowd.pathPoints());
+      const p = await t.evaluate(([x, y]) => window.__crowd.toScreen(x, y), before.slice(4, 6));
+      const box = await t.locator("#crowd").boundingBox();
+      const cdp = await context.newCDPSession(t);
+      const at = (dx, dy) => [{ x: box.x + p.x + dx, y: box.y + p.y + dy }];
+      await cdp.send("Input.dispatchTouchEvent", { type: "touchStart", touchPoints: at(0, 0) });
+      for (let i = 1; i <= 10; i++) {
+        await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: at(-4 * i, 3 * i) });
+      }
+      await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
+      await t.waitForTimeout(50);
+      const after = await t.evaluate(() => window.__crowd.pathPoints());
+      assert.ok(after[4] < before[4] - 1 && after[5] < before[5] - 1, `${before.slice(4, 6)} → ${after.slice(4, 6)}`);
+      assert.deepEqual(tproblems, []);
+      await context.close();
+    });
+    await check("crowd: double-click a segment adds a point; Delete removes the selected one", async () => {
+      const before = await page.evaluate(() => window.__crowd.pathPoints());
+      // Midpoint of the segment from point 1 to point 2.
+      const mid = [(before[2] + before[4]) / 2, (before[3] + before[5]) / 2];
+      const p = await page.evaluate(([x, y]) => window.__crowd.toScreen(x, y), mid);
+      const box = await page.locator("#crowd").boundingBox();
+      await page.mouse.dblclick(box.x + p.x, box.y + p.y);
+      const added = await page.evaluate(() => window.__crowd.pathPoints());
+      assert.equal(added.length, before.length + 2);
+      assert.equal(await page.evaluate(() => window.__crowd.selected()), 2);
+      await page.keyboard.press("Delete");
+      const removed = await page.evaluate(() => window.__crowd.pathPoints());
+      assert.deepEqual(removed, before);
+      // Add / remove buttons.
+      await page.click("#add-point");
+      assert.equal((await page.evaluate(() => window.__crowd.pathPoints())).length, before.length + 2);
+      await page.click("#remove-point");
+      assert.deepEqual(await page.evaluate(() => window.__crowd.pathPoints()), before);
+    });
+    await check("crowd: radius slider", async () => {
+      await page.$eval("#radius", (el) => {
+        el.value = "60";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+      assert.equal(await page.evaluate(() => window.__crowd.pathRadius()), 60);
+    });
+    await check("crowd: keys space (pause), s (step), r (reset)", async () => {
+      await page.locator("#crowd").click({ position: { x: 5, y: 5 } });
+      await page.keyboard.press(" ");
+      assert.equal(await page.evaluate(() => window.__crowd.playing), false);
+      const t = await page.evaluate(() => window.__crowd.time());
+      await page.keyboard.press("s");
+      await page.waitForTimeout(100);
+      assert.equal(await page.evaluate(() => window.__crowd.time()), t + 1);
+      await page.keyboard.press("r");
+      assert.equal(await page.evaluate(() => window.__crowd.time()), 0);
+      await page.keyboard.press(" ");
+      assert.equal(await page.evaluate(() => window.__crowd.playing), true);
+    });
+    await check("crowd: 10,000 boids run (Test IV, Parker 10 %, separation)", async () => {
+      const value = await page.$eval("#preset", (sel) => [...sel.options].find((o) => o.text === "Test IV — Parker 10 %").value);
+      await page.selectOption("#preset", value);
+      await page.fill("#boids", "10000");
+      await page.press("#boids", "Enter");
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 10000);
+      const t0 = await page.evaluate(() => window.__crowd.time());
+      await page.waitForTimeout(2200);
+      const s = await page.evaluate(() => ({ t: window.__crowd.time(), fps: window.__crowd.fps, step: window.__crowd.stepMs, draw: window.__crowd.drawMs, m: window.__crowd.metrics() }));
+      assert.ok(s.t > t0 + 10, `steps ${t0} → ${s.t}`);
+      assert.ok(s.m.mean_distance !== null);
+      report.page10k = s;
+      console.log(`# 10,000 boids on the page: ${s.fps.toFixed(0)} fps, step ${s.step.toFixed(2)} ms, draw ${s.draw.toFixed(2)} ms per frame`);
+      await shot(page, "crowd-10000");
+    });
+    await check("crowd: a bad edit shows the core's message and changes nothing", async () => {
+      await page.fill("#boids", "300");
+      await page.press("#boids", "Enter");
+      const before = await page.evaluate(() => window.__crowd.pathPoints());
+      // Drag point 1 exactly onto point 0: a zero-length segment.
+      const a = await page.evaluate(([x, y]) => window.__crowd.toScreen(x, y), before.slice(0, 2));
+      const b = await page.evaluate(([x, y]) => window.__crowd.toScreen(x, y), before.slice(2, 4));
+      const box = await page.locator("#crowd").boundingBox();
+      await page.mouse.move(box.x + b.x, box.y + b.y);
+      await page.mouse.down();
+      await page.mouse.move(box.x + a.x, box.y + a.y, { steps: 4 });
+      await page.mouse.move(box.x + b.x, box.y + b.y, { steps: 4 });
+      await page.mouse.up();
+      const after = await page.evaluate(() => window.__crowd.pathPoints());
+      assert.equal(after.length, before.length);
+      // Remove below the minimum: a closed path keeps three points.
+      for (let i = 0; i < 3; i++) {
+        await page.evaluate(() => 0);
+        await page.click("#remove-point");
+      }
+      assert.equal(await page.locator("#message").isVisible(), true);
+    });
+    await check("crowd: laps are timed; the lap trace and metrics panel (Test IV, Reynolds, 20 steps / frame)", async () => {
+      const value = await page.$eval("#preset", (sel) => [...sel.options].find((o) => o.text === "Test IV — Reynolds").value);
+      await page.selectOption("#preset", value);
+      await page.$eval("#speed", (el) => {
+        el.value = "20";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+      await page.waitForFunction(() => window.__crowd.metrics().laps > 20, null, { timeout: 30000 });
+      const m = await page.evaluate(() => window.__crowd.metrics());
+      assert.ok(m.mean_lap_steps > 300 && m.mean_lap_steps < 3000, `mean lap ${m.mean_lap_steps}`);
+      assert.ok(m.trace_spread !== null);
+      await page.waitForTimeout(300);
+      await shot(page, "crowd-test4-reynolds-lap");
+      await page.locator("#metrics").screenshot({ path: resolve(artifacts, "crowd-metrics.png") });
+      await page.$eval("#speed", (el) => {
+        el.value = "1";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+    });
+    await check("crowd: step cost per boid count (performance.now in the page)", async () => {
+      const rows = await page.evaluate(() => window.__crowd.bench([300, 3000, 30000], 600));
+      report.bench = rows;
+      for (const r of rows) {
+        console.log(`# ${String(r.boids).padStart(6)} boids, ${r.setup.padEnd(6)}: ${r.msPerStep.toFixed(3)} ms/step → ${r.boidsPerFrame.toLocaleString("en")} boids per 16.7 ms frame (${r.steps} steps timed)`);
+      }
+      assert.equal(rows.length, 9);
+      assert.ok(rows.every((r) => r.msPerStep > 0));
+    });
+    await check("crowd: no console errors or warnings", async () => {
+      assert.deepEqual(problems, []);
+    });
+    allProblems.push(...problems);
+    await context.close();
+  }
+
+  // ----------------------------------------------------------------- wander
+  {
+    const { page, problems, context } = await openPage(browser, { width: 1280, height: 900 }, 1);
+    await page.goto(new URL("wander.html", url).href);
+    await page.waitForFunction(() => {
+      const w = window.__wander;
+      return w && (w.error !== null || (w.ready && !w.busy() && w.frames > 2));
+    }, null, { timeout: 30000 });
+    const status = await page.evaluate(() => ({ error: window.__wander.error, panels: window.__wander.panels() }));
+    await check("wander: page loads, eight panels, every tile drawn, no errors", async () => {
+      assert.equal(status.error, null);
+      assert.deepEqual(status.panels.map((p) => p.name),
+        ["control", "distributions", "fields", "time-functions", "timed", "markov", "paths", "composed"]);
+      for (const p of status.panels) {
+        assert.ok(p.tiles > 0, p.name);
+        assert.equal(p.drawn, p.tiles, `${p.name}: ${p.drawn}/${p.tiles} drawn`);
+        assert.deepEqual(p.errors, [], p.name);
+      }
+    });
+    await check("wander: every canvas has ink (non-blank)", async () => {
+      const n = await page.locator(".tile canvas").count();
+      assert.equal(n, status.panels.reduce((s, p) => s + p.tiles, 0));
+      for (let i = 0; i < n; i++) {
+        const ink = await inked(page, ".tile canvas", i);
+        assert.ok(ink > 0.003, `tile ${i}: ink ${ink}`);
+      }
+    });
+    await shot(page, "wander-top");
+    for (const name of ["control", "fields", "time-functions", "paths"]) {
+      await page.locator(`#panel-${name}`).screenshot({ path: resolve(artifacts, `wander-${name}.png`) });
+    }
+    await check("wander: a knob rebuilds the variants (clamps ×), re-run replays the same traces", async () => {
+      const sig = () => page.evaluate(() => {
+        const c = document.querySelector("#panel-control .tile canvas");
+        return c.toDataURL().length;
+      });
+      const a = await sig();
+      await page.$eval("#control-clamp", (el) => {
+        el.value = "0.5";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+      const b = await sig();
+      assert.notEqual(a, b);
+      await page.$eval("#control-clamp", (el) => {
+        el.value = "1";
+        el.dispatchEvent(new Event("input", { bubbles: true }));
+      });
+      await page.click("#control-rerun");
+      await page.waitForFunction(() => !window.__wander.busy());
+      assert.equal(await sig(), a);
+    });
+    await check("wander: a bad JSON edit shows the core's message on the tile", async () => {
+      const tile = page.locator("#panel-timed .tile").first();
+      await tile.locator("summary").click();
+      const ta = tile.locator("textarea");
+      const text = await ta.inputValue();
+      await ta.fill(text.replace(/"mode": "displacement"/, '"mode": "sideways"'));
+      await tile.locator("details button").click();
+      const err = await tile.locator(".err").textContent();
+      assert.match(err, /wander configuration/);
+      await ta.fill(text);
+      await tile.locator("details button").click();
+      assert.equal(await tile.locator(".err").textContent(), "");
+    });
+    await check("wander: no console errors or warnings", async () => {
+      assert.deepEqual(problems, []);
+    });
+    allProblems.push(...problems);
+    await context.close();
+  }
+} finally {
+  await browser.close();
+  await server.close();
+}
+writeFileSync(resolve(artifacts, "gallery-perf.json"), JSON.stringify(report, null, 2));
+if (allProblems.length) console.log(allProblems.join("\n"));
+console.log(`e2e-gallery: ${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
