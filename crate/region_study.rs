@@ -161,20 +161,7 @@ impl RegionStudy {
         ctl: &Controller,
         threads: usize,
     ) -> Vec<RegionRun> {
-        let threads = threads.max(1);
-        let per = self.n.div_ceil(threads);
-        std::thread::scope(|sc| {
-            let hs: Vec<_> = (0..threads)
-                .map(|t| {
-                    let lo = (t * per).min(self.n);
-                    let hi = ((t + 1) * per).min(self.n);
-                    sc.spawn(move || self.run_range(table, p, ctl, lo..hi))
-                })
-                .collect();
-            hs.into_iter()
-                .flat_map(|h| h.join().expect("study thread panicked"))
-                .collect()
-        })
+        crate::study::parallel_ranges(self.n, threads, |r| self.run_range(table, p, ctl, r))
     }
 }
 

@@ -191,21 +191,33 @@ impl ReachStudy {
         cfg: &FunnelConfig,
         threads: usize,
     ) -> Vec<RunResult> {
-        let threads = threads.max(1);
-        let per = self.n.div_ceil(threads);
-        std::thread::scope(|sc| {
-            let hs: Vec<_> = (0..threads)
-                .map(|t| {
-                    let lo = (t * per).min(self.n);
-                    let hi = ((t + 1) * per).min(self.n);
-                    sc.spawn(move || self.run_range(table, p, cfg, lo..hi))
-                })
-                .collect();
-            hs.into_iter()
-                .flat_map(|h| h.join().expect("study thread panicked"))
-                .collect()
-        })
+        parallel_ranges(self.n, threads, |r| self.run_range(table, p, cfg, r))
     }
+}
+
+/// Splits `0..n` into `threads` contiguous ranges, runs `f` on each in its
+/// own thread and concatenates the results in order (shared by every study).
+#[cfg(not(target_arch = "wasm32"))]
+pub fn parallel_ranges<T: Send>(
+    n: usize,
+    threads: usize,
+    f: impl Fn(core::ops::Range<usize>) -> Vec<T> + Sync,
+) -> Vec<T> {
+    let threads = threads.max(1);
+    let per = n.div_ceil(threads);
+    let f = &f;
+    std::thread::scope(|sc| {
+        let hs: Vec<_> = (0..threads)
+            .map(|t| {
+                let lo = (t * per).min(n);
+                let hi = ((t + 1) * per).min(n);
+                sc.spawn(move || f(lo..hi))
+            })
+            .collect();
+        hs.into_iter()
+            .flat_map(|h| h.join().expect("study thread panicked"))
+            .collect()
+    })
 }
 
 /// Summarises results.
