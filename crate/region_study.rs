@@ -124,7 +124,7 @@ impl RegionStudy {
         (
             VehicleState::new(Vec2::ZERO, 0.0, v, w),
             Goal {
-                pos: Vec2::from_angle(bearing) * d,
+                pos: crate::trig::unit(bearing) * d,
                 beta,
                 d_tol: radius,
                 eps_tol: tau,

@@ -53,14 +53,13 @@
 
 use core::f32::consts::{PI, TAU};
 
-use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::angle::{diff, wrap};
 use crate::funnel::{
     halting_speed, tolerance_phase, FunnelConfig, FunnelMemory, Goal, Internals, Mode,
 };
-use crate::seek::seek_step;
+use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 
@@ -370,7 +369,7 @@ impl RelaxedConfig {
         let rel = g.pos - s.pos;
         let d = rel.length();
         let bearing = if d > 1e-6 {
-            rel.y.atan2(rel.x)
+            crate::trig::atan2(rel.y, rel.x)
         } else {
             s.theta
         };
@@ -404,7 +403,8 @@ impl RelaxedConfig {
             ring = d;
         }
         let cos_h = ((ring * ring + d * d - r * r) / (2.0 * ring * d)).clamp(-1.0, 1.0);
-        let h = cos_h.acos();
+        // acos from the deterministic atan2 (libm's acos differs per target).
+        let h = crate::trig::atan2((1.0 - cos_h * cos_h).max(0.0).sqrt(), cos_h);
         let a_min = (alpha_c - h).max(-PI);
         let a_max = (alpha_c + h).min(PI);
         // 2. F from η at the two arc ends.
@@ -431,7 +431,7 @@ impl RelaxedConfig {
         let tau = self.orientation_margin * g.eps_tol;
         let c = relaxed_direction(a_min, a_max, f_min, f_max, tc, tau);
         let dir = s.theta + c.alpha_r;
-        let point = s.pos + Vec2::from_angle(dir) * ring;
+        let point = s.pos + crate::trig::unit(dir) * ring;
         *ri = RelaxedInternals {
             branch: c.branch,
             ring,
@@ -463,8 +463,8 @@ impl RelaxedConfig {
             return out;
         }
         out.mode = Mode::Funnelling;
-        out.mu_max = funnel.mu_max(table, p, ring, out.delta_eta, s.v, out.v_dt);
-        out.mu = (-out.delta_eta).clamp(-out.mu_max, out.mu_max);
+        out.mu_max = funnel.mu_max(table, p, &lk, ring, out.delta_eta, s.v);
+        out.mu = funnel.modulation(out.delta_eta, out.mu_max);
         out.gamma = wrap(dir + out.mu);
         out
     }
@@ -482,7 +482,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         let out = self.plan(funnel, table, p, s, g, mem, ri);
-        seek_step(p, s, out.gamma, out.v_dt);
+        seek_step_committed(p, s, out.gamma, out.v_dt);
         out
     }
 }

@@ -12,6 +12,7 @@
 use glam::Vec2;
 
 use crate::angle::{diff, wrap};
+use crate::trig;
 use crate::vehicle::{VehicleParams, VehicleState};
 
 /// Commanded angular acceleration of the PD heading controller, towards
@@ -30,12 +31,52 @@ pub fn seek_step(p: &VehicleParams, s: &mut VehicleState, heading: f32, desired_
     p.integrate(s, acc, desired_speed);
 }
 
+/// Half-width of the band around the ±π seam of the heading error where
+/// [`seek_step_committed`] keeps the current turn direction: 10°.
+pub const TURN_COMMIT_WINDOW: f32 = 10.0 * core::f32::consts::PI / 180.0;
+
+/// The heading error `e` (wrapped) with turn commitment: within
+/// [`TURN_COMMIT_WINDOW`] of ±π, an error whose sign would reverse the
+/// current rotation `omega` is taken the long way round (`e ± 2π`), so the
+/// vehicle keeps turning the way it already turns.
+///
+/// Why: the PD law's wrapped error jumps by 2π at the seam. Plain seek
+/// crosses it once and moves away, but a modulated heading (funnelling,
+/// paper 000 §4) can hop across it from one update to the next, because η
+/// itself flips sign for targets behind the vehicle; each hop reversed the
+/// commanded turn, and in 23 of 10,000 random reach scenarios the vehicle
+/// drove straight away from its target, turning neither way, for the
+/// whole minute. With the commitment none does (`steer reach`).
+#[inline]
+#[must_use]
+pub fn committed_error(e: f32, omega: f32) -> f32 {
+    if e.abs() > core::f32::consts::PI - TURN_COMMIT_WINDOW && e * omega < 0.0 {
+        e + core::f32::consts::TAU.copysign(omega)
+    } else {
+        e
+    }
+}
+
+/// One controller step towards absolute heading `heading`, with turn
+/// commitment near the seam ([`committed_error`]): the step of the
+/// funnelling controllers, whose heading is modulated every update.
+#[inline]
+pub fn seek_step_committed(
+    p: &VehicleParams,
+    s: &mut VehicleState,
+    heading: f32,
+    desired_speed: f32,
+) {
+    let e = committed_error(diff(heading, s.theta), s.omega);
+    p.integrate(s, p.kp * e - p.kd * s.omega, desired_speed);
+}
+
 /// One plain seek step towards the point `target`: the heading is the
 /// instantaneous radial direction.
 #[inline]
 pub fn seek_point(p: &VehicleParams, s: &mut VehicleState, target: Vec2, desired_speed: f32) {
     let d = target - s.pos;
-    let heading = d.y.atan2(d.x);
+    let heading = trig::atan2(d.y, d.x);
     seek_step(p, s, heading, desired_speed);
 }
 
@@ -95,7 +136,7 @@ pub fn simulate_reach(
 ) -> ReachOutcome {
     let mut s = start;
     let d0 = target - s.pos;
-    let radial0 = d0.y.atan2(d0.x);
+    let radial0 = trig::atan2(d0.y, d0.x);
     let r2 = lim.reach_radius * lim.reach_radius;
     let max_steps = (lim.max_time / p.dt) as u32;
     let orbit = lim.orbit_turns * core::f32::consts::TAU;
@@ -123,7 +164,7 @@ pub fn simulate_reach(
             };
         }
         let dist = dist2.sqrt();
-        let bearing = d.y.atan2(d.x);
+        let bearing = trig::atan2(d.y, d.x);
         // Steady straight approach: heading on the target, no rotation. The
         // rest of the path is a straight line ending with this bearing, so
         // η is known now (saves most of the cost of far targets).

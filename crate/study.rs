@@ -154,7 +154,7 @@ impl ReachStudy {
         let w = r.range(-1.0, 1.0) * p.omega_limit(v);
         let start = VehicleState::new(Vec2::ZERO, 0.0, v, w);
         let goal = Goal {
-            pos: Vec2::from_angle(bearing) * d,
+            pos: crate::trig::unit(bearing) * d,
             beta,
             d_tol: self.d_tol,
             eps_tol: self.eps_tol,

@@ -12,11 +12,14 @@
 //! A/v_c)` in `[-1, 1]`, so that every sampled state is admissible (a state
 //! with `|v·ω| > A` cannot occur and would waste samples).
 
-use core::f32::consts::{PI, TAU};
+use core::f32::consts::PI;
 use core::fmt;
 
 use crate::angle::wrap;
+use crate::grid::{Axis, AxisPos};
+use crate::trig;
 use crate::vehicle::{Integrator, VehicleParams};
+use glam::Vec4;
 
 /// File magic, the first 8 bytes.
 pub const MAGIC: [u8; 8] = *b"STEERETA";
@@ -212,32 +215,44 @@ pub fn crc32(bytes: &[u8]) -> u32 {
 }
 
 /// One entry in memory, laid out for a branch-free blend: η as a unit
-/// vector (so that blending is angle-safe across ±π by construction),
-/// split into the part from samples reachable at their desired speed and
-/// the part from fallback samples, with the reach indicator and fallback
-/// speed. The 32 corners of a lookup then accumulate eight multiply-adds
-/// each (vectorisable), and one `atan2` recovers η.
+/// vector (so that blending is angle-safe across ±π by construction)
+/// counted only where the sample is reachable at its desired speed, the
+/// reach indicator, and the fallback speed where it is not. The 32 corners
+/// of a lookup then accumulate one 4-wide multiply-add each, and one
+/// `atan2` recovers η. 16 bytes: four cells share a cache line.
 #[derive(Clone, Copy, Debug, PartialEq, Default)]
-#[repr(C, align(32))]
-struct Cell([f32; 8]);
+struct Cell(Vec4);
 
 impl Cell {
+    const ZERO: Self = Self(Vec4::ZERO);
+
+    /// The lookup cell of an entry.
     fn new(eta: f32, speed: f32, flags: u8) -> Self {
-        let (s, c) = eta.sin_cos();
-        let valid = flags & FLAG_ETA_VALID != 0;
+        let (s, c) = trig::sin_cos(eta);
         let reach = flags & FLAG_REACHABLE != 0;
-        let r = if reach && valid { 1.0 } else { 0.0 };
-        let o = if !reach && valid { 1.0 } else { 0.0 };
-        Self([
-            r * c,
-            r * s,
-            o * c,
-            o * s,
-            r,
-            o,
-            if reach { 0.0 } else { speed },
-            0.0,
-        ])
+        let r = if reach { 1.0 } else { 0.0 };
+        Self(Vec4::new(r * c, r * s, r, if reach { 0.0 } else { speed }))
+    }
+
+    /// The cell of an entry's fallback η (unreachable at its desired
+    /// speed, reachable slower): only read when no corner of a query is
+    /// reachable, so it lives apart and keeps the hot cells small.
+    fn fallback(eta: f32, flags: u8) -> Self {
+        let (s, c) = trig::sin_cos(eta);
+        let o = if flags == FLAG_ETA_VALID { 1.0 } else { 0.0 };
+        Self(Vec4::new(o * c, o * s, o, 0.0))
+    }
+
+    /// The cell of `|η|` for the μ bound: `[r·|η|, r, o·|η|, o]` with `r`
+    /// and `o` as above, so reachable samples can be averaged on their own.
+    fn magnitude(eta: f32, flags: u8) -> Self {
+        let r = if flags & FLAG_REACHABLE != 0 {
+            1.0
+        } else {
+            0.0
+        };
+        let o = if flags == FLAG_ETA_VALID { 1.0 } else { 0.0 };
+        Self(Vec4::new(r * eta.abs(), r, o * eta.abs(), o))
     }
 }
 
@@ -250,7 +265,14 @@ pub struct EtaTable {
     v_fallback: Vec<f32>,
     flags: Vec<u8>,
     cells: Vec<Cell>,
+    fallback_cells: Vec<Cell>,
+    /// `|η|` on the sampled plane ω = 0 (paper 000 Fig. 4's bound looks η
+    /// up "for (D, Δη, 0, v_c, v_dt)"), indexed like the table without the
+    /// ω axis; empty when the ω axis has no sample at 0.
+    straight: Vec<Cell>,
     strides: [usize; AXES],
+    /// Constant-time interval search on each axis (built on load).
+    grid: [Axis; AXES],
 }
 
 /// Result of one lookup.
@@ -267,64 +289,11 @@ pub struct Lookup {
     pub eta_valid: bool,
     /// True when some coordinate was clamped to the sampled range.
     pub clamped: bool,
-}
-
-/// Position of a query along one axis: lower index and weight of the upper.
-#[derive(Clone, Copy, Debug)]
-struct AxisPos {
-    i0: usize,
-    i1: usize,
-    t: f32,
-}
-
-#[inline]
-fn axis_pos(axis: &[f32], x: f32, clamped: &mut bool) -> AxisPos {
-    let n = axis.len();
-    if x <= axis[0] {
-        *clamped |= x < axis[0];
-        return AxisPos {
-            i0: 0,
-            i1: 1,
-            t: 0.0,
-        };
-    }
-    if x >= axis[n - 1] {
-        *clamped |= x > axis[n - 1];
-        return AxisPos {
-            i0: n - 2,
-            i1: n - 1,
-            t: 1.0,
-        };
-    }
-    let i = axis.partition_point(|&a| a <= x) - 1;
-    AxisPos {
-        i0: i,
-        i1: i + 1,
-        t: (x - axis[i]) / (axis[i + 1] - axis[i]),
-    }
-}
-
-/// Position on the periodic α axis: between the last sample and the first
-/// one (+2π) the interval wraps around.
-#[inline]
-fn periodic_pos(axis: &[f32], a: f32) -> AxisPos {
-    let n = axis.len();
-    let i = axis.partition_point(|&x| x <= a);
-    if i == 0 || i == n {
-        let lo = axis[n - 1];
-        let hi = axis[0] + TAU;
-        let x = if i == 0 { a + TAU } else { a };
-        return AxisPos {
-            i0: n - 1,
-            i1: 0,
-            t: ((x - lo) / (hi - lo)).clamp(0.0, 1.0),
-        };
-    }
-    AxisPos {
-        i0: i - 1,
-        i1: i,
-        t: ((a - axis[i - 1]) / (axis[i] - axis[i - 1])).clamp(0.0, 1.0),
-    }
+    /// Where the query fell on each axis (the desired-speed axis at
+    /// `v_dt`): a follow-up interpolation at the same distance and speeds,
+    /// such as the μ bound's, skips the search
+    /// ([`EtaTable::straight_abs_eta_at`]).
+    at: [AxisPos; AXES],
 }
 
 impl EtaTable {
@@ -350,12 +319,25 @@ impl EtaTable {
             v_fallback,
             flags,
             cells: Vec::new(),
+            fallback_cells: Vec::new(),
+            straight: Vec::new(),
             strides,
+            grid: core::array::from_fn(|_| Axis::new(&[0.0, 1.0], false)),
         };
         t.validate()?;
         t.cells = (0..t.eta.len())
             .map(|i| Cell::new(t.eta[i], t.v_fallback[i], t.flags[i]))
             .collect();
+        t.fallback_cells = (0..t.eta.len())
+            .map(|i| Cell::fallback(t.eta[i], t.flags[i]))
+            .collect();
+        if let Some(z) = t.axes[2].iter().position(|&f| f == 0.0) {
+            t.straight = (0..t.eta.len())
+                .filter(|&i| (i / t.strides[2]) % t.axes[2].len() == z)
+                .map(|i| Cell::magnitude(t.eta[i], t.flags[i]))
+                .collect();
+        }
+        t.grid = core::array::from_fn(|k| Axis::new(&t.axes[k], k == 1));
         Ok(t)
     }
 
@@ -698,60 +680,68 @@ impl EtaTable {
         v_d: f32,
         clamped: &mut bool,
     ) -> [AxisPos; AXES] {
-        let pa = periodic_pos(&self.axes[1], wrap(alpha));
+        let g = &self.grid;
         [
-            axis_pos(&self.axes[0], d, clamped),
-            pa,
-            axis_pos(&self.axes[2], self.omega_fraction(omega, v_c), clamped),
-            axis_pos(&self.axes[3], v_c, clamped),
-            axis_pos(&self.axes[4], v_d, clamped),
+            g[0].locate(d, clamped),
+            g[1].locate(wrap(alpha), clamped),
+            g[2].locate(self.omega_fraction(omega, v_c), clamped),
+            g[3].locate(v_c, clamped),
+            g[4].locate(v_d, clamped),
         ]
     }
 
-    /// Interpolates η, the reachability vote and the fallback speed at the
-    /// 32 corners around `pos` (fewer when the query sits on a sample).
-    /// η is blended as a unit vector, so samples on both sides of ±π never
-    /// average to 0. Corners reachable at their desired speed are blended
-    /// on their own whenever there are any: a fallback η belongs to another
-    /// speed and would bias the result.
+    /// Multilinear blend of `cells` at `pos` over `K` axes (5, or 4 for
+    /// the ω = 0 plane); the last axis must have stride 1.
+    ///
+    /// A corner's weight factorises into an *outer* weight (the leading
+    /// `K − 2` axes) times an *inner* one (the last two), so the 2^(K−2)
+    /// outer corners each scale four neighbouring cells, accumulated per
+    /// inner corner, and the four inner weights are applied once at the
+    /// end: one 4-wide multiply-add per corner, four independent
+    /// accumulators, and cells read in adjacent pairs along the last axis
+    /// (one bounds check per pair). An axis that sits on a sample gets
+    /// weights 0 and 1: reading the extra corner costs less than a branch.
     #[inline]
-    fn blend(&self, pos: &[AxisPos; AXES]) -> Blend {
-        let mut off = [[0usize; 2]; AXES];
-        let mut wt = [[0f32; 2]; AXES];
-        let mut n = [2usize; AXES];
-        for k in 0..AXES {
-            let p = pos[k];
-            off[k] = [p.i0 * self.strides[k], p.i1 * self.strides[k]];
-            wt[k] = [1.0 - p.t, p.t];
-            if p.t == 0.0 {
-                n[k] = 1;
-            } else if p.t == 1.0 {
-                off[k][0] = off[k][1];
-                wt[k][0] = 1.0;
-                n[k] = 1;
+    fn blend<const K: usize>(cells: &[Cell], pos: &[AxisPos; K], strides: &[usize; K]) -> Vec4 {
+        let side = |k: usize| {
+            let (p, s) = (pos[k], strides[k]);
+            ([p.i0 as usize * s, p.i1 as usize * s], [1.0 - p.t, p.t])
+        };
+        let mut outer = [(0usize, 1.0f32); 8];
+        let mut n = 1;
+        for k in 0..K - 2 {
+            let (o, w) = side(k);
+            for m in 0..n {
+                outer[n + m] = (outer[m].0 + o[1], outer[m].1 * w[1]);
+                outer[m] = (outer[m].0 + o[0], outer[m].1 * w[0]);
+            }
+            n *= 2;
+        }
+        let (od, wd) = side(K - 2);
+        let (oe, we) = side(K - 1);
+        let mut acc = [Vec4::ZERO; 4];
+        for &(o, w) in &outer[..n] {
+            for d in 0..2 {
+                let at = o + od[d] + oe[0];
+                let pair: &[Cell; 2] = cells[at..at + 2].try_into().unwrap_or(&[Cell::ZERO; 2]);
+                acc[2 * d] += pair[0].0 * w;
+                acc[2 * d + 1] += pair[1].0 * w;
             }
         }
-        let mut acc = [0f32; 8];
-        for a in 0..n[0] {
-            let (ia, wa) = (off[0][a], wt[0][a]);
-            for c in 0..n[1] {
-                let (ic, wc) = (ia + off[1][c], wa * wt[1][c]);
-                for d in 0..n[2] {
-                    let (id, wd) = (ic + off[2][d], wc * wt[2][d]);
-                    for e in 0..n[3] {
-                        let (ie, we) = (id + off[3][e], wd * wt[3][e]);
-                        for f in 0..n[4] {
-                            let w = we * wt[4][f];
-                            let cell = &self.cells[ie + off[4][f]].0;
-                            for (x, y) in acc.iter_mut().zip(cell) {
-                                *x += w * y;
-                            }
-                        }
-                    }
-                }
-            }
+        (acc[0] * (wd[0] * we[0]) + acc[1] * (wd[0] * we[1]))
+            + (acc[2] * (wd[1] * we[0]) + acc[3] * (wd[1] * we[1]))
+    }
+
+    /// η at `pos`: the corners reachable at their desired speed, blended
+    /// on their own whenever there are any (a fallback η belongs to another
+    /// speed and would bias the result), else the fallback η's.
+    #[inline]
+    fn eta_at(&self, pos: &[AxisPos; AXES], main: Vec4) -> Option<f32> {
+        if main[2] > 1e-6 {
+            return Some(trig::atan2(main[1], main[0]));
         }
-        Blend(acc)
+        let fb = Self::blend(&self.fallback_cells, pos, &self.strides);
+        (fb[2] > 1e-6).then(|| trig::atan2(fb[1], fb[0]))
     }
 
     /// η alone at `(D, α, ω_c, v_c, v_d)`: one multilinear interpolation.
@@ -760,7 +750,59 @@ impl EtaTable {
     pub fn eta(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Option<f32> {
         let mut clamped = false;
         let pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
-        self.blend(&pos).eta()
+        self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides))
+    }
+
+    /// `|η(D, α, 0, v_c, v_d)|`: the magnitude of η for a vehicle that is
+    /// not rotating, which paper 000 Fig. 4 interpolates to bound the
+    /// modulation μ. With a sample at ω = 0 (the committed table has one)
+    /// this blends 16 precomputed magnitudes, reachable samples on their
+    /// own as in [`EtaTable::eta`]; magnitudes are blended directly, which
+    /// is seam-free at ±π. `None` when no neighbouring sample has an η.
+    #[must_use]
+    pub fn straight_abs_eta(&self, d: f32, alpha: f32, v_c: f32, v_d: f32) -> Option<f32> {
+        if self.straight.is_empty() {
+            return self.eta(d, alpha, 0.0, v_c, v_d).map(f32::abs);
+        }
+        let g = &self.grid;
+        let c = &mut false;
+        self.straight_at([
+            g[0].locate(d, c),
+            g[1].locate(wrap(alpha), c),
+            g[3].locate(v_c, c),
+            g[4].locate(v_d, c),
+        ])
+    }
+
+    /// [`EtaTable::straight_abs_eta`] at the distance, current speed and
+    /// desired speed (`v_dt`) of an earlier lookup, for radial angle
+    /// `alpha`: the second interpolation of paper 000 Fig. 4 ("for (D, Δη,
+    /// 0, v_c, v_dt)") at the cost of one axis search instead of four.
+    #[must_use]
+    pub fn straight_abs_eta_at(&self, at: &Lookup, alpha: f32) -> Option<f32> {
+        if self.straight.is_empty() {
+            let p = |k: usize| {
+                let (p, x) = (at.at[k], &self.axes[k]);
+                let (a, b) = (x[p.i0 as usize], x[p.i1 as usize]);
+                a + p.t * (b - a)
+            };
+            return self.eta(p(0), alpha, 0.0, p(3), p(4)).map(f32::abs);
+        }
+        let [d, _, _, v_c, v_d] = at.at;
+        self.straight_at([d, self.grid[1].locate(wrap(alpha), &mut false), v_c, v_d])
+    }
+
+    fn straight_at(&self, pos: [AxisPos; 4]) -> Option<f32> {
+        let (n3, n4) = (self.axes[3].len(), self.axes[4].len());
+        let strides = [self.axes[1].len() * n3 * n4, n3 * n4, n4, 1];
+        let b = Self::blend(&self.straight, &pos, &strides);
+        if b[1] > 1e-6 {
+            Some(b[0] / b[1])
+        } else if b[3] > 1e-6 {
+            Some(b[2] / b[3])
+        } else {
+            None
+        }
     }
 
     /// η on the sampled distance ring `ring` (an index into
@@ -781,22 +823,14 @@ impl EtaTable {
         if ring >= self.axes[0].len() {
             return None;
         }
-        let pa = periodic_pos(&self.axes[1], wrap(alpha));
-        let near = |k: usize, x: f32| {
-            let mut c = false;
-            let p = axis_pos(&self.axes[k], x, &mut c);
-            if p.t < 0.5 {
-                p.i0
-            } else {
-                p.i1
-            }
-        };
+        let g = &self.grid;
+        let pa = g[1].locate(wrap(alpha), &mut false);
         let base = ring * self.strides[0]
-            + near(2, self.omega_fraction(omega, v_c)) * self.strides[2]
-            + near(3, v_c) * self.strides[3]
-            + near(4, v_d) * self.strides[4];
-        let ia = base + pa.i0 * self.strides[1];
-        let ib = base + pa.i1 * self.strides[1];
+            + g[2].nearest(self.omega_fraction(omega, v_c)) * self.strides[2]
+            + g[3].nearest(v_c) * self.strides[3]
+            + g[4].nearest(v_d) * self.strides[4];
+        let ia = base + pa.i0 as usize * self.strides[1];
+        let ib = base + pa.i1 as usize * self.strides[1];
         let va = self.flags[ia] & FLAG_ETA_VALID != 0;
         let vb = self.flags[ib] & FLAG_ETA_VALID != 0;
         match (va, vb) {
@@ -819,17 +853,17 @@ impl EtaTable {
     pub fn lookup(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Lookup {
         let mut clamped = false;
         let mut pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
-        let b = self.blend(&pos);
-        let reachable = b.reach() >= 0.5;
+        let b = Self::blend(&self.cells, &pos, &self.strides);
+        // b = [Σw·r·cos η, Σw·r·sin η, Σw·r, Σw·(1−r)·v_fallback].
+        let reachable = b[2] >= 0.5;
         let mut v_dt = v_d;
-        let mut eta = b.eta();
+        let mut eta = self.eta_at(&pos, b);
         if !reachable {
-            v_dt = b.speed(v_d).min(v_d).max(0.0);
+            v_dt = (b[2] * v_d + b[3]).min(v_d).max(0.0);
             eta = None;
             if v_dt > 0.0 {
-                let mut c2 = false;
-                pos[4] = axis_pos(&self.axes[4], v_dt, &mut c2);
-                eta = self.blend(&pos).eta();
+                pos[4] = self.grid[4].locate(v_dt, &mut false);
+                eta = self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides));
             }
         }
         Lookup {
@@ -838,36 +872,7 @@ impl EtaTable {
             v_dt,
             eta_valid: eta.is_some(),
             clamped,
-        }
-    }
-}
-
-/// Accumulators of one blend, in [`Cell`] order.
-#[derive(Clone, Copy, Debug, Default)]
-struct Blend([f32; 8]);
-
-impl Blend {
-    /// Weight of corners reachable at their desired speed.
-    #[inline]
-    fn reach(&self) -> f32 {
-        self.0[4]
-    }
-
-    /// Blended speed: the query's `v_d` where reachable, else the fallback.
-    #[inline]
-    fn speed(&self, v_d: f32) -> f32 {
-        self.0[4] * v_d + self.0[6]
-    }
-
-    #[inline]
-    fn eta(&self) -> Option<f32> {
-        let a = &self.0;
-        if a[4] > 1e-6 {
-            Some(a[1].atan2(a[0]))
-        } else if a[5] > 1e-6 {
-            Some(a[3].atan2(a[2]))
-        } else {
-            None
+            at: pos,
         }
     }
 }

@@ -158,7 +158,7 @@ impl TableSpec {
         let v = self.axes[3][idx[3]];
         let w = self.axes[2][idx[2]] * self.params.vehicle.omega_limit(v);
         let start = VehicleState::new(Vec2::ZERO, 0.0, v, w);
-        (start, Vec2::from_angle(a) * d, self.axes[4][idx[4]])
+        (start, crate::trig::unit(a) * d, self.axes[4][idx[4]])
     }
 
     /// Computes one entry: (η, fallback speed, flags).

@@ -241,12 +241,12 @@ impl VehicleParams {
         let v1 = v_des.clamp(v0 - dv, v0 + dv).min(vcap).max(0.0);
         match self.integrator {
             Integrator::Euler => {
-                s.pos += Vec2::from_angle(s.theta) * (v0 * dt);
+                s.pos += crate::trig::unit(s.theta) * (v0 * dt);
                 s.theta = crate::angle::wrap(s.theta + w0 * dt);
             }
             Integrator::SemiImplicitEuler => {
                 s.theta = crate::angle::wrap(s.theta + w1 * dt);
-                s.pos += Vec2::from_angle(s.theta) * (v1 * dt);
+                s.pos += crate::trig::unit(s.theta) * (v1 * dt);
             }
         }
         s.v = v1;
@@ -284,7 +284,7 @@ impl VehicleState {
     #[inline]
     #[must_use]
     pub fn forward(&self) -> Vec2 {
-        Vec2::from_angle(self.theta)
+        crate::trig::unit(self.theta)
     }
 
     /// True when every field is finite and the state satisfies `p`'s limits

@@ -82,7 +82,7 @@ impl GoalSpec {
                 angular_speed,
             } => {
                 let r0 = self.goal.pos - center;
-                let rot = Vec2::from_angle(angular_speed * t);
+                let rot = crate::trig::unit(angular_speed * t);
                 g.pos = center + rot.rotate(r0);
                 g.beta = self.goal.beta + angular_speed * t;
             }

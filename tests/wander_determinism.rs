@@ -3,7 +3,7 @@
 //!
 //! The golden values hash the raw f32 bits of every pose of every preset
 //! variant. The toolkit uses only IEEE-exact arithmetic and its own
-//! polynomial trig (`wander::math`), so the bits — not just rounded values —
+//! polynomial trig (`steering::trig`), so the bits — not just rounded values —
 //! must agree on every target. This file has no proptest so it also runs as
 //! a wasm-bindgen test:
 //! `CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner cargo test --target wasm32-unknown-unknown --test wander_determinism`.
@@ -60,14 +60,14 @@ fn preset_hash(json: &str) -> u64 {
 
 /// Golden hashes, one per preset file (recorded natively, checked in wasm).
 const GOLDEN: [(&str, u64); 8] = [
-    ("control", 0x6702_72c9_62be_c822),
-    ("distributions", 0xc42c_6aa1_c02e_38e6),
-    ("fields", 0x01b0_fbfa_2720_c9ea),
-    ("time-functions", 0x726c_e934_4cce_4617),
-    ("timed", 0xce45_f541_9125_e52f),
+    ("control", 0xa0ca_8f10_df0b_3566),
+    ("distributions", 0xfc4a_d28a_96ea_0ecb),
+    ("fields", 0xd388_8293_835d_0d35),
+    ("time-functions", 0x6d73_78d6_c8fc_744f),
+    ("timed", 0xcb03_e86b_eccc_24a2),
     ("markov", 0x7cb6_c4f8_9c41_4986),
-    ("paths", 0xc74c_cb35_7874_d1a3),
-    ("composed", 0x432a_7cfe_efec_d26e),
+    ("paths", 0xdca7_270c_11a5_ae3b),
+    ("composed", 0xd2b8_71aa_0185_462c),
 ];
 
 #[test]

@@ -140,14 +140,14 @@ const PRESETS: [(&str, &str); 8] = [
 /// Golden hashes recorded natively (same values as
 /// `tests/wander_determinism.rs`).
 const GOLDEN: [u64; 8] = [
-    0x6702_72c9_62be_c822,
-    0xc42c_6aa1_c02e_38e6,
-    0x01b0_fbfa_2720_c9ea,
-    0x726c_e934_4cce_4617,
-    0xce45_f541_9125_e52f,
+    0xa0ca_8f10_df0b_3566,
+    0xfc4a_d28a_96ea_0ecb,
+    0xd388_8293_835d_0d35,
+    0x6d73_78d6_c8fc_744f,
+    0xcb03_e86b_eccc_24a2,
     0x7cb6_c4f8_9c41_4986,
-    0xc74c_cb35_7874_d1a3,
-    0x432a_7cfe_efec_d26e,
+    0xdca7_270c_11a5_ae3b,
+    0xd2b8_71aa_0185_462c,
 ];
 
 /// FNV-1a over the f32 bit patterns.

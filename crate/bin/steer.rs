@@ -257,20 +257,27 @@ fn reach(args: &[String]) -> Result<(), String> {
         study.speed,
         study.max_time
     );
-    println!("| μ bound | seek threshold | reach | oriented on entry | entry err median / p95 (°) | final err median / p95 (°) | length/Dubins median / p90 | violations |");
-    println!("|---|---|---|---|---|---|---|---|");
+    println!("| μ bound | gain | seek threshold | reach | oriented on entry | entry err median / p95 (°) | final err median / p95 (°) | length/Dubins median / p90 | violations |");
+    println!("|---|---|---|---|---|---|---|---|---|");
+    // The paper's reading (gain 1, threshold 1) of each bound, then each
+    // with the default gain and threshold.
     let variants = [
-        (MuBound::Literal, 1.0),
-        (MuBound::ScaledLiteral { gain: 6.0 }, 1.0),
-        (MuBound::ScaledLiteral { gain: 6.0 }, 0.5),
-        (MuBound::TurningRadius { factor: 2.0 }, 1.0),
-        (MuBound::TurningRadius { factor: 12.0 }, 1.0),
-        (MuBound::Constant, 1.0),
-        (MuBound::Constant, 0.25),
+        (MuBound::Literal, 1.0, 1.0),
+        (MuBound::ScaledLiteral { gain: 6.0 }, 1.0, 1.0),
+        (MuBound::TurningRadius { factor: 6.0 }, 1.0, 1.0),
+        (MuBound::Constant, 1.0, 1.0),
+        (MuBound::Literal, 2.0, 0.25),
+        (MuBound::ScaledLiteral { gain: 3.0 }, 2.0, 0.25),
+        (MuBound::ScaledLiteral { gain: 6.0 }, 2.0, 0.25),
+        (MuBound::TurningRadius { factor: 4.0 }, 2.0, 0.25),
+        (MuBound::TurningRadius { factor: 6.0 }, 2.0, 0.25),
+        (MuBound::TurningRadius { factor: 8.0 }, 2.0, 0.25),
+        (MuBound::Constant, 2.0, 0.25),
     ];
-    for (bound, th) in variants {
+    for (bound, gain, th) in variants {
         let cfg = FunnelConfig {
             bound,
+            gain,
             seek_threshold: th,
         };
         let s = summarise(&study.run_all(&table, &p, &cfg, threads));
@@ -280,7 +287,7 @@ fn reach(args: &[String]) -> Result<(), String> {
             ""
         };
         println!(
-            "| {bound:?}{default} | {th} | {:.2} % | {:.1} % | {:.1} / {:.1} | {:.1} / {:.1} | {:.3} / {:.3} | {} |",
+            "| {bound:?}{default} | {gain} | {th} | {:.2} % | {:.1} % | {:.1} / {:.1} | {:.1} / {:.1} | {:.3} / {:.3} | {} |",
             100.0 * s.reach_rate,
             100.0 * s.oriented_rate,
             s.entry_err_deg.0,

@@ -22,8 +22,8 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, WanderError};
-use super::math;
 use crate::angle;
+use crate::trig;
 
 /// Which angular quantity the command sets (paper §1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]
@@ -122,7 +122,7 @@ impl Agent {
     /// Moves one step forward along the current heading.
     #[inline]
     pub fn advance(&mut self) {
-        let (s, c) = math::sin_cos(self.heading);
+        let (s, c) = trig::sin_cos(self.heading);
         self.pos += self.speed * Vec2::new(c, s);
     }
 }

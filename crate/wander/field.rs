@@ -20,9 +20,10 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use super::error::{in_range, in_range_u, WanderError};
-use super::{math, noise};
+use super::noise;
 use crate::angle;
 use crate::rng::Rng;
+use crate::trig;
 
 /// How grid vectors are drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
@@ -107,7 +108,7 @@ impl VectorField {
                             * noise::perlin2(seed, i as f32 * 0.23 + 0.5, j as f32 * 0.23 + 0.5)
                     }
                 };
-                let (s, c) = math::sin_cos(a);
+                let (s, c) = trig::sin_cos(a);
                 nodes.push(Vec2::new(c, s));
             }
         }
@@ -141,7 +142,7 @@ impl VectorField {
     #[must_use]
     pub fn angle_at(&self, p: Vec2) -> f32 {
         let v = self.vector_at(p);
-        math::atan2(v.y, v.x)
+        trig::atan2(v.y, v.x)
     }
 }
 

@@ -22,9 +22,9 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, in_range_u, positive, WanderError, WORLD_LIMIT};
-use super::math;
 use super::time_fn::Shape;
 use crate::rng::Rng;
+use crate::trig;
 
 /// Most points a generated path may have.
 pub const MAX_POINTS: u64 = 200_000;
@@ -199,7 +199,7 @@ impl PathConfig {
                             rad += ri * shape.eval(f * t);
                             f *= 2.0;
                         }
-                        let (s, co) = math::sin_cos(t);
+                        let (s, co) = trig::sin_cos(t);
                         c + rad * Vec2::new(co, s)
                     })
                     .collect()
@@ -290,7 +290,7 @@ impl PathFollower {
     #[must_use]
     pub fn start_pose(&self) -> (Vec2, f32) {
         let d = self.points[1] - self.points[0];
-        (self.points[0], math::atan2(d.y, d.x))
+        (self.points[0], trig::atan2(d.y, d.x))
     }
 
     fn segments(&self) -> usize {
@@ -367,6 +367,6 @@ impl PathFollower {
         }
         let target = self.point_at(s + self.dir * self.lookahead);
         let d = target - pos;
-        crate::angle::diff(math::atan2(d.y, d.x), heading)
+        crate::angle::diff(trig::atan2(d.y, d.x), heading)
     }
 }

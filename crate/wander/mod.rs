@@ -15,7 +15,6 @@
 //! | [`markov`] | §6 | transition tables, two-table variant |
 //! | [`generated_path`] | §7 | fractal and circle-with-sines paths, following |
 //! | [`pipeline`] | all | [`Wanderer`]: the JSON-configured pipeline |
-//! | [`math`] | — | bit-reproducible sin/cos/atan2 |
 //! | [`error`] | — | [`WanderError`] |
 
 pub mod control;
@@ -24,7 +23,6 @@ pub mod error;
 pub mod field;
 pub mod generated_path;
 pub mod markov;
-pub mod math;
 pub mod noise;
 pub mod pipeline;
 pub mod time_fn;

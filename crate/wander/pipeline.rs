@@ -16,7 +16,7 @@
 //! table and the path follower produce angles directly.
 //!
 //! Everything random comes from one seeded [`Rng`] (streams per concern),
-//! and every angle function is the deterministic one from [`super::math`],
+//! and every angle function is the deterministic one from [`crate::trig`],
 //! so a config and a seed give the same trajectory bit for bit natively and
 //! in WebAssembly. A step allocates nothing: the trace is a preallocated
 //! ring buffer.

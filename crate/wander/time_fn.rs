@@ -18,8 +18,9 @@
 use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range_u, positive, WanderError};
-use super::{math, noise};
+use super::noise;
 use crate::rng::Rng;
+use crate::trig;
 
 /// A noise sequence over steps, used as an envelope or a blend.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -135,7 +136,7 @@ impl Shape {
     pub fn eval(self, x: f32) -> f32 {
         let turns = x * core::f32::consts::FRAC_1_PI * 0.5;
         match self {
-            Self::Sine => math::sin(x),
+            Self::Sine => trig::sin(x),
             Self::Saw => 2.0 * (turns + 0.5 - (turns + 0.5).floor()) - 1.0,
             Self::Square => {
                 if turns - turns.floor() < 0.5 {

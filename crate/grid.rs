@@ -1,0 +1,244 @@
+//! Where a query falls on the η table's sampled axes, in constant time
+//! (paper 000 §7: "the control update cost is constant"; DESIGN §3).
+//!
+//! The table's axes are non-uniform on purpose (dense near, u² speeds,
+//! anisotropic α), so the interval holding a coordinate is not one division
+//! away. A binary search costs a dozen unpredictable branches per axis and
+//! was, measured under callgrind, a quarter of a funnelling update. Instead
+//! each axis keeps a uniform grid of buckets over its range, at most half
+//! as wide as its narrowest interval, so a bucket holds at most one
+//! sample. Per bucket it stores how many samples lie in earlier buckets and
+//! the one sample inside it (if any): the interval of `x` is then one
+//! bucket read and one comparison away, with no loop and no branch. The
+//! bucket of a sample is computed at load time with the very arithmetic a
+//! query uses, so rounding can never put a query on the wrong side of a
+//! sample. An axis too uneven for the bucket cap falls back to a binary
+//! search (correct, slower; no committed table has one).
+
+use core::f32::consts::TAU;
+
+/// Most buckets per axis (guards the allocation for odd axes).
+const MAX_BUCKETS: usize = 4096;
+
+/// `2^23`: adding it to a float in `[0, 2^22)` leaves that float rounded
+/// to an integer in the low mantissa bits (no saturating conversion).
+const MAGIC: f32 = 8_388_608.0;
+
+/// Position of a query along one axis: the two neighbouring samples and
+/// the weight `t` of the upper one (`0 ≤ t ≤ 1`).
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct AxisPos {
+    /// Lower sample index.
+    pub i0: u32,
+    /// Upper sample index (`i0 + 1`, or 0 across the periodic seam).
+    pub i1: u32,
+    /// Weight of the upper sample.
+    pub t: f32,
+}
+
+/// A sampled axis with its bucket index. Samples must be finite and
+/// strictly increasing (the table loader checks this first).
+#[derive(Clone, Debug, PartialEq)]
+pub struct Axis {
+    /// Samples; a periodic axis gets its first sample + 2π appended.
+    x: Vec<f32>,
+    /// Samples in the file (without the periodic copy).
+    n: usize,
+    periodic: bool,
+    /// Covered range `[lo, hi]`.
+    lo: f32,
+    hi: f32,
+    /// Index of the last interval.
+    last: usize,
+    inv_width: f32,
+    /// Per bucket: samples in earlier buckets, and the sample inside the
+    /// bucket (`+∞` when none). Empty when some bucket holds two samples.
+    buckets: Vec<(u32, f32)>,
+    /// Per interval: its lower sample and `1 / (x[i + 1] - x[i])` (a
+    /// multiply, not a divide, per query).
+    segments: Vec<(f32, f32)>,
+}
+
+impl Axis {
+    /// Indexes `samples`. A periodic axis (period 2π) covers
+    /// `[samples[0], samples[0] + 2π)`, the last interval wrapping round.
+    #[must_use]
+    pub fn new(samples: &[f32], periodic: bool) -> Self {
+        let n = samples.len();
+        let mut x = samples.to_vec();
+        if periodic {
+            x.push(samples[0] + TAU);
+        }
+        let intervals = x.len() - 1;
+        let (lo, hi) = (x[0], x[intervals]);
+        let span = hi - lo;
+        let narrowest = x
+            .windows(2)
+            .map(|w| w[1] - w[0])
+            .fold(f32::INFINITY, f32::min);
+        let count = ((2.0 * span / narrowest).ceil() as usize).clamp(1, MAX_BUCKETS);
+        let mut axis = Self {
+            segments: x.windows(2).map(|w| (w[0], 1.0 / (w[1] - w[0]))).collect(),
+            x,
+            n,
+            periodic,
+            lo,
+            hi,
+            last: intervals - 1,
+            inv_width: count as f32 / span,
+            buckets: vec![(0, f32::INFINITY); count],
+        };
+        let mut below = 0u32;
+        let mut prev = usize::MAX;
+        for j in 0..=intervals {
+            let b = axis.bucket(axis.x[j]);
+            if b == prev {
+                // Two samples in one bucket: binary search instead.
+                axis.buckets.clear();
+                return axis;
+            }
+            for slot in &mut axis.buckets[prev.wrapping_add(1).min(b)..b] {
+                slot.0 = below;
+            }
+            axis.buckets[b] = (below, axis.x[j]);
+            below += 1;
+            prev = b;
+        }
+        for slot in &mut axis.buckets[prev + 1..] {
+            slot.0 = below;
+        }
+        axis
+    }
+
+    /// The bucket of a coordinate `c` in `[lo, hi]`: monotone in `c`, and
+    /// the same arithmetic at load time and at query time.
+    #[inline]
+    fn bucket(&self, c: f32) -> usize {
+        let f = (c - self.lo) * self.inv_width + MAGIC;
+        ((f.to_bits() & 0x007F_FFFF) as usize).min(self.buckets.len() - 1)
+    }
+
+    /// Samples as stored in the file.
+    #[must_use]
+    pub fn samples(&self) -> &[f32] {
+        &self.x[..self.n]
+    }
+
+    /// Where `v` falls. Outside a non-periodic axis (or for NaN) the
+    /// position is clamped to the end sample and `clamped` is set; a
+    /// periodic axis takes `v` already wrapped into `(-π, π]`.
+    #[inline(always)]
+    #[must_use]
+    pub fn locate(&self, v: f32, clamped: &mut bool) -> AxisPos {
+        let (lo, hi) = (self.lo, self.hi);
+        let v = if self.periodic && v < lo { v + TAU } else { v };
+        // Plain comparisons (NaN fails both and becomes `lo`): cheaper than
+        // the NaN-aware `max`/`min`.
+        #[allow(clippy::manual_clamp)]
+        let c = if v >= lo {
+            if v <= hi {
+                v
+            } else {
+                hi
+            }
+        } else {
+            lo
+        };
+        *clamped |= c != v;
+        let i = if self.buckets.is_empty() {
+            self.x[1..=self.last].partition_point(|&s| s <= c)
+        } else {
+            let (below, inside) = self.buckets[self.bucket(c)];
+            // Samples ≤ c, minus one; `hi` itself lies in the last interval.
+            ((below + u32::from(inside <= c)) as usize)
+                .saturating_sub(1)
+                .min(self.last)
+        };
+        let (x0, inv_dx) = self.segments[i];
+        let t = ((c - x0) * inv_dx).min(1.0);
+        let i1 = if i + 1 == self.n { 0 } else { i + 1 };
+        AxisPos {
+            i0: i as u32,
+            i1: i1 as u32,
+            t,
+        }
+    }
+
+    /// The nearest sample to `v` (clamped to the axis).
+    #[inline]
+    #[must_use]
+    pub fn nearest(&self, v: f32) -> usize {
+        let p = self.locate(v, &mut false);
+        (if p.t < 0.5 { p.i0 } else { p.i1 }) as usize
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use core::f32::consts::PI;
+
+    fn binary(x: &[f32], v: f32) -> usize {
+        x.partition_point(|&a| a <= v)
+            .saturating_sub(1)
+            .min(x.len() - 2)
+    }
+
+    #[test]
+    fn bucket_search_equals_binary_search() {
+        let axes: [Vec<f32>; 3] = [
+            (0..16).map(|i| 0.5 * 64f32.powf(i as f32 / 15.0)).collect(),
+            (0..9).map(|k| 2.0 * (k as f32 / 8.0).powi(2)).collect(),
+            vec![0.0, 1e-3, 1.0, 1000.0],
+        ];
+        for x in &axes {
+            let a = Axis::new(x, false);
+            let (lo, hi) = (x[0], x[x.len() - 1]);
+            for k in 0..=20_000 {
+                let v = lo + (hi - lo) * k as f32 / 20_000.0;
+                let p = a.locate(v, &mut false);
+                if v > lo && v < hi {
+                    assert_eq!(p.i0 as usize, binary(x, v), "{v} in {x:?}");
+                    assert!(x[p.i0 as usize] <= v && v < x[p.i1 as usize]);
+                }
+                assert!((0.0..=1.0).contains(&p.t));
+            }
+            // Every sample itself, and out of range.
+            for (i, &v) in x.iter().enumerate().skip(1).take(x.len() - 2) {
+                let i = i as u32;
+                assert_eq!(
+                    a.locate(v, &mut false),
+                    AxisPos {
+                        i0: i,
+                        i1: i + 1,
+                        t: 0.0
+                    }
+                );
+            }
+            let mut c = false;
+            assert_eq!(a.locate(lo - 1.0, &mut c).t, 0.0);
+            assert!(c);
+            let mut c = false;
+            assert_eq!(a.locate(f32::NAN, &mut c).i0, 0);
+            assert!(c);
+        }
+    }
+
+    #[test]
+    fn periodic_axis_wraps_round_the_seam() {
+        let x: Vec<f32> = (0..36).map(|k| -PI + k as f32 * TAU / 36.0).collect();
+        let a = Axis::new(&x, true);
+        let p = a.locate(PI, &mut false);
+        assert_eq!((p.i0, p.i1), (35, 0));
+        assert!((p.t - 1.0).abs() < 1e-5);
+        let p = a.locate(x[35] + 0.01, &mut false);
+        assert_eq!((p.i0, p.i1), (35, 0));
+        // A periodic axis that does not start at −π: values below its
+        // first sample belong to the wrapping interval.
+        let y: Vec<f32> = x.iter().map(|v| v + 0.05).collect();
+        let b = Axis::new(&y, true);
+        let p = b.locate(-PI + 0.01, &mut false);
+        assert_eq!((p.i0, p.i1), (35, 0));
+        assert!(p.t > 0.0 && p.t < 1.0);
+    }
+}

@@ -1,0 +1,72 @@
+//! Same scenario, same trajectory — natively and in WebAssembly (DESIGN
+//! §8; the lab replays exactly what `steer run` computes).
+//!
+//! The golden values hash the raw f32 bits of every agent's state at every
+//! step of paper presets: standard funnelling with static, successive and
+//! moving goals (each other's pose, Fig. 6) and relaxed funnelling. The
+//! controllers use only IEEE-exact arithmetic and the crate's own trig
+//! (`steering::trig`), never the platform's libm, so the bits must agree on
+//! every target. This file has no proptest and no file I/O so it also runs
+//! under `wasm-pack test --headless --chrome`.
+
+#[cfg(target_arch = "wasm32")]
+wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+
+use steering::scenario::Scenario;
+use steering::table::EtaTable;
+
+static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
+
+const PRESETS: [(&str, &str, u64); 3] = [
+    (
+        "p000_fig7_variety",
+        include_str!("../scenarios/p000_fig7_variety.json"),
+        0xd51d_c416_27bc_01ca,
+    ),
+    (
+        "p000_fig6_face_to_face",
+        include_str!("../scenarios/p000_fig6_face_to_face.json"),
+        0x234d_85c8_2f78_c25f,
+    ),
+    (
+        "p001_fig12_successive_relaxed",
+        include_str!("../scenarios/p001_fig12_successive_relaxed.json"),
+        0x6f44_c4c5_605d_2893,
+    ),
+];
+
+/// Steps simulated per preset (30 s at 60 Hz).
+const STEPS: u32 = 1800;
+
+/// FNV-1a over the f32 bit patterns of every state, every step.
+fn trajectory_hash(table: &EtaTable, json: &str) -> u64 {
+    let sc = Scenario::from_json(json).expect("preset parses and validates");
+    let mut w = sc.world().expect("preset builds a world");
+    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    let mut buf = Vec::new();
+    for _ in 0..STEPS {
+        w.step(table);
+        buf.clear();
+        w.write_state(&mut buf);
+        for v in &buf {
+            for b in v.to_bits().to_le_bytes() {
+                h ^= u64::from(b);
+                h = h.wrapping_mul(0x0000_0100_0000_01b3);
+            }
+        }
+    }
+    h
+}
+
+#[test]
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+fn presets_match_golden_hashes() {
+    let table = EtaTable::from_bytes(TABLE).expect("committed table loads");
+    let got: Vec<(&str, u64)> = PRESETS
+        .iter()
+        .map(|(name, json, _)| (*name, trajectory_hash(&table, json)))
+        .collect();
+    for ((name, h), (_, _, golden)) in got.iter().zip(PRESETS) {
+        assert_eq!(*h, golden, "preset {name}: got {h:#018x}; all: {got:#x?}");
+    }
+}
