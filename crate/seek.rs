@@ -225,6 +225,23 @@ mod tests {
     }
 
     #[test]
+    fn committed_error_keeps_the_turn_direction_only_near_the_seam() {
+        use core::f32::consts::PI;
+        let near = PI - 0.5 * TURN_COMMIT_WINDOW;
+        // Turning left (ω > 0), target just across the seam on the right:
+        // keep turning left, the long way round.
+        assert!((committed_error(-near, 0.5) - (TAU_F - near)).abs() < 1e-6);
+        assert!((committed_error(near, -0.5) - (near - TAU_F)).abs() < 1e-6);
+        // Already turning that way, far from the seam, or not turning:
+        // the plain error.
+        assert_eq!(committed_error(-near, -0.5), -near);
+        assert_eq!(committed_error(-2.0, 0.5), -2.0);
+        assert_eq!(committed_error(-near, 0.0), -near);
+    }
+
+    const TAU_F: f32 = core::f32::consts::TAU;
+
+    #[test]
     fn mirror_symmetry_eta_alpha_omega() {
         // η(α, ω) = −η(−α, −ω): the controller is left/right symmetric.
         let p = VehicleParams::default();

@@ -374,6 +374,15 @@ impl EtaTable {
             if axis.windows(2).any(|w| w[1] <= w[0]) {
                 return Err(TableError::NonMonotonicAxis(AXIS_NAMES[k]));
             }
+            // Interpolation divides by the sample spacing: a spacing that is
+            // a rounding error of the span would make weights meaningless.
+            let span = axis[axis.len() - 1] - axis[0];
+            if axis.windows(2).any(|w| w[1] - w[0] < 1e-6 * span) {
+                return Err(TableError::Invalid(format!(
+                    "axis `{}` has samples closer than 1e-6 of its span",
+                    AXIS_NAMES[k]
+                )));
+            }
             n = n.saturating_mul(axis.len());
         }
         if n > MAX_ENTRIES {

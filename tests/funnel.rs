@@ -98,10 +98,17 @@ fn reach_statistics_and_limits_on_seeded_random_scenarios() {
         "a limit was violated or a value was not finite"
     );
     assert!(s.reach_rate >= 0.995, "reach {}", s.reach_rate);
+    // Measured on these 2,000: reach 100 %, oriented on entry 96.2 %,
+    // entry and final orientation error median 1.1°, p95 1.8°.
     assert!(
-        s.oriented_rate >= 0.85,
+        s.oriented_rate >= 0.95,
         "oriented on entry {}",
         s.oriented_rate
+    );
+    assert!(
+        s.entry_err_deg.1 <= 5.0,
+        "entry orientation p95 {}",
+        s.entry_err_deg.1
     );
     assert!(
         s.final_err_deg.1 <= 5.0,
@@ -116,16 +123,16 @@ fn reach_statistics_and_limits_on_seeded_random_scenarios() {
 }
 
 /// Largest lateral deviation of the funnelling path from the plain seek
-/// path over the first half of the path, for targets at D ≥ 20 m.
-#[test]
-fn distant_targets_are_approached_like_a_seek() {
+/// path over the first half of the path, for 200 targets at distance in
+/// `[lo, hi]` (any bearing, any β): median, p90 and max, in metres.
+fn deviation_from_seek(lo: f32, hi: f32) -> (f32, f32, f32) {
     let t = table();
     let p = VehicleParams::default();
     let cfg = FunnelConfig::default();
     let mut devs = Vec::new();
     let mut rng = steering::rng::Rng::new(11);
     for _ in 0..200 {
-        let d = rng.range(20.0, 30.0);
+        let d = rng.range(lo, hi);
         let bearing = rng.range(-3.1, 3.1);
         let beta = rng.range(-3.1, 3.1);
         let start = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
@@ -134,24 +141,29 @@ fn distant_targets_are_approached_like_a_seek() {
             beta,
             ..Default::default()
         };
-        let seek_goal = Goal {
-            eps_tol: core::f32::consts::PI,
-            ..g
-        };
-        let trace = |goal: &Goal| {
+        let steps = (4.0 * hi / g.speed / p.dt) as usize;
+        let f = {
             let mut s = start;
             let mut mem = FunnelMemory::default();
             let mut pts = vec![s.pos];
-            for _ in 0..3600 {
-                if cfg.step(&t, &p, &mut s, goal, &mut mem).mode == Mode::EndOfSteering {
+            for _ in 0..steps {
+                if cfg.step(&t, &p, &mut s, &g, &mut mem).mode == Mode::EndOfSteering {
                     break;
                 }
                 pts.push(s.pos);
             }
             pts
         };
-        let f = trace(&g);
-        let sk = trace(&seek_goal);
+        // The plain seek path (paper 000 §3) to the same point.
+        let sk = {
+            let mut s = start;
+            let mut pts = vec![s.pos];
+            while (g.pos - s.pos).length() > g.d_tol && pts.len() < steps {
+                steering::seek::seek_point(&p, &mut s, g.pos, g.speed);
+                pts.push(s.pos);
+            }
+            pts
+        };
         // Distance from each point of the funnel's first half to the seek path.
         let half = f.len() / 2;
         let dev = f[..half]
@@ -167,9 +179,58 @@ fn distant_targets_are_approached_like_a_seek() {
     let med = steering::metrics::percentile(&mut devs, 0.5);
     let p90 = steering::metrics::percentile(&mut devs, 0.9);
     let max = steering::metrics::percentile(&mut devs, 1.0);
-    eprintln!("lateral deviation from seek over the first half, D in [20, 30] m: median {med:.2} m, p90 {p90:.2} m, max {max:.2} m");
-    // Measured: median 3.4 m, p90 7.8 m, max 9.3 m (README figures).
-    assert!(med < 5.0 && max < 12.0, "median {med}, max {max}");
+    eprintln!("lateral deviation from seek over the first half, D in [{lo}, {hi}] m: median {med:.2} m, p90 {p90:.2} m, max {max:.2} m");
+    (med, p90, max)
+}
+
+/// Paper 000 §4: the μ bound vanishes as D grows, so distant targets are
+/// approached like a seek. The deviation is bounded, and relative to the
+/// distance it shrinks as the target gets farther.
+#[test]
+fn distant_targets_are_approached_like_a_seek() {
+    let (med, _, max) = deviation_from_seek(20.0, 30.0);
+    // Measured: median 3.4 m, p90 3.7 m, max 5.4 m (README figures).
+    assert!(med < 4.5 && max < 8.0, "median {med}, max {max}");
+    // Three times farther: measured median 3.4 m, max 3.7 m, the same
+    // swing of a few turning radii, i.e. a third of the deviation per metre.
+    let (far_med, _, far_max) = deviation_from_seek(60.0, 90.0);
+    assert!(far_med / 75.0 < 0.7 * med / 25.0, "{far_med} vs {med}");
+    assert!(far_max < 10.0, "{far_max}");
+}
+
+/// Targets behind the vehicle: η flips sign there, so the modulated
+/// heading can hop across the ±π seam of the heading error from one update
+/// to the next. Fed to the plain PD law, each hop reversed the commanded
+/// turn and these 23 of the 10,000 `steer reach` scenarios drove straight
+/// away from their target for the whole minute; the funnel's committed
+/// step (`seek::seek_step_committed`) keeps turning the way it turns, and
+/// every one arrives.
+#[test]
+fn targets_behind_are_turned_to_not_chattered_at() {
+    let t = table();
+    let p = VehicleParams::default();
+    let cfg = FunnelConfig::default();
+    let study = ReachStudy::default();
+    let chattered = [
+        328, 763, 845, 856, 1166, 1606, 2448, 2547, 3557, 5222, 5226, 5290, 5422, 5604, 5875, 5901,
+        6380, 6693, 8206, 8298, 8486, 9500, 9569,
+    ];
+    let mut plain_failures = 0;
+    for i in chattered {
+        let (start, g) = study.scenario(&p, i);
+        let r = run(&t, &p, &cfg, start, &g, study.max_time);
+        assert!(r.reached, "scenario {i} not reached");
+        // The same plan with the plain (uncommitted) seek step.
+        let mut s = start;
+        let mut mem = FunnelMemory::default();
+        let arrived = (0..(study.max_time / p.dt) as u32).any(|_| {
+            let o = cfg.plan(&t, &p, &s, &g, &mut mem);
+            steering::seek::seek_step(&p, &mut s, o.gamma, o.v_dt);
+            o.mode == Mode::EndOfSteering
+        });
+        plain_failures += usize::from(!arrived);
+    }
+    assert!(plain_failures >= 20, "{plain_failures} of 23");
 }
 
 fn seg_dist(q: Vec2, a: Vec2, b: Vec2) -> f32 {

@@ -226,6 +226,13 @@ fn invalid_structure() {
         EtaTable::from_bytes(&reseal(c)),
         Err(TableError::Invalid(_))
     ));
+    // Two distances one ulp apart (strictly increasing, but no spacing).
+    let mut c = b.clone();
+    let d0 = f32::from_le_bytes(c[HEADER_LEN..HEADER_LEN + 4].try_into().unwrap());
+    let squeezed = f32::from_bits(d0.to_bits() + 1);
+    c[HEADER_LEN + 4..HEADER_LEN + 8].copy_from_slice(&squeezed.to_le_bytes());
+    let e = EtaTable::from_bytes(&reseal(c)).unwrap_err();
+    assert!(e.to_string().contains("closer than"), "{e}");
     // Unknown integrator code.
     let mut c = b;
     c[12..16].copy_from_slice(&7u32.to_le_bytes());
