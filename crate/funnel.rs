@@ -5,10 +5,12 @@
 //! One update (Fig. 4): D and α in the vehicle frame; η interpolated from
 //! the table (with the proactive fallback speed `v_dt` where the target
 //! appears unreachable); Δη = β − (θ + α + η), the error between the target
-//! orientation and the predicted final direction; μ = −Δη bounded by
-//! [`MuBound`]; the modulated heading γ = θ + α + μ goes to the seek
-//! controller with speed `min(v_dt, A/|ω|)`. At most two table
-//! interpolations (the lookup, plus the literal bound's), constant cost,
+//! orientation and the predicted final direction; μ = −gain·Δη (the paper
+//! has gain 1, see [`FunnelConfig::gain`]) bounded by [`MuBound`]; the
+//! modulated heading γ = θ + α + μ goes to the seek controller with speed
+//! `min(v_dt, A/|ω|)`, through the step that keeps its turn direction near
+//! the ±π seam ([`crate::seek::seek_step_committed`]). At most two table
+//! interpolations (the lookup, plus the literal bounds'), constant cost,
 //! no allocation.
 
 use core::f32::consts::FRAC_PI_2;

@@ -155,7 +155,13 @@ impl Axis {
                 .min(self.last)
         };
         let (x0, inv_dx) = self.segments[i];
-        let t = ((c - x0) * inv_dx).min(1.0);
+        // Exactly 1 at the upper end (a clamped query uses that sample
+        // alone), whatever the rounding of the reciprocal.
+        let t = if c >= hi {
+            1.0
+        } else {
+            ((c - x0) * inv_dx).min(1.0)
+        };
         let i1 = if i + 1 == self.n { 0 } else { i + 1 };
         AxisPos {
             i0: i as u32,
