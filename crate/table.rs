@@ -235,12 +235,15 @@ impl Cell {
     }
 
     /// The cell of an entry's fallback η (unreachable at its desired
-    /// speed, reachable slower): only read when no corner of a query is
-    /// reachable, so it lives apart and keeps the hot cells small.
+    /// speed, reachable slower). Only needed when no corner of a query is
+    /// reachable, so it is built on the fly from the raw arrays rather than
+    /// stored (it would double the memory of the hot cells).
     fn fallback(eta: f32, flags: u8) -> Self {
+        if flags != FLAG_ETA_VALID {
+            return Self::ZERO;
+        }
         let (s, c) = trig::sin_cos(eta);
-        let o = if flags == FLAG_ETA_VALID { 1.0 } else { 0.0 };
-        Self(Vec4::new(o * c, o * s, o, 0.0))
+        Self(Vec4::new(c, s, 1.0, 0.0))
     }
 
     /// The cell of `|η|` for the μ bound: `[r·|η|, r, o·|η|, o]` with `r`
@@ -265,7 +268,6 @@ pub struct EtaTable {
     v_fallback: Vec<f32>,
     flags: Vec<u8>,
     cells: Vec<Cell>,
-    fallback_cells: Vec<Cell>,
     /// `|η|` on the sampled plane ω = 0 (paper 000 Fig. 4's bound looks η
     /// up "for (D, Δη, 0, v_c, v_dt)"), indexed like the table without the
     /// ω axis; empty when the ω axis has no sample at 0.
@@ -319,7 +321,6 @@ impl EtaTable {
             v_fallback,
             flags,
             cells: Vec::new(),
-            fallback_cells: Vec::new(),
             straight: Vec::new(),
             strides,
             grid: core::array::from_fn(|_| Axis::new(&[0.0, 1.0], false)),
@@ -327,9 +328,6 @@ impl EtaTable {
         t.validate()?;
         t.cells = (0..t.eta.len())
             .map(|i| Cell::new(t.eta[i], t.v_fallback[i], t.flags[i]))
-            .collect();
-        t.fallback_cells = (0..t.eta.len())
-            .map(|i| Cell::fallback(t.eta[i], t.flags[i]))
             .collect();
         if let Some(z) = t.axes[2].iter().position(|&f| f == 0.0) {
             t.straight = (0..t.eta.len())
@@ -712,6 +710,20 @@ impl EtaTable {
     /// weights 0 and 1: reading the extra corner costs less than a branch.
     #[inline]
     fn blend<const K: usize>(cells: &[Cell], pos: &[AxisPos; K], strides: &[usize; K]) -> Vec4 {
+        Self::blend_pairs(pos, strides, |at| {
+            let pair: &[Cell; 2] = cells[at..at + 2].try_into().unwrap_or(&[Cell::ZERO; 2]);
+            (pair[0].0, pair[1].0)
+        })
+    }
+
+    /// [`EtaTable::blend`] over cells given by `pair(at)`: the cells at
+    /// offsets `at` and `at + 1`.
+    #[inline]
+    fn blend_pairs<const K: usize>(
+        pos: &[AxisPos; K],
+        strides: &[usize; K],
+        pair: impl Fn(usize) -> (Vec4, Vec4),
+    ) -> Vec4 {
         let side = |k: usize| {
             let (p, s) = (pos[k], strides[k]);
             ([p.i0 as usize * s, p.i1 as usize * s], [1.0 - p.t, p.t])
@@ -731,10 +743,9 @@ impl EtaTable {
         let mut acc = [Vec4::ZERO; 4];
         for &(o, w) in &outer[..n] {
             for d in 0..2 {
-                let at = o + od[d] + oe[0];
-                let pair: &[Cell; 2] = cells[at..at + 2].try_into().unwrap_or(&[Cell::ZERO; 2]);
-                acc[2 * d] += pair[0].0 * w;
-                acc[2 * d + 1] += pair[1].0 * w;
+                let (c0, c1) = pair(o + od[d] + oe[0]);
+                acc[2 * d] += c0 * w;
+                acc[2 * d + 1] += c1 * w;
             }
         }
         (acc[0] * (wd[0] * we[0]) + acc[1] * (wd[0] * we[1]))
@@ -749,7 +760,11 @@ impl EtaTable {
         if main[2] > 1e-6 {
             return Some(trig::atan2(main[1], main[0]));
         }
-        let fb = Self::blend(&self.fallback_cells, pos, &self.strides);
+        let fallback = |i: usize| match (self.eta.get(i), self.flags.get(i)) {
+            (Some(&e), Some(&f)) => Cell::fallback(e, f).0,
+            _ => Vec4::ZERO,
+        };
+        let fb = Self::blend_pairs(pos, &self.strides, |at| (fallback(at), fallback(at + 1)));
         (fb[2] > 1e-6).then(|| trig::atan2(fb[1], fb[0]))
     }
 
