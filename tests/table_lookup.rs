@@ -69,7 +69,7 @@ proptest! {
         prop_assert!(lk.eta.is_finite() && lk.eta.abs() <= std::f32::consts::PI + 1e-6);
         prop_assert!(lk.v_dt.is_finite() && lk.v_dt >= 0.0 && lk.v_dt <= v_d);
         let (dmin, dmax) = (t.distances()[0], *t.distances().last().unwrap());
-        if d < dmin || d > dmax || v < 0.0 || v > 2.0 {
+        if !(dmin..=dmax).contains(&d) || !(0.0..=2.0).contains(&v) {
             prop_assert!(lk.clamped);
         }
         let b = t.straight_abs_eta_at(&lk, alpha).unwrap_or(0.0);
