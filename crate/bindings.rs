@@ -14,7 +14,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode, MuBound};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
 use crate::scenario::Scenario;
@@ -35,6 +35,24 @@ export interface VehicleParams {
   kp: number;
   kd: number;
   integrator: "euler" | "semiImplicitEuler";
+}
+/** How the modulation μ is bounded (crate::funnel::MuBound). `literal`: the
+ *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
+ *  π/2; `turningRadius`: atan(factor·R_min / D), the default (factor 6);
+ *  `constant`: π/2 (does not vanish with distance). */
+export type MuBound =
+  | { kind: "literal" }
+  | { kind: "scaledLiteral"; gain: number }
+  | { kind: "turningRadius"; factor: number }
+  | { kind: "constant" };
+/** The funnelling controller's settings, shared by every agent
+ *  (crate::funnel::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
+ *  bounded by `bound`; Position_only once |Δη| < seekThreshold·ε_tol
+ *  (seekThreshold in [0, 1], default 0.25). */
+export interface FunnelConfig {
+  bound: MuBound;
+  gain: number;
+  seekThreshold: number;
 }
 /** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
 export interface GoalConfig {
@@ -105,6 +123,33 @@ fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
 
 fn from_js<T: for<'de> Deserialize<'de>>(what: &str, v: JsValue) -> Result<T, JsError> {
     serde_wasm_bindgen::from_value(v).map_err(|e| js_err(what, e))
+}
+
+/// Funnel settings from JavaScript. serde's messages carry no path
+/// ("unknown variant `x`, expected one of …"), so when the object as a whole
+/// is refused its parts are decoded one by one to name the field at fault.
+fn funnel_from_js(v: JsValue) -> Result<FunnelConfig, JsError> {
+    serde_wasm_bindgen::from_value(v.clone()).map_err(|e| {
+        let part = |k: &str| {
+            js_sys::Reflect::get(&v, &k.into())
+                .ok()
+                .filter(|p| !p.is_undefined())
+        };
+        let bad_bound =
+            part("bound").is_some_and(|b| serde_wasm_bindgen::from_value::<MuBound>(b).is_err());
+        let bad_number =
+            |k: &str| part(k).is_some_and(|x| serde_wasm_bindgen::from_value::<f32>(x).is_err());
+        let context = if bad_bound {
+            "funnel settings, field `funnel.bound`"
+        } else if bad_number("gain") {
+            "funnel settings, field `funnel.gain`"
+        } else if bad_number("seekThreshold") {
+            "funnel settings, field `funnel.seekThreshold`"
+        } else {
+            "funnel settings"
+        };
+        js_err(context, e)
+    })
 }
 
 fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
@@ -222,6 +267,28 @@ impl Lab {
             Ok(()) => String::new(),
             Err(e) => format!("{e} (η predictions are approximate until then)"),
         })
+    }
+
+    /// The funnelling settings every agent uses (μ bound, gain, seek
+    /// threshold), so the page can show what is in force.
+    #[wasm_bindgen(unchecked_return_type = "FunnelConfig")]
+    pub fn funnel(&self) -> Result<JsValue, JsError> {
+        to_js(&self.world.config)
+    }
+
+    /// Replaces the funnelling settings (validated; a refused config
+    /// leaves the current one in force). Agents keep their state, goals
+    /// and mode memory: the next update uses the new settings, so μ-bound
+    /// variants can be compared on a running scene.
+    #[wasm_bindgen(js_name = setFunnel)]
+    pub fn set_funnel(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "FunnelConfig")] config: JsValue,
+    ) -> Result<(), JsError> {
+        let c = funnel_from_js(config)?;
+        c.validate().map_err(|e| js_err("funnel settings", e))?;
+        self.world.config = c;
+        Ok(())
     }
 
     /// The η field around a vehicle (paper 001 Fig. 3b/c): for every sampled

@@ -210,3 +210,123 @@ fn relaxed_goals_expose_the_arc_and_reach_the_region() {
     let d = ((s[0] - 10.0).powi(2) + (s[1] - 3.0).powi(2)).sqrt();
     assert!(d < 1.5 + 0.3, "ends in the disk: {d}");
 }
+
+/// A funnel config object as the page builds it.
+fn funnel_cfg(bound: JsValue, gain: f64, threshold: f64) -> JsValue {
+    let o = js_sys::Object::new();
+    js_sys::Reflect::set(&o, &"bound".into(), &bound).unwrap();
+    js_sys::Reflect::set(&o, &"gain".into(), &gain.into()).unwrap();
+    js_sys::Reflect::set(&o, &"seekThreshold".into(), &threshold.into()).unwrap();
+    o.into()
+}
+
+fn bound(kind: &str, param: Option<(&str, f64)>) -> JsValue {
+    let o = js_sys::Object::new();
+    js_sys::Reflect::set(&o, &"kind".into(), &kind.into()).unwrap();
+    if let Some((k, v)) = param {
+        js_sys::Reflect::set(&o, &k.into(), &v.into()).unwrap();
+    }
+    o.into()
+}
+
+#[wasm_bindgen_test]
+fn funnel_settings_round_trip_and_change_the_bound() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let f = lab.funnel().map_err(message).unwrap();
+    let b = get(&f, "bound");
+    assert_eq!(get(&b, "kind").as_string().unwrap(), "turningRadius");
+    assert_eq!(get(&b, "factor").as_f64(), Some(6.0));
+    assert_eq!(get(&f, "gain").as_f64(), Some(2.0));
+    assert_eq!(get(&f, "seekThreshold").as_f64(), Some(0.25));
+
+    // Every bound round-trips (values exactly representable in f32).
+    for (kind, param) in [
+        ("literal", None),
+        ("scaledLiteral", Some(("gain", 6.0))),
+        ("turningRadius", Some(("factor", 3.5))),
+        ("constant", None),
+    ] {
+        lab.set_funnel(funnel_cfg(bound(kind, param), 1.75, 0.5))
+            .map_err(message)
+            .unwrap();
+        let f = lab.funnel().map_err(message).unwrap();
+        let b = get(&f, "bound");
+        assert_eq!(get(&b, "kind").as_string().unwrap(), kind);
+        if let Some((k, v)) = param {
+            assert_eq!(get(&b, k).as_f64(), Some(v), "{kind}.{k}");
+        }
+        assert_eq!(get(&f, "gain").as_f64(), Some(1.75), "{kind}");
+        assert_eq!(get(&f, "seekThreshold").as_f64(), Some(0.5), "{kind}");
+    }
+
+    // A funnelling agent: target 6 m ahead, to be reached facing left.
+    lab.set_funnel(funnel_cfg(
+        bound("turningRadius", Some(("factor", 6.0))),
+        2.0,
+        0.25,
+    ))
+    .map_err(message)
+    .unwrap();
+    lab.add_agent(agent(0.0, 0.0, 0.0, &[goal(6.0, 0.0, 1.57)]))
+        .map_err(message)
+        .unwrap();
+    lab.step(30);
+    let mu_max = |lab: &Lab| {
+        let i = lab.internals(0).map_err(message).unwrap();
+        assert_eq!(get(&i, "mode").as_f64(), Some(3.0), "Funnelling");
+        get(&i, "muMax").as_f64().unwrap()
+    };
+    let default = mu_max(&lab);
+    lab.set_funnel(funnel_cfg(bound("literal", None), 2.0, 0.25))
+        .map_err(message)
+        .unwrap();
+    let literal = mu_max(&lab);
+    assert!(
+        (literal - default).abs() > 1e-3,
+        "literal μ_max {literal} vs default {default}"
+    );
+    lab.set_funnel(funnel_cfg(bound("constant", None), 2.0, 0.25))
+        .map_err(message)
+        .unwrap();
+    assert!((mu_max(&lab) - core::f64::consts::FRAC_PI_2).abs() < 1e-6);
+    // The agents keep running under the new settings.
+    assert_eq!(lab.count(), 1);
+    lab.step(30);
+    assert!(lab.state().iter().all(|x| x.is_finite()));
+}
+
+#[wasm_bindgen_test]
+fn invalid_funnel_settings_are_errors_naming_the_field() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let tr = || bound("turningRadius", Some(("factor", 6.0)));
+    for (cfg, field) in [
+        (funnel_cfg(tr(), f64::NAN, 0.25), "gain"),
+        (funnel_cfg(tr(), -1.0, 0.25), "gain"),
+        (funnel_cfg(tr(), 2.0, 2.0), "seekThreshold"),
+        (funnel_cfg(bound("bogus", None), 2.0, 0.25), "bound"),
+        (funnel_cfg(bound("scaledLiteral", None), 2.0, 0.25), "gain"),
+        (funnel_cfg(tr(), 2.0, f64::INFINITY), "seekThreshold"),
+    ] {
+        let m = message(lab.set_funnel(cfg).expect_err("must be refused"));
+        assert!(m.contains("funnel") && m.contains(field), "{field}: {m}");
+    }
+    let m = message(
+        lab.set_funnel(funnel_cfg(bound("bogus", None), 2.0, 0.25))
+            .err()
+            .unwrap(),
+    );
+    assert!(m.contains("bogus") && m.contains("literal"), "{m}");
+    let m = message(lab.set_funnel(JsValue::from_str("nope")).err().unwrap());
+    assert!(m.contains("funnel settings"), "{m}");
+    let bad_type = funnel_cfg(tr(), 2.0, 0.25);
+    js_sys::Reflect::set(&bad_type, &"gain".into(), &"2".into()).unwrap();
+    let m = message(lab.set_funnel(bad_type).err().unwrap());
+    assert!(m.contains("funnel.gain"), "{m}");
+    // A refused config leaves the one in force.
+    let f = lab.funnel().map_err(message).unwrap();
+    assert_eq!(get(&f, "gain").as_f64(), Some(2.0));
+    assert_eq!(
+        get(&get(&f, "bound"), "kind").as_string().unwrap(),
+        "turningRadius"
+    );
+}

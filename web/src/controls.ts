@@ -1,4 +1,4 @@
-// Sliders with units, checkboxes and buttons, built into a panel element.
+// Sliders with units, selects, checkboxes and buttons, built into a panel element.
 // Each control writes through a callback; `set` updates it from outside
 // (a drag on the canvas, a preset, the URL) without firing the callback.
 
@@ -52,6 +52,33 @@ export function slider(parent: HTMLElement, s: SliderSpec): Control {
   row.append(name, input, out);
   parent.append(row);
   return { set, el: row };
+}
+
+export interface SelectSpec<T extends string> {
+  id: string;
+  label: string;
+  options: ReadonlyArray<{ value: T; label: string }>;
+  value: T;
+  onChange(v: T): void;
+}
+
+export function select<T extends string>(parent: HTMLElement, s: SelectSpec<T>): { set(v: T): void; el: HTMLElement } {
+  const row = document.createElement("label");
+  row.className = "select";
+  const name = document.createElement("span");
+  name.className = "name";
+  name.textContent = s.label;
+  const input = document.createElement("select");
+  input.id = s.id;
+  for (const o of s.options) input.add(new Option(o.label, o.value));
+  input.value = s.value;
+  input.addEventListener("change", () => {
+    const o = s.options[input.selectedIndex];
+    if (o) s.onChange(o.value);
+  });
+  row.append(name, input);
+  parent.append(row);
+  return { set: (v) => { input.value = v; }, el: row };
 }
 
 export function checkbox(

@@ -1,6 +1,7 @@
-// The heads-up display: the focus agent's controller internals and timing.
+// The heads-up display: the focus agent's controller internals (μ and its
+// bound μ_max included) and timing.
 
-import { MODE_NAMES } from "./render";
+import { MODE, MODE_NAMES } from "./render";
 
 export interface HudData {
   mode: number | null;
@@ -9,6 +10,8 @@ export interface HudData {
   eta: number;
   deltaEta: number;
   mu: number;
+  /** Bound on |μ| this update (computed in Funnelling only). */
+  muMax: number;
   speed: number;
   reachable: boolean;
   usPerUpdate: number;
@@ -34,6 +37,7 @@ export function renderHud(el: HTMLElement, h: HudData): void {
     `η      ${deg(h.eta)}`,
     `Δη     ${deg(h.deltaEta)}`,
     `μ      ${deg(h.mu)}`,
+    `μ_max  ${h.mode === MODE.Funnelling ? deg(h.muMax) : "      —"}`,
     `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
     `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,

@@ -2,6 +2,7 @@
 // simulation clock and the animation loop, and routes drags to the core.
 
 import { beginFrame, setupCanvas, type Surface } from "./canvas";
+import { controllerSection, funnelConfig } from "./controller";
 import { button, checkbox, section, slider, type Control } from "./controls";
 import { downloadCsv, downloadJson, downloadPng } from "./export";
 import { renderHud } from "./hud";
@@ -18,6 +19,7 @@ import {
   loadCore,
   S,
   STATE_STRIDE,
+  type FunnelConfig,
   type GoalConfig,
   type Internals,
   type Lab,
@@ -43,6 +45,8 @@ export interface LabHook {
   count(): number;
   mode(): number | null;
   internals(): Internals | null;
+  /** The funnelling settings in force in the core. */
+  funnel(): FunnelConfig | null;
   state(): LabState;
   /** CSS-pixel canvas coordinates of the focus target's centre, rim, handles and of the vehicle. */
   handles(): Handles | null;
@@ -82,6 +86,7 @@ const hook: LabHook = {
   count: () => 0,
   mode: () => null,
   internals: () => null,
+  funnel: () => null,
   state: () => defaultState(),
   handles: () => null,
   setPreset: async () => {},
@@ -181,6 +186,16 @@ async function start(): Promise<void> {
     }
   };
 
+  /** The page's controller settings to the core (world-wide, presets included). */
+  const applyFunnel = (): void => {
+    try {
+      lab.setFunnel(funnelConfig(st.funnel));
+    } catch (e) {
+      showMessage(`Controller settings rejected: ${errorText(e)}`, "warn");
+    }
+    dirty = true;
+  };
+
   let generation = 0;
   let dt = defaults.dt;
   /** Shows the URL's view once (the first build), else fits when asked. */
@@ -236,6 +251,7 @@ async function start(): Promise<void> {
         }
       }
     }
+    applyFunnel();
     dt = lab.params().dt;
     pull();
     trails.record(0, stateBuf, STATE_STRIDE, count);
@@ -315,6 +331,8 @@ async function start(): Promise<void> {
   checkbox(goalRow, "halting", "final halting", st.halting, (v) => { st.halting = v; updateGoal(); });
   const relaxedBox = checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
   relaxedBox.el.title = "paper 001: any point of the disk and any heading within β ± ε_tol is a valid goal";
+
+  controllerSection(panel, st.funnel, () => { applyFunnel(); saveUrl(); });
 
   const limBox = section(panel, "Vehicle limits");
   const lim = (id: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", label: string, unit: string, max: number): void => {
@@ -508,7 +526,7 @@ async function start(): Promise<void> {
       renderHud(hudEl, {
         mode: inter?.mode ?? null,
         d: inter?.d ?? NaN, alpha: inter?.alpha ?? NaN, eta: inter?.eta ?? NaN,
-        deltaEta: inter?.deltaEta ?? NaN, mu: inter?.mu ?? NaN,
+        deltaEta: inter?.deltaEta ?? NaN, mu: inter?.mu ?? NaN, muMax: inter?.muMax ?? NaN,
         speed: stateBuf[who * STATE_STRIDE + 3] ?? 0,
         reachable: inter?.reachable ?? true,
         usPerUpdate, frameMs: frameMsEma, agents: count, time: simTime, paused, slow: st.slow,
@@ -531,6 +549,7 @@ async function start(): Promise<void> {
   hook.count = () => count;
   hook.mode = () => internalsOf(focus >= 0 ? focus : 0)?.mode ?? null;
   hook.internals = () => internalsOf(focus >= 0 ? focus : 0);
+  hook.funnel = () => lab.funnel();
   hook.state = () => structuredClone(st);
   hook.handles = handles;
   hook.setPreset = setPreset;

@@ -25,6 +25,20 @@ export interface Limits {
   normalAccelMax?: number;
 }
 
+/** The μ-bound choices of the controller section, as the URL writes them:
+ *  turning radius ×6 (the core's default), 6 × literal, literal, constant π/2. */
+export const BOUND_KEYS = ["tr", "sl", "lit", "const"] as const;
+export type BoundKey = (typeof BOUND_KEYS)[number];
+
+/** The funnelling controller's settings as the page edits them. */
+export interface FunnelSettings {
+  bound: BoundKey;
+  /** μ = −gain·Δη before the bound. */
+  gain: number;
+  /** Position_only once |Δη| < threshold·ε_tol. */
+  threshold: number;
+}
+
 export interface LabState {
   /** Start pose of the playground vehicle (agent 0). */
   vehicle: Pose;
@@ -39,6 +53,8 @@ export interface LabState {
   halting: boolean;
   relaxed: boolean;
   limits: Limits;
+  /** Controller settings, shared by every agent (presets included). */
+  funnel: FunnelSettings;
   overlays: Overlays;
   /** η field view inputs: current speed, angular speed, desired speed. */
   field: { vC: number; omegaC: number; vD: number };
@@ -62,6 +78,8 @@ export function defaultState(): LabState {
     halting: true,
     relaxed: false,
     limits: {},
+    // The core's FunnelConfig::default() (e2e checks they agree).
+    funnel: { bound: "tr", gain: 2, threshold: 0.25 },
     overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     preset: "",

@@ -2,7 +2,7 @@
 // the view. Decoding never throws: every bad field falls back to its default
 // and is reported, so the page can show what was ignored.
 
-import { defaultState, type LabState, type Limits, type Overlays } from "./state";
+import { BOUND_KEYS, defaultState, type BoundKey, type LabState, type Limits, type Overlays } from "./state";
 
 const DEG = Math.PI / 180;
 
@@ -36,12 +36,19 @@ const NUMS: NumField[] = [
   { key: "fvc", min: 0, max: 50, get: (s) => s.field.vC, set: (s, v) => { s.field.vC = v; } },
   { key: "fwc", min: -50, max: 50, get: (s) => s.field.omegaC, set: (s, v) => { s.field.omegaC = v; } },
   { key: "fvd", min: 0, max: 50, get: (s) => s.field.vD, set: (s, v) => { s.field.vD = v; } },
+  // Controller settings, within the ranges the panel's sliders offer.
+  { key: "gain", min: 1, max: 4, get: (s) => s.funnel.gain, set: (s, v) => { s.funnel.gain = v; } },
+  { key: "th", min: 0.1, max: 1, get: (s) => s.funnel.threshold, set: (s, v) => { s.funnel.threshold = v; } },
   { key: "n", min: 0, max: 100000, integer: true, get: (s) => s.agents, set: (s, v) => { s.agents = v; } },
   { key: "seed", min: 0, max: 2 ** 32 - 1, integer: true, get: (s) => s.seed, set: (s, v) => { s.seed = v; } },
 ];
 
 const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];
+
+function isBoundKey(k: string): k is BoundKey {
+  return (BOUND_KEYS as readonly string[]).includes(k);
+}
 
 function fmt(v: number): string {
   return String(Math.round(v * 1e4) / 1e4);
@@ -55,6 +62,7 @@ export function encodeState(s: LabState): string {
     if (v !== undefined) p.set(key, fmt(v));
   }
   for (const k of FLAGS) p.set(k, s[k] ? "1" : "0");
+  p.set("bound", s.funnel.bound);
   p.set("ov", OVERLAY_KEYS.filter((k) => s.overlays[k]).join(","));
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
@@ -84,7 +92,7 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["ov", "preset", "zx", "zy", "zs", ...FLAGS, ...NUMS.map((f) => f.key), ...LIMIT_KEYS.map((l) => l[0])]);
+  const known = new Set<string>(["ov", "bound", "preset", "zx", "zy", "zs", ...FLAGS, ...NUMS.map((f) => f.key), ...LIMIT_KEYS.map((l) => l[0])]);
   for (const key of p.keys()) {
     if (!known.has(key)) problems.push(`unknown field "${key}" ignored`);
   }
@@ -111,6 +119,11 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
     if (t === null) continue;
     if (t === "1" || t === "0") s[k] = t === "1";
     else problems.push(`${k}="${t}" must be 0 or 1; default kept`);
+  }
+  const bound = p.get("bound");
+  if (bound !== null) {
+    if (isBoundKey(bound)) s.funnel.bound = bound;
+    else problems.push(`bound="${bound}" is not one of ${BOUND_KEYS.join(", ")}; default kept`);
   }
   const ov = p.get("ov");
   if (ov !== null) {

@@ -4,14 +4,16 @@
 import init, { Lab, version } from "../pkg/steering.js";
 import type {
   AgentConfig,
+  FunnelConfig,
   GoalConfig,
   Internals,
+  MuBound,
   ScenarioInfo,
   TableInfo,
   VehicleParams,
 } from "../pkg/steering.js";
 
-export type { AgentConfig, GoalConfig, Internals, ScenarioInfo, TableInfo, VehicleParams };
+export type { AgentConfig, FunnelConfig, GoalConfig, Internals, MuBound, ScenarioInfo, TableInfo, VehicleParams };
 export { Lab };
 
 /** Floats per agent in `Lab.state()` (crate::world::STATE_STRIDE). */

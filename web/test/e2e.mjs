@@ -1,8 +1,9 @@
 // Browser end-to-end test: the built page (web/dist) in Debian's headless
 // Chromium via playwright-core. Checks: no console errors or warnings; drags
 // change the target's mode colouring (hook state AND canvas pixels); tolerance
-// and orientation handles; presets; keyboard; URL state round trip and a
-// malformed link; a corrupt table shows a readable message. Screenshots go
+// and orientation handles; presets; keyboard; the controller section (μ
+// bound, gain, seek threshold) reaching the core and the URL; URL state round
+// trip and a malformed link; a corrupt table shows a readable message. Screenshots go
 // to artifacts/ (gitignored). Prints "e2e: N passed, M failed".
 import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
@@ -196,6 +197,34 @@ try {
     await page.waitForTimeout(200);
   });
 
+  await check("controller section: μ bound select, gain and threshold sliders reach the core and the URL", async () => {
+    for (const id of ["mu-bound", "mu-gain", "seek-th"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
+    const opts = await page.locator("#mu-bound option").allTextContents();
+    assert.deepEqual(opts, ["turning radius ×6 (default)", "6 × literal", "literal (paper)", "constant π/2"]);
+    // The page's defaults are the core's.
+    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "turningRadius", factor: 6 }, gain: 2, seekThreshold: 0.25 });
+    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { bound: "tr", gain: 2, threshold: 0.25 });
+    assert.equal(await page.inputValue("#mu-gain"), "2");
+    assert.equal(await page.inputValue("#seek-th"), "0.25");
+    const n = await page.evaluate(() => window.__lab.count());
+    await page.evaluate(() => window.__lab.setPaused(false));
+    await page.selectOption("#mu-bound", "lit");
+    await page.locator("#mu-gain").fill("3");
+    await page.locator("#seek-th").fill("0.5");
+    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
+    const st = await page.evaluate(() => window.__lab.state());
+    assert.equal(st.funnel.bound, "lit");
+    assert.ok(Math.abs(st.funnel.gain - 3) < 1e-9 && Math.abs(st.funnel.threshold - 0.5) < 1e-9, JSON.stringify(st.funnel));
+    assert.equal(await page.evaluate(() => window.__lab.count()), n, "the agents keep running (no rebuild)");
+    await page.waitForFunction(() => location.hash.includes("bound=lit"), null, { timeout: 2000 });
+    const hash = new URLSearchParams(new URL(page.url()).hash.slice(1));
+    assert.equal(hash.get("bound"), "lit");
+    assert.equal(Number(hash.get("gain")), 3);
+    assert.equal(Number(hash.get("th")), 0.5);
+    assert.match(await page.locator("#hud").textContent(), /μ_max /);
+    await shot(page, "10-controller-literal");
+  });
+
   await check("the URL state round-trips into a fresh page", async () => {
     await page.waitForTimeout(400);
     const href = page.url();
@@ -211,10 +240,25 @@ try {
       assert.ok(Math.abs(got.vehicle[k] - want.vehicle[k]) < 1e-3, `vehicle.${k}`);
     }
     assert.deepEqual(got.overlays, want.overlays);
+    assert.deepEqual(got.funnel, want.funnel);
+    assert.equal(await p2.page.inputValue("#mu-bound"), want.funnel.bound);
+    assert.deepEqual(await p2.page.evaluate(() => window.__lab.funnel().bound), { kind: "literal" });
     assert.ok(want.view && got.view, "the view is in the link");
     for (const k of ["cx", "cy", "scale"]) assert.ok(Math.abs(got.view[k] - want.view[k]) < 1e-3, `view.${k}: ${got.view[k]} vs ${want.view[k]}`);
     allProblems.push(...p2.problems);
     await p2.context.close();
+  });
+
+  await check("controller settings apply to presets too; back to the defaults", async () => {
+    await page.selectOption("#preset", "p000_fig3_funnel");
+    await page.waitForFunction(() => window.__lab.state().preset === "p000_fig3_funnel" && window.__lab.count() > 0, null, { timeout: 5000 });
+    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
+    await page.selectOption("#mu-bound", "tr");
+    await page.locator("#mu-gain").fill("2");
+    await page.locator("#seek-th").fill("0.25");
+    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "turningRadius", factor: 6 }, gain: 2, seekThreshold: 0.25 });
+    await page.selectOption("#preset", "");
+    await page.waitForFunction(() => window.__lab.state().preset === "" && window.__lab.count() === 1, null, { timeout: 5000 });
   });
 
   await check("a malformed link falls back to defaults with a visible message", async () => {
@@ -232,6 +276,24 @@ try {
     await shot(p3.page, "06-malformed-link-message");
     allProblems.push(...p3.problems);
     await p3.context.close();
+  });
+
+  await check("a bad controller link (bound=bogus, gain, th) falls back to the defaults with a visible message", async () => {
+    const p5 = await openPage(browser);
+    await p5.page.goto(`${url}#bound=bogus&gain=nan&th=2`);
+    assert.equal(await waitReady(p5.page), null);
+    const msg = p5.page.locator("#message");
+    assert.equal(await msg.isVisible(), true);
+    const text = await msg.textContent();
+    assert.match(text, /bound="bogus"/);
+    assert.match(text, /gain="nan"/);
+    assert.match(text, /th="2"/);
+    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { bound: "tr", gain: 2, threshold: 0.25 });
+    assert.deepEqual(await p5.page.evaluate(() => window.__lab.funnel()), { bound: { kind: "turningRadius", factor: 6 }, gain: 2, seekThreshold: 0.25 });
+    assert.equal(await p5.page.inputValue("#mu-bound"), "tr");
+    await shot(p5.page, "11-bad-controller-link-message");
+    allProblems.push(...p5.problems);
+    await p5.context.close();
   });
 
   await check("a corrupt table shows a readable message on the page", async () => {
