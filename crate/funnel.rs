@@ -238,13 +238,13 @@ pub fn tolerance_phase(
     d: f32,
     out: &mut Internals,
 ) -> bool {
-    let heading_err = diff(g.beta, s.theta);
     if d < g.d_tol {
         mem.position_met = true;
-    } else if d > FunnelMemory::release_radius(p, g) {
+    } else if mem.position_met && d > FunnelMemory::release_radius(p, g) {
         mem.position_met = false;
     }
     if mem.position_met {
+        let heading_err = diff(g.beta, s.theta);
         out.delta_eta = heading_err;
         if heading_err.abs() < g.eps_tol {
             out.mode = Mode::EndOfSteering;
