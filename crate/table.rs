@@ -880,16 +880,17 @@ impl EtaTable {
         let b = Self::blend(&self.cells, &pos, &self.strides);
         // b = [Σw·r·cos η, Σw·r·sin η, Σw·r, Σw·(1−r)·v_fallback].
         let reachable = b[2] >= 0.5;
-        let mut v_dt = v_d;
-        let mut eta = self.eta_at(&pos, b);
-        if !reachable {
-            v_dt = (b[2] * v_d + b[3]).min(v_d).max(0.0);
-            eta = None;
+        let (v_dt, eta) = if reachable {
+            (v_d, self.eta_at(&pos, b))
+        } else {
+            let v_dt = (b[2] * v_d + b[3]).min(v_d).max(0.0);
             if v_dt > 0.0 {
                 pos[4] = self.grid[4].locate(v_dt, &mut false);
-                eta = self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides));
+                (v_dt, self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides)))
+            } else {
+                (v_dt, None)
             }
-        }
+        };
         Lookup {
             eta: eta.unwrap_or(0.0),
             reachable,
