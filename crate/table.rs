@@ -886,7 +886,10 @@ impl EtaTable {
             let v_dt = (b[2] * v_d + b[3]).min(v_d).max(0.0);
             if v_dt > 0.0 {
                 pos[4] = self.grid[4].locate(v_dt, &mut false);
-                (v_dt, self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides)))
+                (
+                    v_dt,
+                    self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides)),
+                )
             } else {
                 (v_dt, None)
             }
