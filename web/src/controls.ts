@@ -21,13 +21,20 @@ export interface Control {
   el: HTMLElement;
 }
 
-export function slider(parent: HTMLElement, s: SliderSpec): Control {
-  const k = s.display ?? 1;
+/** A `<label>` row of class `className` that starts with the control's name. */
+function labelledRow(className: string, label: string): HTMLLabelElement {
   const row = document.createElement("label");
-  row.className = "slider";
+  row.className = className;
   const name = document.createElement("span");
   name.className = "name";
-  name.textContent = s.label;
+  name.textContent = label;
+  row.append(name);
+  return row;
+}
+
+export function slider(parent: HTMLElement, s: SliderSpec): Control {
+  const k = s.display ?? 1;
+  const row = labelledRow("slider", s.label);
   const input = document.createElement("input");
   input.type = "range";
   input.id = s.id;
@@ -49,7 +56,7 @@ export function slider(parent: HTMLElement, s: SliderSpec): Control {
     s.onInput(v);
   });
   set(s.value);
-  row.append(name, input, out);
+  row.append(input, out);
   parent.append(row);
   return { set, el: row };
 }
@@ -63,11 +70,7 @@ export interface SelectSpec<T extends string> {
 }
 
 export function select<T extends string>(parent: HTMLElement, s: SelectSpec<T>): { set(v: T): void; el: HTMLElement } {
-  const row = document.createElement("label");
-  row.className = "select";
-  const name = document.createElement("span");
-  name.className = "name";
-  name.textContent = s.label;
+  const row = labelledRow("select", s.label);
   const input = document.createElement("select");
   input.id = s.id;
   for (const o of s.options) input.add(new Option(o.label, o.value));
@@ -76,7 +79,7 @@ export function select<T extends string>(parent: HTMLElement, s: SelectSpec<T>):
     const o = s.options[input.selectedIndex];
     if (o) s.onChange(o.value);
   });
-  row.append(name, input);
+  row.append(input);
   parent.append(row);
   return { set: (v) => { input.value = v; }, el: row };
 }
