@@ -118,12 +118,6 @@ impl Axis {
         ((f.to_bits() & 0x007F_FFFF) as usize).min(self.buckets.len() - 1)
     }
 
-    /// Samples as stored in the file.
-    #[must_use]
-    pub fn samples(&self) -> &[f32] {
-        &self.x[..self.n]
-    }
-
     /// Where `v` falls. Outside a non-periodic axis (or for NaN) the
     /// position is clamped to the end sample and `clamped` is set; a
     /// periodic axis takes `v` already wrapped into `(-π, π]`.

@@ -777,31 +777,15 @@ impl EtaTable {
         self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.strides))
     }
 
-    /// `|η(D, α, 0, v_c, v_d)|`: the magnitude of η for a vehicle that is
-    /// not rotating, which paper 000 Fig. 4 interpolates to bound the
-    /// modulation μ. With a sample at ω = 0 (the committed table has one)
-    /// this blends 16 precomputed magnitudes, reachable samples on their
-    /// own as in [`EtaTable::eta`]; magnitudes are blended directly, which
-    /// is seam-free at ±π. `None` when no neighbouring sample has an η.
-    #[must_use]
-    pub fn straight_abs_eta(&self, d: f32, alpha: f32, v_c: f32, v_d: f32) -> Option<f32> {
-        if self.straight.is_empty() {
-            return self.eta(d, alpha, 0.0, v_c, v_d).map(f32::abs);
-        }
-        let g = &self.grid;
-        let c = &mut false;
-        self.straight_at([
-            g[0].locate(d, c),
-            g[1].locate(wrap(alpha), c),
-            g[3].locate(v_c, c),
-            g[4].locate(v_d, c),
-        ])
-    }
-
-    /// [`EtaTable::straight_abs_eta`] at the distance, current speed and
-    /// desired speed (`v_dt`) of an earlier lookup, for radial angle
-    /// `alpha`: the second interpolation of paper 000 Fig. 4 ("for (D, Δη,
-    /// 0, v_c, v_dt)") at the cost of one axis search instead of four.
+    /// `|η(D, α, 0, v_c, v_dt)|` at the distance, current speed and desired
+    /// speed (`v_dt`) of an earlier lookup, for radial angle `alpha`: the
+    /// magnitude of η for a vehicle that is not rotating, which paper 000
+    /// Fig. 4 interpolates to bound the modulation μ ("for (D, Δη, 0, v_c,
+    /// v_dt)"). With a sample at ω = 0 (the committed table has one) this
+    /// blends 16 precomputed magnitudes, reachable samples on their own as
+    /// in [`EtaTable::eta`], at the cost of one axis search (the others are
+    /// the lookup's); magnitudes are blended directly, which is seam-free at
+    /// ±π. `None` when no neighbouring sample has an η.
     #[must_use]
     pub fn straight_abs_eta_at(&self, at: &Lookup, alpha: f32) -> Option<f32> {
         if self.straight.is_empty() {
