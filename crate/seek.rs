@@ -20,7 +20,13 @@ use crate::vehicle::{VehicleParams, VehicleState};
 #[inline]
 #[must_use]
 pub fn angular_command(p: &VehicleParams, s: &VehicleState, heading: f32) -> f32 {
-    p.kp * diff(heading, s.theta) - p.kd * s.omega
+    pd(p, s, diff(heading, s.theta))
+}
+
+/// The PD law on a heading error `e`: `Kp·e − Kd·ω`.
+#[inline]
+fn pd(p: &VehicleParams, s: &VehicleState, e: f32) -> f32 {
+    p.kp * e - p.kd * s.omega
 }
 
 /// One controller step towards absolute heading `heading` at desired
@@ -68,7 +74,7 @@ pub fn seek_step_committed(
     desired_speed: f32,
 ) {
     let e = committed_error(diff(heading, s.theta), s.omega);
-    p.integrate(s, p.kp * e - p.kd * s.omega, desired_speed);
+    p.integrate(s, pd(p, s, e), desired_speed);
 }
 
 /// One plain seek step towards the point `target`: the heading is the
@@ -226,20 +232,18 @@ mod tests {
 
     #[test]
     fn committed_error_keeps_the_turn_direction_only_near_the_seam() {
-        use core::f32::consts::PI;
+        use core::f32::consts::{PI, TAU};
         let near = PI - 0.5 * TURN_COMMIT_WINDOW;
         // Turning left (ω > 0), target just across the seam on the right:
         // keep turning left, the long way round.
-        assert!((committed_error(-near, 0.5) - (TAU_F - near)).abs() < 1e-6);
-        assert!((committed_error(near, -0.5) - (near - TAU_F)).abs() < 1e-6);
+        assert!((committed_error(-near, 0.5) - (TAU - near)).abs() < 1e-6);
+        assert!((committed_error(near, -0.5) - (near - TAU)).abs() < 1e-6);
         // Already turning that way, far from the seam, or not turning:
         // the plain error.
         assert_eq!(committed_error(-near, -0.5), -near);
         assert_eq!(committed_error(-2.0, 0.5), -2.0);
         assert_eq!(committed_error(-near, 0.0), -near);
     }
-
-    const TAU_F: f32 = core::f32::consts::TAU;
 
     #[test]
     fn mirror_symmetry_eta_alpha_omega() {
