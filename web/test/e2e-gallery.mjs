@@ -317,6 +317,8 @@ try {
         el.dispatchEvent(new Event("input", { bubbles: true }));
       });
       await page.click("#control-rerun");
+      // busy() must see the panel's own re-run at once (it once lagged a frame).
+      assert.equal(await page.evaluate(() => window.__wander.busy()), true);
       await page.waitForFunction(() => !window.__wander.busy());
       assert.equal(await sig(), a);
     });

@@ -206,18 +206,21 @@ export class GalleryPanel {
     this.chunk = Math.ceil(this.knobs.steps / RUN_FRAMES);
   }
 
-  /** One animation frame; returns true while a re-run is in progress. */
-  tick(): boolean {
-    let busy = false;
+  /** True while a re-run still has steps to replay (read from the tiles, so a
+   *  re-run started by this panel's own button counts before the next frame). */
+  busy(): boolean {
+    return this.tiles.some((t) => t.lab !== null && t.pending > 0);
+  }
+
+  /** One animation frame: replays the next chunk of every pending tile. */
+  tick(): void {
     for (const t of this.tiles) {
       if (!t.lab || t.pending <= 0) continue;
       const n = Math.min(t.pending, this.chunk);
       t.lab.run(n);
       t.pending -= n;
       this.draw(t);
-      busy ||= t.pending > 0;
     }
-    return busy;
   }
 
   private draw(t: Tile): void {

@@ -41,17 +41,15 @@ function showMessage(text: string, error = false): void {
 }
 
 const panels: GalleryPanel[] = [];
-let busy = false;
 
 const hook: WanderHook = {
   ready: false,
   error: null,
   frames: 0,
   panels: () => panels.map((p) => p.status()),
-  busy: () => busy,
+  busy: () => panels.some((p) => p.busy()),
   rerun: (name) => {
     for (const p of panels) if (name === undefined || p.name === name) p.rerun();
-    busy = true;
   },
 };
 window.__wander = hook;
@@ -59,9 +57,7 @@ window.__wander = hook;
 function frame(): void {
   requestAnimationFrame(frame);
   hook.frames++;
-  let b = false;
-  for (const p of panels) b = p.tick() || b;
-  busy = b;
+  for (const p of panels) p.tick();
 }
 
 async function start(): Promise<void> {
