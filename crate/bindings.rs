@@ -14,6 +14,8 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
+use crate::boundary::{check_known_keys, from_js, js_err, to_js};
+
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode, MuBound};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
@@ -117,19 +119,11 @@ export interface ScenarioInfo {
 }
 "#;
 
-fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
-    JsError::new(&format!("{context}: {e}"))
-}
-
-fn from_js<T: for<'de> Deserialize<'de>>(what: &str, v: JsValue) -> Result<T, JsError> {
-    serde_wasm_bindgen::from_value(v).map_err(|e| js_err(what, e))
-}
-
 /// Funnel settings from JavaScript. serde's messages carry no path
 /// ("unknown variant `x`, expected one of …"), so when the object as a whole
 /// is refused its parts are decoded one by one to name the field at fault.
 fn funnel_from_js(v: JsValue) -> Result<FunnelConfig, JsError> {
-    serde_wasm_bindgen::from_value(v.clone()).map_err(|e| {
+    let c: FunnelConfig = serde_wasm_bindgen::from_value(v.clone()).map_err(|e| {
         let part = |k: &str| {
             js_sys::Reflect::get(&v, &k.into())
                 .ok()
@@ -149,12 +143,9 @@ fn funnel_from_js(v: JsValue) -> Result<FunnelConfig, JsError> {
             "funnel settings"
         };
         js_err(context, e)
-    })
-}
-
-fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
-    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
-        .map_err(|e| js_err("conversion to JavaScript", e))
+    })?;
+    check_known_keys("funnel settings", &v, &c)?;
+    Ok(c)
 }
 
 /// The crate version, to show on the page and check the package loaded.
@@ -337,7 +328,7 @@ impl Lab {
 /// A goal as the page edits it (flat, camelCase); `relaxed` selects relaxed
 /// funnelling towards the region goal (paper 001): the disk is `dTol`, the
 /// orientation interval is β ± `epsTol`. The controller is world-wide.
-#[derive(Deserialize)]
+#[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "camelCase")]
 struct GoalConfig {
     x: f32,
@@ -371,7 +362,7 @@ impl GoalConfig {
     }
 }
 
-#[derive(Deserialize)]
+#[derive(Serialize, Deserialize)]
 #[serde(deny_unknown_fields, rename_all = "camelCase")]
 struct AgentConfig {
     x: f32,

@@ -8,8 +8,9 @@
 //! `Float32Array` (one copy per call). Units: world units and steps (one
 //! step is one paper frame).
 
-use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
+
+use crate::boundary::{from_js, js_err, to_js};
 
 use crate::boid_seek::Seek;
 use crate::crowd::Crowd;
@@ -58,19 +59,6 @@ export interface CrowdMetrics {
   trace_spread: number | null;
 }
 "#;
-
-fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
-    JsError::new(&format!("{context}: {e}"))
-}
-
-fn from_js<T: for<'de> Deserialize<'de>>(what: &str, v: JsValue) -> Result<T, JsError> {
-    serde_wasm_bindgen::from_value(v).map_err(|e| js_err(what, e))
-}
-
-fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
-    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
-        .map_err(|e| js_err("conversion to JavaScript", e))
-}
 
 /// Steps a single [`CrowdLab::step`] call may ask for.
 const MAX_STEPS_PER_CALL: u32 = 10_000;

@@ -8,8 +8,9 @@
 //! files), traces cross as `Float32Array`. A configuration and its seed give
 //! the same trace bit for bit as natively.
 
-use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
+
+use crate::boundary::{from_js, js_err, to_js};
 
 use crate::wander::{WanderConfig, WanderPreset, Wanderer};
 
@@ -95,19 +96,6 @@ export interface WanderVariant { label: string; figure?: string | null; config: 
 /** A preset file scenarios/wander/*.json: one component, its figure series. */
 export interface WanderPreset { title: string; section: string; steps: number; variants: WanderVariant[] }
 "#;
-
-fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
-    JsError::new(&format!("{context}: {e}"))
-}
-
-fn from_js<T: for<'de> Deserialize<'de>>(what: &str, v: JsValue) -> Result<T, JsError> {
-    serde_wasm_bindgen::from_value(v).map_err(|e| js_err(what, e))
-}
-
-fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
-    v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
-        .map_err(|e| js_err("conversion to JavaScript", e))
-}
 
 /// Steps a single [`WanderLab::run`] call may ask for.
 const MAX_STEPS_PER_CALL: u32 = 1_000_000;

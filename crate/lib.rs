@@ -45,3 +45,6 @@ pub mod bindings_crowd;
 /// The JavaScript boundary of the random steering toolkit (WebAssembly builds only).
 #[cfg(target_arch = "wasm32")]
 pub mod bindings_wander;
+/// Conversions shared by the binding modules (WebAssembly builds only).
+#[cfg(target_arch = "wasm32")]
+mod boundary;

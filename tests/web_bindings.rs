@@ -295,6 +295,58 @@ fn funnel_settings_round_trip_and_change_the_bound() {
     assert!(lab.state().iter().all(|x| x.is_finite()));
 }
 
+/// serde-wasm-bindgen never sees a key a struct does not declare; the
+/// boundary checks the keys itself, so a misspelt one is an error naming it
+/// (at any depth) instead of a silently used default.
+#[wasm_bindgen_test]
+fn misspelt_keys_are_errors_naming_them() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let set = |o: &JsValue, k: &str, v: JsValue| {
+        js_sys::Reflect::set(o, &k.into(), &v).unwrap();
+    };
+    let tr = || bound("turningRadius", Some(("factor", 6.0)));
+
+    let cfg = funnel_cfg(tr(), 2.0, 0.25);
+    set(&cfg, "gian", 3.0.into());
+    let m = message(lab.set_funnel(cfg).expect_err("`gian` must be refused"));
+    assert!(
+        m.contains("unknown field `gian`") && m.contains("gain"),
+        "{m}"
+    );
+    let b = tr();
+    set(&b, "factr", 4.0.into());
+    let m = message(lab.set_funnel(funnel_cfg(b, 2.0, 0.25)).unwrap_err());
+    assert!(m.contains("`bound.factr`"), "{m}");
+    // Explicit undefined / null keys ask for nothing and pass.
+    let cfg = funnel_cfg(tr(), 2.0, 0.25);
+    set(&cfg, "note", JsValue::UNDEFINED);
+    lab.set_funnel(cfg).map_err(message).unwrap();
+
+    let p = lab.params().map_err(message).unwrap();
+    set(&p, "maxSpeeed", 9.0.into());
+    let m = message(lab.set_params(p).unwrap_err());
+    assert!(
+        m.starts_with("vehicle parameters: unknown field `maxSpeeed`"),
+        "{m}"
+    );
+
+    let g = goal(4.0, 0.0, 0.0);
+    set(&g, "dtol", 1.0.into());
+    let m = message(
+        lab.add_agent(agent(0.0, 0.0, 0.0, &[goal(1.0, 1.0, 0.0), g]))
+            .unwrap_err(),
+    );
+    assert!(
+        m.contains("unknown field `goals[1].dtol`") && m.contains("dTol"),
+        "{m}"
+    );
+    assert_eq!(lab.count(), 0, "nothing added");
+    lab.add_agent(agent(0.0, 0.0, 0.0, &[goal(4.0, 0.0, 0.0)]))
+        .map_err(message)
+        .unwrap();
+    assert_eq!(lab.count(), 1);
+}
+
 #[wasm_bindgen_test]
 fn invalid_funnel_settings_are_errors_naming_the_field() {
     let mut lab = Lab::new(TABLE).map_err(message).unwrap();

@@ -199,6 +199,34 @@ fn wander_paths_expose_the_generated_path_and_json_works() {
 }
 
 #[wasm_bindgen_test]
+fn misspelt_keys_in_gallery_configs_are_errors_naming_them() {
+    let cfg = js(&crowd_preset(10));
+    js_sys::Reflect::set(&cfg, &"boidz".into(), &5.into()).unwrap();
+    let m = message(CrowdLab::new(cfg).err().expect("`boidz` refused"));
+    assert!(m.contains("unknown field `boidz`"), "{m}");
+    let cfg = js(&crowd_preset(10));
+    let path = js_sys::Reflect::get(&cfg, &"path".into()).unwrap();
+    js_sys::Reflect::set(&path, &"raduis".into(), &2.into()).unwrap();
+    let m = message(CrowdLab::new(cfg).err().expect("`path.raduis` refused"));
+    assert!(m.contains("unknown field `path.raduis`"), "{m}");
+    let mut lab = CrowdLab::new(js(&crowd_preset(10))).unwrap();
+    let seek = js_sys::JSON::parse(r#"{"kind": "parker", "fraction": 0.1, "fracton": 0.2}"#).unwrap();
+    let m = message(lab.set_seek(seek).unwrap_err());
+    assert!(m.contains("`fracton`"), "{m}");
+
+    let preset = WanderPreset::from_json(PRESETS[0].1).unwrap();
+    let cfg = js(&preset.variants[0].config);
+    let control = js_sys::Reflect::get(&cfg, &"control".into()).unwrap();
+    js_sys::Reflect::set(&control, &"mode_".into(), &1.into()).unwrap();
+    let m = message(WanderLab::new(cfg).err().expect("`control.mode_` refused"));
+    assert!(
+        m.starts_with("wander configuration: unknown field `control.mode_`"),
+        "{m}"
+    );
+    WanderLab::new(js(&preset.variants[0].config)).unwrap();
+}
+
+#[wasm_bindgen_test]
 fn bad_wander_input_is_a_js_error_with_a_message() {
     let e = WanderLab::from_json(r#"{"control": {"mode": "velocity", "max_velocity_deg": 500}, "source": {"kind": "random", "distribution": {"kind": "uniform"}}}"#)
         .err()
