@@ -210,7 +210,8 @@ fn misspelt_keys_in_gallery_configs_are_errors_naming_them() {
     let m = message(CrowdLab::new(cfg).err().expect("`path.raduis` refused"));
     assert!(m.contains("unknown field `path.raduis`"), "{m}");
     let mut lab = CrowdLab::new(js(&crowd_preset(10))).unwrap();
-    let seek = js_sys::JSON::parse(r#"{"kind": "parker", "fraction": 0.1, "fracton": 0.2}"#).unwrap();
+    let seek =
+        js_sys::JSON::parse(r#"{"kind": "parker", "fraction": 0.1, "fracton": 0.2}"#).unwrap();
     let m = message(lab.set_seek(seek).unwrap_err());
     assert!(m.contains("`fracton`"), "{m}");
 
