@@ -8,7 +8,7 @@
 // (non-blank canvases), a knob rebuilds, a bad JSON edit shows the core's
 // message. Screenshots go to artifacts/ (gitignored).
 // Prints "e2e-gallery: N passed, M failed".
-import { serve, launch, openPage, artifacts } from "./harness.mjs";
+import { serve, launch, openPage, settle, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 import { writeFileSync } from "node:fs";
 import assert from "node:assert/strict";
@@ -152,7 +152,7 @@ try {
         await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: at(-4 * i, 3 * i) });
       }
       await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
-      await t.waitForTimeout(50);
+      await settle(t);
       const after = await t.evaluate(() => window.__crowd.pathPoints());
       assert.ok(after[4] < before[4] - 1 && after[5] < before[5] - 1, `${before.slice(4, 6)} → ${after.slice(4, 6)}`);
       assert.deepEqual(tproblems, []);

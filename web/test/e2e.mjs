@@ -5,7 +5,7 @@
 // bound, gain, seek threshold) reaching the core and the URL; URL state round
 // trip and a malformed link; a corrupt table shows a readable message. Screenshots go
 // to artifacts/ (gitignored). Prints "e2e: N passed, M failed".
-import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
+import { serve, launch, openPage, waitReady, settle, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
@@ -58,7 +58,7 @@ async function drag(page, from, to, steps = 12) {
   await page.mouse.down();
   await page.mouse.move(box.x + to.x, box.y + to.y, { steps });
   await page.mouse.up();
-  await page.waitForTimeout(60);
+  await settle(page);
 }
 
 const { server, url } = await serve();
@@ -97,7 +97,7 @@ try {
     const after = await page.evaluate(() => window.__lab.internals()?.d);
     assert.notEqual(before, after);
     await page.keyboard.press("r");
-    await page.waitForTimeout(50);
+    await settle(page);
     const st = await page.evaluate(() => window.__lab.state());
     const h = await page.evaluate(() => window.__lab.handles());
     assert.ok(h && Math.abs(h.vehicle.x - h.target.x) > 10);
@@ -323,7 +323,7 @@ try {
       await cdp.send("Input.dispatchTouchEvent", { type: "touchMove", touchPoints: at({ x: h.target.x - 12 * i, y: h.target.y + 8 * i }) });
     }
     await cdp.send("Input.dispatchTouchEvent", { type: "touchEnd", touchPoints: [] });
-    await t.page.waitForTimeout(50);
+    await settle(t.page);
     const h2 = await t.page.evaluate(() => window.__lab.handles());
     assert.ok(Math.abs(h2.target.x - (h.target.x - 120)) < 3 && Math.abs(h2.target.y - (h.target.y + 80)) < 3, `${JSON.stringify(h.target)} -> ${JSON.stringify(h2.target)}`);
     allProblems.push(...t.problems);

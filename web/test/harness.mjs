@@ -61,3 +61,10 @@ export async function waitReady(page, timeout = 20000) {
   }, null, { timeout });
   return page.evaluate(() => window.__lab.error);
 }
+
+/** Resolves after the page has run two animation frames: whatever an input
+ *  changed has then been drawn, however slow the host (a fixed sleep is not
+ *  enough on a loaded CI machine). */
+export function settle(page) {
+  return page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
+}
