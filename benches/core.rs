@@ -2,7 +2,8 @@
 //! step (the baseline), one η-table lookup (issue: lookup ≤ 10× seek) and
 //! one funnelling update — plan plus the committed seek step — for near
 //! (1–4 m) and far (20–30 m) targets, for the default μ bound and the two
-//! literal ones (issue: funnelling ≤ 4× seek).
+//! literal ones (issue: funnelling ≤ 4× seek); and `crate::trig::atan2`
+//! against std's `atan2`.
 //!
 //! `cargo bench --bench core` (add `-- --warm-up-time 1 --measurement-time 2`
 //! for a quick run). Criterion times each piece; then a plain timing loop
@@ -156,6 +157,27 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             k += 1;
             x.lookup(k);
+        });
+    });
+    // The deterministic atan2 every controller uses, against std's (libm).
+    let pts: Vec<(f32, f32)> = queries()
+        .iter()
+        .map(|q| (q[1].sin(), q[1].cos() * q[0]))
+        .collect();
+    g.bench_function("atan2 trig", |b| {
+        let mut k = 0usize;
+        b.iter(|| {
+            k += 1;
+            let (y, x) = pts[k & 1023];
+            black_box(steering::trig::atan2(black_box(y), black_box(x)))
+        });
+    });
+    g.bench_function("atan2 std", |b| {
+        let mut k = 0usize;
+        b.iter(|| {
+            k += 1;
+            let (y, x) = pts[k & 1023];
+            black_box(black_box(y).atan2(black_box(x)))
         });
     });
     for (name, cfg) in bounds() {

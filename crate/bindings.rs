@@ -14,9 +14,8 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{check_known_keys, from_js, js_err, to_js};
-
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode, MuBound};
+use crate::boundary::{from_js, from_js_in, js_err, to_js};
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
 use crate::scenario::Scenario;
@@ -118,35 +117,6 @@ export interface ScenarioInfo {
   maxY: number;
 }
 "#;
-
-/// Funnel settings from JavaScript. serde's messages carry no path
-/// ("unknown variant `x`, expected one of …"), so when the object as a whole
-/// is refused its parts are decoded one by one to name the field at fault.
-fn funnel_from_js(v: JsValue) -> Result<FunnelConfig, JsError> {
-    let c: FunnelConfig = serde_wasm_bindgen::from_value(v.clone()).map_err(|e| {
-        let part = |k: &str| {
-            js_sys::Reflect::get(&v, &k.into())
-                .ok()
-                .filter(|p| !p.is_undefined())
-        };
-        let bad_bound =
-            part("bound").is_some_and(|b| serde_wasm_bindgen::from_value::<MuBound>(b).is_err());
-        let bad_number =
-            |k: &str| part(k).is_some_and(|x| serde_wasm_bindgen::from_value::<f32>(x).is_err());
-        let context = if bad_bound {
-            "funnel settings, field `funnel.bound`"
-        } else if bad_number("gain") {
-            "funnel settings, field `funnel.gain`"
-        } else if bad_number("seekThreshold") {
-            "funnel settings, field `funnel.seekThreshold`"
-        } else {
-            "funnel settings"
-        };
-        js_err(context, e)
-    })?;
-    check_known_keys("funnel settings", &v, &c)?;
-    Ok(c)
-}
 
 /// The crate version, to show on the page and check the package loaded.
 #[wasm_bindgen]
@@ -276,7 +246,7 @@ impl Lab {
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "FunnelConfig")] config: JsValue,
     ) -> Result<(), JsError> {
-        let c = funnel_from_js(config)?;
+        let c: FunnelConfig = from_js_in("funnel settings", "funnel.", config)?;
         c.validate().map_err(|e| js_err("funnel settings", e))?;
         self.world.config = c;
         Ok(())

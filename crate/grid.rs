@@ -40,8 +40,6 @@ pub struct AxisPos {
 /// strictly increasing (the table loader checks this first).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Axis {
-    /// Samples; a periodic axis gets its first sample + 2π appended.
-    x: Vec<f32>,
     /// Samples in the file (without the periodic copy).
     n: usize,
     periodic: bool,
@@ -55,7 +53,8 @@ pub struct Axis {
     /// bucket (`+∞` when none). Empty when some bucket holds two samples.
     buckets: Vec<(u32, f32)>,
     /// Per interval: its lower sample and `1 / (x[i + 1] - x[i])` (a
-    /// multiply, not a divide, per query).
+    /// multiply, not a divide, per query). A periodic axis has one more
+    /// interval, from its last sample to its first + 2π.
     segments: Vec<(f32, f32)>,
 }
 
@@ -79,7 +78,6 @@ impl Axis {
         let count = ((2.0 * span / narrowest).ceil() as usize).clamp(1, MAX_BUCKETS);
         let mut axis = Self {
             segments: x.windows(2).map(|w| (w[0], 1.0 / (w[1] - w[0]))).collect(),
-            x,
             n,
             periodic,
             lo,
@@ -90,8 +88,8 @@ impl Axis {
         };
         let mut below = 0u32;
         let mut prev = usize::MAX;
-        for j in 0..=intervals {
-            let b = axis.bucket(axis.x[j]);
+        for &sample in &x {
+            let b = axis.bucket(sample);
             if b == prev {
                 // Two samples in one bucket: binary search instead.
                 axis.buckets.clear();
@@ -100,7 +98,7 @@ impl Axis {
             for slot in &mut axis.buckets[prev.wrapping_add(1).min(b)..b] {
                 slot.0 = below;
             }
-            axis.buckets[b] = (below, axis.x[j]);
+            axis.buckets[b] = (below, sample);
             below += 1;
             prev = b;
         }
@@ -140,7 +138,7 @@ impl Axis {
         };
         *clamped |= c != v;
         let i = if self.buckets.is_empty() {
-            self.x[1..=self.last].partition_point(|&s| s <= c)
+            self.segments[1..=self.last].partition_point(|s| s.0 <= c)
         } else {
             let (below, inside) = self.buckets[self.bucket(c)];
             // Samples ≤ c, minus one; `hi` itself lies in the last interval.

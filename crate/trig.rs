@@ -6,10 +6,11 @@
 //! headings), so one ulp grows into a visibly different path and the "same
 //! scenario, same trajectory natively and in the browser" promise (DESIGN
 //! §8, "everything seeded and deterministic") breaks. These versions use only
-//! IEEE-exact operations (+, −, ×, ÷, `round`) in f64, so they are
-//! bit-identical on every target, and accurate to well under 1e-6. They are
+//! IEEE-exact operations (+, −, ×, ÷, `round`; `sin_cos` in f64,
+//! `atan2` in f32, no fused multiply-adds), so they are bit-identical on
+//! every target, and accurate to well under 1e-6. They are
 //! also no slower than libm's: `atan2` here is about 1.5× faster than
-//! glibc's `atan2f` (`examples/trig_speed.rs`).
+//! glibc's `atan2f` (`cargo bench --bench core -- atan2`).
 
 use core::f64::consts::{FRAC_2_PI, FRAC_PI_2};
 
@@ -93,17 +94,22 @@ pub fn atan2(y: f32, x: f32) -> f32 {
     let p = (C[0] + C[1] * u) + u2 * (C[2] + C[3] * u);
     let q = (C[4] + C[5] * u) + u2 * (C[6] + C[7] * u);
     let a = t * (p + u4 * q);
-    let a = if steep { FRAC_PI_2_F32 - a } else { a };
-    let a = if x < 0.0 { PI_F32 - a } else { a };
+    let a = if steep {
+        core::f32::consts::FRAC_PI_2 - a
+    } else {
+        a
+    };
+    let a = if x < 0.0 {
+        core::f32::consts::PI - a
+    } else {
+        a
+    };
     if y < 0.0 {
         -a
     } else {
         a
     }
 }
-
-const FRAC_PI_2_F32: f32 = core::f32::consts::FRAC_PI_2;
-const PI_F32: f32 = core::f32::consts::PI;
 
 #[cfg(test)]
 mod tests {

@@ -295,6 +295,34 @@ fn funnel_settings_round_trip_and_change_the_bound() {
     assert!(lab.state().iter().all(|x| x.is_finite()));
 }
 
+/// A value of the wrong type names its field, for every config (serde's
+/// own message carries no path).
+#[wasm_bindgen_test]
+fn mistyped_values_name_their_field() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let p = lab.params().map_err(message).unwrap();
+    js_sys::Reflect::set(&p, &"vMax".into(), &"fast".into()).unwrap();
+    let m = message(lab.set_params(p).unwrap_err());
+    assert!(
+        m.starts_with("vehicle parameters, field `vMax`") && m.contains("invalid type"),
+        "{m}"
+    );
+    let a = agent(0.0, 0.0, 0.0, &[goal(4.0, 0.0, 0.0)]);
+    js_sys::Reflect::set(&a, &"theta".into(), &JsValue::TRUE).unwrap();
+    let m = message(lab.add_agent(a).unwrap_err());
+    assert!(m.starts_with("agent, field `theta`"), "{m}");
+    // A mistyped required field and a bad optional one.
+    let a = agent(0.0, 0.0, 0.0, &[]);
+    js_sys::Reflect::set(&a, &"goals".into(), &"none".into()).unwrap();
+    let m = message(lab.add_agent(a).unwrap_err());
+    assert!(m.starts_with("agent, field `goals`"), "{m}");
+    let a = agent(0.0, 0.0, 0.0, &[goal(4.0, 0.0, 0.0)]);
+    js_sys::Reflect::set(&a, &"omega".into(), &"spin".into()).unwrap();
+    let m = message(lab.add_agent(a).unwrap_err());
+    assert!(m.starts_with("agent, field `omega`"), "{m}");
+    assert_eq!(lab.count(), 0);
+}
+
 /// serde-wasm-bindgen never sees a key a struct does not declare; the
 /// boundary checks the keys itself, so a misspelt one is an error naming it
 /// (at any depth) instead of a silently used default.

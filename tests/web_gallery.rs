@@ -80,6 +80,11 @@ fn bad_crowd_input_is_a_js_error_with_a_message() {
         .expect("negative radius rejected");
     assert!(message(e).contains("radius"));
 
+    let cfg = js(&crowd_preset(10));
+    js_sys::Reflect::set(&cfg, &"boids".into(), &"ten".into()).unwrap();
+    let m = message(CrowdLab::new(cfg).err().expect("a string boid count"));
+    assert!(m.starts_with("crowd configuration, field `boids`"), "{m}");
+
     let e = CrowdLab::new(JsValue::from_str("not a config"))
         .err()
         .unwrap();
