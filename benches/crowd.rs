@@ -19,9 +19,9 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use steering::boid_seek::Seek;
+use steering::crowd::boid_seek::Seek;
+use steering::crowd::config::{CrowdConfig, PaperTest};
 use steering::crowd::Crowd;
-use steering::crowd_config::{CrowdConfig, PaperTest};
 
 #[cfg(target_os = "linux")]
 mod cpu_clock {

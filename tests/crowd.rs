@@ -4,14 +4,14 @@
 
 use glam::Vec2;
 use proptest::prelude::*;
-use steering::boid_seek::Seek;
+use steering::crowd::boid_seek::Seek;
+use steering::crowd::config::{seek_tag, CrowdConfig, PaperTest};
+use steering::crowd::error::CrowdError;
+use steering::crowd::path::Path;
+use steering::crowd::path_follow::PathFollow;
+use steering::crowd::separation::{separate, NeighbourGrid};
 use steering::crowd::Crowd;
-use steering::crowd_config::{seek_tag, CrowdConfig, PaperTest};
-use steering::crowd_error::CrowdError;
-use steering::path::Path;
-use steering::path_follow::PathFollow;
 use steering::rng::Rng;
-use steering::separation::{separate, NeighbourGrid};
 
 fn open_l() -> Path {
     Path::new(
@@ -477,7 +477,7 @@ proptest! {
     }
 }
 
-fn short_run(test: PaperTest, seek: Seek) -> steering::crowd_metrics::CrowdMetrics {
+fn short_run(test: PaperTest, seek: Seek) -> steering::crowd::metrics::CrowdMetrics {
     let mut cfg = CrowdConfig::paper(test, seek);
     cfg.warmup_steps = 600;
     cfg.measure_steps = 2100;

@@ -8,9 +8,9 @@ use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
 use std::sync::atomic::{AtomicUsize, Ordering};
 
-use steering::boid_seek::Seek;
+use steering::crowd::boid_seek::Seek;
+use steering::crowd::config::{CrowdConfig, PaperTest};
 use steering::crowd::Crowd;
-use steering::crowd_config::{CrowdConfig, PaperTest};
 
 struct Counting;
 

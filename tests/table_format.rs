@@ -3,8 +3,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
+use steering::table::generate::TableSpec;
 use steering::table::{crc32, EtaTable, TableError, FORMAT_VERSION, HEADER_LEN};
-use steering::table_gen::TableSpec;
 use steering::vehicle::VehicleParams;
 
 fn committed() -> Vec<u8> {

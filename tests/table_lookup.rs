@@ -5,7 +5,7 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
-use steering::grid::Axis;
+use steering::table::grid::Axis;
 use steering::table::EtaTable;
 
 fn committed() -> &'static EtaTable {

@@ -3,7 +3,7 @@
 //! agents step, and bulk state comes back as typed arrays.
 #![cfg(target_arch = "wasm32")]
 
-use steering::bindings::{self, Lab};
+use steering::bindings::lab::{self as bindings, Lab};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 

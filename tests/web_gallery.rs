@@ -6,9 +6,9 @@
 //! `tests/wander_determinism.rs`.
 #![cfg(target_arch = "wasm32")]
 
-use steering::bindings_crowd::CrowdLab;
-use steering::bindings_wander::WanderLab;
-use steering::crowd_config::CrowdConfig;
+use steering::bindings::crowd::CrowdLab;
+use steering::bindings::wander::WanderLab;
+use steering::crowd::config::CrowdConfig;
 use steering::wander::WanderPreset;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;

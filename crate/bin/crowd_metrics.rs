@@ -11,9 +11,9 @@
 use std::path::PathBuf;
 use std::time::Instant;
 
-use steering::boid_seek::Seek;
+use steering::crowd::boid_seek::Seek;
+use steering::crowd::config::{seek_tag, CrowdConfig, PaperTest};
 use steering::crowd::Crowd;
-use steering::crowd_config::{seek_tag, CrowdConfig, PaperTest};
 
 fn fmt(v: Option<f32>, digits: usize) -> String {
     v.map_or_else(|| "–".to_owned(), |x| format!("{x:.digits$}"))

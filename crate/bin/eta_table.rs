@@ -11,7 +11,7 @@
 use std::process::ExitCode;
 use std::time::Instant;
 
-use steering::table_gen::TableSpec;
+use steering::table::generate::TableSpec;
 use steering::vehicle::VehicleParams;
 
 /// `wasm-pack test` builds every binary for wasm32, where the threaded
@@ -23,7 +23,7 @@ fn main() {}
 fn main() -> ExitCode {
     let mut out = String::from("tables/eta.bin");
     let mut threads = std::thread::available_parallelism().map_or(2, |n| n.get());
-    let mut counts = steering::table_gen::DEFAULT_COUNTS;
+    let mut counts = steering::table::generate::DEFAULT_COUNTS;
     let mut args = std::env::args().skip(1);
     while let Some(a) = args.next() {
         match a.as_str() {

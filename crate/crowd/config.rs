@@ -27,9 +27,9 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::boid_seek::Seek;
-use crate::crowd_error::{check_range, CrowdError};
-use crate::path::Path;
+use crate::crowd::boid_seek::Seek;
+use crate::crowd::error::{check_range, CrowdError};
+use crate::crowd::path::Path;
 
 /// Most boids a crowd accepts (keeps buffers within a browser's memory).
 pub const MAX_BOIDS: usize = 1_000_000;

@@ -10,7 +10,7 @@
 
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{from_js, js_err, to_js};
+use crate::bindings::boundary::{from_js, js_err, to_js};
 
 use crate::wander::{WanderConfig, WanderPreset, Wanderer};
 

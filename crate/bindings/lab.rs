@@ -14,7 +14,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{from_js, from_js_in, js_err, to_js};
+use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;

@@ -11,7 +11,7 @@
 
 use glam::Vec2;
 
-use crate::path::{NormalPoint, Path};
+use crate::crowd::path::{NormalPoint, Path};
 
 /// What path following decided for one boid this step.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -27,14 +27,14 @@
 
 use glam::Vec2;
 
-use crate::boid_seek::Seek;
-use crate::crowd_config::{CrowdConfig, PathConfig, MAX_BOIDS};
-use crate::crowd_error::{check_range, CrowdError};
-use crate::crowd_metrics::{CrowdMetrics, MetricsAccumulator};
-use crate::path::Path;
-use crate::path_follow::PathFollow;
+use crate::crowd::boid_seek::Seek;
+use crate::crowd::config::{CrowdConfig, PathConfig, MAX_BOIDS};
+use crate::crowd::error::{check_range, CrowdError};
+use crate::crowd::metrics::{CrowdMetrics, MetricsAccumulator};
+use crate::crowd::path::Path;
+use crate::crowd::path_follow::PathFollow;
+use crate::crowd::separation::{count_overlaps, separate, NeighbourGrid};
 use crate::rng::Rng;
-use crate::separation::{count_overlaps, separate, NeighbourGrid};
 
 /// Most points kept for the highlighted lap trace; longer laps are
 /// decimated (every other point dropped, sampling stride doubled).
@@ -459,7 +459,7 @@ impl Crowd {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::crowd_config::PaperTest;
+    use crate::crowd::config::PaperTest;
 
     /// Small and proptest-free, so it can also run under wasm-bindgen-test.
     #[test]

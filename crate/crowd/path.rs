@@ -30,7 +30,7 @@
 
 use glam::Vec2;
 
-use crate::crowd_error::{check_range, CrowdError};
+use crate::crowd::error::{check_range, CrowdError};
 
 /// Largest accepted |coordinate|: keeps f32 arc lengths meaningful.
 pub const MAX_COORDINATE: f32 = 1.0e7;

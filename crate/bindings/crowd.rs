@@ -2,7 +2,7 @@
 //! `CrowdLab` class the crowd page drives.
 //!
 //! Same rules as [`crate::bindings`]: conversion only, every value from
-//! JavaScript is checked by the core (a [`crate::crowd_error::CrowdError`]
+//! JavaScript is checked by the core (a [`crate::crowd::error::CrowdError`]
 //! becomes a `JsError` with its message, never a panic), configuration
 //! objects carry real TypeScript types, bulk per-boid data crosses as
 //! `Float32Array` (one copy per call). Units: world units and steps (one
@@ -10,23 +10,23 @@
 
 use wasm_bindgen::prelude::*;
 
-use crate::boundary::{from_js, js_err, to_js};
+use crate::bindings::boundary::{from_js, js_err, to_js};
 
-use crate::boid_seek::Seek;
+use crate::crowd::boid_seek::Seek;
+use crate::crowd::config::CrowdConfig;
 use crate::crowd::Crowd;
-use crate::crowd_config::CrowdConfig;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_CROWD_TYPES: &'static str = r#"
-/** A seek strategy (crate::boid_seek::Seek): Reynolds, or Parker with the share of the way to the target per step, in (0, 1]. */
+/** A seek strategy (crate::crowd::boid_seek::Seek): Reynolds, or Parker with the share of the way to the target per step, in (0, 1]. */
 export type CrowdSeek = { kind: "reynolds" } | { kind: "parker"; fraction: number };
-/** The pathway (crate::crowd_config::PathConfig): polyline points [x, y] in travel order, radius (half-width). World units. */
+/** The pathway (crate::crowd::config::PathConfig): polyline points [x, y] in travel order, radius (half-width). World units. */
 export interface CrowdPathConfig {
   points: [number, number][];
   radius: number;
   closed: boolean;
 }
-/** A crowd run (crate::crowd_config::CrowdConfig). Lengths in world units, time in steps. */
+/** A crowd run (crate::crowd::config::CrowdConfig). Lengths in world units, time in steps. */
 export interface CrowdConfig {
   name?: string;
   seed: number;
@@ -44,7 +44,7 @@ export interface CrowdConfig {
   warmup_steps: number;
   measure_steps: number;
 }
-/** Measures since the last reset (crate::crowd_metrics::CrowdMetrics); null when undefined. */
+/** Measures since the last reset (crate::crowd::metrics::CrowdMetrics); null when undefined. */
 export interface CrowdMetrics {
   steps: number;
   laps: number;

@@ -18,7 +18,7 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::crowd_error::{check_range, CrowdError};
+use crate::crowd::error::{check_range, CrowdError};
 
 /// A seek strategy (paper 003, "Seek"). JSON: `{"kind": "reynolds"}` or
 /// `{"kind": "parker", "fraction": 0.1}`; any other field is rejected.

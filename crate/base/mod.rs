@@ -1,0 +1,17 @@
+//! The shared base: what every paper's code builds on, and nothing
+//! paper-specific. Each is written once so that two controllers never
+//! disagree on an angle, a rounding or a random draw.
+//!
+//! | module | paper | what |
+//! |---|---|---|
+//! | [`angle`] | — | one definition of angle wrapping and differences |
+//! | [`trig`] | — | bit-reproducible `sin_cos` / `atan2`: the same trajectory natively and in wasm |
+//! | [`rng`] | — | seeded PCG32: the same sequence natively and in wasm |
+//! | [`metrics`] | DESIGN §9 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
+//! | [`dubins`] | 000 §2 | Dubins shortest paths, the lower bound for an oriented reach |
+
+pub mod angle;
+pub mod dubins;
+pub mod metrics;
+pub mod rng;
+pub mod trig;

@@ -1,0 +1,27 @@
+//! Crowded path following (paper 003, "Crowded path following"; DESIGN §7):
+//! boids follow a polyline path with Reynolds' or Parker's seek, with or
+//! without separation, from one boid to hundreds of thousands.
+//!
+//! | module | paper | what |
+//! |---|---|---|
+//! | [`path`] | "Path following – improved path" | polyline path with a radius; the normal-point rule |
+//! | [`path_follow`] | "Path following" | predict ahead, find the normal point, target ahead on the path |
+//! | [`boid_seek`] | "Seek" | Reynolds and Parker seeks as interchangeable strategies |
+//! | [`separation`] | "Separation" | neighbour grid (not O(n²)), separation, overlap counts |
+//! | [`world`] | all | [`Crowd`]: the boid world stepped one paper frame at a time |
+//! | [`config`] | "Testing" | [`CrowdConfig`] and the paper's Tests I–IV presets |
+//! | [`metrics`] | "Results" | lap time, path deviation, overlaps: numbers on what the figures show |
+//! | [`error`] | — | [`CrowdError`] |
+
+pub mod boid_seek;
+pub mod config;
+pub mod error;
+pub mod metrics;
+pub mod path;
+pub mod path_follow;
+pub mod separation;
+pub mod world;
+
+pub use config::CrowdConfig;
+pub use error::CrowdError;
+pub use world::*;

@@ -1,0 +1,26 @@
+//! Funnelling control towards oriented targets (paper 000) and relaxed
+//! funnelling towards oriented region goals (paper 001): the vehicle, the
+//! seek controller that defines η, the η table, the two controllers, the
+//! multi-agent world, scenario files and the measurement studies.
+//!
+//! | module | paper | what |
+//! |---|---|---|
+//! | [`vehicle`] | 000 §3 | forward-only unicycle, every limit enforced exactly; `VehicleParams` |
+//! | [`seek`] | 000 §3 | PD seek; the static reach simulation that *defines* η; the committed step |
+//! | [`table`] | 000 §3, 001 Fig. 3 | the η table: file format, lookup, generator |
+//! | [`funnel`] | 000 §4–5, Figs. 4–5 | the funnelling update, the four modes, μ bounds, halting |
+//! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r; controller choice |
+//! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
+//! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation |
+//! | [`study`] | 000 §5 | seeded reach study behind the acceptance figures |
+//! | [`region_study`] | 001 §5 | seeded region-goal study: standard vs relaxed |
+
+pub mod funnel;
+pub mod region_study;
+pub mod relaxed;
+pub mod scenario;
+pub mod seek;
+pub mod study;
+pub mod table;
+pub mod vehicle;
+pub mod world;
