@@ -2,7 +2,7 @@
 """Writes the paper-figure presets in this folder (deterministic: fixed seeds).
 
 Run from the repository root: python3 scenarios/make_presets.py
-Schema: crate/scenario.rs. Angles in degrees, distances in metres.
+Schema: crate/funnelling/scenario.rs. Angles in degrees, distances in metres.
 """
 import json, math, random, os
 

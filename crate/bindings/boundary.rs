@@ -1,5 +1,5 @@
 //! Conversions at the JavaScript boundary shared by the three binding
-//! modules (`bindings`, `bindings_crowd`, `bindings_wander`): JavaScript
+//! modules (`lab`, `crowd`, `wander`): JavaScript
 //! values in and out through serde-wasm-bindgen, and errors as `JsError`s
 //! that name what was refused.
 //!
