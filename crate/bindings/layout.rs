@@ -107,7 +107,10 @@ const _: () = {
     ];
     let mut k = 0;
     while k < modes.len() {
-        assert!(mode(modes[k]) as u8 == modes[k] as u8, "Mode numbers differ");
+        assert!(
+            mode(modes[k]) as u8 == modes[k] as u8,
+            "Mode numbers differ"
+        );
         k += 1;
     }
     let mut k = 0;
