@@ -410,3 +410,71 @@ fn invalid_funnel_settings_are_errors_naming_the_field() {
         "turningRadius"
     );
 }
+
+/// The layout the page reads by name (`StateField`, `Mode`) is where the
+/// core writes each quantity: pose and goal as given, internals as
+/// `Lab::internals` computes them for the same state.
+#[wasm_bindgen_test]
+fn the_exported_layout_matches_the_state_buffer() {
+    use steering::bindings::layout::{Mode, StateField as F};
+    let stride = Lab::state_stride() as usize;
+    assert_eq!(F::GoalEpsTol as usize + 1, stride);
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    lab.add_agent(agent(-4.0, 0.0, 0.3, &[goal(4.0, 2.0, 1.5)]))
+        .map_err(message)
+        .unwrap();
+    let s = lab.state();
+    let at = |s: &[f32], f: F| f64::from(s[f as usize]);
+    for (f, want) in [
+        (F::X, -4.0),
+        (F::Y, 0.0),
+        (F::Theta, 0.3),
+        (F::V, 0.0),
+        (F::Omega, 0.0),
+        (F::GoalX, 4.0),
+        (F::GoalY, 2.0),
+        (F::GoalBeta, 1.5),
+        (F::GoalDTol, 0.3),
+        (F::GoalEpsTol, 0.17),
+    ] {
+        assert!(
+            (at(&s, f) - want).abs() < 1e-6,
+            "{f:?}: {} != {want}",
+            at(&s, f)
+        );
+    }
+    // One update from this state: the record holds what internals() computes for it.
+    let before = lab.internals(0).map_err(message).unwrap();
+    lab.step(1);
+    let s = lab.state();
+    let mode = get(&before, "mode").as_f64().unwrap();
+    assert_eq!(at(&s, F::Mode), mode);
+    assert!(
+        mode == f64::from(Mode::PositionOnly as u8) || mode == f64::from(Mode::Funnelling as u8),
+        "far target: {mode}"
+    );
+    assert!(
+        (at(&s, F::D) - 68f64.sqrt()).abs() < 1e-4,
+        "D {}",
+        at(&s, F::D)
+    );
+    for (f, key) in [
+        (F::D, "d"),
+        (F::Alpha, "alpha"),
+        (F::Eta, "eta"),
+        (F::DeltaEta, "deltaEta"),
+        (F::Mu, "mu"),
+        (F::Gamma, "gamma"),
+        (F::VDt, "vDt"),
+    ] {
+        let want = get(&before, key).as_f64().unwrap();
+        assert!(
+            (at(&s, f) - want).abs() < 1e-5,
+            "{f:?}: {} != {key} {want}",
+            at(&s, f)
+        );
+    }
+    let reachable = get(&before, "reachable").as_bool().unwrap();
+    assert_eq!(at(&s, F::Reachable), if reachable { 1.0 } else { 0.0 });
+    assert!(at(&s, F::V) > 0.0, "accelerating: v = {}", at(&s, F::V));
+}

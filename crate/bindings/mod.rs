@@ -8,8 +8,10 @@
 //! | [`crowd`] | `crowd.html` | `CrowdLab`: crowded path following (paper 003) |
 //! | [`wander`] | `wander.html` | `WanderLab`: the random steering toolkit (paper 004) |
 //! | [`boundary`] | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
+//! | [`layout`] | all | `Mode`, `StateField`: the core's numbers by name, checked at compile time |
 
 mod boundary;
 pub mod crowd;
 pub mod lab;
+pub mod layout;
 pub mod wander;

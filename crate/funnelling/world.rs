@@ -310,38 +310,107 @@ impl World {
         self.time += p.dt;
     }
 
-    /// Writes the per-agent state into `out` with stride [`STATE_STRIDE`]:
-    /// x, y, θ, v, ω, mode, D, α, η, Δη, μ, γ, reachable, v_dt, goal x,
-    /// goal y, goal β, goal D_tol, goal ε_tol. `out` is resized if needed.
+    /// Writes the per-agent state into `out` with stride [`STATE_STRIDE`],
+    /// each float at its [`StateField`] offset (the page reads the record by
+    /// those names, never by number). `out` is resized if needed.
     pub fn write_state(&self, out: &mut Vec<f32>) {
+        use StateField as F;
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
         for (a, o) in self.agents.iter().zip(out.chunks_exact_mut(STATE_STRIDE)) {
             let i = &a.internals;
             let g = &a.goal_now;
-            o.copy_from_slice(&[
-                a.state.pos.x,
-                a.state.pos.y,
-                a.state.theta,
-                a.state.v,
-                a.state.omega,
-                f32::from(i.mode as u8),
-                i.d,
-                i.alpha,
-                i.eta,
-                i.delta_eta,
-                i.mu,
-                i.gamma,
-                f32::from(u8::from(i.reachable)),
-                i.v_dt,
-                g.pos.x,
-                g.pos.y,
-                g.beta,
-                g.d_tol,
-                g.eps_tol,
-            ]);
+            let mut put = |f: StateField, v: f32| o[f as usize] = v;
+            put(F::X, a.state.pos.x);
+            put(F::Y, a.state.pos.y);
+            put(F::Theta, a.state.theta);
+            put(F::V, a.state.v);
+            put(F::Omega, a.state.omega);
+            put(F::Mode, f32::from(i.mode as u8));
+            put(F::D, i.d);
+            put(F::Alpha, i.alpha);
+            put(F::Eta, i.eta);
+            put(F::DeltaEta, i.delta_eta);
+            put(F::Mu, i.mu);
+            put(F::Gamma, i.gamma);
+            put(F::Reachable, f32::from(u8::from(i.reachable)));
+            put(F::VDt, i.v_dt);
+            put(F::GoalX, g.pos.x);
+            put(F::GoalY, g.pos.y);
+            put(F::GoalBeta, g.beta);
+            put(F::GoalDTol, g.d_tol);
+            put(F::GoalEpsTol, g.eps_tol);
         }
     }
 }
 
-/// Floats per agent in [`World::write_state`].
-pub const STATE_STRIDE: usize = 19;
+/// One float of an agent's record in [`World::write_state`]; the
+/// discriminant is its offset. Defined once here so that the writer, the
+/// bindings' export (`StateField` in JavaScript) and the page agree by name.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+#[repr(u8)]
+#[allow(missing_docs)] // the names are the quantities of `Internals` and `Goal`
+pub enum StateField {
+    X = 0,
+    Y,
+    Theta,
+    V,
+    Omega,
+    /// [`Mode`] as its number.
+    Mode,
+    D,
+    Alpha,
+    Eta,
+    DeltaEta,
+    Mu,
+    Gamma,
+    /// 1 reachable at v_dt, else 0.
+    Reachable,
+    VDt,
+    GoalX,
+    GoalY,
+    GoalBeta,
+    GoalDTol,
+    GoalEpsTol,
+}
+
+impl StateField {
+    /// Every field in offset order: `ALL[k] as usize == k` (checked below).
+    pub const ALL: [StateField; STATE_STRIDE] = {
+        use StateField as F;
+        [
+            F::X,
+            F::Y,
+            F::Theta,
+            F::V,
+            F::Omega,
+            F::Mode,
+            F::D,
+            F::Alpha,
+            F::Eta,
+            F::DeltaEta,
+            F::Mu,
+            F::Gamma,
+            F::Reachable,
+            F::VDt,
+            F::GoalX,
+            F::GoalY,
+            F::GoalBeta,
+            F::GoalDTol,
+            F::GoalEpsTol,
+        ]
+    };
+}
+
+/// Floats per agent in [`World::write_state`]: one past the last field.
+pub const STATE_STRIDE: usize = StateField::GoalEpsTol as usize + 1;
+
+const _: () = {
+    let mut k = 0;
+    while k < STATE_STRIDE {
+        assert!(
+            StateField::ALL[k] as usize == k,
+            "StateField::ALL is in offset order"
+        );
+        k += 1;
+    }
+};

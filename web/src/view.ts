@@ -1,19 +1,33 @@
-// World ↔ screen transform. World: metres, y up, angles CCW from +x.
-// Screen: CSS pixels, y down. One View per canvas.
+// World ↔ screen transform. World: y up, angles CCW from +x. Screen: CSS
+// pixels, y down. One View per canvas; its zoom limits suit its units.
 
 export interface Vec {
   x: number;
   y: number;
 }
 
+/** How far a view may zoom, CSS pixels per world unit. */
+export interface ScaleLimits {
+  min: number;
+  max: number;
+}
+
+/** The funnelling page's worlds: metres, a few to a few hundred across. */
+export const METRES: ScaleLimits = { min: 2, max: 2000 };
+/** The gallery pages' worlds, measured in paper pixels: a 640 × 400
+ *  pathway, or a wander trace thousands of units across in a 200-pixel tile. */
+export const PAPER_UNITS: ScaleLimits = { min: 1e-4, max: 1e3 };
+
 export class View {
   /** World point at the centre of the canvas. */
   cx = 0;
   cy = 0;
-  /** CSS pixels per metre. */
+  /** CSS pixels per world unit. */
   scale = 40;
   width = 1;
   height = 1;
+
+  constructor(readonly limits: ScaleLimits = METRES) {}
 
   resize(width: number, height: number): void {
     this.width = Math.max(1, width);
@@ -34,15 +48,14 @@ export class View {
     };
   }
 
-  /** A world angle (CCW, y up) as a screen angle for canvas arcs (CW, y down). */
-  static screenAngle(a: number): number {
-    return -a;
+  private clamp(scale: number): number {
+    return Math.min(this.limits.max, Math.max(this.limits.min, scale));
   }
 
   /** Zooms by `factor` keeping the world point under (sx, sy) fixed. */
   zoomAt(sx: number, sy: number, factor: number): void {
     const before = this.toWorld(sx, sy);
-    this.scale = Math.min(2000, Math.max(2, this.scale * factor));
+    this.scale = this.clamp(this.scale * factor);
     const after = this.toWorld(sx, sy);
     this.cx += before.x - after.x;
     this.cy += before.y - after.y;
@@ -59,8 +72,8 @@ export class View {
     const h = Math.max(1e-3, y1 - y0);
     this.cx = (x0 + x1) / 2;
     this.cy = (y0 + y1) / 2;
-    const sx = (this.width - 2 * margin) / w;
-    const sy = (this.height - 2 * margin) / h;
-    this.scale = Math.min(2000, Math.max(2, Math.min(sx, sy)));
+    const sx = Math.max(1, this.width - 2 * margin) / w;
+    const sy = Math.max(1, this.height - 2 * margin) / h;
+    this.scale = this.clamp(Math.min(sx, sy));
   }
 }

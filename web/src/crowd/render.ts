@@ -4,6 +4,7 @@
 // both cases one path and one fill for all boids (10,000 boids draw in ~1 ms).
 
 import { beginFrame, type Surface } from "../canvas";
+import { abgr, PixelSprites, triangle } from "../sprites";
 import type { View } from "../view";
 
 export const COLOURS = {
@@ -18,40 +19,16 @@ export const COLOURS = {
   selected: "#ffb000",
 } as const;
 
-/** Above this many boids they are drawn as pixel sprites (one putImageData
- *  on an offscreen canvas, one drawImage): filling paths costs ~20 µs per
- *  boid in software-rasterised Chromium, pixels well under 1 µs. */
+/** Above this many boids they are drawn as pixel sprites (../sprites). */
 export const TRIANGLE_LIMIT = 400;
 
-interface Sprite {
-  canvas: HTMLCanvasElement;
-  ctx: CanvasRenderingContext2D;
-  img: ImageData;
-  px: Uint32Array;
-}
-let sprite: Sprite | null = null;
-
-/** ABGR (little-endian RGBA bytes) of a #rrggbb colour. */
-function abgr(hex: string): number {
-  const n = parseInt(hex.slice(1), 16);
-  return ((0xff << 24) | ((n & 0xff) << 16) | (n & 0xff00) | ((n >> 16) & 0xff)) >>> 0;
-}
+const sprites = new PixelSprites();
 
 /** Each boid a (2k+1)² block of backing-store pixels plus a two-pixel nose along its velocity. */
 function drawSprites(s: Surface, view: View, pos: Float32Array, vel: Float32Array): void {
+  if (!sprites.begin(s)) return;
   const W = s.canvas.width;
   const H = s.canvas.height;
-  if (!sprite || sprite.canvas.width !== W || sprite.canvas.height !== H) {
-    const canvas = document.createElement("canvas");
-    canvas.width = W;
-    canvas.height = H;
-    const ctx = canvas.getContext("2d");
-    if (!ctx) return;
-    const img = ctx.createImageData(W, H);
-    sprite = { canvas, ctx, img, px: new Uint32Array(img.data.buffer) };
-  }
-  const px = sprite.px;
-  px.fill(0);
   const c = abgr(COLOURS.boid);
   const k = s.dpr;
   const sc = view.scale * k;
@@ -65,22 +42,13 @@ function drawSprites(s: Surface, view: View, pos: Float32Array, vel: Float32Arra
     const sx = Math.round(ox + (pos[2 * i] ?? 0) * sc);
     const sy = Math.round(oy - (pos[2 * i + 1] ?? 0) * sc);
     if (sx < m || sy < m || sx >= W - m || sy >= H - m) continue;
-    for (let dy = -r; dy <= r; dy++) {
-      const row = (sy + dy) * W + sx;
-      for (let dx = -r; dx <= r; dx++) px[row + dx] = c;
-    }
     const vx = vel[2 * i] ?? 0;
     const vy = vel[2 * i + 1] ?? 0;
     const len = Math.hypot(vx, vy);
-    if (len > 0) {
-      const nx = Math.round(sx + (vx / len) * nose);
-      const ny = Math.round(sy - (vy / len) * nose);
-      px[ny * W + nx] = c;
-      px[Math.round((sy + ny) / 2) * W + Math.round((sx + nx) / 2)] = c;
-    }
+    // A boid at rest has no nose.
+    sprites.stamp(sx, sy, r, c, len > 0 ? vx / len : 0, len > 0 ? -(vy / len) : 0, nose);
   }
-  sprite.ctx.putImageData(sprite.img, 0, 0);
-  s.ctx.drawImage(sprite.canvas, 0, 0, s.width, s.height);
+  sprites.present(s);
 }
 
 export interface CrowdScene {
@@ -142,12 +110,7 @@ export function drawCrowd(s: Surface, view: View, sc: CrowdScene): void {
       const vy = vel[2 * i + 1] ?? 0;
       const len = Math.hypot(vx, vy) || 1;
       // Screen y is down: flip the world direction's y.
-      const ux = vx / len;
-      const uy = -vy / len;
-      ctx.moveTo(p.x + ux * r, p.y + uy * r);
-      ctx.lineTo(p.x - ux * r * 0.7 - uy * r * 0.55, p.y - uy * r * 0.7 + ux * r * 0.55);
-      ctx.lineTo(p.x - ux * r * 0.7 + uy * r * 0.55, p.y - uy * r * 0.7 - ux * r * 0.55);
-      ctx.closePath();
+      triangle(ctx, p.x, p.y, vx / len, -vy / len, r, 0.7);
     }
     ctx.fillStyle = COLOURS.boid;
     ctx.fill();

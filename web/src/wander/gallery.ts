@@ -3,10 +3,10 @@
 // speed, hold scale). A knob edits every variant's JSON configuration and
 // rebuilds its WanderLab; a re-run replays the traces growing over ~45 frames.
 
-import { setupCanvas, type Surface } from "../canvas";
+import { beginFrame, setupCanvas, type Surface } from "../canvas";
 import { button, slider } from "../controls";
 import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../wasm";
-import { WideView } from "../wideview";
+import { PAPER_UNITS, View } from "../view";
 import { drawTile } from "./render";
 
 /** Frames a re-run takes to draw the traces. */
@@ -52,7 +52,7 @@ interface Tile {
   variant: WanderVariant;
   canvas: HTMLCanvasElement;
   surface: Surface | null;
-  view: WideView;
+  view: View;
   lab: WanderLab | null;
   error: HTMLElement;
   json: HTMLTextAreaElement;
@@ -152,7 +152,7 @@ export class GalleryPanel {
     details.append(summary, json, apply);
     el.append(canvas, cap, error, details);
     const tile: Tile = {
-      base: variant.config, variant, canvas, surface: null, view: new WideView(), lab: null, error, json, pending: 0, drawn: false,
+      base: variant.config, variant, canvas, surface: null, view: new View(PAPER_UNITS), lab: null, error, json, pending: 0, drawn: false,
     };
     apply.addEventListener("click", () => {
       try {
@@ -227,10 +227,7 @@ export class GalleryPanel {
     const s = t.surface;
     if (!s) return;
     if (!t.lab) {
-      const ctx = s.ctx;
-      ctx.setTransform(s.dpr, 0, 0, s.dpr, 0, 0);
-      ctx.fillStyle = "#fbeaea";
-      ctx.fillRect(0, 0, s.width, s.height);
+      beginFrame(s, "#fbeaea");
       return;
     }
     drawTile(s, t.view, t.lab.trace(), t.lab.pathPoints());

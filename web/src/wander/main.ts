@@ -3,6 +3,7 @@
 // (loaded at runtime as separate chunks, like the funnelling page's presets).
 
 import { button } from "../controls";
+import { $, showMessage, showVersion } from "../page";
 import { errorText, loadCore, WanderLab } from "../wasm";
 import { GalleryPanel, type PanelStatus } from "./gallery";
 
@@ -25,19 +26,6 @@ declare global {
   interface Window {
     __wander?: WanderHook;
   }
-}
-
-const $ = (id: string): HTMLElement => {
-  const e = document.getElementById(id);
-  if (!e) throw new Error(`#${id} missing from wander.html`);
-  return e;
-};
-
-const message = $("message");
-function showMessage(text: string, error = false): void {
-  message.hidden = false;
-  message.textContent = text;
-  message.classList.toggle("error", error);
 }
 
 const panels: GalleryPanel[] = [];
@@ -64,10 +52,10 @@ async function start(): Promise<void> {
   const gallery = $("gallery");
   const problems: string[] = [];
   try {
-    $("version").textContent = `core ${await loadCore()}`;
+    showVersion(await loadCore());
   } catch (e) {
     hook.error = errorText(e);
-    showMessage(`could not load the steering core: ${hook.error}`, true);
+    showMessage(`could not load the steering core: ${hook.error}`, "error");
     return;
   }
   const texts = await Promise.all(COMPONENTS.map(async (name) => {
@@ -92,7 +80,7 @@ async function start(): Promise<void> {
   }
   if (problems.length > 0) {
     hook.error = problems.join("\n");
-    showMessage(hook.error, true);
+    showMessage(hook.error, "error");
   }
   button($("transport"), "rerun-all", "Re-run all", "replay every panel from step 0", () => hook.rerun());
   hook.rerun();

@@ -3,7 +3,8 @@
 // start dot, the agent at the end and a scale bar.
 
 import { beginFrame, type Surface } from "../canvas";
-import { WideView } from "../wideview";
+import { triangle } from "../sprites";
+import type { View } from "../view";
 
 const SHADES = 8;
 
@@ -25,7 +26,7 @@ function niceLength(span: number): number {
 }
 
 /** `trace` is flat [x, y, θ, ...]; `path` flat [x, y, ...] (may be empty). */
-export function drawTile(s: Surface, view: WideView, trace: Float32Array, path: Float32Array): void {
+export function drawTile(s: Surface, view: View, trace: Float32Array, path: Float32Array): void {
   const ctx = s.ctx;
   beginFrame(s, "#ffffff");
   const n = Math.floor(trace.length / 3);
@@ -83,14 +84,8 @@ export function drawTile(s: Surface, view: WideView, trace: Float32Array, path: 
     const e = 3 * (n - 1);
     const p = view.toScreen(trace[e] ?? 0, trace[e + 1] ?? 0);
     const th = trace[e + 2] ?? 0;
-    const ux = Math.cos(th);
-    const uy = -Math.sin(th);
-    const r = 6;
     ctx.beginPath();
-    ctx.moveTo(p.x + ux * r, p.y + uy * r);
-    ctx.lineTo(p.x - ux * r * 0.7 - uy * r * 0.55, p.y - uy * r * 0.7 + ux * r * 0.55);
-    ctx.lineTo(p.x - ux * r * 0.7 + uy * r * 0.55, p.y - uy * r * 0.7 - ux * r * 0.55);
-    ctx.closePath();
+    triangle(ctx, p.x, p.y, Math.cos(th), -Math.sin(th), 6, 0.7);
     ctx.fillStyle = "#d62728";
     ctx.fill();
   }

@@ -3,9 +3,10 @@
 // centre, β knob, tolerance circle rim (D_tol) and triangle corner (ε_tol).
 // Empty space pans the view.
 
-import { attachPointer, type Drag } from "./pointer";
+import { panDrag, wheelZoom } from "../panzoom";
+import { attachPointer, type Drag } from "../pointer";
+import type { Vec, View } from "../view";
 import type { LabState, Pose } from "./state";
-import type { Vec, View } from "./view";
 
 const DEG = Math.PI / 180;
 
@@ -124,28 +125,12 @@ export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () =
       const h = handles();
       const kind = h ? pick(p, h) : null;
       if (h && kind) return grab(p, h, kind);
-      let last = p;
-      canvas.style.cursor = "grabbing";
-      return {
-        move: (q) => {
-          view.panBy(q.x - last.x, q.y - last.y);
-          last = q;
-          sink.redraw();
-        },
-        end: () => {
-          canvas.style.cursor = "";
-        },
-      };
+      return panDrag(canvas, view, p, () => sink.redraw());
     },
     (p) => {
       const h = handles();
       canvas.style.cursor = p !== null && h !== null && pick(p, h) !== null ? "grab" : "";
     },
   );
-  canvas.addEventListener("wheel", (e) => {
-    e.preventDefault();
-    const r = canvas.getBoundingClientRect();
-    view.zoomAt(e.clientX - r.left, e.clientY - r.top, Math.exp(-e.deltaY * 0.0015));
-    sink.redraw();
-  }, { passive: false });
+  wheelZoom(canvas, view, () => sink.redraw());
 }

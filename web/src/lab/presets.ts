@@ -1,7 +1,7 @@
 // The paper scenarios that exist as files (scenarios/*.json), bundled as raw
 // JSON text and handed to the core's scenario parser on selection.
 
-const files = import.meta.glob<string>("../../scenarios/*.json", { query: "?raw", import: "default" });
+const files = import.meta.glob<string>("../../../scenarios/*.json", { query: "?raw", import: "default" });
 
 export interface Preset {
   /** File name without .json: the URL's `preset` value. */

@@ -1,18 +1,8 @@
-// Downloads: trajectories as CSV or JSON, the canvas as PNG.
+// Downloads of the recorded trajectories, as CSV or JSON.
 
-import type { Trails } from "./trails";
+import { download } from "../download";
 import { MODE_NAMES } from "./render";
-
-function download(name: string, blob: Blob): void {
-  const url = URL.createObjectURL(blob);
-  const a = document.createElement("a");
-  a.href = url;
-  a.download = name;
-  document.body.append(a);
-  a.click();
-  a.remove();
-  setTimeout(() => URL.revokeObjectURL(url), 1000);
-}
+import type { Trails } from "./trails";
 
 export function trajectoriesCsv(trails: Trails): string {
   const lines = ["agent,t_s,x_m,y_m,theta_rad,v_mps,omega_radps,mode"];
@@ -51,10 +41,4 @@ export function downloadCsv(trails: Trails): void {
 
 export function downloadJson(trails: Trails, meta: Record<string, unknown>): void {
   download("trajectories.json", new Blob([trajectoriesJson(trails, meta)], { type: "application/json" }));
-}
-
-export function downloadPng(canvas: HTMLCanvasElement): void {
-  canvas.toBlob((b) => {
-    if (b) download("steering-lab.png", b);
-  }, "image/png");
 }

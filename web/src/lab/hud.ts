@@ -1,7 +1,8 @@
 // The heads-up display: the focus agent's controller internals (μ and its
 // bound μ_max included) and timing.
 
-import { MODE, MODE_NAMES } from "./render";
+import { Mode } from "../wasm";
+import { MODE_NAMES } from "./render";
 
 export interface HudData {
   mode: number | null;
@@ -37,7 +38,7 @@ export function renderHud(el: HTMLElement, h: HudData): void {
     `η      ${deg(h.eta)}`,
     `Δη     ${deg(h.deltaEta)}`,
     `μ      ${deg(h.mu)}`,
-    `μ_max  ${h.mode === MODE.Funnelling ? deg(h.muMax) : "      —"}`,
+    `μ_max  ${h.mode === Mode.Funnelling ? deg(h.muMax) : "      —"}`,
     `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
     `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,

@@ -2,6 +2,8 @@
 // Bounded memory: at most `maxAgents` agents and `maxSamples` samples each
 // (oldest dropped); larger crowds are drawn without trails.
 
+import { StateField } from "../wasm";
+
 export interface Sample {
   t: number;
   x: number;
@@ -40,7 +42,7 @@ export class Trails {
     return this.bufs.length;
   }
 
-  /** Appends one sample per agent from a packed state array (stride `stride`: x, y, θ, v, ω, mode, …). */
+  /** Appends one sample per agent from `Lab.state()` (`stride` floats per agent). */
   record(t: number, state: Float32Array, stride: number, count: number): void {
     const n = Math.min(count, this.maxAgents);
     while (this.bufs.length < n) {
@@ -56,12 +58,12 @@ export class Trails {
       const o = slot * F;
       const s = i * stride;
       b[o] = t;
-      b[o + 1] = state[s]!;
-      b[o + 2] = state[s + 1]!;
-      b[o + 3] = state[s + 2]!;
-      b[o + 4] = state[s + 3]!;
-      b[o + 5] = state[s + 4]!;
-      b[o + 6] = state[s + 5]!;
+      b[o + 1] = state[s + StateField.X]!;
+      b[o + 2] = state[s + StateField.Y]!;
+      b[o + 3] = state[s + StateField.Theta]!;
+      b[o + 4] = state[s + StateField.V]!;
+      b[o + 5] = state[s + StateField.Omega]!;
+      b[o + 6] = state[s + StateField.Mode]!;
       if (len < this.maxSamples) this.len[i] = len + 1;
       else this.start[i] = (st + 1) % this.maxSamples;
     }

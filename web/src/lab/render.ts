@@ -2,13 +2,14 @@
 // and the overlays (radial direction, η at the target, γ, the nearest η ring,
 // the η field, the relaxed arc 𝒜 and α_r). No state, no simulation.
 
-import type { Surface } from "./canvas";
-import { View } from "./view";
+import type { Surface } from "../canvas";
+import { abgr, PixelSprites, triangle } from "../sprites";
+import type { View } from "../view";
+import { FIELD_STRIDE, Mode, StateField } from "../wasm";
 import type { Trails } from "./trails";
 
-/** Mode numbering shared with the core (funnel::Mode). */
+/** The paper's names of the modes, indexed by the core's `Mode` number. */
 export const MODE_NAMES = ["End_of_Steering", "Orientation_only", "Position_only", "Funnelling"] as const;
-export const MODE = { EndOfSteering: 0, OrientationOnly: 1, PositionOnly: 2, Funnelling: 3 } as const;
 
 /** Paper 000 §6: red circle = seek, blue triangle = orientation only,
  *  red circle + triangle = funnelling; our neutral grey = end of steering. */
@@ -128,9 +129,9 @@ function grid(s: Surface, v: View): void {
 export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw, handlePx: number, handles: boolean): void {
   const c = v.toScreen(t.x, t.y);
   const r = Math.max(2, t.dTol * v.scale);
-  const circle = t.mode === MODE.PositionOnly || t.mode === MODE.Funnelling || t.mode === MODE.EndOfSteering;
-  const triangle = t.mode === MODE.OrientationOnly || t.mode === MODE.Funnelling || t.mode === MODE.EndOfSteering;
-  const colour = t.mode === MODE.EndOfSteering ? COLOURS.end : t.mode === MODE.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
+  const circle = t.mode === Mode.PositionOnly || t.mode === Mode.Funnelling || t.mode === Mode.EndOfSteering;
+  const triangle = t.mode === Mode.OrientationOnly || t.mode === Mode.Funnelling || t.mode === Mode.EndOfSteering;
+  const colour = t.mode === Mode.EndOfSteering ? COLOURS.end : t.mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
   ctx.lineWidth = 2;
   ctx.strokeStyle = colour;
   ctx.fillStyle = colour;
@@ -188,7 +189,7 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
 }
 
 function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: number, lineWidth: number): void {
-  const n = Math.floor(f.samples.length / 4);
+  const n = Math.floor(f.samples.length / FIELD_STRIDE);
   const cos = Math.cos(f.theta);
   const sin = Math.sin(f.theta);
   for (const reach of [1, 0]) {
@@ -196,7 +197,7 @@ function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: 
     ctx.lineWidth = lineWidth;
     ctx.beginPath();
     for (let k = 0; k < n; k++) {
-      const o = k * 4;
+      const o = k * FIELD_STRIDE;
       if ((f.samples[o + 3]! > 0.5 ? 1 : 0) !== reach) continue;
       const d = f.samples[o]!;
       const a = f.samples[o + 1]!;
@@ -216,88 +217,52 @@ function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: 
 }
 
 function modeColour(mode: number): string {
-  return mode === MODE.EndOfSteering ? COLOURS.end : mode === MODE.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
+  return mode === Mode.EndOfSteering ? COLOURS.end : mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
 }
 
-/** Agents above this count are drawn as pixel sprites (one putImageData)
- *  instead of canvas paths: path filling costs ~20 µs per agent in
- *  software-rasterised Chromium, pixels cost well under 1 µs. */
+/** Agents above this count are drawn as pixel sprites (../sprites)
+ *  instead of triangles, and without their targets. */
 export const CROWD_THRESHOLD = 400;
 
-interface Sprite {
-  canvas: HTMLCanvasElement;
-  ctx: CanvasRenderingContext2D;
-  img: ImageData;
-  px: Uint32Array;
-}
-let sprite: Sprite | null = null;
-
-/** ABGR (little-endian RGBA bytes) of a #rrggbb colour. */
-function abgr(hex: string): number {
-  const n = parseInt(hex.slice(1), 16);
-  return (0xff << 24 | (n & 0xff) << 16 | (n & 0xff00) | (n >> 16 & 0xff)) >>> 0;
-}
+const sprites = new PixelSprites();
 
 function drawCrowd(s: Surface, v: View, sc: Scene): void {
+  if (!sprites.begin(s)) return;
   const W = s.canvas.width;
   const H = s.canvas.height;
-  if (!sprite || sprite.canvas.width !== W || sprite.canvas.height !== H) {
-    const canvas = document.createElement("canvas");
-    canvas.width = W;
-    canvas.height = H;
-    const ctx = canvas.getContext("2d");
-    if (!ctx) return;
-    const img = ctx.createImageData(W, H);
-    sprite = { canvas, ctx, img, px: new Uint32Array(img.data.buffer) };
-  }
-  const { px } = sprite;
-  px.fill(0);
   const k = s.dpr;
   const colour = [abgr(COLOURS.end), abgr(COLOURS.orientation), abgr(COLOURS.vehicle), abgr(COLOURS.vehicle)];
   const ox = v.width / 2;
   const oy = v.height / 2;
   const r = Math.max(1, Math.round(k));
   const nose = 3 * k;
+  const { X, Y, Theta } = StateField;
   for (let i = 0; i < sc.count; i++) {
     const o = i * sc.stride;
-    const sx = Math.round(((sc.state[o]! - v.cx) * v.scale + ox) * k);
-    const sy = Math.round((oy - (sc.state[o + 1]! - v.cy) * v.scale) * k);
+    const sx = Math.round(((sc.state[o + X]! - v.cx) * v.scale + ox) * k);
+    const sy = Math.round((oy - (sc.state[o + Y]! - v.cy) * v.scale) * k);
     if (sx < r + 4 * k || sy < r + 4 * k || sx >= W - r - 4 * k || sy >= H - r - 4 * k) continue;
-    const c = colour[sc.state[o + 5]! | 0] ?? colour[3]!;
-    for (let dy = -r; dy <= r; dy++) {
-      const row = (sy + dy) * W;
-      for (let dx = -r; dx <= r; dx++) px[row + sx + dx] = c;
-    }
-    const th = sc.state[o + 2]!;
-    const nx = Math.round(sx + Math.cos(th) * nose);
-    const ny = Math.round(sy - Math.sin(th) * nose);
-    px[ny * W + nx] = c;
-    px[Math.round((sy + ny) / 2) * W + Math.round((sx + nx) / 2)] = c;
+    const c = colour[sc.state[o + StateField.Mode]! | 0] ?? colour[3]!;
+    const th = sc.state[o + Theta]!;
+    sprites.stamp(sx, sy, r, c, Math.cos(th), -Math.sin(th), nose);
   }
-  sprite.ctx.putImageData(sprite.img, 0, 0);
-  s.ctx.drawImage(sprite.canvas, 0, 0, s.width, s.height);
+  sprites.present(s);
 }
 
 function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
   const size = Math.max(5, Math.min(14, 0.45 * v.scale));
-  const many = sc.count > 400;
-  const s = many ? Math.max(3, size * 0.6) : size;
+  const { X, Y, Theta } = StateField;
   // One path per mode colour: cheap enough for 10⁴ agents.
-  for (const mode of [0, 1, 2, 3]) {
-    ctx.fillStyle = mode === MODE.Funnelling || mode === MODE.PositionOnly ? COLOURS.vehicle : modeColour(mode);
+  for (const mode of [Mode.EndOfSteering, Mode.OrientationOnly, Mode.PositionOnly, Mode.Funnelling]) {
+    ctx.fillStyle = mode === Mode.Funnelling || mode === Mode.PositionOnly ? COLOURS.vehicle : modeColour(mode);
     ctx.beginPath();
     for (let i = 0; i < sc.count; i++) {
       const o = i * sc.stride;
-      if (sc.state[o + 5] !== mode) continue;
-      const p = v.toScreen(sc.state[o]!, sc.state[o + 1]!);
+      if (sc.state[o + StateField.Mode] !== mode) continue;
+      const p = v.toScreen(sc.state[o + X]!, sc.state[o + Y]!);
       if (p.x < -20 || p.y < -20 || p.x > v.width + 20 || p.y > v.height + 20) continue;
-      const th = sc.state[o + 2]!;
-      const c = Math.cos(th);
-      const sn = -Math.sin(th);
-      ctx.moveTo(p.x + c * s, p.y + sn * s);
-      ctx.lineTo(p.x - c * s * 0.6 - sn * s * 0.55, p.y - sn * s * 0.6 + c * s * 0.55);
-      ctx.lineTo(p.x - c * s * 0.6 + sn * s * 0.55, p.y - sn * s * 0.6 - c * s * 0.55);
-      ctx.closePath();
+      const th = sc.state[o + Theta]!;
+      triangle(ctx, p.x, p.y, Math.cos(th), -Math.sin(th), size, 0.6);
     }
     ctx.fill();
   }
@@ -371,8 +336,8 @@ export function drawScene(s: Surface, v: View, sc: Scene): void {
   else drawAgents(ctx, v, sc);
   if (sc.focus >= 0 && sc.focus < sc.count) {
     const q = sc.focus * sc.stride;
-    const p = v.toScreen(sc.state[q]!, sc.state[q + 1]!);
-    const th = sc.state[q + 2]!;
+    const p = v.toScreen(sc.state[q + StateField.X]!, sc.state[q + StateField.Y]!);
+    const th = sc.state[q + StateField.Theta]!;
     ctx.strokeStyle = COLOURS.vehicle;
     ctx.lineWidth = 1.5;
     ctx.beginPath();

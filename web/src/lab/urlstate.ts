@@ -2,6 +2,7 @@
 // the view. Decoding never throws: every bad field falls back to its default
 // and is reported, so the page can show what was ignored.
 
+import type { View } from "../view";
 import { BOUND_KEYS, defaultState, type BoundKey, type LabState, type Limits, type Overlays } from "./state";
 
 const DEG = Math.PI / 180;
@@ -145,4 +146,27 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
     else problems.push(`unknown preset "${preset}"; playground shown`);
   }
   return { state: s, problems };
+}
+
+/** Keeps the address bar's fragment in step with the state and the view:
+ *  `save` after an edit (at most one write per 250 ms), `writeNow` before
+ *  the link is copied. */
+export class UrlSync {
+  private timer = 0;
+
+  constructor(private readonly st: LabState, private readonly view: View) {}
+
+  save(): void {
+    if (this.timer) return;
+    this.timer = window.setTimeout(() => {
+      this.timer = 0;
+      this.writeNow();
+    }, 250);
+  }
+
+  writeNow(): void {
+    const { view } = this;
+    this.st.view = { cx: view.cx, cy: view.cy, scale: view.scale };
+    history.replaceState(null, "", `#${encodeState(this.st)}`);
+  }
 }

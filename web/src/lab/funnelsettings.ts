@@ -3,9 +3,9 @@
 // core's FunnelConfig. Every change goes straight to the core; agents keep
 // running.
 
-import { section, select, slider } from "./controls";
+import { section, select, slider } from "../controls";
 import type { BoundKey, FunnelSettings } from "./state";
-import type { FunnelConfig, MuBound } from "./wasm";
+import type { FunnelConfig, MuBound } from "../wasm";
 
 export const BOUND_CHOICES: ReadonlyArray<{ value: BoundKey; label: string; bound: MuBound }> = [
   { value: "tr", label: "turning radius ×6 (default)", bound: { kind: "turningRadius", factor: 6 } },
@@ -21,7 +21,7 @@ export function funnelConfig(f: FunnelSettings): FunnelConfig {
 }
 
 /** Builds the section; edits `f` in place and calls `onChange` after each change. */
-export function controllerSection(panel: HTMLElement, f: FunnelSettings, onChange: () => void): void {
+export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onChange: () => void): void {
   const box = section(panel, "Controller");
   const bound = select(box, {
     id: "mu-bound", label: "μ bound", options: BOUND_CHOICES, value: f.bound,

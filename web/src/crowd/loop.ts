@@ -1,0 +1,74 @@
+// The crowd page's animation loop: steps the crowd (playing, or one pending
+// single step), draws when something changed, and every 250 ms updates the
+// metrics panel and the one-line HUD; step/draw/fps figures per second.
+
+import type { Surface } from "../canvas";
+import type { CrowdHook } from "./hook";
+import { drawCrowd } from "./render";
+import type { CrowdSession } from "./session";
+
+export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hook: CrowdHook): void {
+  let stepAcc = 0;
+  let drawAcc = 0;
+  let frameAcc = 0;
+  let windowStart = performance.now();
+  let lastMetrics = 0;
+  const frame = (now: number): void => {
+    requestAnimationFrame(frame);
+    const lab = s.lab;
+    if (!lab) return;
+    const t0 = performance.now();
+    const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
+    if (n > 0) {
+      lab.step(n);
+      if (!s.playing) s.singleSteps = 0;
+      s.dirty = true;
+    }
+    const t1 = performance.now();
+    if (s.dirty) {
+      drawCrowd(surface, s.view, {
+        path: lab.pathPoints(),
+        radius: lab.pathRadius(),
+        closed: lab.pathClosed(),
+        positions: lab.positions(),
+        velocities: lab.velocities(),
+        trace: s.showTrace ? lab.trace() : new Float32Array(),
+        traced: lab.tracedBoid(),
+        boidRadius: lab.boidRadius(),
+        showTrace: s.showTrace,
+        showHandles: s.showHandles,
+        selected: s.editor.selected,
+        hover: s.editor.hover,
+      });
+      s.dirty = false;
+    }
+    const t2 = performance.now();
+    stepAcc += t1 - t0;
+    drawAcc += t2 - t1;
+    frameAcc++;
+    hook.frames++;
+    if (now - windowStart >= 1000) {
+      hook.stepMs = stepAcc / frameAcc;
+      hook.drawMs = drawAcc / frameAcc;
+      hook.fps = (1000 * frameAcc) / (now - windowStart);
+      stepAcc = drawAcc = frameAcc = 0;
+      windowStart = now;
+    }
+    if (now - lastMetrics > 250) {
+      lastMetrics = now;
+      s.panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
+      const c = lab.config();
+      const seek = c.seek;
+      hud.textContent = [
+        `step ${lab.time().toFixed(0)}`,
+        `${lab.count().toLocaleString("en")} boids`,
+        seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
+        c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
+        `${hook.fps.toFixed(0)} fps`,
+        `step ${hook.stepMs.toFixed(2)} ms`,
+        `draw ${hook.drawMs.toFixed(2)} ms`,
+      ].join("  ·  ");
+    }
+  };
+  requestAnimationFrame(frame);
+}

@@ -1,0 +1,133 @@
+// What the crowd page holds between frames: the core's CrowdLab (rebuilt
+// when a preset loads or the clock resets), the clock's state (playing,
+// steps per frame, pending single steps), the display switches, the view
+// and the path editor. Every edit goes through the core, which may refuse it.
+
+import { showMessage } from "../page";
+import { PAPER_UNITS, View } from "../view";
+import { CrowdLab, errorText, type CrowdConfig } from "../wasm";
+import type { Panel } from "./panel";
+import { PathEditor } from "./patheditor";
+
+export class CrowdSession {
+  lab: CrowdLab | null = null;
+  playing = true;
+  stepsPerFrame = 1;
+  /** Single steps asked for while paused (at most one runs per frame). */
+  singleSteps = 0;
+  showTrace = true;
+  showHandles = true;
+  /** Something changed that the next frame must draw. */
+  dirty = true;
+  /** The name of the preset last loaded. */
+  preset = "";
+  panel: Panel | null = null;
+  readonly view = new View(PAPER_UNITS);
+  readonly editor: PathEditor;
+
+  constructor() {
+    this.editor = new PathEditor(
+      {
+        points: () => this.lab?.pathPoints() ?? new Float32Array(),
+        closed: () => this.lab?.pathClosed() ?? true,
+        commit: (xy) => {
+          if (!this.lab) return "the core is not loaded";
+          try {
+            this.lab.setPathPoints(xy);
+            return null;
+          } catch (e) {
+            return errorText(e);
+          }
+        },
+        report: (m) => showMessage(m),
+        changed: () => {
+          this.dirty = true;
+        },
+      },
+      this.view,
+    );
+  }
+
+  /** Runs a setter on the core; shows its message if it refuses. */
+  apply(f: (l: CrowdLab) => void): void {
+    if (!this.lab) return;
+    try {
+      f(this.lab);
+      showMessage(null);
+    } catch (e) {
+      showMessage(errorText(e), "error");
+    }
+    this.dirty = true;
+  }
+
+  /** Fits the pathway (with its radius) in the canvas. */
+  fitView(): void {
+    if (!this.lab) return;
+    const xy = this.lab.pathPoints();
+    const r = this.lab.pathRadius();
+    let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
+    for (let i = 0; i + 1 < xy.length; i += 2) {
+      const x = xy[i] ?? 0;
+      const y = xy[i + 1] ?? 0;
+      x0 = Math.min(x0, x);
+      x1 = Math.max(x1, x);
+      y0 = Math.min(y0, y);
+      y1 = Math.max(y1, y);
+    }
+    if (!Number.isFinite(x0)) return;
+    this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, 40);
+    this.dirty = true;
+  }
+
+  /** The panel shows what the core holds. */
+  private syncPanel(): void {
+    const { lab, panel } = this;
+    if (!lab || !panel) return;
+    const c = lab.config();
+    panel.set({
+      seek: c.seek,
+      separation: c.separation,
+      weight: c.separation_weight,
+      boids: lab.count(),
+      radius: lab.pathRadius(),
+      closed: lab.pathClosed(),
+    });
+  }
+
+  /** A new CrowdLab for `config` (the old one is kept if the core refuses). */
+  load(config: CrowdConfig, fit: boolean): void {
+    try {
+      const next = new CrowdLab(config);
+      this.lab?.free();
+      this.lab = next;
+      this.editor.selected = null;
+      this.preset = config.name ?? "";
+      showMessage(null);
+    } catch (e) {
+      showMessage(errorText(e), "error");
+      return;
+    }
+    this.syncPanel();
+    if (fit) this.fitView();
+    this.dirty = true;
+  }
+
+  /** Back to step 0 keeping the edits (path, count, seek, separation). */
+  reset(): void {
+    if (this.lab) this.load(this.lab.config(), false);
+  }
+
+  /** One step on the next frame, paused. */
+  stepOnce(): void {
+    this.setPlaying(false);
+    this.singleSteps++;
+  }
+
+  /** Called by setPlaying (the transport's button shows it). */
+  onPlaying: (playing: boolean) => void = () => {};
+
+  setPlaying(p: boolean): void {
+    this.playing = p;
+    this.onPlaying(p);
+  }
+}

@@ -1,0 +1,126 @@
+// window.__lab: what the end-to-end tests and the perf harness read and
+// drive, and the frame-time record behind perfStats().
+
+import type { FunnelConfig, Internals } from "../wasm";
+import type { Handles } from "./handles";
+import { presetNames } from "./presets";
+import { defaultState, type LabState } from "./state";
+
+export interface PerfStats {
+  frames: number;
+  meanIntervalMs: number;
+  meanWorkMs: number;
+  p95WorkMs: number;
+  meanStepMs: number;
+  meanDrawMs: number;
+  usPerUpdate: number;
+  agents: number;
+}
+
+/** What the end-to-end tests and the perf harness read (window.__lab). */
+export interface LabHook {
+  ready: boolean;
+  error: string | null;
+  problems: string[];
+  version: string;
+  /** performance.now() when the first frame with agents was drawn. */
+  firstFrameMs: number;
+  frames: number;
+  count(): number;
+  mode(): number | null;
+  internals(): Internals | null;
+  /** The funnelling settings in force in the core. */
+  funnel(): FunnelConfig | null;
+  state(): LabState;
+  /** CSS-pixel canvas coordinates of the focus target's centre, rim, handles and of the vehicle. */
+  handles(): Handles | null;
+  setPreset(name: string): Promise<void>;
+  presets(): string[];
+  setPaused(p: boolean): void;
+  perfReset(): void;
+  perfStats(): PerfStats;
+}
+
+declare global {
+  interface Window {
+    __lab?: LabHook;
+  }
+}
+
+/** Installs the hook with its not-yet-started answers; start() fills it in. */
+export function installHook(): LabHook {
+  const hook: LabHook = {
+    ready: false,
+    error: null,
+    problems: [],
+    version: "",
+    firstFrameMs: NaN,
+    frames: 0,
+    count: () => 0,
+    mode: () => null,
+    internals: () => null,
+    funnel: () => null,
+    state: () => defaultState(),
+    handles: () => null,
+    setPreset: async () => {},
+    presets: () => presetNames(),
+    setPaused: () => {},
+    perfReset: () => {},
+    perfStats: () => new Perf().stats(0),
+  };
+  window.__lab = hook;
+  return hook;
+}
+
+/** The last 2000 frames' timings (ms) and the core's update cost. */
+export class Perf {
+  private intervals: number[] = [];
+  private work: number[] = [];
+  private step: number[] = [];
+  private draw: number[] = [];
+  private updates = 0;
+  private updateMs = 0;
+
+  /** `updates` agent updates took `ms` in the core. */
+  stepped(updates: number, ms: number): void {
+    this.updates += updates;
+    this.updateMs += ms;
+  }
+
+  frame(interval: number, work: number, step: number, draw: number): void {
+    this.intervals.push(interval);
+    this.work.push(work);
+    this.step.push(step);
+    this.draw.push(draw);
+    if (this.intervals.length > 2000) {
+      this.intervals.shift();
+      this.work.shift();
+      this.step.shift();
+      this.draw.shift();
+    }
+  }
+
+  reset(): void {
+    this.intervals = [];
+    this.work = [];
+    this.step = [];
+    this.draw = [];
+    this.updates = 0;
+    this.updateMs = 0;
+  }
+
+  stats(agents: number): PerfStats {
+    const mean = (a: number[]): number => (a.length ? a.reduce((x, y) => x + y, 0) / a.length : 0);
+    const sorted = [...this.work].sort((a, b) => a - b);
+    return {
+      frames: this.intervals.length,
+      meanIntervalMs: mean(this.intervals),
+      meanWorkMs: mean(this.work),
+      p95WorkMs: sorted[Math.floor(sorted.length * 0.95)] ?? 0,
+      meanStepMs: mean(this.step),
+      meanDrawMs: mean(this.draw),
+      usPerUpdate: this.updates ? (this.updateMs * 1000) / this.updates : 0,
+      agents,
+    };
+  }
+}

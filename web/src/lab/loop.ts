@@ -1,0 +1,42 @@
+// The funnelling page's animation loop: advances the simulation clock by
+// the wall time since the last frame, draws when something changed, and
+// records frame timings for the HUD and window.__lab.perfStats().
+
+import { beginFrame, type Surface } from "../canvas";
+import type { View } from "../view";
+import type { LabHook, Perf } from "./hook";
+import { renderHud } from "./hud";
+import { COLOURS, drawScene } from "./render";
+import type { SceneBuilder } from "./scene";
+import type { LabSim } from "./sim";
+
+/** Starts the loop; `since` is when the page's clock started (the first frame's interval). */
+export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, view: View, hudEl: HTMLElement, hook: LabHook, perf: Perf, since: number): void {
+  let lastFrame = since;
+  let frameMsEma = 0;
+  const frame = (now: number): void => {
+    const interval = now - lastFrame;
+    lastFrame = now;
+    const t0 = performance.now();
+    const stepped = sim.advance(interval);
+    if (stepped.updates > 0) perf.stepped(stepped.updates, stepped.ms);
+    let drawMs = 0;
+    if (sim.dirty || !sim.paused) {
+      beginFrame(surface, COLOURS.background);
+      const inter = sim.internals(sim.shown);
+      const scene = scenes.scene(inter);
+      const d0 = performance.now();
+      drawScene(surface, view, scene);
+      drawMs = performance.now() - d0;
+      renderHud(hudEl, scenes.hud(inter, frameMsEma));
+      sim.dirty = false;
+      hook.frames++;
+      if (Number.isNaN(hook.firstFrameMs) && sim.count > 0) hook.firstFrameMs = performance.now();
+    }
+    const work = performance.now() - t0;
+    frameMsEma = frameMsEma === 0 ? work : 0.95 * frameMsEma + 0.05 * work;
+    perf.frame(interval, work, stepped.ms, drawMs);
+    requestAnimationFrame(frame);
+  };
+  requestAnimationFrame(frame);
+}

@@ -1,0 +1,89 @@
+// The funnelling page (index.html): loads the core and the η table, then
+// wires the simulation, the panel, the canvas drags and the loop together.
+
+import { setupCanvas } from "../canvas";
+import { $, showMessage, showVersion } from "../page";
+import { View } from "../view";
+import { createLab, errorText, loadCore, type Lab } from "../wasm";
+import { attachDrags, handlePositions, type Handles } from "./handles";
+import { installHook, Perf } from "./hook";
+import { runLoop } from "./loop";
+import { buildPanel } from "./panel";
+import { presetNames } from "./presets";
+import { HANDLE_PX, SceneBuilder } from "./scene";
+import { LabSim } from "./sim";
+import { buildTransport } from "./transport";
+import { decodeState } from "./urlstate";
+
+const TABLE_URL = "tables/eta.bin";
+
+const hook = installHook();
+
+async function start(): Promise<void> {
+  const decoded = decodeState(location.hash, presetNames());
+  const st = decoded.state;
+  hook.problems = decoded.problems;
+  if (decoded.problems.length > 0) {
+    showMessage(`Some of the link's state was ignored:\n• ${decoded.problems.join("\n• ")}`, "warn");
+  }
+
+  const version = await loadCore();
+  hook.version = version;
+  showVersion(version);
+
+  let lab: Lab;
+  try {
+    lab = await createLab(TABLE_URL);
+  } catch (e) {
+    const msg = `The lab cannot start: ${errorText(e)}`;
+    hook.error = msg;
+    showMessage(msg, "error");
+    return;
+  }
+
+  const canvas = $<HTMLCanvasElement>("lab");
+  const view = new View();
+  const sim = new LabSim(lab, st, view);
+  const surface = setupCanvas(canvas, (sf) => {
+    view.resize(sf.width, sf.height);
+    sim.dirty = true;
+  });
+  const transport = buildTransport(sim);
+  const goal = buildPanel(sim, canvas);
+
+  const handles = (): Handles | null =>
+    sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
+  attachDrags(canvas, view, handles, {
+    target: (x, y) => { st.target.x = x; st.target.y = y; sim.updateGoal(); },
+    beta: (b) => { st.target.theta = b; goal.beta.set(b); sim.updateGoal(); },
+    epsTol: (e) => { st.epsTol = e; goal.epsTol.set(e); sim.updateGoal(); },
+    dTol: (d) => { st.dTol = d; goal.dTol.set(d); sim.updateGoal(); },
+    vehicle: (pose) => { st.vehicle = pose; sim.placeVehicle(); },
+    vehiclePose: () => sim.pose(sim.focus),
+    redraw: () => { sim.dirty = true; sim.url.save(); },
+  });
+
+  const perf = new Perf();
+  hook.count = () => sim.count;
+  hook.mode = () => sim.internals(sim.shown)?.mode ?? null;
+  hook.internals = () => sim.internals(sim.shown);
+  hook.funnel = () => lab.funnel();
+  hook.state = () => structuredClone(st);
+  hook.handles = handles;
+  hook.setPreset = transport.setPreset;
+  hook.setPaused = transport.setPaused;
+  hook.perfReset = () => perf.reset();
+  hook.perfStats = () => perf.stats(sim.count);
+
+  const since = performance.now();
+  await sim.rebuild(true);
+  transport.setPaused(false);
+  hook.ready = true;
+  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), hook, perf, since);
+}
+
+start().catch((e: unknown) => {
+  const msg = `The lab failed to start: ${errorText(e)}`;
+  hook.error = msg;
+  showMessage(msg, "error");
+});

@@ -1,0 +1,87 @@
+// One frame's picture and HUD figures from the simulation: the other
+// agents' targets, the followed agent's overlays (η at the target, γ, the
+// relaxed arc), the η ring and field, the playground's editable target.
+// The η field is cached while its three inputs stay the same.
+
+import { Mode, StateField, type Internals } from "../wasm";
+import type { HudData } from "./hud";
+import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type Overlay, type Scene, type TargetDraw } from "./render";
+import type { LabSim } from "./sim";
+
+/** Screen length of the orientation/heading handles, CSS px. */
+export const HANDLE_PX = 56;
+
+export class SceneBuilder {
+  private fieldCache: { key: string; samples: Float32Array } | null = null;
+
+  constructor(private readonly sim: LabSim) {}
+
+  /** Every agent's target but the focus agent's (none for large crowds). */
+  private targets(): TargetDraw[] {
+    const { sim } = this;
+    const out: TargetDraw[] = [];
+    if (sim.count > CROWD_THRESHOLD) return out;
+    const s = sim.state;
+    for (let i = 0; i < sim.count; i++) {
+      if (i === sim.focus) continue;
+      const o = i * sim.stride;
+      out.push({
+        x: s[o + StateField.GoalX]!, y: s[o + StateField.GoalY]!, beta: s[o + StateField.GoalBeta]!,
+        dTol: s[o + StateField.GoalDTol]!, epsTol: s[o + StateField.GoalEpsTol]!, mode: s[o + StateField.Mode]!,
+      });
+    }
+    return out;
+  }
+
+  /** The scene for `inter`, the internals of the followed agent (sim.shown). */
+  scene(inter: Internals | null): Scene {
+    const { sim } = this;
+    const { st, lab, count } = sim;
+    const who = sim.shown;
+    const pose = sim.pose(who);
+    let overlay: Overlay | null = null;
+    if (inter && count > 0) {
+      overlay = {
+        x: pose.x, y: pose.y, theta: pose.theta,
+        targetX: sim.field(who, StateField.GoalX) ?? 0, targetY: sim.field(who, StateField.GoalY) ?? 0,
+        etaDir: st.overlays.eta && Number.isFinite(inter.eta) ? pose.theta + inter.alpha + inter.eta : null,
+        gamma: st.overlays.gamma && Number.isFinite(inter.gamma) ? inter.gamma : null,
+        arc: st.overlays.arc && inter.arc ? { r: inter.arc.radius, a0: pose.theta + inter.arc.alphaMin, a1: pose.theta + inter.arc.alphaMax, ar: pose.theta + inter.arc.alphaR } : null,
+      };
+    }
+    let ring: FieldDraw | null = null;
+    if (st.overlays.ring && count > 0) {
+      ring = { samples: count > who ? lab.etaRing(who) : new Float32Array(0), originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
+    }
+    let field: FieldDraw | null = null;
+    if (st.overlays.field && count > 0) {
+      const key = `${st.field.vC}|${st.field.omegaC}|${st.field.vD}`;
+      if (!this.fieldCache || this.fieldCache.key !== key) this.fieldCache = { key, samples: lab.etaField(st.field.vC, st.field.omegaC, st.field.vD) };
+      field = { samples: this.fieldCache.samples, originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.field, dark: COLOURS.fieldDark };
+    }
+    const focusTarget: TargetDraw | null = sim.focus >= 0
+      ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: inter?.mode ?? Mode.Funnelling }
+      : null;
+    return {
+      state: sim.state, stride: sim.stride, count,
+      targets: this.targets(),
+      trails: st.overlays.trails && count <= sim.trails.maxAgents ? sim.trails : null,
+      focus: sim.focus, focusTarget, overlay,
+      showRadial: st.overlays.radial,
+      ring, field, handlePx: HANDLE_PX,
+    };
+  }
+
+  /** The HUD's figures for `inter` (as for scene). */
+  hud(inter: Internals | null, frameMs: number): HudData {
+    const { sim } = this;
+    return {
+      mode: inter?.mode ?? null,
+      d: inter?.d ?? NaN, alpha: inter?.alpha ?? NaN, eta: inter?.eta ?? NaN,
+      deltaEta: inter?.deltaEta ?? NaN, mu: inter?.mu ?? NaN, muMax: inter?.muMax ?? NaN,
+      speed: sim.field(sim.shown, StateField.V) ?? 0,
+      reachable: inter?.reachable ?? true,
+      usPerUpdate: sim.usPerUpdate, frameMs, agents: sim.count, time: sim.time, paused: sim.paused, slow: sim.st.slow,
+    };
+  }
+}

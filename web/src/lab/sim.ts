@@ -1,0 +1,242 @@
+// The simulation the funnelling page owns: the core's Lab, the agents'
+// state as last read from it, the clock (play, pause, single steps, slow
+// motion) and the edits that go to the core (goal, pose, limits, controller
+// settings). A rebuild starts the playground or a preset from scratch.
+
+import { showMessage } from "../page";
+import type { View } from "../view";
+import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
+import { funnelConfig } from "./funnelsettings";
+import { findPreset } from "./presets";
+import type { LabState, Pose } from "./state";
+import { Trails } from "./trails";
+import { UrlSync } from "./urlstate";
+
+const PLAYGROUND_HELP =
+  "Playground: drag the vehicle (body: position, white knob: heading), the target (centre), its β knob, " +
+  "the tolerance circle's rim and the triangle's corner. The target shows the controller's mode live.";
+
+/** The most steps one animation frame runs (a slow frame drops the rest). */
+const MAX_STEPS_PER_FRAME = 4;
+
+export class LabSim {
+  /** Floats per agent in `state`. */
+  readonly stride = Lab.stateStride();
+  readonly trails = new Trails(200, 3000);
+  readonly defaults: VehicleParams;
+  /** The state in the address bar. */
+  readonly url: UrlSync;
+  count = 0;
+  state: Float32Array = new Float32Array(0);
+  /** The playground's editable agent, or -1 (presets). */
+  focus = -1;
+  time = 0;
+  dt: number;
+  paused = false;
+  /** Something changed that the next frame must draw. */
+  dirty = true;
+  /** Smoothed core cost per agent update, µs. */
+  usPerUpdate = 0;
+  /** Called by every rebuild: the caption, and whether the playground's target is editable. */
+  onScene: (caption: string, playground: boolean) => void = () => {};
+  private acc = 0;
+  private generation = 0;
+  /** The URL's view, shown once (the first build); later builds fit when asked. */
+  private sharedView: LabState["view"];
+
+  constructor(readonly lab: Lab, readonly st: LabState, private readonly view: View) {
+    this.defaults = lab.params();
+    this.dt = this.defaults.dt;
+    this.sharedView = st.view;
+    this.url = new UrlSync(st, view);
+  }
+
+  params(): VehicleParams {
+    return { ...this.defaults, ...this.st.limits };
+  }
+
+  goal(): GoalConfig {
+    const st = this.st;
+    return {
+      x: st.target.x,
+      y: st.target.y,
+      beta: st.target.theta,
+      dTol: st.dTol,
+      epsTol: st.epsTol,
+      speed: st.speed,
+      halting: st.halting,
+      relaxed: st.relaxed,
+    };
+  }
+
+  /** Reads the agents' state back from the core. */
+  pull(): void {
+    this.count = this.lab.count();
+    this.state = this.lab.state();
+    this.dirty = true;
+  }
+
+  /** Agent i's pose as last read. */
+  pose(i: number): Pose {
+    const o = i * this.stride;
+    return {
+      x: this.state[o + StateField.X] ?? 0,
+      y: this.state[o + StateField.Y] ?? 0,
+      theta: this.state[o + StateField.Theta] ?? 0,
+    };
+  }
+
+  /** Agent i's float `f` as last read. */
+  field(i: number, f: StateField): number | undefined {
+    return this.state[i * this.stride + f];
+  }
+
+  /** The agent the HUD and the overlays follow: the focus, else the first. */
+  get shown(): number {
+    return this.focus >= 0 ? this.focus : 0;
+  }
+
+  /** Internals of agent i, or null (no such agent: the world is being rebuilt). */
+  internals(i: number): Internals | null {
+    if (i < 0 || i >= this.count) return null;
+    try {
+      return this.lab.internals(i);
+    } catch {
+      return null;
+    }
+  }
+
+  applyParams(): void {
+    try {
+      const warning = this.lab.setParams(this.params());
+      if (warning) showMessage(`Vehicle limits: ${warning}`, "warn");
+    } catch (e) {
+      showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
+    }
+  }
+
+  /** The page's controller settings to the core (world-wide, presets included). */
+  applyFunnel(): void {
+    try {
+      this.lab.setFunnel(funnelConfig(this.st.funnel));
+    } catch (e) {
+      showMessage(`Controller settings rejected: ${errorText(e)}`, "warn");
+    }
+    this.dirty = true;
+  }
+
+  /** The focus agent's goal from the page's state. */
+  updateGoal(): void {
+    if (this.focus < 0) return;
+    try {
+      this.lab.setGoal(this.focus, this.goal());
+    } catch (e) {
+      showMessage(`Goal rejected: ${errorText(e)}`, "warn");
+    }
+    this.pull();
+    this.url.save();
+  }
+
+  /** The focus agent moved to the page's vehicle pose (its trail restarts). */
+  placeVehicle(): void {
+    if (this.focus < 0) return;
+    const v = this.st.vehicle;
+    try {
+      this.lab.setPose(this.focus, v.x, v.y, v.theta);
+    } catch (e) {
+      showMessage(`Pose rejected: ${errorText(e)}`, "warn");
+    }
+    this.trails.clearAgent(this.focus);
+    this.pull();
+    this.url.save();
+  }
+
+  /** Starts over: the preset named in the state, else the playground. */
+  async rebuild(fitAsked: boolean): Promise<void> {
+    const { lab, st, view } = this;
+    const fit = fitAsked && this.sharedView === null;
+    if (this.sharedView) {
+      view.cx = this.sharedView.cx;
+      view.cy = this.sharedView.cy;
+      view.scale = this.sharedView.scale;
+      this.sharedView = null;
+    }
+    const gen = ++this.generation;
+    lab.clear();
+    this.pull();
+    this.applyParams();
+    this.trails.clear();
+    this.time = 0;
+    this.acc = 0;
+    this.focus = -1;
+    if (st.preset) {
+      const p = findPreset(st.preset);
+      try {
+        if (!p) throw new Error(`no preset named ${st.preset}`);
+        const text = await p.load();
+        if (gen !== this.generation) return;
+        const info = lab.loadScenario(text);
+        this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false);
+        if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
+        if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
+      } catch (e) {
+        showMessage(`Preset ${st.preset} could not be loaded: ${errorText(e)}`, "error");
+      }
+    } else {
+      this.onScene(PLAYGROUND_HELP, true);
+      const extent = Math.max(10, Math.sqrt(st.agents) * 1.5);
+      try {
+        lab.addAgent({ x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [this.goal()] });
+        this.focus = 0;
+        if (st.agents > 0) lab.spawnRandom(st.agents, st.seed, extent, st.speed);
+      } catch (e) {
+        showMessage(`The playground could not be set up: ${errorText(e)}`, "error");
+      }
+      if (fit) {
+        if (st.agents > 0) {
+          const r = extent + 3;
+          view.fit(-r, -r, r, r);
+        } else {
+          const xs = [st.vehicle.x, st.target.x];
+          const ys = [st.vehicle.y, st.target.y];
+          view.fit(Math.min(...xs) - 3, Math.min(...ys) - 3, Math.max(...xs) + 3, Math.max(...ys) + 3, 60);
+        }
+      }
+    }
+    this.applyFunnel();
+    this.dt = lab.params().dt;
+    this.pull();
+    this.trails.record(0, this.state, this.stride, this.count);
+  }
+
+  /** One step, paused afterwards (the caller shows the pause). */
+  stepOnce(): void {
+    this.lab.step(1);
+    this.time += this.dt;
+    this.pull();
+    this.trails.record(this.time, this.state, this.stride, this.count);
+  }
+
+  /** Runs the steps that `intervalMs` of wall time is worth (none when
+   *  paused); returns the agent updates done and the ms they took. */
+  advance(intervalMs: number): { updates: number; ms: number } {
+    if (this.paused || this.count === 0) return { updates: 0, ms: 0 };
+    this.acc += Math.min(0.1, intervalMs / 1000) * (this.st.slow ? 0.25 : 1);
+    let k = Math.floor(this.acc / this.dt);
+    if (k > MAX_STEPS_PER_FRAME) {
+      k = MAX_STEPS_PER_FRAME;
+      this.acc = 0;
+    } else this.acc -= k * this.dt;
+    if (k <= 0) return { updates: 0, ms: 0 };
+    const s0 = performance.now();
+    this.lab.step(k);
+    const ms = performance.now() - s0;
+    const updates = k * this.count;
+    const us = (ms * 1000) / updates;
+    this.usPerUpdate = this.usPerUpdate === 0 ? us : 0.9 * this.usPerUpdate + 0.1 * us;
+    this.time += k * this.dt;
+    this.pull();
+    if (this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
+    return { updates, ms };
+  }
+}

@@ -1,0 +1,70 @@
+// The funnelling page's header controls: play/pause, single step, slow
+// motion, reset, the preset menu, and their keys (space, s, r).
+
+import { button } from "../controls";
+import { $ } from "../page";
+import { PRESETS } from "./presets";
+import type { LabSim } from "./sim";
+
+export interface Transport {
+  setPaused(p: boolean): void;
+  /** Loads a preset ("" = the playground), fitting the view. */
+  setPreset(name: string): Promise<void>;
+}
+
+export function buildTransport(sim: LabSim): Transport {
+  const st = sim.st;
+  const bar = $("transport");
+  const playBtn = button(bar, "play", "Pause", "Play / pause (space)", () => setPaused(!sim.paused));
+  button(bar, "step", "Step", "Single step (s)", () => stepOnce());
+  const slowBtn = button(bar, "slow", "Slow ×¼", "Slow motion", () => {
+    st.slow = !st.slow;
+    slowBtn.setAttribute("aria-pressed", String(st.slow));
+    sim.url.save();
+  });
+  slowBtn.setAttribute("aria-pressed", String(st.slow));
+  button(bar, "reset", "Reset", "Reset (r)", () => void sim.rebuild(false));
+
+  const setPaused = (p: boolean): void => {
+    sim.paused = p;
+    playBtn.textContent = p ? "▶ Play" : "Pause";
+    playBtn.setAttribute("aria-pressed", String(p));
+  };
+  const stepOnce = (): void => {
+    setPaused(true);
+    sim.stepOnce();
+  };
+
+  const presetSel = $<HTMLSelectElement>("preset");
+  const addOpt = (value: string, label: string): void => {
+    const o = document.createElement("option");
+    o.value = value;
+    o.textContent = label;
+    presetSel.append(o);
+  };
+  addOpt("", "playground");
+  for (const p of PRESETS) addOpt(p.name, p.name);
+  presetSel.value = st.preset;
+  const setPreset = async (name: string): Promise<void> => {
+    st.preset = name;
+    presetSel.value = name;
+    await sim.rebuild(true);
+    sim.url.save();
+  };
+  presetSel.addEventListener("change", () => void setPreset(presetSel.value));
+
+  window.addEventListener("keydown", (e) => {
+    const t = e.target;
+    if (t instanceof HTMLSelectElement || t instanceof HTMLButtonElement || (t instanceof HTMLInputElement && t.type === "text")) return;
+    if (e.ctrlKey || e.metaKey || e.altKey) return;
+    if (e.key === " ") {
+      e.preventDefault();
+      setPaused(!sim.paused);
+    } else if (e.key === "s" || e.key === "S") {
+      stepOnce();
+    } else if (e.key === "r" || e.key === "R") {
+      void sim.rebuild(false);
+    }
+  });
+  return { setPaused, setPreset };
+}

@@ -1,0 +1,78 @@
+// Agents drawn by the hundred or the ten thousand, the same way on every
+// page: oriented triangles (one canvas path for all of them) for small
+// crowds, pixel sprites beyond. Filling paths costs ~20 µs per agent in
+// software-rasterised Chromium; writing pixels costs well under 1 µs.
+
+import type { Surface } from "./canvas";
+
+/** Adds an oriented triangle to the current path: nose `r` ahead of (x, y)
+ *  along the screen direction (ux, uy) (y down), base `back`·r behind it. */
+export function triangle(ctx: CanvasRenderingContext2D, x: number, y: number, ux: number, uy: number, r: number, back: number): void {
+  ctx.moveTo(x + ux * r, y + uy * r);
+  ctx.lineTo(x - ux * r * back - uy * r * 0.55, y - uy * r * back + ux * r * 0.55);
+  ctx.lineTo(x - ux * r * back + uy * r * 0.55, y - uy * r * back - ux * r * 0.55);
+  ctx.closePath();
+}
+
+/** ABGR (little-endian RGBA bytes) of a #rrggbb colour. */
+export function abgr(hex: string): number {
+  const n = parseInt(hex.slice(1), 16);
+  return ((0xff << 24) | ((n & 0xff) << 16) | (n & 0xff00) | ((n >> 16) & 0xff)) >>> 0;
+}
+
+interface Layer {
+  canvas: HTMLCanvasElement;
+  ctx: CanvasRenderingContext2D;
+  img: ImageData;
+  px: Uint32Array;
+}
+
+/** An offscreen layer of backing-store pixels: `begin`, `stamp` each agent,
+ *  `present` (one putImageData, one drawImage). One per canvas. */
+export class PixelSprites {
+  private layer: Layer | null = null;
+
+  /** Clears the layer, sized to `s`'s backing store; false when the browser gives no 2D context. */
+  begin(s: Surface): boolean {
+    const W = s.canvas.width;
+    const H = s.canvas.height;
+    if (!this.layer || this.layer.canvas.width !== W || this.layer.canvas.height !== H) {
+      const canvas = document.createElement("canvas");
+      canvas.width = W;
+      canvas.height = H;
+      const ctx = canvas.getContext("2d");
+      if (!ctx) return false;
+      const img = ctx.createImageData(W, H);
+      this.layer = { canvas, ctx, img, px: new Uint32Array(img.data.buffer) };
+    }
+    this.layer.px.fill(0);
+    return true;
+  }
+
+  /** A (2r+1)² block centred on backing-store pixel (sx, sy), plus a
+   *  two-pixel nose `nose` pixels along (ux, uy) (y down; none if both are 0).
+   *  The caller keeps the block and nose inside the layer. */
+  stamp(sx: number, sy: number, r: number, colour: number, ux: number, uy: number, nose: number): void {
+    const l = this.layer;
+    if (!l) return;
+    const px = l.px;
+    const W = l.canvas.width;
+    for (let dy = -r; dy <= r; dy++) {
+      const row = (sy + dy) * W + sx;
+      for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
+    }
+    if (ux === 0 && uy === 0) return;
+    const nx = Math.round(sx + ux * nose);
+    const ny = Math.round(sy + uy * nose);
+    px[ny * W + nx] = colour;
+    px[Math.round((sy + ny) / 2) * W + Math.round((sx + nx) / 2)] = colour;
+  }
+
+  /** Puts the layer on `s` (CSS-pixel transform in force). */
+  present(s: Surface): void {
+    const l = this.layer;
+    if (!l) return;
+    l.ctx.putImageData(l.img, 0, 0);
+    s.ctx.drawImage(l.canvas, 0, 0, s.width, s.height);
+  }
+}
