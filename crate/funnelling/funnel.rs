@@ -14,11 +14,14 @@
 //! no allocation.
 
 use core::f32::consts::FRAC_PI_2;
+use core::ops::ControlFlow;
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::{diff, wrap};
+use crate::angle::diff;
+use crate::funnelling::approach::Approach;
+pub use crate::funnelling::approach::{halting_speed, tolerance_phase};
 use crate::seek::seek_step_committed;
 use crate::table::{EtaTable, Lookup};
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -216,50 +219,6 @@ pub fn orbit_free_speed(p: &VehicleParams, d: f32, alpha: f32) -> f32 {
     (p.omega_max * r).min((p.normal_accel_max * r).sqrt())
 }
 
-/// Speed cap for final halting: the speed from which the vehicle can
-/// still brake to rest at the target with 80 % of its deceleration.
-#[inline]
-#[must_use]
-pub fn halting_speed(p: &VehicleParams, d: f32) -> f32 {
-    (2.0 * 0.8 * p.accel_max * d.max(0.0)).sqrt()
-}
-
-/// The position-tolerance phase of paper 000 Fig. 5, shared by the
-/// standard and the relaxed controllers ([`crate::relaxed`]): latches
-/// [`FunnelMemory::position_met`] from the distance `d` to the goal centre
-/// and, once met, fills `out` with End_of_Steering or Orientation_only.
-/// Returns true when the position tolerance is met (then `out` is final).
-#[inline]
-pub fn tolerance_phase(
-    p: &VehicleParams,
-    s: &VehicleState,
-    g: &Goal,
-    mem: &mut FunnelMemory,
-    d: f32,
-    out: &mut Internals,
-) -> bool {
-    if d < g.d_tol {
-        mem.position_met = true;
-    } else if mem.position_met && d > FunnelMemory::release_radius(p, g) {
-        mem.position_met = false;
-    }
-    if mem.position_met {
-        let heading_err = diff(g.beta, s.theta);
-        out.delta_eta = heading_err;
-        if heading_err.abs() < g.eps_tol {
-            out.mode = Mode::EndOfSteering;
-            out.gamma = s.theta;
-            out.v_dt = if g.halting { 0.0 } else { g.speed };
-        } else {
-            out.mode = Mode::OrientationOnly;
-            out.gamma = g.beta;
-            out.v_dt = 0.0;
-        }
-        return true;
-    }
-    false
-}
-
 impl FunnelConfig {
     /// Rejects non-finite or out-of-range settings.
     ///
@@ -326,33 +285,12 @@ impl FunnelConfig {
         g: &Goal,
         mem: &mut FunnelMemory,
     ) -> Internals {
-        let rel = g.pos - s.pos;
-        let d = rel.length();
-        let bearing = if d > 1e-6 {
-            crate::trig::atan2(rel.y, rel.x)
-        } else {
-            s.theta
+        let (a, mut out) = match Approach::begin(table, p, s, g, mem) {
+            ControlFlow::Break(done) => return done,
+            ControlFlow::Continue(begun) => begun,
         };
-        let alpha = diff(bearing, s.theta);
-        let mut v_d = g.speed;
-        if g.halting {
-            v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
-        }
-        let mut out = Internals {
-            d,
-            alpha,
-            gamma: bearing,
-            v_dt: v_d,
-            reachable: true,
-            ..Default::default()
-        };
-        if tolerance_phase(p, s, g, mem, d, &mut out) {
-            return out;
-        }
-        let lk = table.lookup(d, alpha, s.omega, s.v, v_d.max(table.axis(4)[0]));
-        out.reachable = lk.reachable;
-        out.v_dt = if lk.reachable { v_d } else { lk.v_dt };
-        out.eta = lk.eta;
+        let (d, alpha) = (a.d, a.alpha);
+        let lk = a.look(d, alpha, &mut out);
         let final_dir = s.theta + alpha + lk.eta;
         out.delta_eta = diff(g.beta, final_dir);
         if d < table.d_eta() {
@@ -367,11 +305,7 @@ impl FunnelConfig {
             out.mode = Mode::PositionOnly;
             return out;
         }
-        out.mode = Mode::Funnelling;
-        out.mu_max = self.mu_max(table, p, &lk, d, out.delta_eta, s.v);
-        out.mu = self.modulation(out.delta_eta, out.mu_max);
-        out.gamma = wrap(bearing + out.mu);
-        out
+        a.funnel(self, &lk, d, a.bearing, out)
     }
 
     /// One funnelling update: plan, then one seek step with the modulated

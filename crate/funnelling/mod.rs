@@ -15,6 +15,8 @@
 //! | [`study`] | 000 §5 | seeded reach study behind the acceptance figures |
 //! | [`region_study`] | 001 §5 | seeded region-goal study: standard vs relaxed |
 
+pub mod approach;
+pub mod controller;
 pub mod funnel;
 pub mod region_study;
 pub mod relaxed;

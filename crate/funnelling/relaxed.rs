@@ -52,48 +52,17 @@
 //! μ bound's interpolation, no allocation, a ≤ 16-sample ring scan.
 
 use core::f32::consts::{PI, TAU};
+use core::ops::ControlFlow;
 
 use serde::{Deserialize, Serialize};
 
 use crate::angle::{diff, wrap};
-use crate::funnel::{
-    halting_speed, tolerance_phase, FunnelConfig, FunnelMemory, Goal, Internals, Mode,
-};
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnelling::approach::Approach;
+pub use crate::funnelling::controller::{Controller, ControllerKind};
 use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
-
-/// Which controller steers the agents of a [`crate::world::World`].
-#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
-#[serde(rename_all = "camelCase")]
-pub enum ControllerKind {
-    /// Standard funnelling towards the disk centre and β (paper 000).
-    #[default]
-    Standard,
-    /// Relaxed funnelling towards the region goal (paper 001 §4).
-    Relaxed,
-}
-
-impl ControllerKind {
-    /// Parses `standard` or `relaxed`.
-    #[must_use]
-    pub fn parse(s: &str) -> Option<Self> {
-        match s {
-            "standard" => Some(Self::Standard),
-            "relaxed" => Some(Self::Relaxed),
-            _ => None,
-        }
-    }
-
-    /// `standard` or `relaxed`.
-    #[must_use]
-    pub fn name(self) -> &'static str {
-        match self {
-            Self::Standard => "standard",
-            Self::Relaxed => "relaxed",
-        }
-    }
-}
 
 /// How η is evaluated at the two ends of the restricted arc 𝒜.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -366,29 +335,11 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         *ri = RelaxedInternals::default();
-        let rel = g.pos - s.pos;
-        let d = rel.length();
-        let bearing = if d > 1e-6 {
-            crate::trig::atan2(rel.y, rel.x)
-        } else {
-            s.theta
+        let (a, mut out) = match Approach::begin(table, p, s, g, mem) {
+            ControlFlow::Break(done) => return done,
+            ControlFlow::Continue(begun) => begun,
         };
-        let alpha_c = diff(bearing, s.theta);
-        let mut v_d = g.speed;
-        if g.halting {
-            v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
-        }
-        let mut out = Internals {
-            d,
-            alpha: alpha_c,
-            gamma: bearing,
-            v_dt: v_d,
-            reachable: true,
-            ..Default::default()
-        };
-        if tolerance_phase(p, s, g, mem, d, &mut out) {
-            return out;
-        }
+        let (d, alpha_c) = (a.d, a.alpha);
         // 1. The restricted arc 𝒜 on the ring nearest the disk centre.
         let r = self.disk_margin * g.d_tol;
         let mut ring_i = 0;
@@ -408,7 +359,7 @@ impl RelaxedConfig {
         let a_min = (alpha_c - h).max(-PI);
         let a_max = (alpha_c + h).min(PI);
         // 2. F from η at the two arc ends.
-        let v_q = v_d.max(table.axis(4)[0]);
+        let v_q = a.v_query();
         let ends = if self.end_eta == EndEta::Linear && ri.ring_sampled {
             (
                 table.eta_ring_linear(ring_i, a_min, s.omega, s.v, v_q),
@@ -448,10 +399,7 @@ impl RelaxedConfig {
             point_y: point.y,
         };
         // 4. Funnel towards the relaxed point.
-        let lk = table.lookup(ring, c.alpha_r, s.omega, s.v, v_q);
-        out.reachable = lk.reachable;
-        out.v_dt = if lk.reachable { v_d } else { lk.v_dt };
-        out.eta = lk.eta;
+        let lk = a.look(ring, c.alpha_r, &mut out);
         out.delta_eta = if lk.eta_valid {
             interval_delta(c.alpha_r + lk.eta, tc, tau)
         } else {
@@ -462,11 +410,7 @@ impl RelaxedConfig {
             out.mode = Mode::PositionOnly;
             return out;
         }
-        out.mode = Mode::Funnelling;
-        out.mu_max = funnel.mu_max(table, p, &lk, ring, out.delta_eta, s.v);
-        out.mu = funnel.modulation(out.delta_eta, out.mu_max);
-        out.gamma = wrap(dir + out.mu);
-        out
+        a.funnel(funnel, &lk, ring, dir, out)
     }
 
     /// One relaxed update: plan, then one seek step.
@@ -484,55 +428,5 @@ impl RelaxedConfig {
         let out = self.plan(funnel, table, p, s, g, mem, ri);
         seek_step_committed(p, s, out.gamma, out.v_dt);
         out
-    }
-}
-
-/// A controller with its settings: what a study or a world runs.
-#[derive(Clone, Copy, Debug, PartialEq)]
-pub enum Controller {
-    /// Standard funnelling.
-    Standard(FunnelConfig),
-    /// Relaxed funnelling (the μ bound from the [`FunnelConfig`]).
-    Relaxed(FunnelConfig, RelaxedConfig),
-}
-
-impl Controller {
-    /// One update with whichever controller; `ri` is reset for the
-    /// standard one.
-    #[inline]
-    pub fn step(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &mut VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
-        ri: &mut RelaxedInternals,
-    ) -> Internals {
-        match self {
-            Self::Standard(f) => {
-                *ri = RelaxedInternals::default();
-                f.step(table, p, s, g, mem)
-            }
-            Self::Relaxed(f, r) => r.step(f, table, p, s, g, mem, ri),
-        }
-    }
-
-    /// One plan (no motion), for the benches.
-    #[inline]
-    #[must_use]
-    pub fn plan(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
-        ri: &mut RelaxedInternals,
-    ) -> Internals {
-        match self {
-            Self::Standard(f) => f.plan(table, p, s, g, mem),
-            Self::Relaxed(f, r) => r.plan(f, table, p, s, g, mem, ri),
-        }
     }
 }

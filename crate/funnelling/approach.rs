@@ -1,0 +1,176 @@
+//! What every funnelling update does before and after choosing *where* to
+//! aim (paper 000 Figs. 4–5; paper 001 §4.1): the part the standard
+//! ([`crate::funnel`]) and the relaxed ([`crate::relaxed`]) controllers
+//! share, written once so the two never drift apart.
+//!
+//! An update begins ([`Approach::begin`]) by measuring the goal in the
+//! vehicle frame (distance D, bearing, radial angle α), capping the desired
+//! speed for final halting, and running the position-tolerance phase of
+//! Fig. 5 ([`tolerance_phase`]), which may settle the update outright. The
+//! controllers then differ only in the point they aim at — the goal itself,
+//! or the relaxed point of paper 001 Fig. 7 — and both end the same way: one
+//! table lookup there ([`Approach::look`]: reachability and the proactive
+//! speed `v_dt`), and, when an orientation correction is needed, the bounded
+//! modulation μ of Fig. 4 around the aim direction ([`Approach::funnel`]).
+
+use core::ops::ControlFlow;
+
+use crate::angle::{diff, wrap};
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::table::{EtaTable, Lookup};
+use crate::vehicle::{VehicleParams, VehicleState};
+
+/// Speed cap for final halting: the speed from which the vehicle can
+/// still brake to rest at the target with 80 % of its deceleration.
+#[inline]
+#[must_use]
+pub fn halting_speed(p: &VehicleParams, d: f32) -> f32 {
+    (2.0 * 0.8 * p.accel_max * d.max(0.0)).sqrt()
+}
+
+/// The position-tolerance phase of paper 000 Fig. 5, shared by the
+/// standard and the relaxed controllers ([`crate::relaxed`]): latches
+/// [`FunnelMemory::position_met`] from the distance `d` to the goal centre
+/// and, once met, fills `out` with End_of_Steering or Orientation_only.
+/// Returns true when the position tolerance is met (then `out` is final).
+#[inline]
+pub fn tolerance_phase(
+    p: &VehicleParams,
+    s: &VehicleState,
+    g: &Goal,
+    mem: &mut FunnelMemory,
+    d: f32,
+    out: &mut Internals,
+) -> bool {
+    if d < g.d_tol {
+        mem.position_met = true;
+    } else if mem.position_met && d > FunnelMemory::release_radius(p, g) {
+        mem.position_met = false;
+    }
+    if mem.position_met {
+        let heading_err = diff(g.beta, s.theta);
+        out.delta_eta = heading_err;
+        if heading_err.abs() < g.eps_tol {
+            out.mode = Mode::EndOfSteering;
+            out.gamma = s.theta;
+            out.v_dt = if g.halting { 0.0 } else { g.speed };
+        } else {
+            out.mode = Mode::OrientationOnly;
+            out.gamma = g.beta;
+            out.v_dt = 0.0;
+        }
+        return true;
+    }
+    false
+}
+
+/// One update's view of its goal, once the tolerance phase has let it
+/// through: the context (table, vehicle) and what was measured.
+#[derive(Clone, Copy, Debug)]
+pub struct Approach<'a> {
+    /// The η table.
+    pub table: &'a EtaTable,
+    /// The vehicle's limits.
+    pub p: &'a VehicleParams,
+    /// The vehicle's state at the update.
+    pub s: &'a VehicleState,
+    /// Distance D to the goal centre, m.
+    pub d: f32,
+    /// World bearing of the goal centre, rad (the heading when on it).
+    pub bearing: f32,
+    /// Radial angle α of the goal centre (vehicle frame), rad.
+    pub alpha: f32,
+    /// Desired speed after the halting cap, m/s.
+    pub v_d: f32,
+}
+
+impl<'a> Approach<'a> {
+    /// Measures the goal and runs the tolerance phase. `Break` carries the
+    /// final internals when the phase settles the update; `Continue` the
+    /// approach and the internals filled so far (`d`, `alpha`, `gamma` =
+    /// bearing, `v_dt` = `v_d`, reachable).
+    pub fn begin(
+        table: &'a EtaTable,
+        p: &'a VehicleParams,
+        s: &'a VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+    ) -> ControlFlow<Internals, (Self, Internals)> {
+        let rel = g.pos - s.pos;
+        let d = rel.length();
+        let bearing = if d > 1e-6 {
+            crate::trig::atan2(rel.y, rel.x)
+        } else {
+            s.theta
+        };
+        let alpha = diff(bearing, s.theta);
+        let mut v_d = g.speed;
+        if g.halting {
+            v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
+        }
+        let mut out = Internals {
+            d,
+            alpha,
+            gamma: bearing,
+            v_dt: v_d,
+            reachable: true,
+            ..Default::default()
+        };
+        if tolerance_phase(p, s, g, mem, d, &mut out) {
+            return ControlFlow::Break(out);
+        }
+        ControlFlow::Continue((
+            Self {
+                table,
+                p,
+                s,
+                d,
+                bearing,
+                alpha,
+                v_d,
+            },
+            out,
+        ))
+    }
+
+    /// The desired speed as queried in the table (raised to the table's
+    /// lowest sampled desired speed).
+    #[inline]
+    #[must_use]
+    pub fn v_query(&self) -> f32 {
+        self.v_d.max(self.table.axis(4)[0])
+    }
+
+    /// The full table lookup for an aim point at distance `dist` and radial
+    /// angle `alpha`; fills `reachable`, `v_dt` (the proactive fallback
+    /// speed when unreachable) and `eta` in `out`.
+    #[inline]
+    pub fn look(&self, dist: f32, alpha: f32, out: &mut Internals) -> Lookup {
+        let s = self.s;
+        let lk = self.table.lookup(dist, alpha, s.omega, s.v, self.v_query());
+        out.reachable = lk.reachable;
+        out.v_dt = if lk.reachable { self.v_d } else { lk.v_dt };
+        out.eta = lk.eta;
+        lk
+    }
+
+    /// Funnelling mode: the modulation μ of `out.delta_eta`, bounded at the
+    /// aim point (distance `dist`, lookup `lk`), added to the world aim
+    /// direction `dir` (paper 000 Fig. 4: γ = θ + α + μ).
+    #[inline]
+    #[must_use]
+    pub fn funnel(
+        &self,
+        cfg: &FunnelConfig,
+        lk: &Lookup,
+        dist: f32,
+        dir: f32,
+        mut out: Internals,
+    ) -> Internals {
+        out.mode = Mode::Funnelling;
+        out.mu_max = cfg.mu_max(self.table, self.p, lk, dist, out.delta_eta, self.s.v);
+        out.mu = cfg.modulation(out.delta_eta, out.mu_max);
+        out.gamma = wrap(dir + out.mu);
+        out
+    }
+}

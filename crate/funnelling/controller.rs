@@ -1,0 +1,94 @@
+//! The choice of controller (paper 000 vs paper 001 §4): which one steers
+//! the agents of a [`crate::world::World`] ([`ControllerKind`], the name
+//! scenario files and the front end use) and a controller with its
+//! settings ([`Controller`], what a study runs). Neither controller owns the
+//! choice, so it lives beside both.
+
+use serde::{Deserialize, Serialize};
+
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals};
+use crate::relaxed::{RelaxedConfig, RelaxedInternals};
+use crate::table::EtaTable;
+use crate::vehicle::{VehicleParams, VehicleState};
+
+/// Which controller steers the agents of a [`crate::world::World`].
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum ControllerKind {
+    /// Standard funnelling towards the disk centre and β (paper 000).
+    #[default]
+    Standard,
+    /// Relaxed funnelling towards the region goal (paper 001 §4).
+    Relaxed,
+}
+
+impl ControllerKind {
+    /// Parses `standard` or `relaxed`.
+    #[must_use]
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "standard" => Some(Self::Standard),
+            "relaxed" => Some(Self::Relaxed),
+            _ => None,
+        }
+    }
+
+    /// `standard` or `relaxed`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Standard => "standard",
+            Self::Relaxed => "relaxed",
+        }
+    }
+}
+
+/// A controller with its settings: what a study or a world runs.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub enum Controller {
+    /// Standard funnelling.
+    Standard(FunnelConfig),
+    /// Relaxed funnelling (the μ bound from the [`FunnelConfig`]).
+    Relaxed(FunnelConfig, RelaxedConfig),
+}
+
+impl Controller {
+    /// One update with whichever controller; `ri` is reset for the
+    /// standard one.
+    #[inline]
+    pub fn step(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &mut VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        match self {
+            Self::Standard(f) => {
+                *ri = RelaxedInternals::default();
+                f.step(table, p, s, g, mem)
+            }
+            Self::Relaxed(f, r) => r.step(f, table, p, s, g, mem, ri),
+        }
+    }
+
+    /// One plan (no motion), for the benches.
+    #[inline]
+    #[must_use]
+    pub fn plan(
+        &self,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        match self {
+            Self::Standard(f) => f.plan(table, p, s, g, mem),
+            Self::Relaxed(f, r) => r.plan(f, table, p, s, g, mem, ri),
+        }
+    }
+}
