@@ -10,6 +10,7 @@
 //! | [`wander`] | 004 | the random steering toolkit, seven components |
 //! | [`base`] | — | angles, deterministic trig, seeded random numbers, path metrics, Dubins paths |
 //! | `bindings` | — | the JavaScript boundary (WebAssembly builds only) |
+//! | `cli` | — | the command lines' arguments, parsed with clap (native only) |
 //!
 //! The `bindings` module is the only place that knows about JavaScript;
 //! everything else runs the same natively and in WebAssembly. The modules of
@@ -20,6 +21,8 @@
 #![warn(missing_docs, clippy::all)]
 
 pub mod base;
+#[cfg(not(target_arch = "wasm32"))]
+pub mod cli;
 pub mod crowd;
 pub mod funnelling;
 pub mod wander;
@@ -28,5 +31,5 @@ pub mod wander;
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
 
-pub use base::{angle, dubins, metrics, rng, trig};
+pub use base::{angle, dubins, metrics, parallel, rng, trig};
 pub use funnelling::{funnel, region_study, relaxed, scenario, seek, study, table, vehicle, world};

@@ -91,7 +91,7 @@ fn reach_statistics_and_limits_on_seeded_random_scenarios() {
         seed: 5,
         ..Default::default()
     };
-    let s = summarise(&study.run_all(&t, &p, &FunnelConfig::default(), 2));
+    let s = summarise(&study.run_all(&t, &p, &FunnelConfig::default()));
     eprintln!("{s:?}");
     assert_eq!(
         s.violations, 0,

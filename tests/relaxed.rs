@@ -276,7 +276,7 @@ fn relaxed_reach_on_seeded_random_region_goals() {
     let p = VehicleParams::default();
     let study = RegionStudy::default();
     let ctl = Controller::Relaxed(FunnelConfig::default(), RelaxedConfig::default());
-    let runs = study.run_all(&t, &p, &ctl, 2);
+    let runs = study.run_all(&t, &p, &ctl);
     assert_eq!(runs.len(), 1000);
     let reached = runs.iter().filter(|r| r.reached).count();
     assert!(reached >= 995, "relaxed reach {reached} / 1000");

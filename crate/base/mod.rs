@@ -9,9 +9,11 @@
 //! | [`rng`] | — | seeded PCG32: the same sequence natively and in wasm |
 //! | [`metrics`] | DESIGN §9 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
 //! | [`dubins`] | 000 §2 | Dubins shortest paths, the lower bound for an oriented reach |
+//! | [`parallel`] | — | seeded cases mapped over an index range: rayon natively, sequential on wasm32, same results |
 
 pub mod angle;
 pub mod dubins;
 pub mod metrics;
+pub mod parallel;
 pub mod rng;
 pub mod trig;

@@ -1,4 +1,5 @@
-//! Metrics table for paper 003's Tests I–IV × five seek variants.
+//! Metrics table for paper 003's Tests I–IV × five seek variants
+//! (arguments: [`steering::cli::crowd_metrics`]; `crowd-metrics --help`).
 //!
 //! `cargo run --release --bin crowd-metrics` loads every preset in
 //! `scenarios/crowd/` (test1_reynolds.json … test4_parker0.1.json), runs
@@ -8,8 +9,17 @@
 //! value in JSON) overrides a config field of every preset, for sensitivity
 //! checks, e.g. `--set max_force=0.3` or `--set separation_weight=1`.
 
+// `wasm-pack test` builds every binary for wasm32, where clap is not a
+// dependency: there this binary is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
 use std::path::PathBuf;
+use std::process::ExitCode;
 use std::time::Instant;
+
+use clap::Parser;
+use steering::cli::crowd_metrics::CrowdMetricsCli;
 
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{seek_tag, CrowdConfig, PaperTest};
@@ -19,21 +29,19 @@ fn fmt(v: Option<f32>, digits: usize) -> String {
     v.map_or_else(|| "–".to_owned(), |x| format!("{x:.digits$}"))
 }
 
-fn main() -> Result<(), Box<dyn std::error::Error>> {
-    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/crowd");
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let write = args.iter().any(|a| a == "--write-presets");
-    // `--set key=value` (repeatable): override a top-level config field of
-    // every preset, value in JSON (e.g. `--set max_force=0.3`).
-    let mut overrides = Vec::new();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        if a == "--set" {
-            let kv = it.next().ok_or("--set needs key=value")?;
-            let (k, v) = kv.split_once('=').ok_or("--set needs key=value")?;
-            overrides.push((k.to_owned(), serde_json::from_str::<serde_json::Value>(v)?));
+fn main() -> ExitCode {
+    match metrics(&CrowdMetricsCli::parse()) {
+        Ok(()) => ExitCode::SUCCESS,
+        Err(e) => {
+            eprintln!("crowd-metrics: {e}");
+            ExitCode::FAILURE
         }
     }
+}
+
+fn metrics(cli: &CrowdMetricsCli) -> Result<(), Box<dyn std::error::Error>> {
+    let dir = PathBuf::from(env!("CARGO_MANIFEST_DIR")).join("scenarios/crowd");
+    let (write, overrides) = (cli.write_presets, &cli.overrides);
     if write {
         std::fs::create_dir_all(&dir)?;
     }
@@ -52,7 +60,7 @@ fn main() -> Result<(), Box<dyn std::error::Error>> {
             };
             if !overrides.is_empty() {
                 let mut v = serde_json::to_value(&cfg)?;
-                for (k, val) in &overrides {
+                for (k, val) in overrides {
                     v[k.as_str()] = val.clone();
                 }
                 cfg = CrowdConfig::from_json(&v.to_string())?;

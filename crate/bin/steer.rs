@@ -1,39 +1,43 @@
-//! `steer`: the command-line runner.
+//! `steer`: the command-line runner (arguments: [`steering::cli::steer`];
+//! `steer --help`, `steer run --help`, …).
 //!
 //! ```text
-//! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE]
-//! steer reach [--n N] [--seed S] [--table FILE]
-//! steer relaxed [--n N] [--seed S] [--table FILE] [--disk-margin F] [--orientation-margin F]
+//! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]
+//! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
+//! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F] [--threads N]
 //! ```
-//! `run --controller standard|relaxed` overrides the scenario's controller.
+//! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
+//! and writes the per-step pose, speeds and mode of every agent plus its
+//! metrics; `--controller` overrides the scenario's controller.
+//! `reach` runs the seeded random reach study for every μ-bound variant and
+//! prints the acceptance figures of the funnelling issue.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
 //! controllers, then the seeded random region-goal study, and prints the
 //! comparison of paper 001 (path length, integrated |curvature|, reach).
-//! `run` simulates a scenario file (schema: `crate/scenario.rs`) and writes
-//! the per-step pose, speeds and mode of every agent plus its metrics.
-//! `reach` runs the seeded random reach study for every μ-bound variant and
-//! prints the acceptance figures of the funnelling issue.
+//! Studies run on rayon; their output does not depend on `--threads`.
 
-// `wasm-pack test` builds every binary for wasm32, where the threaded
-// studies do not exist: there this binary is empty.
+// `wasm-pack test` builds every binary for wasm32, where clap and rayon
+// are not dependencies: there this binary is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 
 use std::fmt::Write as _;
 use std::process::ExitCode;
 
+use std::path::Path;
+
+use clap::Parser;
 use serde::Serialize;
 use steering::angle::diff;
+use steering::cli::steer::{Command, ReachArgs, RelaxedArgs, RunArgs, SteerCli};
 use steering::dubins;
 use steering::funnel::{FunnelConfig, MuBound};
 use steering::metrics::PathMetrics;
 use steering::region_study::{compare, Comparison, RegionStudy};
-use steering::relaxed::{Controller, ControllerKind};
+use steering::relaxed::{Controller, ControllerKind, RelaxedConfig};
 use steering::scenario::Scenario;
 use steering::study::{summarise, ReachStudy};
 use steering::table::EtaTable;
-
-const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F]";
 
 #[derive(Serialize, Default)]
 #[serde(rename_all = "camelCase")]
@@ -78,52 +82,26 @@ struct RunOut {
     agents: Vec<AgentOut>,
 }
 
-fn load_table(path: &str) -> Result<EtaTable, String> {
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read η table {path}: {e}"))?;
-    EtaTable::from_bytes(&bytes).map_err(|e| format!("{path}: {e}"))
+fn load_table(path: &Path) -> Result<EtaTable, String> {
+    let shown = path.display();
+    let bytes = std::fs::read(path).map_err(|e| format!("cannot read η table {shown}: {e}"))?;
+    EtaTable::from_bytes(&bytes).map_err(|e| format!("{shown}: {e}"))
 }
 
-fn run(args: &[String]) -> Result<(), String> {
-    let mut scenario = None;
-    let mut out = None;
-    let mut every = 1u32;
-    let mut table_path = "tables/eta.bin".to_string();
-    let mut controller = None;
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--out" => out = it.next().cloned(),
-            "--controller" => {
-                controller = Some(
-                    it.next()
-                        .and_then(|s| ControllerKind::parse(s))
-                        .ok_or("--controller wants standard or relaxed")?,
-                )
-            }
-            "--every" => {
-                every = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .filter(|&n| n > 0)
-                    .ok_or("--every wants a positive integer")?
-            }
-            "--table" => table_path = it.next().cloned().ok_or("--table wants a file")?,
-            s if !s.starts_with('-') && scenario.is_none() => scenario = Some(s.to_string()),
-            s => return Err(format!("unknown argument `{s}`\n{USAGE}")),
-        }
-    }
-    let scenario = scenario.ok_or(USAGE)?;
-    let out = out.ok_or("--out TRAJ.json|TRAJ.csv is required")?;
-    let text =
-        std::fs::read_to_string(&scenario).map_err(|e| format!("cannot read {scenario}: {e}"))?;
+fn run(args: &RunArgs) -> Result<(), String> {
+    let scenario = args.scenario.display();
+    let out = args.out.display().to_string();
+    let (every, table_path, controller) = (args.every, &args.table, args.controller);
+    let text = std::fs::read_to_string(&args.scenario)
+        .map_err(|e| format!("cannot read {scenario}: {e}"))?;
     let mut sc = Scenario::from_json(&text).map_err(|e| format!("{scenario}: {e}"))?;
     if let Some(c) = controller {
         sc.controller = c;
     }
-    let table = load_table(&table_path)?;
+    let table = load_table(table_path)?;
     table
         .check_params(&sc.vehicle)
-        .map_err(|e| format!("{table_path}: {e}"))?;
+        .map_err(|e| format!("{}: {e}", table_path.display()))?;
     let mut world = sc.world().map_err(|e| format!("{scenario}: {e}"))?;
     let starts: Vec<_> = world.agents.iter().map(|a| a.state).collect();
     let mut traces: Vec<Trace> = world.agents.iter().map(|_| Trace::default()).collect();
@@ -220,32 +198,16 @@ fn run(args: &[String]) -> Result<(), String> {
     Ok(())
 }
 
-fn reach(args: &[String]) -> Result<(), String> {
-    let mut study = ReachStudy::default();
-    let mut table_path = "tables/eta.bin".to_string();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--n" => {
-                study.n = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .ok_or("--n wants an integer")?
-            }
-            "--seed" => {
-                study.seed = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .ok_or("--seed wants an integer")?
-            }
-            "--table" => table_path = it.next().cloned().ok_or("--table wants a file")?,
-            s => return Err(format!("unknown argument `{s}`\n{USAGE}")),
-        }
-    }
-    let table = load_table(&table_path)?;
+fn reach(args: &ReachArgs) -> Result<(), String> {
+    let study = ReachStudy {
+        n: args.n,
+        seed: args.seed,
+        ..ReachStudy::default()
+    };
+    let table_path = &args.table;
+    let table = load_table(table_path)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     println!(
         "reach study: {} scenarios, seed {}, D in [{}, {}] m, D_tol {} m, eps_tol {:.0} deg, v_d {} m/s, limit {} s",
         study.n,
@@ -280,7 +242,7 @@ fn reach(args: &[String]) -> Result<(), String> {
             gain,
             seek_threshold: th,
         };
-        let s = summarise(&study.run_all(&table, &p, &cfg, threads));
+        let s = summarise(&args.pool.install(|| study.run_all(&table, &p, &cfg))?);
         let default = if cfg == FunnelConfig::default() {
             " (default)"
         } else {
@@ -327,52 +289,30 @@ fn print_row(name: &str, c: &Comparison) {
     );
 }
 
-fn relaxed(args: &[String]) -> Result<(), String> {
-    let mut study = RegionStudy::default();
-    let mut table_path = "tables/eta.bin".to_string();
-    let mut dir = "scenarios".to_string();
-    let mut rcfg = steering::relaxed::RelaxedConfig::default();
-    let mut it = args.iter();
-    while let Some(a) = it.next() {
-        match a.as_str() {
-            "--n" => {
-                study.n = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .ok_or("--n wants an integer")?
-            }
-            "--seed" => {
-                study.seed = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .ok_or("--seed wants an integer")?
-            }
-            "--table" => table_path = it.next().cloned().ok_or("--table wants a file")?,
-            "--scenarios" => dir = it.next().cloned().ok_or("--scenarios wants a folder")?,
-            "--disk-margin" => {
-                rcfg.disk_margin = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .ok_or("--disk-margin wants a number")?
-            }
-            "--orientation-margin" => {
-                rcfg.orientation_margin = it
-                    .next()
-                    .and_then(|s| s.parse().ok())
-                    .ok_or("--orientation-margin wants a number")?
-            }
-            s => return Err(format!("unknown argument `{s}`\n{USAGE}")),
-        }
+fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
+    let study = RegionStudy {
+        n: args.n,
+        seed: args.seed,
+        ..RegionStudy::default()
+    };
+    let table_path = &args.table;
+    let dir = args.scenarios.display();
+    let mut rcfg = RelaxedConfig::default();
+    if let Some(m) = args.disk_margin {
+        rcfg.disk_margin = m;
+    }
+    if let Some(m) = args.orientation_margin {
+        rcfg.orientation_margin = m;
     }
     rcfg.validate().map_err(|e| e.to_string())?;
-    let table = load_table(&table_path)?;
+    let table = load_table(table_path)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
     println!("Relaxed settings: {rcfg:?}");
     println!("Paper 001 presets (per agent, whole run; reach = finished every goal):");
     println!("| preset | agents | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
     println!("|---|---|---|---|---|---|---|");
-    let mut names: Vec<String> = std::fs::read_dir(&dir)
+    let mut names: Vec<String> = std::fs::read_dir(&args.scenarios)
         .map_err(|e| format!("cannot read {dir}: {e}"))?
         .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
         .filter(|n| n.starts_with("p001_") && n.ends_with("_standard.json"))
@@ -393,7 +333,6 @@ fn relaxed(args: &[String]) -> Result<(), String> {
         all_r.extend(re);
     }
     print_row("all presets", &compare(&all_s, &all_r));
-    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
     println!(
         "\nRandom region goals: {} scenarios, seed {}, D in [{}, {}] m, radius in [{}, {}] m, tau in [{:.0}, {:.0}] deg, v_d {} m/s, limit {} s (reach = ends inside the disk with heading inside T):",
         study.n,
@@ -410,8 +349,12 @@ fn relaxed(args: &[String]) -> Result<(), String> {
     println!("| study | n | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
     println!("|---|---|---|---|---|---|---|");
     let f = FunnelConfig::default();
-    let rs = study.run_all(&table, &p, &Controller::Standard(f), threads);
-    let rr = study.run_all(&table, &p, &Controller::Relaxed(f, rcfg), threads);
+    let (rs, rr) = args.pool.install(|| {
+        (
+            study.run_all(&table, &p, &Controller::Standard(f)),
+            study.run_all(&table, &p, &Controller::Relaxed(f, rcfg)),
+        )
+    })?;
     let pick = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
         v.iter().map(|r| (r.path, r.reached)).collect()
     };
@@ -442,16 +385,11 @@ fn relaxed(args: &[String]) -> Result<(), String> {
 }
 
 fn main() -> ExitCode {
-    let args: Vec<String> = std::env::args().skip(1).collect();
-    let result = match args.first().map(String::as_str) {
-        Some("run") => run(&args[1..]),
-        Some("reach") => reach(&args[1..]),
-        Some("relaxed") => relaxed(&args[1..]),
-        Some("-h" | "--help") => {
-            println!("{USAGE}");
-            Ok(())
-        }
-        _ => Err(USAGE.to_string()),
+    let cli = SteerCli::parse();
+    let result = match &cli.command {
+        Command::Run(a) => run(a),
+        Command::Reach(a) => reach(a),
+        Command::Relaxed(a) => relaxed(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

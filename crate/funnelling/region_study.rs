@@ -134,34 +134,15 @@ impl RegionStudy {
         )
     }
 
-    /// Runs scenarios `range` with `ctl`.
+    /// Runs the whole study with `ctl`: in parallel on the current rayon
+    /// pool natively, sequentially on wasm32; results in scenario order,
+    /// independent of the thread count ([`crate::parallel`]).
     #[must_use]
-    pub fn run_range(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        ctl: &Controller,
-        range: core::ops::Range<usize>,
-    ) -> Vec<RegionRun> {
-        range
-            .map(|i| {
-                let (s, g) = self.scenario(p, i);
-                run_region(table, p, ctl, s, &g, self.max_time)
-            })
-            .collect()
-    }
-
-    /// Runs the whole study on `threads` threads (results in order).
-    #[cfg(not(target_arch = "wasm32"))]
-    #[must_use]
-    pub fn run_all(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        ctl: &Controller,
-        threads: usize,
-    ) -> Vec<RegionRun> {
-        crate::study::parallel_ranges(self.n, threads, |r| self.run_range(table, p, ctl, r))
+    pub fn run_all(&self, table: &EtaTable, p: &VehicleParams, ctl: &Controller) -> Vec<RegionRun> {
+        crate::parallel::map_indices(self.n, |i| {
+            let (s, g) = self.scenario(p, i);
+            run_region(table, p, ctl, s, &g, self.max_time)
+        })
     }
 }
 

@@ -164,60 +164,21 @@ impl ReachStudy {
         (start, goal)
     }
 
-    /// Runs scenarios `range` and returns their results.
-    #[must_use]
-    pub fn run_range(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        cfg: &FunnelConfig,
-        range: core::ops::Range<usize>,
-    ) -> Vec<RunResult> {
-        range
-            .map(|i| {
-                let (s, g) = self.scenario(p, i);
-                run(table, p, cfg, s, &g, self.max_time)
-            })
-            .collect()
-    }
-
-    /// Runs the whole study on `threads` threads.
-    #[cfg(not(target_arch = "wasm32"))]
+    /// Runs the whole study: in parallel on the current rayon pool natively,
+    /// sequentially on wasm32; results in scenario order, independent of
+    /// the thread count ([`crate::parallel`]).
     #[must_use]
     pub fn run_all(
         &self,
         table: &EtaTable,
         p: &VehicleParams,
         cfg: &FunnelConfig,
-        threads: usize,
     ) -> Vec<RunResult> {
-        parallel_ranges(self.n, threads, |r| self.run_range(table, p, cfg, r))
+        crate::parallel::map_indices(self.n, |i| {
+            let (s, g) = self.scenario(p, i);
+            run(table, p, cfg, s, &g, self.max_time)
+        })
     }
-}
-
-/// Splits `0..n` into `threads` contiguous ranges, runs `f` on each in its
-/// own thread and concatenates the results in order (shared by every study).
-#[cfg(not(target_arch = "wasm32"))]
-pub fn parallel_ranges<T: Send>(
-    n: usize,
-    threads: usize,
-    f: impl Fn(core::ops::Range<usize>) -> Vec<T> + Sync,
-) -> Vec<T> {
-    let threads = threads.max(1);
-    let per = n.div_ceil(threads);
-    let f = &f;
-    std::thread::scope(|sc| {
-        let hs: Vec<_> = (0..threads)
-            .map(|t| {
-                let lo = (t * per).min(n);
-                let hi = ((t + 1) * per).min(n);
-                sc.spawn(move || f(lo..hi))
-            })
-            .collect();
-        hs.into_iter()
-            .flat_map(|h| h.join().expect("study thread panicked"))
-            .collect()
-    })
 }
 
 /// Summarises results.

@@ -18,7 +18,7 @@
 //! - **Desired speed v_d**: 9 samples, 0.25 m/s to `v_max`, u² spacing.
 //!
 //! 16 × 56 × 5 × 9 × 9 = 362,880 entries (the paper has 43,200); 0.8 s on
-//! two cores.
+//! two cores (rayon, [`crate::parallel`]).
 //!
 //! # Entries
 //! Reachable: η at `v_d`. Unreachable: the largest desired speed among
@@ -36,10 +36,6 @@ use crate::vehicle::{VehicleParams, VehicleState};
 
 /// One generated entry: (η, desired-or-fallback speed, flags).
 pub type Entry = (f32, f32, u8);
-
-/// A generated chunk: first index and its entries (`None` = mirrored).
-#[cfg(not(target_arch = "wasm32"))]
-type Chunk = (usize, Vec<Option<Entry>>);
 
 /// Samples per axis of the committed table: D, α, ω fraction, v_c, v_d.
 pub const DEFAULT_COUNTS: [usize; AXES] = [16, 36, 5, 9, 9];
@@ -226,9 +222,13 @@ impl TableSpec {
     /// [`TableSpec::fill_mirrors`]).
     #[must_use]
     pub fn entries(&self, range: core::ops::Range<usize>) -> Vec<Option<Entry>> {
-        range
-            .map(|i| (!self.is_mirrored(i)).then(|| self.entry(i)))
-            .collect()
+        range.map(|i| self.unless_mirrored(i)).collect()
+    }
+
+    /// Entry `i`, or `None` when it [`TableSpec::is_mirrored`].
+    #[must_use]
+    pub fn unless_mirrored(&self, i: usize) -> Option<Entry> {
+        (!self.is_mirrored(i)).then(|| self.entry(i))
     }
 
     /// Completes the mirrored half of a symmetric generation.
@@ -245,44 +245,16 @@ impl TableSpec {
             .collect()
     }
 
-    /// Generates the whole table on `threads` threads (work-stealing by
-    /// chunks; the result does not depend on the thread count).
+    /// Generates the whole table: in parallel on the current rayon pool
+    /// natively, sequentially on wasm32 ([`crate::parallel`]). Entries are
+    /// computed independently and collected in index order, so the bytes do
+    /// not depend on the thread count.
     ///
     /// # Errors
     /// If the spec itself is invalid.
-    #[cfg(not(target_arch = "wasm32"))]
-    pub fn generate(&self, threads: usize) -> Result<EtaTable, TableError> {
-        use std::sync::atomic::{AtomicUsize, Ordering};
-        const CHUNK: usize = 256;
-        let n = self.len();
-        let next = AtomicUsize::new(0);
-        let mut out = vec![None; n];
-        let parts: Vec<Vec<Chunk>> = std::thread::scope(|sc| {
-            let handles: Vec<_> = (0..threads.max(1))
-                .map(|_| {
-                    sc.spawn(|| {
-                        let mut mine = Vec::new();
-                        loop {
-                            let start = next.fetch_add(CHUNK, Ordering::Relaxed);
-                            if start >= n {
-                                break;
-                            }
-                            let end = (start + CHUNK).min(n);
-                            mine.push((start, self.entries(start..end)));
-                        }
-                        mine
-                    })
-                })
-                .collect();
-            handles
-                .into_iter()
-                .map(|h| h.join().expect("generator thread panicked"))
-                .collect()
-        });
-        for (start, chunk) in parts.into_iter().flatten() {
-            out[start..start + chunk.len()].copy_from_slice(&chunk);
-        }
-        self.assemble(self.fill_mirrors(&out))
+    pub fn generate(&self) -> Result<EtaTable, TableError> {
+        let partial = crate::parallel::map_indices(self.len(), |i| self.unless_mirrored(i));
+        self.assemble(self.fill_mirrors(&partial))
     }
 
     /// Builds the table from computed entries.

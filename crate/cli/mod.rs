@@ -1,0 +1,17 @@
+//! The command lines (native only): argument structures parsed with clap's
+//! derive API, so every binary has `--help`, refuses unknown flags and
+//! says when a number overflows. The structures live in the library, not in
+//! `crate/bin/`, so tests can feed them argument vectors
+//! (`try_parse_from`) without spawning processes.
+//!
+//! | module | what |
+//! |---|---|
+//! | [`steer`] | `steer run / reach / relaxed`: one enum variant and one argument struct per subcommand |
+//! | [`eta_table`] | `eta-table`: output file, sample counts per axis, thread count |
+//! | [`crowd_metrics`] | `crowd-metrics`: `--write-presets`, repeatable `--set key=value` |
+//! | [`pool`] | `--threads`: the rayon pool a study or the table generator runs on |
+
+pub mod crowd_metrics;
+pub mod eta_table;
+pub mod pool;
+pub mod steer;
