@@ -4,6 +4,7 @@
 //! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE]
 //! steer reach [--n N] [--seed S] [--table FILE]
 //! steer relaxed [--n N] [--seed S] [--table FILE] [--disk-margin F] [--orientation-margin F]
+//! steer envelope [--n N] [--seed S] [--json FILE] [--table FILE]
 //! ```
 //! `run --controller standard|relaxed` overrides the scenario's controller.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
@@ -33,7 +34,7 @@ use steering::scenario::Scenario;
 use steering::study::{summarise, ReachStudy};
 use steering::table::EtaTable;
 
-const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F]";
+const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F]\n  steer envelope [--n N] [--seed S] [--json FILE] [--table FILE]";
 
 #[derive(Serialize, Default)]
 #[serde(rename_all = "camelCase")]
@@ -441,12 +442,47 @@ fn relaxed(args: &[String]) -> Result<(), String> {
     Ok(())
 }
 
+/// `steer envelope [--n N] [--seed S] [--json FILE] [--table FILE]`: the
+/// envelope study (`steering::funnelling::envelope`), N static scenarios
+/// per variant and N/5 moving and chained ones.
+fn envelope(args: &[String]) -> Result<(), String> {
+    use steering::funnelling::envelope::{variants, EnvelopeStudy};
+    let mut study = EnvelopeStudy::default();
+    let (mut json, mut table_path) = (None, "tables/eta.bin".to_string());
+    let mut it = args.iter();
+    while let Some(a) = it.next() {
+        let mut val = || it.next().ok_or(format!("{a} wants a value"));
+        match a.as_str() {
+            "--n" => {
+                let n: usize = val()?.parse().map_err(|_| "--n wants an integer")?;
+                (study.n_static, study.n_moving, study.n_chain) = (n, n / 5, n / 5);
+            }
+            "--seed" => study.seed = val()?.parse().map_err(|_| "--seed wants an integer")?,
+            "--json" => json = Some(val()?.clone()),
+            "--table" => table_path = val()?.clone(),
+            s => return Err(format!("unknown argument `{s}`\n{USAGE}")),
+        }
+    }
+    let table = load_table(&table_path)?;
+    let p = steering::vehicle::VehicleParams::default();
+    table.check_params(&p).map_err(|e| e.to_string())?;
+    let threads = std::thread::available_parallelism().map_or(2, |n| n.get());
+    let report = study.run_all(&table, &p, &variants(), threads);
+    print!("{}", report.tables(&["standard", "standard-literal"]));
+    if let Some(path) = json {
+        let body = serde_json::to_string_pretty(&report.to_json()).map_err(|e| e.to_string())?;
+        std::fs::write(&path, body).map_err(|e| format!("cannot write {path}: {e}"))?;
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let args: Vec<String> = std::env::args().skip(1).collect();
     let result = match args.first().map(String::as_str) {
         Some("run") => run(&args[1..]),
         Some("reach") => reach(&args[1..]),
         Some("relaxed") => relaxed(&args[1..]),
+        Some("envelope") => envelope(&args[1..]),
         Some("-h" | "--help") => {
             println!("{USAGE}");
             Ok(())

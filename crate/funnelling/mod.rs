@@ -13,8 +13,10 @@
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation |
 //! | [`study`] | 000 §5 | seeded reach study behind the acceptance figures |
+//! | [`envelope`] | 000 §4–6, 001 §4 | seeded study over the whole operating envelope: tolerances × speed × distance, static, moving and chained goals, both controllers |
 //! | [`region_study`] | 001 §5 | seeded region-goal study: standard vs relaxed |
 
+pub mod envelope;
 pub mod funnel;
 pub mod region_study;
 pub mod relaxed;
