@@ -29,7 +29,7 @@ use std::path::Path;
 use clap::Parser;
 use serde::Serialize;
 use steering::angle::diff;
-use steering::cli::steer::{Command, ReachArgs, RelaxedArgs, RunArgs, SteerCli};
+use steering::cli::steer::{Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli};
 use steering::dubins;
 use steering::funnel::{FunnelConfig, MuBound};
 use steering::metrics::PathMetrics;
@@ -195,6 +195,26 @@ fn run(args: &RunArgs) -> Result<(), String> {
         sc.controller.name(),
         result.agents.len()
     );
+    Ok(())
+}
+
+/// `steer envelope`: the envelope study (`steering::funnelling::envelope`).
+fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
+    use steering::funnelling::envelope::{variants, EnvelopeStudy};
+    let mut study = EnvelopeStudy {
+        seed: args.seed,
+        ..EnvelopeStudy::default()
+    };
+    (study.n_static, study.n_moving, study.n_chain) = (args.n, args.n / 5, args.n / 5);
+    let table = load_table(&args.table)?;
+    let p = steering::vehicle::VehicleParams::default();
+    table.check_params(&p).map_err(|e| e.to_string())?;
+    let report = study.run_all(&table, &p, &variants(), 0);
+    print!("{}", report.tables(&["standard", "standard-literal"]));
+    if let Some(path) = &args.json {
+        let body = serde_json::to_string_pretty(&report.to_json()).map_err(|e| e.to_string())?;
+        std::fs::write(path, body).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
+    }
     Ok(())
 }
 
@@ -389,6 +409,7 @@ fn main() -> ExitCode {
     let result = match &cli.command {
         Command::Run(a) => run(a),
         Command::Reach(a) => reach(a),
+        Command::Envelope(a) => envelope(a),
         Command::Relaxed(a) => relaxed(a),
     };
     match result {

@@ -27,6 +27,8 @@ pub enum Command {
     Reach(ReachArgs),
     /// Standard vs relaxed funnelling: paper 001 presets, then random region goals.
     Relaxed(RelaxedArgs),
+    /// The envelope study (issue 13): tolerances × speed × distance, static, moving and chained goals.
+    Envelope(EnvelopeArgs),
 }
 
 /// `steer run`.
@@ -98,4 +100,21 @@ pub struct RelaxedArgs {
 /// Anything else.
 pub fn parse_controller(s: &str) -> Result<ControllerKind, String> {
     ControllerKind::parse(s).ok_or_else(|| format!("`{s}` is neither standard nor relaxed"))
+}
+
+/// `steer envelope`.
+#[derive(Args, Clone, Debug, PartialEq)]
+pub struct EnvelopeArgs {
+    /// Static scenarios per variant (moving and chained: N/5 each).
+    #[arg(long, value_name = "N", default_value_t = 2000)]
+    pub n: usize,
+    /// Seed.
+    #[arg(long, value_name = "S", default_value_t = 1)]
+    pub seed: u64,
+    /// Write the per-group and per-cell summaries as JSON.
+    #[arg(long, value_name = "FILE")]
+    pub json: Option<PathBuf>,
+    /// η table.
+    #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
+    pub table: PathBuf,
 }

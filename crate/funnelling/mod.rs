@@ -12,11 +12,13 @@
 //! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r; controller choice |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation |
+//! | [`envelope`] | 000 §4–6, 001 §4 | seeded study over the whole operating envelope: tolerances × speed × distance, static, moving and chained goals, both controllers |
 //! | [`study`] | 000 §5 | seeded reach study behind the acceptance figures |
 //! | [`region_study`] | 001 §5 | seeded region-goal study: standard vs relaxed |
 
 pub mod approach;
 pub mod controller;
+pub mod envelope;
 pub mod funnel;
 pub mod region_study;
 pub mod relaxed;
