@@ -24,7 +24,7 @@ fn every_variant_stays_finite_and_within_limits_and_standard_finishes() {
         ..Default::default()
     };
     let p = VehicleParams::default();
-    let report = study.run_all(&table(), &p, &variants(), 2);
+    let report = study.run_all(&table(), &p, &variants());
     for v in &report.variants {
         for g in &v.groups {
             let s = summarise(&g.runs);

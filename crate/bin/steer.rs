@@ -209,7 +209,7 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     let table = load_table(&args.table)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
-    let report = study.run_all(&table, &p, &variants(), 0);
+    let report = study.run_all(&table, &p, &variants());
     print!("{}", report.tables(&["standard", "standard-literal"]));
     if let Some(path) = &args.json {
         let body = serde_json::to_string_pretty(&report.to_json()).map_err(|e| e.to_string())?;

@@ -542,16 +542,9 @@ pub struct EnvelopeReport {
     pub variants: Vec<VariantReport>,
 }
 
-/// Runs `f(i)` for `i` in `0..n` on `threads` threads, results in order:
-/// the one place the envelope study goes parallel.
-#[cfg(not(target_arch = "wasm32"))]
-fn par_map<T: Send>(n: usize, threads: usize, f: impl Fn(usize) -> T + Sync) -> Vec<T> {
-    let _ = threads;
-    crate::base::parallel::map_indices(n, &f)
-}
-
 impl EnvelopeStudy {
-    /// Runs every group for `variants` on `threads` threads. Scenarios are
+    /// Runs every group for `variants` on rayon's pool (results do not
+    /// depend on its size). Scenarios are
     /// sampled once and shared by the variants.
     #[cfg(not(target_arch = "wasm32"))]
     #[must_use]
@@ -560,7 +553,6 @@ impl EnvelopeStudy {
         table: &EtaTable,
         p: &VehicleParams,
         variants: &[Variant],
-        threads: usize,
     ) -> EnvelopeReport {
         let scenarios: Vec<Vec<EnvScenario>> = GoalKind::ALL
             .iter()
@@ -569,7 +561,7 @@ impl EnvelopeStudy {
         let jobs: Vec<(usize, &EnvScenario)> = (0..variants.len())
             .flat_map(|v| scenarios.iter().flatten().map(move |s| (v, s)))
             .collect();
-        let records = par_map(jobs.len(), threads, |j| {
+        let records = crate::base::parallel::map_indices(jobs.len(), |j| {
             let (v, sc) = jobs[j];
             run(table, p, &variants[v].controller, sc, self.max_time)
         });
