@@ -207,9 +207,8 @@ fn plan_with(
     (i, ri)
 }
 
-#[test]
-fn relaxed_point_lies_in_the_disk_on_a_sampled_ring() {
-    let t = table();
+/// A 2 m disk 8.5 m ahead and to the left, β 1 rad, τ 0.2 rad.
+fn wide_disk_ahead() -> (VehicleState, Goal) {
     let g = Goal {
         pos: Vec2::new(8.0, 3.0),
         beta: 1.0,
@@ -217,7 +216,13 @@ fn relaxed_point_lies_in_the_disk_on_a_sampled_ring() {
         eps_tol: 0.2,
         ..Default::default()
     };
-    let s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
+    (VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0), g)
+}
+
+#[test]
+fn relaxed_point_lies_in_the_disk_on_a_sampled_ring() {
+    let t = table();
+    let (s, g) = wide_disk_ahead();
     let (i, ri) = plan(&t, s, &g);
     assert!(
         ri.ring_sampled && t.distances().contains(&ri.ring),
@@ -305,14 +310,7 @@ fn relaxed_reach_on_seeded_random_region_goals() {
 fn entry_aim_is_the_disk_entry_point_along_beta() {
     let t = table();
     let reach = t.params().reach_radius;
-    let g = Goal {
-        pos: Vec2::new(8.0, 3.0),
-        beta: 1.0,
-        d_tol: 2.0,
-        eps_tol: 0.2,
-        ..Default::default()
-    };
-    let s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
+    let (s, g) = wide_disk_ahead();
     let (i, ri) = plan_with(&RelaxedConfig::default(), &t, s, &g);
     assert_eq!(ri.branch, Fig7Branch::EntryPoint);
     let aim = Vec2::new(ri.point_x, ri.point_y);

@@ -3,7 +3,7 @@
 //! ```text
 //! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE]
 //! steer reach [--n N] [--seed S] [--table FILE]
-//! steer relaxed [--n N] [--seed S] [--table FILE] [--disk-margin F] [--orientation-margin F]
+//! steer relaxed [--n N] [--seed S] [--table FILE] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F]
 //! ```
 //! `run --controller standard|relaxed` overrides the scenario's controller.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
@@ -33,7 +33,7 @@ use steering::scenario::Scenario;
 use steering::study::{summarise, ReachStudy};
 use steering::table::EtaTable;
 
-const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F]";
+const USAGE: &str = "usage:\n  steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]\n  steer reach [--n N] [--seed S] [--table FILE]\n  steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F]";
 
 #[derive(Serialize, Default)]
 #[serde(rename_all = "camelCase")]
@@ -354,6 +354,13 @@ fn relaxed(args: &[String]) -> Result<(), String> {
                     .next()
                     .and_then(|s| s.parse().ok())
                     .ok_or("--disk-margin wants a number")?
+            }
+            "--aim" => {
+                rcfg.aim = match it.next().map(String::as_str) {
+                    Some("entry") => steering::relaxed::RelaxedAim::Entry,
+                    Some("paper-arc") => steering::relaxed::RelaxedAim::PaperArc,
+                    _ => return Err("--aim wants entry or paper-arc".into()),
+                }
             }
             "--orientation-margin" => {
                 rcfg.orientation_margin = it

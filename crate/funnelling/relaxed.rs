@@ -80,6 +80,7 @@
 
 use core::f32::consts::{PI, TAU};
 
+use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::angle::{diff, wrap};
@@ -88,7 +89,7 @@ use crate::funnel::{
     Mode,
 };
 use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
+use crate::table::{EtaTable, Lookup};
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 
 /// Which controller steers the agents of a [`crate::world::World`].
@@ -416,14 +417,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         *ri = RelaxedInternals::default();
-        let rel = g.pos - s.pos;
-        let d = rel.length();
-        let bearing = if d > 1e-6 {
-            crate::trig::atan2(rel.y, rel.x)
-        } else {
-            s.theta
-        };
-        let alpha_c = diff(bearing, s.theta);
+        let (d, bearing, alpha_c) = seen_from(s, g.pos);
         let mut v_d = g.speed;
         if g.halting {
             v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
@@ -522,11 +516,7 @@ impl RelaxedConfig {
             out.mode = Mode::PositionOnly;
             return out;
         }
-        out.mode = Mode::Funnelling;
-        out.mu_max = funnel.mu_max(table, p, &lk, ring, out.delta_eta, s.v);
-        out.mu = funnel.modulation(out.delta_eta, out.mu_max);
-        out.gamma = wrap(dir + out.mu);
-        out
+        funnel_around(funnel, table, p, s, &lk, ring, dir, out)
     }
 
     /// [`RelaxedAim::Entry`] once the position tolerance is not met: the
@@ -549,14 +539,7 @@ impl RelaxedConfig {
     ) -> Internals {
         let depth = (g.d_tol - table.params().reach_radius).max(0.0);
         let aim = g.pos - crate::trig::unit(g.beta) * depth;
-        let rel = aim - s.pos;
-        let dist = rel.length();
-        let bearing = if dist > 1e-6 {
-            crate::trig::atan2(rel.y, rel.x)
-        } else {
-            s.theta
-        };
-        let alpha = diff(bearing, s.theta);
+        let (dist, bearing, alpha) = seen_from(s, aim);
         let v_d = out.v_dt;
         let lk = table.lookup(dist, alpha, s.omega, s.v, v_d.max(table.axis(4)[0]));
         out.reachable = lk.reachable;
@@ -599,11 +582,7 @@ impl RelaxedConfig {
             out.mode = Mode::PositionOnly;
             return out;
         }
-        out.mode = Mode::Funnelling;
-        out.mu_max = funnel.mu_max(table, p, &lk, dist, out.delta_eta, s.v);
-        out.mu = funnel.modulation(out.delta_eta, out.mu_max);
-        out.gamma = wrap(bearing + out.mu);
-        out
+        funnel_around(funnel, table, p, s, &lk, dist, bearing, out)
     }
 
     /// One relaxed update: plan, then one seek step.
@@ -622,6 +601,42 @@ impl RelaxedConfig {
         seek_step_committed(p, s, out.gamma, out.v_dt);
         out
     }
+}
+
+/// Distance, world bearing and radial angle α (vehicle frame) of `point`
+/// seen from the vehicle (bearing = heading when on the point).
+#[inline]
+fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
+    let rel = point - s.pos;
+    let d = rel.length();
+    let bearing = if d > 1e-6 {
+        crate::trig::atan2(rel.y, rel.x)
+    } else {
+        s.theta
+    };
+    (d, bearing, diff(bearing, s.theta))
+}
+
+/// Funnelling mode around the aim direction `dir` (absolute) at distance
+/// `dist`, with `out.delta_eta` already measured: the bounded modulation μ
+/// of paper 000 Fig. 4, shared by both aims.
+#[allow(clippy::too_many_arguments)]
+#[inline]
+fn funnel_around(
+    funnel: &FunnelConfig,
+    table: &EtaTable,
+    p: &VehicleParams,
+    s: &VehicleState,
+    lk: &Lookup,
+    dist: f32,
+    dir: f32,
+    mut out: Internals,
+) -> Internals {
+    out.mode = Mode::Funnelling;
+    out.mu_max = funnel.mu_max(table, p, lk, dist, out.delta_eta, s.v);
+    out.mu = funnel.modulation(out.delta_eta, out.mu_max);
+    out.gamma = wrap(dir + out.mu);
+    out
 }
 
 /// A controller with its settings: what a study or a world runs.
