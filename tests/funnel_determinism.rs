@@ -31,7 +31,7 @@ const PRESETS: [(&str, &str, u64); 3] = [
     (
         "p001_fig12_successive_relaxed",
         include_str!("../scenarios/p001_fig12_successive_relaxed.json"),
-        0x6f44_c4c5_605d_2893,
+        0xec7a_cc4a_1116_7f1b,
     ),
 ];
 

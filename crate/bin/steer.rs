@@ -4,7 +4,7 @@
 //! ```text
 //! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]
 //! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
-//! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--disk-margin F] [--orientation-margin F] [--threads N]
+//! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
 //! ```
 //! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
 //! and writes the per-step pose, speeds and mode of every agent plus its
@@ -318,6 +318,9 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     let table_path = &args.table;
     let dir = args.scenarios.display();
     let mut rcfg = RelaxedConfig::default();
+    if let Some(aim) = args.aim {
+        rcfg.aim = aim;
+    }
     if let Some(m) = args.disk_margin {
         rcfg.disk_margin = m;
     }

@@ -83,6 +83,9 @@ pub struct RelaxedArgs {
     /// Folder holding the `p001_*_standard.json` presets.
     #[arg(long, value_name = "DIR", default_value = "scenarios")]
     pub scenarios: PathBuf,
+    /// Where the relaxed controller aims (default: the relaxed controller's, entry).
+    #[arg(long, value_name = "entry|paper-arc", value_parser = parse_aim)]
+    pub aim: Option<crate::relaxed::RelaxedAim>,
     /// Relaxed setting `diskMargin` (default: the relaxed controller's).
     #[arg(long, value_name = "F")]
     pub disk_margin: Option<f32>,
@@ -100,6 +103,18 @@ pub struct RelaxedArgs {
 /// Anything else.
 pub fn parse_controller(s: &str) -> Result<ControllerKind, String> {
     ControllerKind::parse(s).ok_or_else(|| format!("`{s}` is neither standard nor relaxed"))
+}
+
+/// Parses `--aim`.
+///
+/// # Errors
+/// Neither `entry` nor `paper-arc`.
+pub fn parse_aim(s: &str) -> Result<crate::relaxed::RelaxedAim, String> {
+    match s {
+        "entry" => Ok(crate::relaxed::RelaxedAim::Entry),
+        "paper-arc" => Ok(crate::relaxed::RelaxedAim::PaperArc),
+        _ => Err(format!("`{s}` is neither entry nor paper-arc")),
+    }
 }
 
 /// `steer envelope`.

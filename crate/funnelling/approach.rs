@@ -15,6 +15,8 @@
 
 use core::ops::ControlFlow;
 
+use glam::Vec2;
+
 use crate::angle::{diff, wrap};
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::table::{EtaTable, Lookup};
@@ -64,6 +66,21 @@ pub fn tolerance_phase(
     false
 }
 
+/// Distance, world bearing and radial angle α (vehicle frame) of `point`
+/// seen from the vehicle (bearing = heading when on the point).
+#[inline]
+#[must_use]
+pub fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
+    let rel = point - s.pos;
+    let d = rel.length();
+    let bearing = if d > 1e-6 {
+        crate::trig::atan2(rel.y, rel.x)
+    } else {
+        s.theta
+    };
+    (d, bearing, diff(bearing, s.theta))
+}
+
 /// One update's view of its goal, once the tolerance phase has let it
 /// through: the context (table, vehicle) and what was measured.
 #[derive(Clone, Copy, Debug)]
@@ -96,14 +113,7 @@ impl<'a> Approach<'a> {
         g: &Goal,
         mem: &mut FunnelMemory,
     ) -> ControlFlow<Internals, (Self, Internals)> {
-        let rel = g.pos - s.pos;
-        let d = rel.length();
-        let bearing = if d > 1e-6 {
-            crate::trig::atan2(rel.y, rel.x)
-        } else {
-            s.theta
-        };
-        let alpha = diff(bearing, s.theta);
+        let (d, bearing, alpha) = seen_from(s, g.pos);
         let mut v_d = g.speed;
         if g.halting {
             v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
@@ -131,6 +141,27 @@ impl<'a> Approach<'a> {
             },
             out,
         ))
+    }
+
+    /// Distance, world bearing and radial angle α of `point` from the
+    /// vehicle ([`seen_from`]).
+    #[inline]
+    #[must_use]
+    pub fn seen(&self, point: Vec2) -> (f32, f32, f32) {
+        seen_from(self.s, point)
+    }
+
+    /// The disk's *entry point*: `d_tol − r_reach` before the centre along
+    /// β (`r_reach` the table's reach radius), the centre itself for disks
+    /// no larger than `r_reach`. The η table predicts the heading on
+    /// reaching a `r_reach` circle around the point it is asked about, so
+    /// asked about this point it predicts the heading on *entering* the
+    /// tolerance disk, which is what End_of_Steering and a user judge.
+    #[inline]
+    #[must_use]
+    pub fn entry_point(&self, g: &Goal) -> Vec2 {
+        let depth = (g.d_tol - self.table.params().reach_radius).max(0.0);
+        g.pos - crate::trig::unit(g.beta) * depth
     }
 
     /// The desired speed as queried in the table (raised to the table's

@@ -47,7 +47,7 @@ use crate::angle::diff;
 use crate::dubins;
 use crate::funnel::{FunnelConfig, Goal, Mode, MuBound};
 use crate::metrics::percentile;
-use crate::relaxed::{Controller, ControllerKind, RelaxedConfig};
+use crate::relaxed::{Controller, ControllerKind, RelaxedAim, RelaxedConfig};
 use crate::rng::Rng;
 use crate::table::EtaTable;
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -126,12 +126,25 @@ pub fn literal_config() -> FunnelConfig {
     }
 }
 
+/// Paper 001 Fig. 7 read literally: the relaxed point on the ring arc 𝒜,
+/// T searched over 0.8 of τ (the relaxed settings before issue 13).
+#[must_use]
+pub fn literal_relaxed_config() -> RelaxedConfig {
+    RelaxedConfig {
+        aim: RelaxedAim::PaperArc,
+        disk_margin: 0.8,
+        orientation_margin: 0.8,
+        ..RelaxedConfig::default()
+    }
+}
+
 /// The four variants: standard and relaxed, default and literal.
 #[must_use]
 pub fn variants() -> [Variant; 4] {
     let d = FunnelConfig::default();
     let l = literal_config();
     let r = RelaxedConfig::default();
+    let rl = literal_relaxed_config();
     [
         Variant {
             name: "standard",
@@ -147,7 +160,7 @@ pub fn variants() -> [Variant; 4] {
         },
         Variant {
             name: "relaxed-literal",
-            controller: Controller::Relaxed(l, r),
+            controller: Controller::Relaxed(l, rl),
         },
     ]
 }
