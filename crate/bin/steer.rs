@@ -209,8 +209,34 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     let table = load_table(&args.table)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
-    let report = study.run_all(&table, &p, &variants());
-    print!("{}", report.tables(&["standard", "standard-literal"]));
+    let mut vs = variants().to_vec();
+    if let Some(json) = &args.standard {
+        let cfg: steering::funnel::FunnelConfig =
+            serde_json::from_str(json).map_err(|e| format!("--standard: {e}"))?;
+        cfg.validate().map_err(|e| format!("--standard: {e}"))?;
+        for v in &mut vs {
+            match &mut v.controller {
+                steering::relaxed::Controller::Standard(f) if v.name == "standard" => *f = cfg,
+                steering::relaxed::Controller::Relaxed(f, _) if v.name == "relaxed" => *f = cfg,
+                _ => {}
+            }
+        }
+    }
+    if let Some(only) = &args.only {
+        vs.retain(|v| only.split(',').any(|n| n == v.name));
+    }
+    let report = study.run_all(&table, &p, &vs);
+    let detail: &[&str] = if args.brief {
+        &[]
+    } else {
+        &["standard", "standard-literal", "relaxed"]
+    };
+    print!("{}", report.tables(detail));
+    println!(
+        "\nissue 13 targets (seed {}):\n{}",
+        args.seed,
+        report.targets()
+    );
     if let Some(path) = &args.json {
         let body = serde_json::to_string_pretty(&report.to_json()).map_err(|e| e.to_string())?;
         std::fs::write(path, body).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
@@ -261,6 +287,7 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
             bound,
             gain,
             seek_threshold: th,
+            ..FunnelConfig::default()
         };
         let s = summarise(&args.pool.install(|| study.run_all(&table, &p, &cfg))?);
         let default = if cfg == FunnelConfig::default() {

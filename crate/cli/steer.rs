@@ -132,4 +132,15 @@ pub struct EnvelopeArgs {
     /// η table.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
     pub table: PathBuf,
+    /// Settings of the standard (and relaxed) variant's funnelling, as
+    /// JSON (`FunnelConfig`, camelCase; missing fields take the defaults),
+    /// e.g. `{"gain": 3}`.
+    #[arg(long, value_name = "JSON")]
+    pub standard: Option<String>,
+    /// Run only these variants (comma-separated names).
+    #[arg(long, value_name = "NAMES")]
+    pub only: Option<String>,
+    /// Print the summary and the targets only, not the per-cell tables.
+    #[arg(long)]
+    pub brief: bool,
 }

@@ -21,7 +21,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::angle::diff;
 use crate::funnelling::approach::Approach;
-pub use crate::funnelling::approach::{halting_speed, tolerance_phase};
+pub use crate::funnelling::approach::{halting_speed, tolerance_phase, Terminal};
 use crate::seek::seek_step_committed;
 use crate::table::{EtaTable, Lookup};
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -143,15 +143,33 @@ pub struct Internals {
     pub v_dt: f32,
 }
 
-/// The default, chosen from the measurements in the README (`steer
-/// reach`): a geometric bound of six turning radii. It vanishes with
-/// distance like the literal one, reaches and orients as well as six times
-/// the literal bound, and needs one table interpolation per update instead
-/// of two, which keeps a funnelling update within 4× a seek step.
+/// The default: a geometric bound of ten turning radii (at least
+/// [`FunnelConfig::min_bound_radius`] each). It vanishes with distance like
+/// the literal one and needs one table interpolation per update instead of
+/// two, which keeps a funnelling update within 4× a seek step. Six radii
+/// were chosen on `steer reach`'s single operating point; over the whole
+/// envelope (`steer envelope`, tune seed 1) ten orient better (ε_tol 2°
+/// cells at D ≥ 5 m: 73 % → 85 % worst) at a median path of 1.11× Dubins.
 impl Default for MuBound {
     fn default() -> Self {
-        Self::TurningRadius { factor: 6.0 }
+        Self::TurningRadius { factor: 10.0 }
     }
+}
+
+/// Which point the standard controller funnels towards.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum Aim {
+    /// The goal centre (paper 000 literally). The η table predicts the
+    /// heading on reaching the table's reach circle (0.25 m) around the
+    /// point it is asked about, so for a larger D_tol the vehicle crosses
+    /// the tolerance circle while still turning: oriented entries fell to
+    /// 29 % for D_tol 2 m (issue 13, tune seed).
+    Centre,
+    /// The disk's entry point along β ([`Approach::entry_point`]): the
+    /// table then predicts the heading on *entering* the tolerance disk.
+    #[default]
+    Entry,
 }
 
 /// The funnelling controller's settings.
@@ -174,14 +192,28 @@ pub struct FunnelConfig {
     /// cluster at the edge (median 4.8° for ε_tol = 5°). Default 0.25:
     /// arrivals centre on the target orientation (median ≈ 1°).
     pub seek_threshold: f32,
+    /// Where to aim ([`Aim`]).
+    pub aim: Aim,
+    /// Smallest turning radius the [`MuBound::TurningRadius`] bound is
+    /// computed with, m. The bound `atan(factor·R_min/D)` shrinks with
+    /// speed: at 0.5 m/s (R_min 0.25 m) and 10 m it allowed 8.5°, too
+    /// little to correct anything, and 0.5 m/s was the weakest speed of the
+    /// envelope (issue 13: 65 % oriented on entry at ε_tol 5°, D ≥ 5 m).
+    /// Default 1 m: 97 % (tune seed). 0 restores the plain bound.
+    pub min_bound_radius: f32,
+    /// The terminal line pursuit ([`Approach::terminal`]); `None`: off.
+    pub terminal: Option<Terminal>,
 }
 
 impl Default for FunnelConfig {
     fn default() -> Self {
         Self {
-            bound: MuBound::default(),
+            bound: MuBound::TurningRadius { factor: 10.0 },
             gain: 2.0,
             seek_threshold: 0.25,
+            aim: Aim::Entry,
+            min_bound_radius: 1.0,
+            terminal: Some(Terminal::default()),
         }
     }
 }
@@ -266,7 +298,7 @@ impl FunnelConfig {
                 (gain * table.straight_abs_eta_at(lk, delta_eta).unwrap_or(0.0)).min(FRAC_PI_2)
             }
             MuBound::TurningRadius { factor } => {
-                let r = factor * p.min_turn_radius(lk.v_dt.max(v));
+                let r = factor * p.min_turn_radius(lk.v_dt.max(v)).max(self.min_bound_radius);
                 crate::trig::atan2(r, d).min(FRAC_PI_2)
             }
             MuBound::Constant => FRAC_PI_2,
@@ -289,7 +321,16 @@ impl FunnelConfig {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
-        let (d, alpha) = (a.d, a.alpha);
+        if let Some(t) = &self.terminal {
+            if a.terminal(t, g, &mut out) {
+                return out;
+            }
+        }
+        let (d, bearing, alpha) = match self.aim {
+            Aim::Centre => (a.d, a.bearing, a.alpha),
+            Aim::Entry => a.seen(a.entry_point(g)),
+        };
+        out.gamma = bearing;
         let lk = a.look(d, alpha, &mut out);
         let final_dir = s.theta + alpha + lk.eta;
         out.delta_eta = diff(g.beta, final_dir);
@@ -305,7 +346,7 @@ impl FunnelConfig {
             out.mode = Mode::PositionOnly;
             return out;
         }
-        a.funnel(self, &lk, d, a.bearing, out)
+        a.funnel(self, &lk, d, bearing, out)
     }
 
     /// One funnelling update: plan, then one seek step with the modulated

@@ -489,6 +489,14 @@ impl RelaxedConfig {
     ) -> Internals {
         let (table, p, s) = (a.table, a.p, a.s);
         let aim = a.entry_point(g);
+        if let Some(t) = &funnel.terminal {
+            if a.terminal(t, g, &mut out) {
+                ri.branch = Fig7Branch::EntryPoint;
+                ri.delta_eta = out.delta_eta;
+                (ri.point_x, ri.point_y) = (aim.x, aim.y);
+                return out;
+            }
+        }
         let (dist, bearing, alpha) = a.seen(aim);
         let lk = a.look(dist, alpha, &mut out);
         out.gamma = bearing;
