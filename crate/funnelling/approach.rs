@@ -218,7 +218,7 @@ impl<'a> Approach<'a> {
         let r = s.pos - g.pos;
         let along = r.dot(u);
         let lateral = r.perp_dot(u);
-        let look = t.lookahead * s.v.max(0.5);
+        let look = t.lookahead * s.v.max(g.speed).max(0.5);
         let heading_err = diff(g.beta, s.theta);
         if along >= 0.0
             || -along - g.d_tol >= t.range * look
