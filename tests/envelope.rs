@@ -73,14 +73,20 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
     let far_wide = share(&|r| r.d0 >= far && r.eps_tol_deg > 3.0);
     let far_tight = share(&|r| r.d0 >= far && r.eps_tol_deg < 3.0);
     let all = summarise(runs);
-    println!("D ≥ 5 m: ε_tol ≥ 5° {far_wide}, 2° {far_tight}; all D {}", all.oriented);
+    println!(
+        "D ≥ 5 m: ε_tol ≥ 5° {far_wide}, 2° {far_tight}; all D {}",
+        all.oriented
+    );
     assert!(far_wide >= 0.95, "{far_wide}");
     assert!(far_tight >= 0.85, "{far_tight}");
     assert!(all.oriented >= 0.80, "{all:?}");
     assert!(all.length_ratio.0 <= 1.15, "{all:?}");
     let r = summarise(rel.runs(GoalKind::Static));
     assert!(r.reach >= 0.995 && r.orbits == 0, "{r:?}");
-    assert!(r.oriented >= all.oriented, "relaxed {r:?} vs standard {all:?}");
+    assert!(
+        r.oriented >= all.oriented,
+        "relaxed {r:?} vs standard {all:?}"
+    );
     for v in [std, rel] {
         for kind in [GoalKind::Moving, GoalKind::Chain] {
             let s = summarise(v.runs(kind));

@@ -98,8 +98,8 @@ fn reach_statistics_and_limits_on_seeded_random_scenarios() {
         "a limit was violated or a value was not finite"
     );
     assert!(s.reach_rate >= 0.995, "reach {}", s.reach_rate);
-    // Measured on these 2,000: reach 100 %, oriented on entry 96.2 %,
-    // entry and final orientation error median 1.1°, p95 1.8°.
+    // Measured on these 2,000: reach 100 %, oriented on entry 96.8 %,
+    // entry and final orientation error median 0.9°, p95 3.7°.
     assert!(
         s.oriented_rate >= 0.95,
         "oriented on entry {}",
@@ -115,8 +115,11 @@ fn reach_statistics_and_limits_on_seeded_random_scenarios() {
         "final orientation p95 {}",
         s.final_err_deg.1
     );
+    // The default bound was tuned on the whole envelope (issue 13), where
+    // its median is 1.09; at this single operating point its 8 turning
+    // radii cost length: measured 1.167 (the 6 radii tuned here: 1.11).
     assert!(
-        s.length_ratio.0 <= 1.15,
+        s.length_ratio.0 <= 1.2,
         "median length / Dubins {}",
         s.length_ratio.0
     );

@@ -21,17 +21,17 @@ const PRESETS: [(&str, &str, u64); 3] = [
     (
         "p000_fig7_variety",
         include_str!("../scenarios/p000_fig7_variety.json"),
-        0xd51d_c416_27bc_01ca,
+        0x11d2_e442_1606_2c96,
     ),
     (
         "p000_fig6_face_to_face",
         include_str!("../scenarios/p000_fig6_face_to_face.json"),
-        0x234d_85c8_2f78_c25f,
+        0xee8f_f80f_08c0_57f2,
     ),
     (
         "p001_fig12_successive_relaxed",
         include_str!("../scenarios/p001_fig12_successive_relaxed.json"),
-        0xec7a_cc4a_1116_7f1b,
+        0x70b0_b733_540d_3c78,
     ),
 ];
 

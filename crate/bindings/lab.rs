@@ -39,7 +39,8 @@ export interface VehicleParams {
 }
 /** How the modulation μ is bounded (crate::funnel::MuBound). `literal`: the
  *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
- *  π/2; `turningRadius`: atan(factor·R_min / D), the default (factor 6);
+ *  π/2; `turningRadius`: atan(factor·max(R_min, minBoundRadius) / D), the
+ *  default (factor 8);
  *  `constant`: π/2 (does not vanish with distance). */
 export type MuBound =
   | { kind: "literal" }
@@ -54,6 +55,20 @@ export interface FunnelConfig {
   bound: MuBound;
   gain: number;
   seekThreshold: number;
+  /** Aim at the disk's entry point (default) or at the centre (the paper). */
+  aim?: "entry" | "centre";
+  /** Smallest turning radius of the `turningRadius` bound, m (default 1). */
+  minBoundRadius?: number;
+  /** The terminal line pursuit (default on; null or absent: off). */
+  terminal?: TerminalConfig | null;
+}
+/** The terminal line pursuit (crate::funnelling::approach::Terminal): carrot
+ *  `lookahead` seconds of travel ahead on the goal's line; starts within
+ *  `range` carrot distances of the disk when |β − θ| < `heading` (rad). */
+export interface TerminalConfig {
+  lookahead: number;
+  heading: number;
+  range: number;
 }
 /** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
 export interface GoalConfig {

@@ -868,7 +868,7 @@ impl EnvelopeReport {
             self.variants.iter().find(|v| v.name == "standard"),
         ) {
             let (ra, rb) = (a.runs(GoalKind::Static), b.runs(GoalKind::Static));
-            for bd in 0..BANDS.len() {
+            for (bd, &(lo, hi)) in BANDS.iter().enumerate() {
                 for e in EPS_TOLS_DEG {
                     for dt in D_TOLS {
                         let f = |r: &&RunRecord| {
@@ -880,9 +880,7 @@ impl EnvelopeReport {
                         );
                         if x.oriented < y.oriented {
                             worse.push(format!(
-                                "D {}–{} m, ε {e}°, D_tol {dt}: {} vs {}",
-                                BANDS[bd].0,
-                                BANDS[bd].1,
+                                "D {lo}–{hi} m, ε {e}°, D_tol {dt}: {} vs {}",
                                 pct(x.oriented),
                                 pct(y.oriented)
                             ));

@@ -143,16 +143,17 @@ pub struct Internals {
     pub v_dt: f32,
 }
 
-/// The default: a geometric bound of ten turning radii (at least
-/// [`FunnelConfig::min_bound_radius`] each). It vanishes with distance like
+/// The default: a geometric bound of eight turning radii (each at least
+/// [`FunnelConfig::min_bound_radius`]). It vanishes with distance like
 /// the literal one and needs one table interpolation per update instead of
 /// two, which keeps a funnelling update within 4× a seek step. Six radii
 /// were chosen on `steer reach`'s single operating point; over the whole
-/// envelope (`steer envelope`, tune seed 1) ten orient better (ε_tol 2°
-/// cells at D ≥ 5 m: 73 % → 85 % worst) at a median path of 1.11× Dubins.
+/// envelope (`steer envelope`, tune seed 1) eight orient better (worst
+/// ε_tol 2° cell at D ≥ 5 m: 83 % → 86 %) at a median path of 1.09×
+/// Dubins; ten gained nothing more and lengthened paths (1.11×).
 impl Default for MuBound {
     fn default() -> Self {
-        Self::TurningRadius { factor: 10.0 }
+        Self::TurningRadius { factor: 8.0 }
     }
 }
 
@@ -208,7 +209,7 @@ pub struct FunnelConfig {
 impl Default for FunnelConfig {
     fn default() -> Self {
         Self {
-            bound: MuBound::TurningRadius { factor: 10.0 },
+            bound: MuBound::TurningRadius { factor: 8.0 },
             gain: 2.0,
             seek_threshold: 0.25,
             aim: Aim::Entry,
@@ -317,10 +318,18 @@ impl FunnelConfig {
         g: &Goal,
         mem: &mut FunnelMemory,
     ) -> Internals {
-        let (a, mut out) = match Approach::begin(table, p, s, g, mem) {
+        let (a, out) = match Approach::begin(table, p, s, g, mem) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
+        self.aim_and_funnel(&a, g, out)
+    }
+
+    /// What follows the tolerance phase: the terminal pursuit, else the
+    /// aim point's table lookup, Δη, and Position_only or the bounded
+    /// modulation. Shared with the relaxed controller's entry-point aim.
+    #[must_use]
+    pub fn aim_and_funnel(&self, a: &Approach<'_>, g: &Goal, mut out: Internals) -> Internals {
         if let Some(t) = &self.terminal {
             if a.terminal(t, g, &mut out) {
                 return out;
@@ -332,13 +341,13 @@ impl FunnelConfig {
         };
         out.gamma = bearing;
         let lk = a.look(d, alpha, &mut out);
-        let final_dir = s.theta + alpha + lk.eta;
+        let final_dir = a.s.theta + alpha + lk.eta;
         out.delta_eta = diff(g.beta, final_dir);
-        if d < table.d_eta() {
+        if d < a.table.d_eta() {
             // Closer than the first sampled ring the table cannot slow the
             // vehicle down proactively; do it geometrically instead, so a
             // near target is never orbited (paper 000 §3).
-            out.v_dt = out.v_dt.min(orbit_free_speed(p, d, alpha));
+            out.v_dt = out.v_dt.min(orbit_free_speed(a.p, d, alpha));
             out.mode = Mode::PositionOnly;
             return out;
         }

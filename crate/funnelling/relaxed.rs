@@ -84,7 +84,7 @@ use core::ops::ControlFlow;
 use serde::{Deserialize, Serialize};
 
 use crate::angle::{diff, wrap};
-use crate::funnel::{orbit_free_speed, FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::funnelling::approach::Approach;
 pub use crate::funnelling::controller::{Controller, ControllerKind};
 use crate::seek::seek_step_committed;
@@ -473,53 +473,42 @@ impl RelaxedConfig {
     }
 
     /// [`RelaxedAim::Entry`] once the position tolerance is not met: the
-    /// aim point is the disk's entry point along β, `d_tol − r_reach`
-    /// before the centre (the centre itself for disks smaller than the
-    /// table's reach radius `r_reach`); Δη is measured against T shrunk to
-    /// `orientation_margin`·τ; below `D_η` the aim is sought at the
-    /// orbit-free speed. `out` arrives filled for the centre (`d`, `alpha`,
-    /// `v_dt` = the halting-capped desired speed).
+    /// standard update aimed at the disk's entry point
+    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnel::Aim::Entry`]),
+    /// with the orientation interval T shrunk to `orientation_margin`·τ as
+    /// its seek threshold: no correction while the predicted heading lies
+    /// inside it, else a correction towards β itself (correcting only to
+    /// T's edge left entries just outside it: 67.8 % oriented on entry
+    /// against 69.7 % re-centred, tune seed). The standard controller took
+    /// this aim over (issue 13), so on a disk goal the two now coincide;
+    /// the paper's relaxed point is [`RelaxedAim::PaperArc`].
     fn plan_entry(
         &self,
         funnel: &FunnelConfig,
         a: &Approach<'_>,
         g: &Goal,
-        mut out: Internals,
+        out: Internals,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        let (table, p, s) = (a.table, a.p, a.s);
-        let aim = a.entry_point(g);
-        if let Some(t) = &funnel.terminal {
-            if a.terminal(t, g, &mut out) {
-                ri.branch = Fig7Branch::EntryPoint;
-                ri.delta_eta = out.delta_eta;
-                (ri.point_x, ri.point_y) = (aim.x, aim.y);
-                return out;
-            }
-        }
-        let (dist, bearing, alpha) = a.seen(aim);
-        let lk = a.look(dist, alpha, &mut out);
-        out.gamma = bearing;
-        let tc = diff(g.beta, s.theta);
-        let tau = self.orientation_margin * g.eps_tol;
-        // Inside the shrunk T no correction; outside, correct towards β
-        // itself, as the standard's seek threshold does: correcting only
-        // to T's edge left entries just outside it (tune seed: 67.8 %
-        // oriented on entry against 69.7 % re-centred).
-        let f = alpha + lk.eta;
-        out.delta_eta = if interval_delta(f, tc, tau) == 0.0 {
-            0.0
-        } else {
-            diff(tc, f)
+        let cfg = FunnelConfig {
+            aim: crate::funnel::Aim::Entry,
+            seek_threshold: self.orientation_margin,
+            ..*funnel
         };
+        let out = cfg.aim_and_funnel(a, g, out);
+        let aim = a.entry_point(g);
+        let (dist, _, alpha) = a.seen(aim);
+        let tc = diff(g.beta, a.s.theta);
+        let tau = self.orientation_margin * g.eps_tol;
+        let f = alpha + out.eta;
         *ri = RelaxedInternals {
             branch: Fig7Branch::EntryPoint,
             ring: dist,
             ring_sampled: false,
             arc_min: alpha,
             arc_max: alpha,
-            f_min: alpha + lk.eta,
-            f_max: alpha + lk.eta,
+            f_min: f,
+            f_max: f,
             t_min: tc - tau,
             t_max: tc + tau,
             alpha_r: alpha,
@@ -527,16 +516,7 @@ impl RelaxedConfig {
             point_x: aim.x,
             point_y: aim.y,
         };
-        if dist < table.d_eta() {
-            out.v_dt = out.v_dt.min(orbit_free_speed(p, dist, alpha));
-            out.mode = Mode::PositionOnly;
-            return out;
-        }
-        if out.delta_eta == 0.0 || !lk.eta_valid {
-            out.mode = Mode::PositionOnly;
-            return out;
-        }
-        a.funnel(funnel, &lk, dist, bearing, out)
+        out
     }
 
     /// One relaxed update: plan, then one seek step.

@@ -14,6 +14,34 @@ use crate::seek::seek_step;
 use crate::table::EtaTable;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 
+/// The settings a goal is steered with: the world's, except that a goal
+/// following another agent ([`GoalMotion::FaceAgent`]) is aimed at its
+/// centre, as in the paper. Its entry point moves with the agent it
+/// follows, and two agents aiming at each other's entry points (paper 000
+/// Fig. 6, face to face) fell into step side by side and chased each other
+/// for ever.
+#[must_use]
+pub fn settings_for(
+    config: &FunnelConfig,
+    relaxed: &RelaxedConfig,
+    motion: &GoalMotion,
+) -> (FunnelConfig, RelaxedConfig) {
+    if matches!(motion, GoalMotion::FaceAgent { .. }) {
+        (
+            FunnelConfig {
+                aim: crate::funnel::Aim::Centre,
+                ..*config
+            },
+            RelaxedConfig {
+                aim: crate::relaxed::RelaxedAim::PaperArc,
+                ..*relaxed
+            },
+        )
+    } else {
+        (*config, *relaxed)
+    }
+}
+
 /// How a goal moves (paper 000 §1: "a possibly moving target").
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "camelCase", tag = "kind", deny_unknown_fields)]
@@ -276,13 +304,13 @@ impl World {
                 let spec = a.goals[a.current];
                 let goal = spec.at(t, &self.snapshot);
                 a.goal_now = goal;
+                let (cfg, rcfg) = settings_for(&self.config, &self.relaxed, &spec.motion);
                 a.internals = match self.controller {
                     ControllerKind::Standard => {
-                        self.config
-                            .step(table, &p, &mut a.state, &goal, &mut a.memory)
+                        cfg.step(table, &p, &mut a.state, &goal, &mut a.memory)
                     }
-                    ControllerKind::Relaxed => self.relaxed.step(
-                        &self.config,
+                    ControllerKind::Relaxed => rcfg.step(
+                        &cfg,
                         table,
                         &p,
                         &mut a.state,

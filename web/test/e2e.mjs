@@ -10,6 +10,10 @@ import { resolve } from "node:path";
 import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
 
+/** The core's funnelling settings as the page sets them (JSON: absent options drop out). */
+const CORE_DEFAULT = { bound: { kind: "turningRadius", factor: 8 }, gain: 2, seekThreshold: 0.25, aim: "entry", minBoundRadius: 1, terminal: { lookahead: 1, heading: 0.5, range: 1 } };
+const coreFunnel = (page) => page.evaluate(() => JSON.parse(JSON.stringify(window.__lab.funnel())));
+
 let passed = 0;
 let failed = 0;
 async function check(name, f) {
@@ -200,10 +204,11 @@ try {
   await check("controller section: μ bound select, gain and threshold sliders reach the core and the URL", async () => {
     for (const id of ["mu-bound", "mu-gain", "seek-th"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
     const opts = await page.locator("#mu-bound option").allTextContents();
-    assert.deepEqual(opts, ["turning radius ×6 (default)", "6 × literal", "literal (paper)", "constant π/2"]);
+    assert.deepEqual(opts, ["turning radius ×8 (default)", "6 × literal", "literal (paper)", "constant π/2"]);
+    for (const id of ["aim", "pursuit"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
     // The page's defaults are the core's.
-    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "turningRadius", factor: 6 }, gain: 2, seekThreshold: 0.25 });
-    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { bound: "tr", gain: 2, threshold: 0.25 });
+    assert.deepEqual(await coreFunnel(page), CORE_DEFAULT);
+    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, gain: 2, threshold: 0.25 });
     assert.equal(await page.inputValue("#mu-gain"), "2");
     assert.equal(await page.inputValue("#seek-th"), "0.25");
     const n = await page.evaluate(() => window.__lab.count());
@@ -211,11 +216,21 @@ try {
     await page.selectOption("#mu-bound", "lit");
     await page.locator("#mu-gain").fill("3");
     await page.locator("#seek-th").fill("0.5");
-    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
+    assert.deepEqual(await coreFunnel(page), { ...CORE_DEFAULT, bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
     const st = await page.evaluate(() => window.__lab.state());
     assert.equal(st.funnel.bound, "lit");
     assert.ok(Math.abs(st.funnel.gain - 3) < 1e-9 && Math.abs(st.funnel.threshold - 0.5) < 1e-9, JSON.stringify(st.funnel));
     assert.equal(await page.evaluate(() => window.__lab.count()), n, "the agents keep running (no rebuild)");
+    // The paper's aim and last stretch are one click away, and back.
+    await page.selectOption("#aim", "centre");
+    await page.selectOption("#pursuit", "off");
+    const paper = await coreFunnel(page);
+    assert.equal(paper.aim, "centre");
+    assert.equal(paper.terminal, undefined);
+    await page.waitForFunction(() => location.hash.includes("aim=centre") && location.hash.includes("lp=0"), null, { timeout: 2000 });
+    await page.selectOption("#aim", "entry");
+    await page.selectOption("#pursuit", "on");
+    assert.deepEqual(await coreFunnel(page), { ...CORE_DEFAULT, bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
     await page.waitForFunction(() => location.hash.includes("bound=lit"), null, { timeout: 2000 });
     const hash = new URLSearchParams(new URL(page.url()).hash.slice(1));
     assert.equal(hash.get("bound"), "lit");
@@ -252,11 +267,11 @@ try {
   await check("controller settings apply to presets too; back to the defaults", async () => {
     await page.selectOption("#preset", "p000_fig3_funnel");
     await page.waitForFunction(() => window.__lab.state().preset === "p000_fig3_funnel" && window.__lab.count() > 0, null, { timeout: 5000 });
-    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
+    assert.deepEqual(await coreFunnel(page), { ...CORE_DEFAULT, bound: { kind: "literal" }, gain: 3, seekThreshold: 0.5 });
     await page.selectOption("#mu-bound", "tr");
     await page.locator("#mu-gain").fill("2");
     await page.locator("#seek-th").fill("0.25");
-    assert.deepEqual(await page.evaluate(() => window.__lab.funnel()), { bound: { kind: "turningRadius", factor: 6 }, gain: 2, seekThreshold: 0.25 });
+    assert.deepEqual(await coreFunnel(page), CORE_DEFAULT);
     await page.selectOption("#preset", "");
     await page.waitForFunction(() => window.__lab.state().preset === "" && window.__lab.count() === 1, null, { timeout: 5000 });
   });
@@ -280,7 +295,7 @@ try {
 
   await check("a bad controller link (bound=bogus, gain, th) falls back to the defaults with a visible message", async () => {
     const p5 = await openPage(browser);
-    await p5.page.goto(`${url}#bound=bogus&gain=nan&th=2`);
+    await p5.page.goto(`${url}#bound=bogus&gain=nan&th=2&aim=left&lp=2`);
     assert.equal(await waitReady(p5.page), null);
     const msg = p5.page.locator("#message");
     assert.equal(await msg.isVisible(), true);
@@ -288,8 +303,10 @@ try {
     assert.match(text, /bound="bogus"/);
     assert.match(text, /gain="nan"/);
     assert.match(text, /th="2"/);
-    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { bound: "tr", gain: 2, threshold: 0.25 });
-    assert.deepEqual(await p5.page.evaluate(() => window.__lab.funnel()), { bound: { kind: "turningRadius", factor: 6 }, gain: 2, seekThreshold: 0.25 });
+    assert.match(text, /aim="left"/);
+    assert.match(text, /lp="2"/);
+    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, gain: 2, threshold: 0.25 });
+    assert.deepEqual(await coreFunnel(p5.page), CORE_DEFAULT);
     assert.equal(await p5.page.inputValue("#mu-bound"), "tr");
     await shot(p5.page, "11-bad-controller-link-message");
     allProblems.push(...p5.problems);

@@ -1,23 +1,39 @@
 // The "Controller" panel section: the funnelling settings a researcher
-// compares live (μ bound, gain, seek threshold) and their mapping to the
+// compares live (μ bound, aim, last stretch, gain, seek threshold) and their mapping to the
 // core's FunnelConfig. Every change goes straight to the core; agents keep
 // running.
 
 import { section, select, slider } from "../controls";
-import type { BoundKey, FunnelSettings } from "./state";
+import type { AimKey, BoundKey, FunnelSettings } from "./state";
 import type { FunnelConfig, MuBound } from "../wasm";
 
 export const BOUND_CHOICES: ReadonlyArray<{ value: BoundKey; label: string; bound: MuBound }> = [
-  { value: "tr", label: "turning radius ×6 (default)", bound: { kind: "turningRadius", factor: 6 } },
+  { value: "tr", label: "turning radius ×8 (default)", bound: { kind: "turningRadius", factor: 8 } },
   { value: "sl", label: "6 × literal", bound: { kind: "scaledLiteral", gain: 6 } },
   { value: "lit", label: "literal (paper)", bound: { kind: "literal" } },
   { value: "const", label: "constant π/2", bound: { kind: "constant" } },
 ];
 
+export const AIM_CHOICES: ReadonlyArray<{ value: AimKey; label: string }> = [
+  { value: "entry", label: "disk entry point (default)" },
+  { value: "centre", label: "centre (paper)" },
+];
+
+const PURSUIT_CHOICES: ReadonlyArray<{ value: "on" | "off"; label: string }> = [
+  { value: "on", label: "line pursuit (default)" },
+  { value: "off", label: "table only (paper)" },
+];
+
+/** The core's terminal line pursuit defaults (crate::funnelling::approach::Terminal). */
+const TERMINAL = { lookahead: 1, heading: 0.5, range: 1 };
+
 /** The core's config for the page's settings. */
 export function funnelConfig(f: FunnelSettings): FunnelConfig {
   const choice = BOUND_CHOICES.find((c) => c.value === f.bound) ?? BOUND_CHOICES[0]!;
-  return { bound: choice.bound, gain: f.gain, seekThreshold: f.threshold };
+  return {
+    bound: choice.bound, gain: f.gain, seekThreshold: f.threshold,
+    aim: f.aim, minBoundRadius: 1, terminal: f.pursuit ? TERMINAL : null,
+  };
 }
 
 /** Builds the section; edits `f` in place and calls `onChange` after each change. */
@@ -27,7 +43,17 @@ export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onC
     id: "mu-bound", label: "μ bound", options: BOUND_CHOICES, value: f.bound,
     onChange: (v) => { f.bound = v; onChange(); },
   });
-  bound.el.title = "How |μ| is bounded: the paper's literal |η(D, Δη, 0, v_c, v_dt)|, six times it, atan(6·R_min / D), or π/2";
+  bound.el.title = "How |μ| is bounded: atan(8·max(R_min, 1 m) / D), six times the paper's literal |η(D, Δη, 0, v_c, v_dt)|, the literal bound, or π/2";
+  const aim = select(box, {
+    id: "aim", label: "aim at", options: AIM_CHOICES, value: f.aim,
+    onChange: (v) => { f.aim = v; onChange(); },
+  });
+  aim.el.title = "The table predicts the heading on reaching 0.25 m of the point it is asked about: asked about the disk's entry point, it predicts the heading on entering the tolerance";
+  const pursuit = select(box, {
+    id: "pursuit", label: "last stretch", options: PURSUIT_CHOICES, value: f.pursuit ? "on" : "off",
+    onChange: (v) => { f.pursuit = v === "on"; onChange(); },
+  });
+  pursuit.el.title = "Lined up behind the disk, pursue a carrot on the goal's line one second ahead: heading error and lateral offset decay together";
   const gain = slider(box, {
     id: "mu-gain", label: "gain k", unit: "", min: 1, max: 4, step: 0.25, value: f.gain,
     onInput: (v) => { f.gain = v; onChange(); },

@@ -26,13 +26,21 @@ export interface Limits {
 }
 
 /** The μ-bound choices of the controller section, as the URL writes them:
- *  turning radius ×6 (the core's default), 6 × literal, literal, constant π/2. */
+ *  turning radius ×8 (the core's default), 6 × literal, literal, constant π/2. */
 export const BOUND_KEYS = ["tr", "sl", "lit", "const"] as const;
 export type BoundKey = (typeof BOUND_KEYS)[number];
+
+/** Where the funnel aims: the disk's entry point (the core's default) or the
+ *  goal centre (the paper). */
+export const AIM_KEYS = ["entry", "centre"] as const;
+export type AimKey = (typeof AIM_KEYS)[number];
 
 /** The funnelling controller's settings as the page edits them. */
 export interface FunnelSettings {
   bound: BoundKey;
+  aim: AimKey;
+  /** The terminal line pursuit on the last stretch (core default: on). */
+  pursuit: boolean;
   /** μ = −gain·Δη before the bound. */
   gain: number;
   /** Position_only once |Δη| < threshold·ε_tol. */
@@ -79,7 +87,7 @@ export function defaultState(): LabState {
     relaxed: false,
     limits: {},
     // The core's FunnelConfig::default() (e2e checks they agree).
-    funnel: { bound: "tr", gain: 2, threshold: 0.25 },
+    funnel: { bound: "tr", aim: "entry", pursuit: true, gain: 2, threshold: 0.25 },
     overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     preset: "",

@@ -3,7 +3,7 @@
 // and is reported, so the page can show what was ignored.
 
 import type { View } from "../view";
-import { BOUND_KEYS, defaultState, type BoundKey, type LabState, type Limits, type Overlays } from "./state";
+import { AIM_KEYS, BOUND_KEYS, defaultState, type AimKey, type BoundKey, type LabState, type Limits, type Overlays } from "./state";
 
 const DEG = Math.PI / 180;
 
@@ -64,6 +64,8 @@ export function encodeState(s: LabState): string {
   }
   for (const k of FLAGS) p.set(k, s[k] ? "1" : "0");
   p.set("bound", s.funnel.bound);
+  p.set("aim", s.funnel.aim);
+  p.set("lp", s.funnel.pursuit ? "1" : "0");
   p.set("ov", OVERLAY_KEYS.filter((k) => s.overlays[k]).join(","));
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
@@ -125,6 +127,16 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
   if (bound !== null) {
     if (isBoundKey(bound)) s.funnel.bound = bound;
     else problems.push(`bound="${bound}" is not one of ${BOUND_KEYS.join(", ")}; default kept`);
+  }
+  const aim = p.get("aim");
+  if (aim !== null) {
+    if ((AIM_KEYS as readonly string[]).includes(aim)) s.funnel.aim = aim as AimKey;
+    else problems.push(`aim="${aim}" is not one of ${AIM_KEYS.join(", ")}; default kept`);
+  }
+  const lp = p.get("lp");
+  if (lp !== null) {
+    if (lp === "1" || lp === "0") s.funnel.pursuit = lp === "1";
+    else problems.push(`lp="${lp}" must be 0 or 1; default kept`);
   }
   const ov = p.get("ov");
   if (ov !== null) {
