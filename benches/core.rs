@@ -121,9 +121,16 @@ impl Pieces {
 
 /// The μ bounds compared: the default and the paper's literal one, plain
 /// and scaled (two table interpolations per update).
-fn bounds() -> [(&'static str, FunnelConfig); 3] {
+fn bounds() -> [(&'static str, FunnelConfig); 4] {
     [
-        ("default (TurningRadius ×6)", FunnelConfig::default()),
+        (
+            "default (TurningRadius ×8, entry aim, line pursuit)",
+            FunnelConfig::default(),
+        ),
+        (
+            "paper literal (centre aim, literal bound, gain 1)",
+            steering::funnelling::envelope::literal_config(),
+        ),
         (
             "ScaledLiteral ×6",
             FunnelConfig {
@@ -207,7 +214,7 @@ fn ratio() {
     };
     let cfgs = bounds();
     // best[0] seek, best[1] lookup, then funnel (bound, near/far).
-    let mut best = [f64::INFINITY; 2 + 2 * 3];
+    let mut best = [f64::INFINITY; 2 + 2 * 4];
     let mut s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
     for _ in 0..7 {
         best[0] = best[0].min(time(&mut |k| x.seek(&mut s, k)));

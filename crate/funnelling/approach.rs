@@ -200,8 +200,27 @@ impl<'a> Approach<'a> {
     #[inline]
     #[must_use]
     pub fn entry_point(&self, g: &Goal) -> Vec2 {
-        let depth = (g.d_tol - self.table.params().reach_radius).max(0.0);
-        g.pos - crate::trig::unit(g.beta) * depth
+        g.pos - crate::trig::unit(g.beta) * self.entry_depth(g)
+    }
+
+    /// How far before the centre the entry point lies, m (0: the centre).
+    #[inline]
+    #[must_use]
+    pub fn entry_depth(&self, g: &Goal) -> f32 {
+        (g.d_tol - self.table.params().reach_radius).max(0.0)
+    }
+
+    /// Distance, bearing and α of the entry point, given β's unit vector
+    /// `u`; the centre's, already measured, when the two coincide.
+    #[inline]
+    #[must_use]
+    pub fn seen_entry(&self, g: &Goal, u: Vec2) -> (f32, f32, f32) {
+        let depth = self.entry_depth(g);
+        if depth == 0.0 {
+            (self.d, self.bearing, self.alpha)
+        } else {
+            self.seen(g.pos - u * depth)
+        }
     }
 
     /// The terminal line pursuit ([`Terminal`]): when the vehicle is behind
@@ -210,11 +229,11 @@ impl<'a> Approach<'a> {
     /// distance to the centre (or D_tol) and facing β within `heading`,
     /// aims at the carrot on the line and returns true (`out` is then
     /// final: Funnelling, μ the offset from the centre's bearing, Δη the
-    /// heading error). Constant cost: a dot product and one atan2.
+    /// heading error). `u` is β's unit vector. Constant cost: two dot
+    /// products and, when it steers, one atan2.
     #[inline]
-    pub fn terminal(&self, t: &Terminal, g: &Goal, out: &mut Internals) -> bool {
+    pub fn terminal(&self, t: &Terminal, g: &Goal, u: Vec2, out: &mut Internals) -> bool {
         let s = self.s;
-        let u = crate::trig::unit(g.beta);
         let r = s.pos - g.pos;
         let along = r.dot(u);
         let lateral = r.perp_dot(u);

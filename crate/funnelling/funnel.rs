@@ -330,14 +330,22 @@ impl FunnelConfig {
     /// modulation. Shared with the relaxed controller's entry-point aim.
     #[must_use]
     pub fn aim_and_funnel(&self, a: &Approach<'_>, g: &Goal, mut out: Internals) -> Internals {
+        // β's unit vector, for the terminal pursuit and the entry point
+        // (one sin/cos, skipped when neither needs it).
+        let needs_u = self.terminal.is_some() || (self.aim == Aim::Entry && a.entry_depth(g) > 0.0);
+        let u = if needs_u {
+            crate::trig::unit(g.beta)
+        } else {
+            Vec2::X
+        };
         if let Some(t) = &self.terminal {
-            if a.terminal(t, g, &mut out) {
+            if a.terminal(t, g, u, &mut out) {
                 return out;
             }
         }
         let (d, bearing, alpha) = match self.aim {
             Aim::Centre => (a.d, a.bearing, a.alpha),
-            Aim::Entry => a.seen(a.entry_point(g)),
+            Aim::Entry => a.seen_entry(g, u),
         };
         out.gamma = bearing;
         let lk = a.look(d, alpha, &mut out);
