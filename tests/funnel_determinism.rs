@@ -21,12 +21,12 @@ const PRESETS: [(&str, &str, u64); 3] = [
     (
         "p000_fig7_variety",
         include_str!("../scenarios/p000_fig7_variety.json"),
-        0xd51d_c416_27bc_01ca,
+        0xd610_6a5e_1ef8_3064,
     ),
     (
         "p000_fig6_face_to_face",
         include_str!("../scenarios/p000_fig6_face_to_face.json"),
-        0x234d_85c8_2f78_c25f,
+        0xec44_e6c0_2a78_f1d9,
     ),
     (
         "p001_fig12_successive_relaxed",
