@@ -21,12 +21,12 @@ const PRESETS: [(&str, &str, u64); 3] = [
     (
         "p000_fig7_variety",
         include_str!("../scenarios/p000_fig7_variety.json"),
-        0x11d2_e442_1606_2c96,
+        0xf9c9_788b_0c57_32c9,
     ),
     (
         "p000_fig6_face_to_face",
         include_str!("../scenarios/p000_fig6_face_to_face.json"),
-        0xee8f_f80f_08c0_57f2,
+        0x1b90_916b_206e_0129,
     ),
     (
         "p001_fig12_successive_relaxed",

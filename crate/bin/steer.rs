@@ -103,6 +103,8 @@ fn run(args: &RunArgs) -> Result<(), String> {
         .check_params(&sc.vehicle)
         .map_err(|e| format!("{}: {e}", table_path.display()))?;
     let mut world = sc.world().map_err(|e| format!("{scenario}: {e}"))?;
+    // The first row reports the mode the controller chooses at t = 0.
+    world.plan(&table);
     let starts: Vec<_> = world.agents.iter().map(|a| a.state).collect();
     let mut traces: Vec<Trace> = world.agents.iter().map(|_| Trace::default()).collect();
     let steps = sc.steps();

@@ -339,11 +339,15 @@ impl GoalConfig {
             halting: self.halting,
         };
         goal.validate(p).map_err(|e| js_err("goal", e))?;
-        Ok(GoalSpec {
+        // The page's goals are static; a moving one could not be halting
+        // (GoalMotion's docs), which `check_halting` would refuse here.
+        let spec = GoalSpec {
             goal,
             motion: GoalMotion::Static,
             switch: SwitchRule::EndOfSteering,
-        })
+        };
+        spec.check_halting().map_err(|e| js_err("goal", e))?;
+        Ok(spec)
     }
 }
 
@@ -479,10 +483,13 @@ impl Lab {
         if a.goals.iter().any(|g| g.relaxed) {
             self.use_controller(true)?;
         }
-        self.push_agent(
+        let i = self.push_agent(
             VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega),
             goals,
-        )
+        )?;
+        // The mode shown before the first step is the one chosen at t = 0.
+        self.world.plan(&self.table);
+        Ok(i)
     }
 
     /// Switches the world between standard and relaxed funnelling.
@@ -672,7 +679,8 @@ impl Lab {
     #[wasm_bindgen(js_name = loadScenario, unchecked_return_type = "ScenarioInfo")]
     pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;
-        let world = sc.world().map_err(|e| js_err("scenario", e))?;
+        let mut world = sc.world().map_err(|e| js_err("scenario", e))?;
+        world.plan(&self.table);
         let (mut lo, mut hi) = (Vec2::splat(f32::INFINITY), Vec2::splat(f32::NEG_INFINITY));
         for a in &sc.agents {
             for p in core::iter::once(Vec2::new(a.x, a.y))

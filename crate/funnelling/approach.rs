@@ -31,11 +31,52 @@ pub fn halting_speed(p: &VehicleParams, d: f32) -> f32 {
     (2.0 * 0.8 * p.accel_max * d.max(0.0)).sqrt()
 }
 
+/// Distance the vehicle still travels when it brakes to rest from speed
+/// `v` at full deceleration, as [`VehicleParams::integrate`] brakes: the
+/// continuous `v²/(2A)` plus one step at `v` (the explicit Euler pose moves
+/// with the speed of the start of each step). An upper bound for either
+/// integrator, whatever the vehicle does with its heading meanwhile.
+#[inline]
+#[must_use]
+pub fn braking_distance(p: &VehicleParams, v: f32) -> f32 {
+    v * v / (2.0 * p.accel_max) + v * p.dt
+}
+
+/// Heading change, signed, while the angular speed `omega` decays to zero
+/// when the commanded heading is the current one (End_of_Steering, and the
+/// braking after the last halting goal, both hold the heading): the PD
+/// law reduces to `ω̇ = −Kd·ω`, clamped to `±ω̇_max`. Above `ω̇_max/Kd`
+/// ω falls linearly (turning `(ω² − ω₁²)/(2ω̇_max)`), below it
+/// geometrically by `1 − Kd·dt` a step (turning `ω₁/Kd`, exactly, for the
+/// explicit Euler pose); half a step at ω is added as a margin for the
+/// discretisation of the linear part. Constant cost.
+#[inline]
+#[must_use]
+pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
+    let w = omega.abs();
+    let w1 = w.min(p.omega_accel_max / p.kd);
+    let turn = (w * w - w1 * w1) / (2.0 * p.omega_accel_max) + w1 / p.kd + 0.5 * w * p.dt;
+    turn.copysign(omega)
+}
+
 /// The position-tolerance phase of paper 000 Fig. 5, shared by the
 /// standard and the relaxed controllers ([`crate::relaxed`]): latches
 /// [`FunnelMemory::position_met`] from the distance `d` to the goal centre
 /// and, once met, fills `out` with End_of_Steering or Orientation_only.
 /// Returns true when the position tolerance is met (then `out` is final).
+///
+/// Halting goals (issue 13): End_of_Steering promises that the vehicle
+/// comes to *rest* inside both tolerances, so both tests look at the rest
+/// pose, not only the current one. The position counts as met only when
+/// the whole braking disk lies inside the tolerance (`d` plus
+/// [`braking_distance`] below `D_tol`): from then on the vehicle only
+/// brakes (Orientation_only and End_of_Steering command speed 0), so it
+/// rests inside whatever it does with its heading; until then it keeps
+/// approaching under the halting speed cap, coming round again if it must.
+/// End_of_Steering is declared only when the current heading *and* the
+/// heading at rest ([`rest_rotation`]) are within `ε_tol`; otherwise
+/// Orientation_only keeps turning towards β while braking. Non-halting
+/// goals keep the paper's test on the current pose.
 #[inline]
 pub fn tolerance_phase(
     p: &VehicleParams,
@@ -45,7 +86,12 @@ pub fn tolerance_phase(
     d: f32,
     out: &mut Internals,
 ) -> bool {
-    if d < g.d_tol {
+    let entered = if g.halting {
+        d + braking_distance(p, s.v) < g.d_tol
+    } else {
+        d < g.d_tol
+    };
+    if entered {
         mem.position_met = true;
     } else if mem.position_met && d > FunnelMemory::release_radius(p, g) {
         mem.position_met = false;
@@ -53,7 +99,9 @@ pub fn tolerance_phase(
     if mem.position_met {
         let heading_err = diff(g.beta, s.theta);
         out.delta_eta = heading_err;
-        if heading_err.abs() < g.eps_tol {
+        let oriented = heading_err.abs() < g.eps_tol
+            && (!g.halting || wrap(heading_err - rest_rotation(p, s.omega)).abs() < g.eps_tol);
+        if oriented {
             out.mode = Mode::EndOfSteering;
             out.gamma = s.theta;
             out.v_dt = if g.halting { 0.0 } else { g.speed };

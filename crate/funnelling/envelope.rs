@@ -319,7 +319,8 @@ pub struct RunRecord {
     pub entry_err_deg: f32,
     /// End_of_Steering declarations (one per goal done).
     pub eos: u32,
-    /// Declarations with D < D_tol and |β − θ| < ε_tol at that step.
+    /// Declarations with D < D_tol and |β − θ| < ε_tol at that step (and,
+    /// for the last goal of a halting run, a rest pose inside both).
     pub eos_ok: u32,
     /// Halting runs: came to rest with both tolerances met.
     pub rest_ok: bool,
@@ -388,6 +389,7 @@ pub fn run(
     let limit = ((max_time * sc.goals.len() as f32 + chase) / p.dt) as u32;
     let rest_limit = (REST_TIME / p.dt) as u32;
     let mut done_at: Option<u32> = None;
+    let mut last_eos_ok = false;
     let mut dubins_from = (sc.start.pos.x, sc.start.pos.y, sc.start.theta);
     for k in 0..limit + rest_limit {
         let prev = w.agents[0].state;
@@ -416,7 +418,8 @@ pub fn run(
         }
         if a.current > cur && a.internals.mode == Mode::EndOfSteering {
             rec.eos += 1;
-            if d < g.d_tol && err < g.eps_tol {
+            last_eos_ok = d < g.d_tol && err < g.eps_tol;
+            if last_eos_ok {
                 rec.eos_ok += 1;
             }
             let to = (g.pos.x, g.pos.y, g.beta);
@@ -446,6 +449,10 @@ pub fn run(
         let e = diff(g.beta, a.state.theta).abs();
         rec.rest_err = (d, e.to_degrees());
         rec.rest_ok = a.state.v == 0.0 && d < g.d_tol && e < g.eps_tol;
+        // A halting goal's End_of_Steering promised this rest pose too.
+        if last_eos_ok && !rec.rest_ok {
+            rec.eos_ok -= 1;
+        }
     }
     rec
 }

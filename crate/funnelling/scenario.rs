@@ -18,7 +18,7 @@
 //!     "x": 0, "y": 0, "thetaDeg": 0, "v": 0, "omega": 0,
 //!     "goals": [{
 //!       "x": 10, "y": 5, "betaDeg": 90, "dTol": 0.25, "epsTolDeg": 5,
-//!       "speed": 1.3, "halting": true, "switch": "endOfSteering",
+//!       "speed": 1.3, "halting": false, "switch": "endOfSteering",
 //!       "motion": { "kind": "linear", "velocity": [0.3, 0] }
 //!     }]
 //!   }]
@@ -113,7 +113,8 @@ pub struct GoalFile {
     /// Desired speed, m/s.
     #[serde(default = "default_speed")]
     pub speed: f32,
-    /// Arrive at rest.
+    /// Arrive at rest (refused on a goal in linear or circular motion:
+    /// see [`GoalMotion`]).
     #[serde(default)]
     pub halting: bool,
     /// When to move on to the next goal.
@@ -214,9 +215,10 @@ impl Scenario {
             st.validate(&self.vehicle)
                 .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
             for g in &a.goals {
-                g.to_spec()
-                    .goal
+                let spec = g.to_spec();
+                spec.goal
                     .validate(&self.vehicle)
+                    .and_then(|()| spec.check_halting())
                     .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
                 if let GoalMotion::FaceAgent { agent, .. } = g.motion {
                     if agent >= self.agents.len() || agent == i {
@@ -230,7 +232,9 @@ impl Scenario {
         Ok(())
     }
 
-    /// Builds the world.
+    /// Builds the world. The agents' internals are provisional until the
+    /// first step or [`World::plan`] with the η table (the first row of a
+    /// trajectory should come after `plan`).
     ///
     /// # Errors
     /// Any invalid agent or goal, naming the agent.

@@ -110,6 +110,8 @@ pub enum ParamError {
         /// Inclusive upper bound.
         max: f32,
     },
+    /// Values that are each valid but make no sense together.
+    Inconsistent(&'static str),
 }
 
 impl fmt::Display for ParamError {
@@ -125,6 +127,7 @@ impl fmt::Display for ParamError {
             } => {
                 write!(f, "parameter `{field}` = {value} is outside [{min}, {max}]")
             }
+            Self::Inconsistent(m) => f.write_str(m),
         }
     }
 }

@@ -43,6 +43,13 @@ pub fn settings_for(
 }
 
 /// How a goal moves (paper 000 §1: "a possibly moving target").
+///
+/// A goal that moves by itself ([`GoalMotion::Linear`] with a non-zero
+/// velocity, [`GoalMotion::Circle`] with a non-zero angular speed) cannot be
+/// `halting` (issue 13): it never stops, so no rest pose lies inside its
+/// tolerances for long; [`World::add_agent`], scenario files and the lab
+/// refuse the combination ([`GoalSpec::check_halting`]). A
+/// [`GoalMotion::FaceAgent`] goal may halt: the agent it follows can stop.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "camelCase", tag = "kind", deny_unknown_fields)]
 pub enum GoalMotion {
@@ -97,7 +104,34 @@ pub struct GoalSpec {
     pub switch: SwitchRule,
 }
 
+/// Why [`GoalSpec::check_halting`] refuses a goal.
+pub const MOVING_HALTING: &str = "a moving goal cannot be halting: a goal in linear or circular \
+     motion never stops, so the vehicle could never rest inside its tolerances (untick halting, \
+     or make the goal static or faceAgent)";
+
 impl GoalSpec {
+    /// True when the goal moves by itself: linear motion with a non-zero
+    /// velocity, or circular motion with a non-zero angular speed.
+    #[must_use]
+    pub fn moves_by_itself(&self) -> bool {
+        match self.motion {
+            GoalMotion::Linear { velocity } => velocity != Vec2::ZERO,
+            GoalMotion::Circle { angular_speed, .. } => angular_speed != 0.0,
+            GoalMotion::Static | GoalMotion::FaceAgent { .. } => false,
+        }
+    }
+
+    /// Refuses a halting goal that moves by itself (see [`GoalMotion`]).
+    ///
+    /// # Errors
+    /// [`ParamError::Inconsistent`] with [`MOVING_HALTING`].
+    pub fn check_halting(&self) -> Result<(), ParamError> {
+        if self.goal.halting && self.moves_by_itself() {
+            return Err(ParamError::Inconsistent(MOVING_HALTING));
+        }
+        Ok(())
+    }
+
     /// The goal at world time `t`, given the agents' states `states`.
     #[must_use]
     pub fn at(&self, t: f32, states: &[VehicleState]) -> Goal {
@@ -205,6 +239,14 @@ impl World {
         relaxed: RelaxedConfig,
     ) -> Result<(), ParamError> {
         relaxed.validate()?;
+        if kind != self.controller {
+            // The relaxed search's internals mean nothing to the other
+            // controller; the rest is refreshed by the next step or by
+            // `plan` (which needs the η table this call does not have).
+            for a in &mut self.agents {
+                a.relaxed = RelaxedInternals::default();
+            }
+        }
         self.controller = kind;
         self.relaxed = relaxed;
         Ok(())
@@ -230,6 +272,7 @@ impl World {
         state.validate(&self.params)?;
         for g in &goals {
             g.goal.validate(&self.params)?;
+            g.check_halting()?;
             match g.motion {
                 GoalMotion::Linear { velocity } => {
                     crate::vehicle::check_range("motion.velocity.x", velocity.x, -100.0, 100.0)?;
@@ -255,15 +298,21 @@ impl World {
             }
         }
         let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
+        let internals = if goals.is_empty() {
+            Internals {
+                mode: Mode::EndOfSteering,
+                gamma: state.theta,
+                ..Default::default()
+            }
+        } else {
+            provisional_plan(&self.params, &state, &goal_now)
+        };
         self.agents.push(Agent {
             state,
             goals,
             current: 0,
             memory: FunnelMemory::default(),
-            internals: Internals {
-                mode: Mode::EndOfSteering,
-                ..Default::default()
-            },
+            internals,
             relaxed: RelaxedInternals::default(),
             goal_now,
             metrics: PathMetrics::default(),
@@ -271,6 +320,47 @@ impl World {
         });
         self.snapshot.push(state);
         Ok(self.agents.len() - 1)
+    }
+
+    /// Fills every agent's internals (and relaxed internals) with what its
+    /// controller chooses for the current state — the plan the next
+    /// [`World::step`] makes — without moving anything or changing the mode
+    /// memory (issue 13: the first trajectory row reports a mode that is
+    /// true at t = 0). [`World::add_agent`] has no η table, so until this
+    /// runs (or the first step) a new agent's internals are provisional:
+    /// exact inside the tolerance, else Funnelling towards the goal centre.
+    /// Call it after adding agents or changing the controller (stepping
+    /// does not need it). Constant cost per agent, no allocation.
+    pub fn plan(&mut self, table: &EtaTable) {
+        for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
+            *s = a.state;
+        }
+        let p = self.params;
+        let t = self.time;
+        for a in &mut self.agents {
+            if a.done() {
+                let last = a.goals.last().map(|g| g.goal);
+                a.relaxed = RelaxedInternals::default();
+                a.internals = Internals {
+                    mode: Mode::EndOfSteering,
+                    v_dt: last.filter(|g| !g.halting).map_or(0.0, |g| g.speed),
+                    gamma: a.state.theta,
+                    ..Default::default()
+                };
+                continue;
+            }
+            let spec = a.goals[a.current];
+            let goal = spec.at(t, &self.snapshot);
+            a.goal_now = goal;
+            let mut mem = a.memory;
+            let (cfg, rcfg) = settings_for(&self.config, &self.relaxed, &spec.motion);
+            a.internals = match self.controller {
+                ControllerKind::Standard => cfg.plan(table, &p, &a.state, &goal, &mut mem),
+                ControllerKind::Relaxed => {
+                    rcfg.plan(&cfg, table, &p, &a.state, &goal, &mut mem, &mut a.relaxed)
+                }
+            };
+        }
     }
 
     /// Advances every agent by one time step. Agents see each other's
@@ -369,6 +459,37 @@ impl World {
             put(F::GoalEpsTol, g.eps_tol);
         }
     }
+}
+
+/// The part of the first plan that needs no η table (see [`World::plan`]):
+/// the goal measured from the vehicle, and the position-tolerance phase of
+/// paper 000 Fig. 5, which settles the mode inside the tolerance; outside,
+/// Funnelling towards the centre until the table is consulted.
+fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Internals {
+    let rel = g.pos - s.pos;
+    let d = rel.length();
+    let bearing = if d > 1e-6 {
+        crate::trig::atan2(rel.y, rel.x)
+    } else {
+        s.theta
+    };
+    let mut out = Internals {
+        mode: Mode::Funnelling,
+        d,
+        alpha: crate::angle::diff(bearing, s.theta),
+        gamma: bearing,
+        v_dt: if g.halting {
+            g.speed
+                .min(crate::funnel::halting_speed(p, d - 0.9 * g.d_tol))
+        } else {
+            g.speed
+        },
+        reachable: true,
+        ..Default::default()
+    };
+    let mut mem = FunnelMemory::default();
+    crate::funnel::tolerance_phase(p, s, g, &mut mem, d, &mut out);
+    out
 }
 
 /// One float of an agent's record in [`World::write_state`]; the
