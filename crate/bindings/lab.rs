@@ -8,14 +8,12 @@
 //!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`);
 //! - bulk per-agent state crosses as `Float32Array` (one copy per call).
 
-use core::f32::consts::PI;
-
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnel::{FunnelConfig, Goal, Internals, Mode};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
 use crate::scenario::Scenario;
@@ -314,21 +312,20 @@ struct GoalConfig {
 }
 
 impl GoalConfig {
-    fn to_spec(&self, p: &VehicleParams) -> Result<GoalSpec, JsError> {
-        let goal = Goal {
-            pos: Vec2::new(self.x, self.y),
-            beta: self.beta,
-            d_tol: self.d_tol,
-            eps_tol: self.eps_tol,
-            speed: self.speed,
-            halting: self.halting,
-        };
-        goal.validate(p).map_err(|e| js_err("goal", e))?;
-        Ok(GoalSpec {
-            goal,
+    /// The core's goal (validated by the world that receives it).
+    fn to_spec(&self) -> GoalSpec {
+        GoalSpec {
+            goal: Goal {
+                pos: Vec2::new(self.x, self.y),
+                beta: self.beta,
+                d_tol: self.d_tol,
+                eps_tol: self.eps_tol,
+                speed: self.speed,
+                halting: self.halting,
+            },
             motion: GoalMotion::Static,
             switch: SwitchRule::EndOfSteering,
-        })
+        }
     }
 }
 
@@ -392,41 +389,6 @@ impl From<Internals> for InternalsOut {
 
 /// Steps a single call may ask for (a frame needs a handful).
 const MAX_STEPS_PER_CALL: u32 = 10_000;
-/// Agents a page may hold.
-const MAX_AGENTS: usize = 100_001;
-/// Goals queued per agent by [`Lab::spawn_random`] (minutes of funnelling).
-const RANDOM_GOALS: usize = 16;
-
-impl Lab {
-    fn agent(&self, i: u32) -> Result<&crate::world::Agent, JsError> {
-        self.world.agents.get(i as usize).ok_or_else(|| {
-            JsError::new(&format!(
-                "no agent {i} (there are {})",
-                self.world.agents.len()
-            ))
-        })
-    }
-
-    fn agent_mut(&mut self, i: u32) -> Result<&mut crate::world::Agent, JsError> {
-        let n = self.world.agents.len();
-        self.world
-            .agents
-            .get_mut(i as usize)
-            .ok_or_else(|| JsError::new(&format!("no agent {i} (there are {n})")))
-    }
-
-    fn push_agent(&mut self, state: VehicleState, goals: Vec<GoalSpec>) -> Result<u32, JsError> {
-        if self.world.agents.len() >= MAX_AGENTS {
-            return Err(JsError::new(&format!("at most {MAX_AGENTS} agents")));
-        }
-        let i = self
-            .world
-            .add_agent(state, goals)
-            .map_err(|e| js_err("agent", e))?;
-        Ok(i as u32)
-    }
-}
-
 #[wasm_bindgen]
 impl Lab {
     /// Removes every agent and restarts the clock.
@@ -455,19 +417,17 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "AgentConfig")] agent: JsValue,
     ) -> Result<u32, JsError> {
         let a: AgentConfig = from_js("agent", agent)?;
-        let p = self.world.params;
-        let goals = a
-            .goals
-            .iter()
-            .map(|g| g.to_spec(&p))
-            .collect::<Result<Vec<_>, _>>()?;
+        let goals = a.goals.iter().map(GoalConfig::to_spec).collect();
+        let state = VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega);
+        self.world.check_room(1).map_err(|e| js_err("agent", e))?;
+        let i = self
+            .world
+            .add_agent(state, goals)
+            .map_err(|e| js_err("agent", e))?;
         if a.goals.iter().any(|g| g.relaxed) {
             self.use_controller(true)?;
         }
-        self.push_agent(
-            VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega),
-            goals,
-        )
+        Ok(i as u32)
     }
 
     /// Switches the world between standard and relaxed funnelling.
@@ -487,18 +447,13 @@ impl Lab {
     /// queue restarts.
     #[wasm_bindgen(js_name = setPose)]
     pub fn set_pose(&mut self, i: u32, x: f32, y: f32, theta: f32) -> Result<(), JsError> {
-        let s = VehicleState::new(Vec2::new(x, y), crate::angle::wrap(theta), 0.0, 0.0);
-        s.validate(&self.world.params)
-            .map_err(|e| js_err("pose", e))?;
-        let a = self.agent_mut(i)?;
-        a.state = s;
-        a.current = 0;
-        a.memory = FunnelMemory::default();
-        a.finished_at = None;
-        Ok(())
+        self.world
+            .set_pose(i as usize, Vec2::new(x, y), theta)
+            .map_err(|e| js_err("pose", e))
     }
 
-    /// Replaces agent `i`'s goal queue with one goal (a drag or a slider).
+    /// Replaces agent `i`'s goal queue with one goal (a drag or a slider);
+    /// `relaxed` switches the world's controller.
     #[wasm_bindgen(js_name = setGoal)]
     pub fn set_goal(
         &mut self,
@@ -506,21 +461,15 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "GoalConfig")] goal: JsValue,
     ) -> Result<(), JsError> {
         let g: GoalConfig = from_js("goal", goal)?;
-        let spec = g.to_spec(&self.world.params)?;
-        self.agent(i)?;
-        self.use_controller(g.relaxed)?;
-        let a = self.agent_mut(i)?;
-        a.goals = vec![spec];
-        a.current = 0;
-        a.goal_now = spec.goal;
-        a.memory = FunnelMemory::default();
-        a.finished_at = None;
-        Ok(())
+        self.world
+            .set_goals(i as usize, vec![g.to_spec()])
+            .map_err(|e| js_err("goal", e))?;
+        self.use_controller(g.relaxed)
     }
 
-    /// Adds `n` funnelling agents for performance runs: random poses in a
-    /// square of half-side `extent`, each with a queue of 16 random oriented
-    /// goals in the same square at desired speed `speed` (seeded PCG32).
+    /// Adds `n` funnelling agents for performance runs (see
+    /// `World::spawn_random`: random poses and 16 random goals each in a
+    /// square of half-side `extent`, seeded).
     #[wasm_bindgen(js_name = spawnRandom)]
     pub fn spawn_random(
         &mut self,
@@ -529,39 +478,9 @@ impl Lab {
         extent: f32,
         speed: f32,
     ) -> Result<(), JsError> {
-        if !(extent.is_finite() && extent > 0.0 && extent <= 1e5) {
-            return Err(JsError::new(&format!(
-                "extent {extent} must be in (0, 1e5]"
-            )));
-        }
-        if self.world.agents.len() + n as usize > MAX_AGENTS {
-            return Err(JsError::new(&format!(
-                "{n} more agents would exceed {MAX_AGENTS}"
-            )));
-        }
-        let p = self.world.params;
-        let speed = speed.clamp(0.1, p.v_max);
-        let mut rng = Rng::new(u64::from(seed));
-        for _ in 0..n {
-            let pos = Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent));
-            let state = VehicleState::new(pos, rng.range(-PI, PI), 0.0, 0.0);
-            let goals = (0..RANDOM_GOALS)
-                .map(|_| GoalSpec {
-                    goal: Goal {
-                        pos: Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent)),
-                        beta: rng.range(-PI, PI),
-                        d_tol: 0.3,
-                        eps_tol: 10f32.to_radians(),
-                        speed,
-                        halting: false,
-                    },
-                    motion: GoalMotion::Static,
-                    switch: SwitchRule::Tolerance,
-                })
-                .collect();
-            self.push_agent(state, goals)?;
-        }
-        Ok(())
+        self.world
+            .spawn_random(n as usize, u64::from(seed), extent, speed)
+            .map_err(|e| js_err("random agents", e))
     }
 
     /// Advances the world by `n` steps of `dt`.
@@ -592,7 +511,10 @@ impl Lab {
     /// mode at once).
     #[wasm_bindgen(unchecked_return_type = "Internals")]
     pub fn internals(&self, i: u32) -> Result<JsValue, JsError> {
-        let a = self.agent(i)?;
+        let a = self
+            .world
+            .agent(i as usize)
+            .map_err(|e| js_err("agent", e))?;
         let out = if a.done() {
             Internals {
                 mode: Mode::EndOfSteering,
@@ -630,7 +552,10 @@ impl Lab {
     /// for its current speeds and goal speed (paper 001 Fig. 4).
     #[wasm_bindgen(js_name = etaRing)]
     pub fn eta_ring(&self, i: u32) -> Result<Vec<f32>, JsError> {
-        let a = self.agent(i)?;
+        let a = self
+            .world
+            .agent(i as usize)
+            .map_err(|e| js_err("agent", e))?;
         let d = (a.goal_now.pos - a.state.pos).length();
         Ok(self.eta_ring_at(d, a.state.v, a.state.omega, a.goal_now.speed))
     }
