@@ -8,8 +8,6 @@
 //! choose the commanded accelerations; [`VehicleParams::integrate`] clamps
 //! them into the admissible set, so no controller bug can break a limit.
 
-use core::fmt;
-
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
@@ -92,90 +90,20 @@ impl Default for VehicleParams {
     }
 }
 
-/// Why a parameter set was refused.
-#[derive(Clone, Debug, PartialEq)]
-pub enum ParamError {
-    /// A value is NaN or infinite.
-    NotFinite(&'static str),
-    /// A value that must be strictly positive is not.
-    NotPositive(&'static str, f32),
-    /// A value lies outside the range this implementation supports.
-    OutOfRange {
-        /// Field name.
-        field: &'static str,
-        /// Offending value.
-        value: f32,
-        /// Inclusive lower bound.
-        min: f32,
-        /// Inclusive upper bound.
-        max: f32,
-    },
-}
+/// Why a parameter set, a state or a goal was refused: a field out of
+/// range or not finite, in the crate's one vocabulary ([`RangeError`]).
+pub type ParamError = RangeError;
 
-impl fmt::Display for ParamError {
-    fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
-        match self {
-            Self::NotFinite(n) => write!(f, "parameter `{n}` must be a finite number"),
-            Self::NotPositive(n, v) => write!(f, "parameter `{n}` must be > 0 (got {v})"),
-            Self::OutOfRange {
-                field,
-                value,
-                min,
-                max,
-            } => {
-                write!(f, "parameter `{field}` = {value} is outside [{min}, {max}]")
-            }
-        }
-    }
-}
-
-impl std::error::Error for ParamError {}
-
-/// Checks that `value` is finite and within `[min, max]`.
-pub(crate) fn check_range(
-    field: &'static str,
-    value: f32,
-    min: f32,
-    max: f32,
-) -> Result<(), ParamError> {
-    if !value.is_finite() {
-        return Err(ParamError::NotFinite(field));
-    }
-    if value < min || value > max {
-        return Err(ParamError::OutOfRange {
-            field,
-            value,
-            min,
-            max,
-        });
-    }
-    Ok(())
-}
+pub(crate) use crate::base::range::check_range;
+use crate::base::range::RangeError;
 
 impl VehicleParams {
-    /// Rejects NaN, non-positive and inconsistent values with a typed error.
+    /// Rejects NaN and out-of-range values (every range excludes 0) with a
+    /// typed error.
     ///
     /// # Errors
     /// The first offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        let fields: [(&'static str, f32); 8] = [
-            ("dt", self.dt),
-            ("vMax", self.v_max),
-            ("accelMax", self.accel_max),
-            ("omegaMax", self.omega_max),
-            ("omegaAccelMax", self.omega_accel_max),
-            ("normalAccelMax", self.normal_accel_max),
-            ("kp", self.kp),
-            ("kd", self.kd),
-        ];
-        for (name, v) in fields {
-            if !v.is_finite() {
-                return Err(ParamError::NotFinite(name));
-            }
-            if v <= 0.0 {
-                return Err(ParamError::NotPositive(name, v));
-            }
-        }
         check_range("dt", self.dt, 1e-4, 0.1)?;
         check_range("vMax", self.v_max, 0.01, 100.0)?;
         check_range("accelMax", self.accel_max, 0.01, 1000.0)?;
@@ -335,23 +263,20 @@ mod tests {
             kp: f32::NAN,
             ..Default::default()
         };
-        assert_eq!(p.validate(), Err(ParamError::NotFinite("kp")));
+        let e = p.validate().unwrap_err();
+        assert!(e.not_finite() && e.field == "kp", "{e}");
+        assert_eq!(e.to_string(), "kp = NaN is not finite");
         let p = VehicleParams {
             v_max: -1.0,
             ..Default::default()
         };
-        assert!(matches!(
-            p.validate(),
-            Err(ParamError::NotPositive("vMax", _))
-        ));
+        let e = p.validate().unwrap_err();
+        assert_eq!(e.to_string(), "vMax = -1 is outside [0.01, 100]");
         let p = VehicleParams {
             dt: 1.0,
             ..Default::default()
         };
-        assert!(matches!(
-            p.validate(),
-            Err(ParamError::OutOfRange { field: "dt", .. })
-        ));
+        assert!(matches!(p.validate(), Err(ParamError { field: "dt", .. })));
     }
 
     #[test]
