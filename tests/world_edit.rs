@@ -7,18 +7,13 @@
 
 use glam::Vec2;
 use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
-use steering::table::EtaTable;
 use steering::vehicle::{VehicleParams, VehicleState};
 use steering::world::{
     EditError, GoalMotion, GoalSpec, SwitchRule, World, MAX_AGENTS, RANDOM_GOALS,
 };
 
-fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::table;
 
 fn world() -> World {
     World::new(VehicleParams::default(), FunnelConfig::default()).unwrap()
