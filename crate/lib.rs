@@ -32,4 +32,6 @@ pub mod wander;
 pub mod bindings;
 
 pub use base::{angle, dubins, metrics, parallel, range, rng, trig};
-pub use funnelling::{funnel, region_study, relaxed, scenario, seek, study, table, vehicle, world};
+pub use funnelling::{
+    funnel, region_study, relaxed, scenario, seek, study, table, vehicle, world, world_edit,
+};

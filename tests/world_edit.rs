@@ -8,9 +8,8 @@
 use glam::Vec2;
 use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
 use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{
-    EditError, GoalMotion, GoalSpec, SwitchRule, World, MAX_AGENTS, RANDOM_GOALS,
-};
+use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::world_edit::{EditError, MAX_AGENTS, RANDOM_GOALS};
 
 mod common;
 use common::table;

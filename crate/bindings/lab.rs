@@ -5,116 +5,22 @@
 //!   is validated and turned into a `JsError` with a readable message, never
 //!   a panic (indices are checked, configs go through the core's `validate`);
 //! - typed: configuration objects cross via serde-wasm-bindgen and carry real
-//!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`);
+//!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`,
+//!   both in [`lab_types`](super::lab_types));
 //! - bulk per-agent state crosses as `Float32Array` (one copy per call).
 
 use glam::Vec2;
-use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
+use super::lab_types::{AgentConfig, ArcOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
-use crate::funnel::{FunnelConfig, Goal, Internals, Mode};
+use crate::funnel::{FunnelConfig, Internals, Mode};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
 use crate::scenario::Scenario;
 use crate::table::EtaTable;
 use crate::vehicle::{VehicleParams, VehicleState};
-use crate::world::{GoalMotion, GoalSpec, SwitchRule, World, STATE_STRIDE};
-
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &'static str = r#"
-/** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
-export interface VehicleParams {
-  dt: number;
-  vMax: number;
-  accelMax: number;
-  omegaMax: number;
-  omegaAccelMax: number;
-  normalAccelMax: number;
-  kp: number;
-  kd: number;
-  integrator: "euler" | "semiImplicitEuler";
-}
-/** How the modulation μ is bounded (crate::funnel::MuBound). `literal`: the
- *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
- *  π/2; `turningRadius`: atan(factor·R_min / D), the default (factor 6);
- *  `constant`: π/2 (does not vanish with distance). */
-export type MuBound =
-  | { kind: "literal" }
-  | { kind: "scaledLiteral"; gain: number }
-  | { kind: "turningRadius"; factor: number }
-  | { kind: "constant" };
-/** The funnelling controller's settings, shared by every agent
- *  (crate::funnel::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
- *  bounded by `bound`; Position_only once |Δη| < seekThreshold·ε_tol
- *  (seekThreshold in [0, 1], default 0.25). */
-export interface FunnelConfig {
-  bound: MuBound;
-  gain: number;
-  seekThreshold: number;
-}
-/** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
-export interface GoalConfig {
-  x: number;
-  y: number;
-  beta: number;
-  dTol: number;
-  epsTol: number;
-  speed: number;
-  halting: boolean;
-  relaxed: boolean;
-}
-/** One agent: start pose and its goal queue (each reached in turn). */
-export interface AgentConfig {
-  x: number;
-  y: number;
-  theta: number;
-  v?: number;
-  omega?: number;
-  goals: GoalConfig[];
-}
-/** What one controller update computed (crate::funnel::Internals). Angles in rad. */
-export interface Internals {
-  /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
-  mode: 0 | 1 | 2 | 3;
-  d: number;
-  alpha: number;
-  eta: number;
-  deltaEta: number;
-  mu: number;
-  muMax: number;
-  gamma: number;
-  reachable: boolean;
-  vDt: number;
-  /** Relaxed funnelling: arc 𝒜 = [alphaMin, alphaMax] on the ring `radius`, chosen α_r (vehicle frame). */
-  arc?: { alphaMin: number; alphaMax: number; alphaR: number; radius: number } | null;
-}
-/** The loaded η table's shape. */
-export interface TableInfo {
-  entries: number;
-  distances: number[];
-  alphas: number[];
-  omegaFractions: number[];
-  speeds: number[];
-  desiredSpeeds: number[];
-  /** Smallest sampled distance D_η, m. */
-  dEta: number;
-  params: VehicleParams;
-}
-/** A loaded scenario: its name, description and the world box to show. */
-export interface ScenarioInfo {
-  name: string;
-  description: string;
-  source: string;
-  /** Non-empty when the scenario's vehicle differs from the table's. */
-  warning: string;
-  agents: number;
-  minX: number;
-  minY: number;
-  maxX: number;
-  maxY: number;
-}
-"#;
+use crate::world::{World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
 #[wasm_bindgen]
@@ -130,19 +36,6 @@ pub fn version() -> String {
 pub fn random_samples(seed: u32, n: u32) -> Vec<f32> {
     let mut rng = Rng::new(u64::from(seed));
     (0..n).map(|_| rng.next_f32()).collect()
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct TableInfo<'a> {
-    entries: usize,
-    distances: &'a [f32],
-    alphas: &'a [f32],
-    omega_fractions: &'a [f32],
-    speeds: &'a [f32],
-    desired_speeds: &'a [f32],
-    d_eta: f32,
-    params: VehicleParams,
 }
 
 /// Appends one η-field sample per (distance, α) pair: `D, α, α+η, reachable`
@@ -290,100 +183,6 @@ impl Lab {
             field_samples(&self.table, &[r], omega_c, v_c, v_d, &mut out);
         }
         out
-    }
-}
-
-/// A goal as the page edits it (flat, camelCase); `relaxed` selects relaxed
-/// funnelling towards the region goal (paper 001): the disk is `dTol`, the
-/// orientation interval is β ± `epsTol`. The controller is world-wide.
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
-struct GoalConfig {
-    x: f32,
-    y: f32,
-    beta: f32,
-    d_tol: f32,
-    eps_tol: f32,
-    speed: f32,
-    #[serde(default)]
-    halting: bool,
-    #[serde(default)]
-    relaxed: bool,
-}
-
-impl GoalConfig {
-    /// The core's goal (validated by the world that receives it).
-    fn to_spec(&self) -> GoalSpec {
-        GoalSpec {
-            goal: Goal {
-                pos: Vec2::new(self.x, self.y),
-                beta: self.beta,
-                d_tol: self.d_tol,
-                eps_tol: self.eps_tol,
-                speed: self.speed,
-                halting: self.halting,
-            },
-            motion: GoalMotion::Static,
-            switch: SwitchRule::EndOfSteering,
-        }
-    }
-}
-
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
-struct AgentConfig {
-    x: f32,
-    y: f32,
-    theta: f32,
-    #[serde(default)]
-    v: f32,
-    #[serde(default)]
-    omega: f32,
-    goals: Vec<GoalConfig>,
-}
-
-/// Internals as the page reads them: the mode as its number.
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct InternalsOut {
-    mode: u8,
-    d: f32,
-    alpha: f32,
-    eta: f32,
-    delta_eta: f32,
-    mu: f32,
-    mu_max: f32,
-    gamma: f32,
-    reachable: bool,
-    v_dt: f32,
-    arc: Option<ArcOut>,
-}
-
-/// Relaxed funnelling's restricted arc 𝒜 and chosen α_r (vehicle frame).
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct ArcOut {
-    alpha_min: f32,
-    alpha_max: f32,
-    alpha_r: f32,
-    radius: f32,
-}
-
-impl From<Internals> for InternalsOut {
-    fn from(i: Internals) -> Self {
-        Self {
-            mode: i.mode as u8,
-            d: i.d,
-            alpha: i.alpha,
-            eta: i.eta,
-            delta_eta: i.delta_eta,
-            mu: i.mu,
-            mu_max: i.mu_max,
-            gamma: i.gamma,
-            reachable: i.reachable,
-            v_dt: i.v_dt,
-            arc: None,
-        }
     }
 }
 
@@ -559,20 +358,6 @@ impl Lab {
         let d = (a.goal_now.pos - a.state.pos).length();
         Ok(self.eta_ring_at(d, a.state.v, a.state.omega, a.goal_now.speed))
     }
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct ScenarioInfo {
-    name: String,
-    description: String,
-    source: String,
-    agents: usize,
-    min_x: f32,
-    min_y: f32,
-    max_x: f32,
-    max_y: f32,
-    warning: String,
 }
 
 #[wasm_bindgen]
