@@ -31,5 +31,7 @@ pub mod wander;
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
 
-pub use base::{angle, dubins, metrics, parallel, rng, trig};
-pub use funnelling::{funnel, region_study, relaxed, scenario, seek, study, table, vehicle, world};
+pub use base::{angle, dubins, metrics, parallel, range, rng, trig};
+pub use funnelling::{
+    funnel, region_study, relaxed, scenario, seek, study, table, vehicle, world, world_edit,
+};

@@ -11,6 +11,7 @@ use steering::crowd::path::Path;
 use steering::crowd::path_follow::PathFollow;
 use steering::crowd::separation::{separate, NeighbourGrid};
 use steering::crowd::Crowd;
+use steering::range::RangeError;
 use steering::rng::Rng;
 
 fn open_l() -> Path {
@@ -156,10 +157,10 @@ fn bad_paths_and_configs_give_typed_errors() {
     for r in [0.0, -1.0, f32::NAN, f32::INFINITY] {
         assert!(matches!(
             Path::new(vec![Vec2::ZERO, Vec2::X], r, false),
-            Err(CrowdError::OutOfRange {
-                name: "path radius",
+            Err(CrowdError::Range(RangeError {
+                field: "path radius",
                 ..
-            })
+            }))
         ));
     }
     let mut crowd = Crowd::new(&CrowdConfig::paper(PaperTest::II, Seek::Reynolds)).unwrap();
@@ -193,10 +194,10 @@ fn bad_paths_and_configs_give_typed_errors() {
     let bad = good.replacen("\"max_speed\": 3.0", "\"max_speed\": -3.0", 1);
     assert!(matches!(
         CrowdConfig::from_json(&bad),
-        Err(CrowdError::OutOfRange {
-            name: "max_speed",
+        Err(CrowdError::Range(RangeError {
+            field: "max_speed",
             ..
-        })
+        }))
     ));
     let extra = good.replacen(
         "\"kind\": \"reynolds\"",

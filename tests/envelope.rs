@@ -4,15 +4,10 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use steering::funnelling::envelope::{summarise, variants, EnvelopeStudy, GoalKind};
-use steering::table::EtaTable;
 use steering::vehicle::VehicleParams;
 
-fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::table;
 
 #[test]
 fn every_variant_stays_finite_and_within_limits_and_standard_finishes() {

@@ -11,12 +11,8 @@ use steering::table::EtaTable;
 use steering::vehicle::{VehicleParams, VehicleState};
 use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
 
-fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::table;
 
 fn plan(t: &EtaTable, s: VehicleState, g: &Goal) -> steering::funnel::Internals {
     FunnelConfig::default().plan(

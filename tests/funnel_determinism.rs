@@ -15,6 +15,9 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 use steering::scenario::Scenario;
 use steering::table::EtaTable;
 
+mod common;
+use common::{fnv, FNV_OFFSET};
+
 static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
 
 const PRESETS: [(&str, &str, u64); 3] = [
@@ -42,18 +45,13 @@ const STEPS: u32 = 1800;
 fn trajectory_hash(table: &EtaTable, json: &str) -> u64 {
     let sc = Scenario::from_json(json).expect("preset parses and validates");
     let mut w = sc.world().expect("preset builds a world");
-    let mut h = 0xcbf2_9ce4_8422_2325u64;
+    let mut h = FNV_OFFSET;
     let mut buf = Vec::new();
     for _ in 0..STEPS {
         w.step(table);
         buf.clear();
         w.write_state(&mut buf);
-        for v in &buf {
-            for b in v.to_bits().to_le_bytes() {
-                h ^= u64::from(b);
-                h = h.wrapping_mul(0x0000_0100_0000_01b3);
-            }
-        }
+        fnv(&mut h, &buf);
     }
     h
 }

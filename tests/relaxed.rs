@@ -20,12 +20,8 @@ use steering::table::EtaTable;
 use steering::vehicle::{VehicleParams, VehicleState};
 use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
 
-fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::table;
 
 fn close(a: f32, b: f32) -> bool {
     (a - b).abs() < 1e-4

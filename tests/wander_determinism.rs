@@ -13,40 +13,13 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
 use steering::wander::{WanderPreset, Wanderer};
 
-const PRESETS: [(&str, &str); 8] = [
-    ("control", include_str!("../scenarios/wander/control.json")),
-    (
-        "distributions",
-        include_str!("../scenarios/wander/distributions.json"),
-    ),
-    ("fields", include_str!("../scenarios/wander/fields.json")),
-    (
-        "time-functions",
-        include_str!("../scenarios/wander/time-functions.json"),
-    ),
-    ("timed", include_str!("../scenarios/wander/timed.json")),
-    ("markov", include_str!("../scenarios/wander/markov.json")),
-    ("paths", include_str!("../scenarios/wander/paths.json")),
-    (
-        "composed",
-        include_str!("../scenarios/wander/composed.json"),
-    ),
-];
-
-/// FNV-1a over the f32 bit patterns.
-fn fnv(hash: &mut u64, values: &[f32]) {
-    for v in values {
-        for b in v.to_bits().to_le_bytes() {
-            *hash ^= u64::from(b);
-            *hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
-        }
-    }
-}
+mod common;
+use common::{fnv, FNV_OFFSET, WANDER_PRESETS};
 
 /// Hash of every variant's trace after the preset's suggested steps.
 fn preset_hash(json: &str) -> u64 {
     let preset = WanderPreset::from_json(json).expect("preset parses and validates");
-    let mut h = 0xcbf2_9ce4_8422_2325;
+    let mut h = FNV_OFFSET;
     for v in &preset.variants {
         let mut w = Wanderer::new(v.config.clone()).expect("variant builds");
         w.run(preset.steps);
@@ -58,28 +31,17 @@ fn preset_hash(json: &str) -> u64 {
     h
 }
 
-/// Golden hashes, one per preset file (recorded natively, checked in wasm).
-const GOLDEN: [(&str, u64); 8] = [
-    ("control", 0xa0ca_8f10_df0b_3566),
-    ("distributions", 0xfc4a_d28a_96ea_0ecb),
-    ("fields", 0xd388_8293_835d_0d35),
-    ("time-functions", 0x6d73_78d6_c8fc_744f),
-    ("timed", 0xcb03_e86b_eccc_24a2),
-    ("markov", 0x7cb6_c4f8_9c41_4986),
-    ("paths", 0xdca7_270c_11a5_ae3b),
-    ("composed", 0xd2b8_71aa_0185_462c),
-];
-
 #[test]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn presets_match_golden_hashes() {
-    let mut got = Vec::new();
-    for (name, json) in PRESETS {
-        got.push((name, preset_hash(json)));
-    }
-    for ((name, h), (gname, g)) in got.iter().zip(GOLDEN) {
-        assert_eq!(*name, gname);
-        assert_eq!(*h, g, "preset {name}: got {h:#018x}; all: {got:#x?}");
+    // The golden values are in `tests/common/mod.rs` (`WANDER_PRESETS`),
+    // shared with the same check through the bindings (`tests/web_gallery.rs`).
+    let got: Vec<(&str, u64)> = WANDER_PRESETS
+        .iter()
+        .map(|(name, json, _)| (*name, preset_hash(json)))
+        .collect();
+    for ((name, h), (_, _, golden)) in got.iter().zip(WANDER_PRESETS) {
+        assert_eq!(*h, golden, "preset {name}: got {h:#018x}; all: {got:#x?}");
     }
 }
 

@@ -5,6 +5,7 @@
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
+use steering::range::RangeError;
 use steering::wander::{WanderError, WanderPreset, Wanderer};
 
 fn build(control: &str, source: &str) -> Result<Wanderer, WanderError> {
@@ -21,10 +22,10 @@ fn clamps_must_be_positive_finite_and_at_most_180() {
     assert!(
         matches!(
             e,
-            WanderError::OutOfRange {
-                what: "control.max_velocity_deg",
+            WanderError::Range(RangeError {
+                field: "control.max_velocity_deg",
                 ..
-            }
+            })
         ),
         "{e}"
     );
@@ -39,7 +40,7 @@ fn clamps_must_be_positive_finite_and_at_most_180() {
         UNIFORM,
     )
     .unwrap_err();
-    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+    assert!(matches!(e, WanderError::Range(_)), "{e}");
     let e = build(
         r#"{"mode": "velocity", "max_velocity_deg": 10, "quantize_deg": 30}"#,
         UNIFORM,
@@ -48,10 +49,10 @@ fn clamps_must_be_positive_finite_and_at_most_180() {
     assert!(
         matches!(
             e,
-            WanderError::OutOfRange {
-                what: "control.quantize_deg",
+            WanderError::Range(RangeError {
+                field: "control.quantize_deg",
                 ..
-            }
+            })
         ),
         "{e}"
     );
@@ -61,7 +62,10 @@ fn clamps_must_be_positive_finite_and_at_most_180() {
         UNIFORM,
     )
     .unwrap_err();
-    assert!(matches!(e, WanderError::NotFinite { .. }), "{e}");
+    assert!(
+        matches!(e, WanderError::Range(ref r) if r.not_finite()),
+        "{e}"
+    );
 }
 
 #[test]
@@ -88,13 +92,13 @@ fn distribution_errors() {
     type Check = fn(&WanderError) -> bool;
     let cases: [(&str, Check); 7] = [
         (r#"{"kind": "smooth_noise", "period": 0}"#, |e| {
-            matches!(e, WanderError::OutOfRange { .. })
+            matches!(e, WanderError::Range(_))
         }),
         (r#"{"kind": "perlin", "period": -1}"#, |e| {
             matches!(e, WanderError::NotPositive { .. })
         }),
         (r#"{"kind": "perlin", "period": 5, "octaves": 0}"#, |e| {
-            matches!(e, WanderError::OutOfRange { .. })
+            matches!(e, WanderError::Range(_))
         }),
         (r#"{"kind": "curve", "points": []}"#, |e| {
             matches!(e, WanderError::ShapeMismatch { .. })
@@ -106,7 +110,7 @@ fn distribution_errors() {
             matches!(e, WanderError::NotPositive { .. })
         }),
         (r#"{"kind": "curve", "points": [[-1, 1], [1, -2]]}"#, |e| {
-            matches!(e, WanderError::OutOfRange { .. })
+            matches!(e, WanderError::Range(_))
         }),
     ];
     for (d, ok) in cases {
@@ -150,7 +154,7 @@ fn markov_errors() {
     let e = m("[0]", "[]", "");
     assert!(matches!(e, WanderError::ShapeMismatch { .. }), "{e}");
     let e = m("[0, 15, 30]", "[[1.5, -0.5], [0, 1]]", "");
-    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+    assert!(matches!(e, WanderError::Range(_)), "{e}");
     let e = m(
         "[0, 15, 30]",
         "[[1, 0], [0, 1]]",
@@ -162,9 +166,9 @@ fn markov_errors() {
         "[[1, 0], [0, 1]]",
         r#", "change_probability": [0.5, 2]"#,
     );
-    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+    assert!(matches!(e, WanderError::Range(_)), "{e}");
     let e = m("[0, 15, 30]", "[[1, 0], [0, 1]]", r#", "initial_range": 2"#);
-    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+    assert!(matches!(e, WanderError::Range(_)), "{e}");
 }
 
 #[test]
@@ -173,15 +177,15 @@ fn field_time_hold_and_path_errors() {
     let field = |f: &str| build(VEL, &format!(r#"{{"kind": "field", "field": {f}}}"#)).unwrap_err();
     assert!(matches!(
         field(r#"{"cols": 1, "rows": 4, "cell": 10}"#),
-        WanderError::OutOfRange { .. }
+        WanderError::Range(_)
     ));
     assert!(matches!(
         field(r#"{"cols": 4, "rows": 4, "cell": 0}"#),
-        WanderError::OutOfRange { .. }
+        WanderError::Range(_)
     ));
     assert!(matches!(
         field(r#"{"cols": 4, "rows": 4, "cell": 5, "count": 4}"#),
-        WanderError::OutOfRange { .. }
+        WanderError::Range(_)
     ));
 
     let tf = |f: &str| {
@@ -211,11 +215,11 @@ fn field_time_hold_and_path_errors() {
     };
     assert!(matches!(
         hold(r#"{"kind": "fixed", "every": 0}"#),
-        WanderError::OutOfRange { .. }
+        WanderError::Range(_)
     ));
     assert!(matches!(
         hold(r#"{"kind": "random", "min": 5, "max": 2}"#),
-        WanderError::OutOfRange { .. }
+        WanderError::Range(_)
     ));
 
     let path = |p: &str, mode: &str| {
@@ -234,7 +238,7 @@ fn field_time_hold_and_path_errors() {
         r#"{"kind": "circle", "center": [0, 0], "radius": 10, "coefficients": [6, 5]}"#,
         "velocity",
     );
-    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+    assert!(matches!(e, WanderError::Range(_)), "{e}");
     let e = path(
         r#"{"kind": "fractal", "start": [0, 0], "end": [1, 0], "depth": 16, "roughness": 0.2, "rule": "thirds"}"#,
         "velocity",
@@ -250,7 +254,7 @@ fn field_time_hold_and_path_errors() {
         r#"{{"control": {VEL}, "source": {UNIFORM}, "trace_capacity": 0}}"#
     ))
     .unwrap_err();
-    assert!(matches!(e, WanderError::OutOfRange { .. }));
+    assert!(matches!(e, WanderError::Range(_)));
     // Messages are readable.
     assert_eq!(
         WanderError::RowSum { row: 1, sum: 1.1 }.to_string(),
@@ -275,11 +279,14 @@ fn mix_errors() {
         WanderError::NotMixable { what: "mix" }
     );
     let e = mix(&format!(r#"[{{"weight": 1e300, "source": {UNIFORM}}}]"#));
-    assert!(matches!(e, WanderError::NotFinite { .. }), "{e}");
+    assert!(
+        matches!(e, WanderError::Range(ref r) if r.not_finite()),
+        "{e}"
+    );
     let e = mix(
         r#"[{"weight": 1, "source": {"kind": "random", "distribution": {"kind": "smooth_noise", "period": 0}}}]"#,
     );
-    assert!(matches!(e, WanderError::OutOfRange { .. }), "{e}");
+    assert!(matches!(e, WanderError::Range(_)), "{e}");
 }
 
 #[test]

@@ -13,6 +13,9 @@ use steering::wander::WanderPreset;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
+mod common;
+use common::{fnv, FNV_OFFSET, WANDER_PRESETS};
+
 wasm_bindgen_test_configure!(run_in_browser);
 
 fn message(e: wasm_bindgen::JsError) -> String {
@@ -122,52 +125,9 @@ fn a_dragged_path_point_moves_the_path() {
     lab.step(5);
 }
 
-const PRESETS: [(&str, &str); 8] = [
-    ("control", include_str!("../scenarios/wander/control.json")),
-    (
-        "distributions",
-        include_str!("../scenarios/wander/distributions.json"),
-    ),
-    ("fields", include_str!("../scenarios/wander/fields.json")),
-    (
-        "time-functions",
-        include_str!("../scenarios/wander/time-functions.json"),
-    ),
-    ("timed", include_str!("../scenarios/wander/timed.json")),
-    ("markov", include_str!("../scenarios/wander/markov.json")),
-    ("paths", include_str!("../scenarios/wander/paths.json")),
-    (
-        "composed",
-        include_str!("../scenarios/wander/composed.json"),
-    ),
-];
-
-/// Golden hashes recorded natively (same values as
-/// `tests/wander_determinism.rs`).
-const GOLDEN: [u64; 8] = [
-    0xa0ca_8f10_df0b_3566,
-    0xfc4a_d28a_96ea_0ecb,
-    0xd388_8293_835d_0d35,
-    0x6d73_78d6_c8fc_744f,
-    0xcb03_e86b_eccc_24a2,
-    0x7cb6_c4f8_9c41_4986,
-    0xdca7_270c_11a5_ae3b,
-    0xd2b8_71aa_0185_462c,
-];
-
-/// FNV-1a over the f32 bit patterns.
-fn fnv(hash: &mut u64, values: &[f32]) {
-    for v in values {
-        for b in v.to_bits().to_le_bytes() {
-            *hash ^= u64::from(b);
-            *hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
-        }
-    }
-}
-
 #[wasm_bindgen_test]
 fn wander_presets_give_the_native_traces_through_the_bindings() {
-    for ((name, json), golden) in PRESETS.iter().zip(GOLDEN) {
+    for (name, json, golden) in WANDER_PRESETS {
         // The preset as the page receives it, each variant's config handed
         // back as a plain JS object.
         let parsed = WanderLab::parse_preset(json).unwrap();
@@ -175,7 +135,7 @@ fn wander_presets_give_the_native_traces_through_the_bindings() {
         let variants = js_sys::Array::from(&variants);
         let preset = WanderPreset::from_json(json).unwrap();
         assert_eq!(variants.length() as usize, preset.variants.len());
-        let mut h = 0xcbf2_9ce4_8422_2325;
+        let mut h = FNV_OFFSET;
         for v in variants.iter() {
             let config = js_sys::Reflect::get(&v, &JsValue::from_str("config")).unwrap();
             let mut lab = WanderLab::new(config).unwrap();
@@ -195,7 +155,7 @@ fn wander_presets_give_the_native_traces_through_the_bindings() {
 
 #[wasm_bindgen_test]
 fn wander_paths_expose_the_generated_path_and_json_works() {
-    let preset = WanderPreset::from_json(PRESETS[6].1).unwrap();
+    let preset = WanderPreset::from_json(WANDER_PRESETS[6].1).unwrap();
     let cfg = serde_json::to_string(&preset.variants[0].config).unwrap();
     let lab = WanderLab::from_json(&cfg).unwrap();
     let pts = lab.path_points();
@@ -220,7 +180,7 @@ fn misspelt_keys_in_gallery_configs_are_errors_naming_them() {
     let m = message(lab.set_seek(seek).unwrap_err());
     assert!(m.contains("`fracton`"), "{m}");
 
-    let preset = WanderPreset::from_json(PRESETS[0].1).unwrap();
+    let preset = WanderPreset::from_json(WANDER_PRESETS[0].1).unwrap();
     let cfg = js(&preset.variants[0].config);
     let control = js_sys::Reflect::get(&cfg, &"control".into()).unwrap();
     js_sys::Reflect::set(&control, &"mode_".into(), &1.into()).unwrap();

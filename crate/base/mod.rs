@@ -9,11 +9,13 @@
 //! | [`rng`] | — | seeded PCG32: the same sequence natively and in wasm |
 //! | [`metrics`] | DESIGN §9 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
 //! | [`dubins`] | 000 §2 | Dubins shortest paths, the lower bound for an oriented reach |
+//! | [`range`] | — | one error for a number out of range or not finite, one check: every paper's validation speaks it |
 //! | [`parallel`] | — | seeded cases mapped over an index range: rayon natively, sequential on wasm32, same results |
 
 pub mod angle;
 pub mod dubins;
 pub mod metrics;
 pub mod parallel;
+pub mod range;
 pub mod rng;
 pub mod trig;

@@ -5,133 +5,22 @@
 //!   is validated and turned into a `JsError` with a readable message, never
 //!   a panic (indices are checked, configs go through the core's `validate`);
 //! - typed: configuration objects cross via serde-wasm-bindgen and carry real
-//!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`);
+//!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`,
+//!   both in [`lab_types`](super::lab_types));
 //! - bulk per-agent state crosses as `Float32Array` (one copy per call).
 
-use core::f32::consts::PI;
-
 use glam::Vec2;
-use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
+use super::lab_types::{AgentConfig, ArcOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnel::{FunnelConfig, Internals, Mode};
 use crate::relaxed::ControllerKind;
 use crate::rng::Rng;
 use crate::scenario::Scenario;
 use crate::table::EtaTable;
 use crate::vehicle::{VehicleParams, VehicleState};
-use crate::world::{GoalMotion, GoalSpec, SwitchRule, World, STATE_STRIDE};
-
-#[wasm_bindgen(typescript_custom_section)]
-const TS_TYPES: &'static str = r#"
-/** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
-export interface VehicleParams {
-  dt: number;
-  vMax: number;
-  accelMax: number;
-  omegaMax: number;
-  omegaAccelMax: number;
-  normalAccelMax: number;
-  kp: number;
-  kd: number;
-  integrator: "euler" | "semiImplicitEuler";
-}
-/** How the modulation μ is bounded (crate::funnel::MuBound). `literal`: the
- *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
- *  π/2; `turningRadius`: atan(factor·max(R_min, minBoundRadius) / D), the
- *  default (factor 8);
- *  `constant`: π/2 (does not vanish with distance). */
-export type MuBound =
-  | { kind: "literal" }
-  | { kind: "scaledLiteral"; gain: number }
-  | { kind: "turningRadius"; factor: number }
-  | { kind: "constant" };
-/** The funnelling controller's settings, shared by every agent
- *  (crate::funnel::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
- *  bounded by `bound`; Position_only once |Δη| < seekThreshold·ε_tol
- *  (seekThreshold in [0, 1], default 0.25). */
-export interface FunnelConfig {
-  bound: MuBound;
-  gain: number;
-  seekThreshold: number;
-  /** Aim at the disk's entry point (default) or at the centre (the paper). */
-  aim?: "entry" | "centre";
-  /** Smallest turning radius of the `turningRadius` bound, m (default 1). */
-  minBoundRadius?: number;
-  /** The terminal line pursuit (default on; null or absent: off). */
-  terminal?: TerminalConfig | null;
-}
-/** The terminal line pursuit (crate::funnelling::approach::Terminal): carrot
- *  `lookahead` seconds of travel ahead on the goal's line; starts within
- *  `range` carrot distances of the disk when |β − θ| < `heading` (rad). */
-export interface TerminalConfig {
-  lookahead: number;
-  heading: number;
-  range: number;
-}
-/** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
-export interface GoalConfig {
-  x: number;
-  y: number;
-  beta: number;
-  dTol: number;
-  epsTol: number;
-  speed: number;
-  halting: boolean;
-  relaxed: boolean;
-}
-/** One agent: start pose and its goal queue (each reached in turn). */
-export interface AgentConfig {
-  x: number;
-  y: number;
-  theta: number;
-  v?: number;
-  omega?: number;
-  goals: GoalConfig[];
-}
-/** What one controller update computed (crate::funnel::Internals). Angles in rad. */
-export interface Internals {
-  /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
-  mode: 0 | 1 | 2 | 3;
-  d: number;
-  alpha: number;
-  eta: number;
-  deltaEta: number;
-  mu: number;
-  muMax: number;
-  gamma: number;
-  reachable: boolean;
-  vDt: number;
-  /** Relaxed funnelling: arc 𝒜 = [alphaMin, alphaMax] on the ring `radius`, chosen α_r (vehicle frame). */
-  arc?: { alphaMin: number; alphaMax: number; alphaR: number; radius: number } | null;
-}
-/** The loaded η table's shape. */
-export interface TableInfo {
-  entries: number;
-  distances: number[];
-  alphas: number[];
-  omegaFractions: number[];
-  speeds: number[];
-  desiredSpeeds: number[];
-  /** Smallest sampled distance D_η, m. */
-  dEta: number;
-  params: VehicleParams;
-}
-/** A loaded scenario: its name, description and the world box to show. */
-export interface ScenarioInfo {
-  name: string;
-  description: string;
-  source: string;
-  /** Non-empty when the scenario's vehicle differs from the table's. */
-  warning: string;
-  agents: number;
-  minX: number;
-  minY: number;
-  maxX: number;
-  maxY: number;
-}
-"#;
+use crate::world::{World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
 #[wasm_bindgen]
@@ -147,19 +36,6 @@ pub fn version() -> String {
 pub fn random_samples(seed: u32, n: u32) -> Vec<f32> {
     let mut rng = Rng::new(u64::from(seed));
     (0..n).map(|_| rng.next_f32()).collect()
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct TableInfo<'a> {
-    entries: usize,
-    distances: &'a [f32],
-    alphas: &'a [f32],
-    omega_fractions: &'a [f32],
-    speeds: &'a [f32],
-    desired_speeds: &'a [f32],
-    d_eta: f32,
-    params: VehicleParams,
 }
 
 /// Appends one η-field sample per (distance, α) pair: `D, α, α+η, reachable`
@@ -310,142 +186,8 @@ impl Lab {
     }
 }
 
-/// A goal as the page edits it (flat, camelCase); `relaxed` selects relaxed
-/// funnelling towards the region goal (paper 001): the disk is `dTol`, the
-/// orientation interval is β ± `epsTol`. The controller is world-wide.
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
-struct GoalConfig {
-    x: f32,
-    y: f32,
-    beta: f32,
-    d_tol: f32,
-    eps_tol: f32,
-    speed: f32,
-    #[serde(default)]
-    halting: bool,
-    #[serde(default)]
-    relaxed: bool,
-}
-
-impl GoalConfig {
-    fn to_spec(&self, p: &VehicleParams) -> Result<GoalSpec, JsError> {
-        let goal = Goal {
-            pos: Vec2::new(self.x, self.y),
-            beta: self.beta,
-            d_tol: self.d_tol,
-            eps_tol: self.eps_tol,
-            speed: self.speed,
-            halting: self.halting,
-        };
-        goal.validate(p).map_err(|e| js_err("goal", e))?;
-        // The page's goals are static; a moving one could not be halting
-        // (GoalMotion's docs), which `check_halting` would refuse here.
-        let spec = GoalSpec {
-            goal,
-            motion: GoalMotion::Static,
-            switch: SwitchRule::EndOfSteering,
-        };
-        spec.check_halting().map_err(|e| js_err("goal", e))?;
-        Ok(spec)
-    }
-}
-
-#[derive(Serialize, Deserialize)]
-#[serde(deny_unknown_fields, rename_all = "camelCase")]
-struct AgentConfig {
-    x: f32,
-    y: f32,
-    theta: f32,
-    #[serde(default)]
-    v: f32,
-    #[serde(default)]
-    omega: f32,
-    goals: Vec<GoalConfig>,
-}
-
-/// Internals as the page reads them: the mode as its number.
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct InternalsOut {
-    mode: u8,
-    d: f32,
-    alpha: f32,
-    eta: f32,
-    delta_eta: f32,
-    mu: f32,
-    mu_max: f32,
-    gamma: f32,
-    reachable: bool,
-    v_dt: f32,
-    arc: Option<ArcOut>,
-}
-
-/// Relaxed funnelling's restricted arc 𝒜 and chosen α_r (vehicle frame).
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct ArcOut {
-    alpha_min: f32,
-    alpha_max: f32,
-    alpha_r: f32,
-    radius: f32,
-}
-
-impl From<Internals> for InternalsOut {
-    fn from(i: Internals) -> Self {
-        Self {
-            mode: i.mode as u8,
-            d: i.d,
-            alpha: i.alpha,
-            eta: i.eta,
-            delta_eta: i.delta_eta,
-            mu: i.mu,
-            mu_max: i.mu_max,
-            gamma: i.gamma,
-            reachable: i.reachable,
-            v_dt: i.v_dt,
-            arc: None,
-        }
-    }
-}
-
 /// Steps a single call may ask for (a frame needs a handful).
 const MAX_STEPS_PER_CALL: u32 = 10_000;
-/// Agents a page may hold.
-const MAX_AGENTS: usize = 100_001;
-/// Goals queued per agent by [`Lab::spawn_random`] (minutes of funnelling).
-const RANDOM_GOALS: usize = 16;
-
-impl Lab {
-    fn agent(&self, i: u32) -> Result<&crate::world::Agent, JsError> {
-        self.world.agents.get(i as usize).ok_or_else(|| {
-            JsError::new(&format!(
-                "no agent {i} (there are {})",
-                self.world.agents.len()
-            ))
-        })
-    }
-
-    fn agent_mut(&mut self, i: u32) -> Result<&mut crate::world::Agent, JsError> {
-        let n = self.world.agents.len();
-        self.world
-            .agents
-            .get_mut(i as usize)
-            .ok_or_else(|| JsError::new(&format!("no agent {i} (there are {n})")))
-    }
-
-    fn push_agent(&mut self, state: VehicleState, goals: Vec<GoalSpec>) -> Result<u32, JsError> {
-        if self.world.agents.len() >= MAX_AGENTS {
-            return Err(JsError::new(&format!("at most {MAX_AGENTS} agents")));
-        }
-        let i = self
-            .world
-            .add_agent(state, goals)
-            .map_err(|e| js_err("agent", e))?;
-        Ok(i as u32)
-    }
-}
-
 #[wasm_bindgen]
 impl Lab {
     /// Removes every agent and restarts the clock.
@@ -474,22 +216,19 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "AgentConfig")] agent: JsValue,
     ) -> Result<u32, JsError> {
         let a: AgentConfig = from_js("agent", agent)?;
-        let p = self.world.params;
-        let goals = a
-            .goals
-            .iter()
-            .map(|g| g.to_spec(&p))
-            .collect::<Result<Vec<_>, _>>()?;
+        let goals = a.goals.iter().map(GoalConfig::to_spec).collect();
+        let state = VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega);
+        self.world.check_room(1).map_err(|e| js_err("agent", e))?;
+        let i = self
+            .world
+            .add_agent(state, goals)
+            .map_err(|e| js_err("agent", e))?;
         if a.goals.iter().any(|g| g.relaxed) {
             self.use_controller(true)?;
         }
-        let i = self.push_agent(
-            VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega),
-            goals,
-        )?;
         // The mode shown before the first step is the one chosen at t = 0.
         self.world.plan(&self.table);
-        Ok(i)
+        Ok(i as u32)
     }
 
     /// Switches the world between standard and relaxed funnelling.
@@ -509,18 +248,13 @@ impl Lab {
     /// queue restarts.
     #[wasm_bindgen(js_name = setPose)]
     pub fn set_pose(&mut self, i: u32, x: f32, y: f32, theta: f32) -> Result<(), JsError> {
-        let s = VehicleState::new(Vec2::new(x, y), crate::angle::wrap(theta), 0.0, 0.0);
-        s.validate(&self.world.params)
-            .map_err(|e| js_err("pose", e))?;
-        let a = self.agent_mut(i)?;
-        a.state = s;
-        a.current = 0;
-        a.memory = FunnelMemory::default();
-        a.finished_at = None;
-        Ok(())
+        self.world
+            .set_pose(i as usize, Vec2::new(x, y), theta)
+            .map_err(|e| js_err("pose", e))
     }
 
-    /// Replaces agent `i`'s goal queue with one goal (a drag or a slider).
+    /// Replaces agent `i`'s goal queue with one goal (a drag or a slider);
+    /// `relaxed` switches the world's controller.
     #[wasm_bindgen(js_name = setGoal)]
     pub fn set_goal(
         &mut self,
@@ -528,21 +262,15 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "GoalConfig")] goal: JsValue,
     ) -> Result<(), JsError> {
         let g: GoalConfig = from_js("goal", goal)?;
-        let spec = g.to_spec(&self.world.params)?;
-        self.agent(i)?;
-        self.use_controller(g.relaxed)?;
-        let a = self.agent_mut(i)?;
-        a.goals = vec![spec];
-        a.current = 0;
-        a.goal_now = spec.goal;
-        a.memory = FunnelMemory::default();
-        a.finished_at = None;
-        Ok(())
+        self.world
+            .set_goals(i as usize, vec![g.to_spec()])
+            .map_err(|e| js_err("goal", e))?;
+        self.use_controller(g.relaxed)
     }
 
-    /// Adds `n` funnelling agents for performance runs: random poses in a
-    /// square of half-side `extent`, each with a queue of 16 random oriented
-    /// goals in the same square at desired speed `speed` (seeded PCG32).
+    /// Adds `n` funnelling agents for performance runs (see
+    /// `World::spawn_random`: random poses and 16 random goals each in a
+    /// square of half-side `extent`, seeded).
     #[wasm_bindgen(js_name = spawnRandom)]
     pub fn spawn_random(
         &mut self,
@@ -551,39 +279,9 @@ impl Lab {
         extent: f32,
         speed: f32,
     ) -> Result<(), JsError> {
-        if !(extent.is_finite() && extent > 0.0 && extent <= 1e5) {
-            return Err(JsError::new(&format!(
-                "extent {extent} must be in (0, 1e5]"
-            )));
-        }
-        if self.world.agents.len() + n as usize > MAX_AGENTS {
-            return Err(JsError::new(&format!(
-                "{n} more agents would exceed {MAX_AGENTS}"
-            )));
-        }
-        let p = self.world.params;
-        let speed = speed.clamp(0.1, p.v_max);
-        let mut rng = Rng::new(u64::from(seed));
-        for _ in 0..n {
-            let pos = Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent));
-            let state = VehicleState::new(pos, rng.range(-PI, PI), 0.0, 0.0);
-            let goals = (0..RANDOM_GOALS)
-                .map(|_| GoalSpec {
-                    goal: Goal {
-                        pos: Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent)),
-                        beta: rng.range(-PI, PI),
-                        d_tol: 0.3,
-                        eps_tol: 10f32.to_radians(),
-                        speed,
-                        halting: false,
-                    },
-                    motion: GoalMotion::Static,
-                    switch: SwitchRule::Tolerance,
-                })
-                .collect();
-            self.push_agent(state, goals)?;
-        }
-        Ok(())
+        self.world
+            .spawn_random(n as usize, u64::from(seed), extent, speed)
+            .map_err(|e| js_err("random agents", e))
     }
 
     /// Advances the world by `n` steps of `dt`.
@@ -614,7 +312,10 @@ impl Lab {
     /// mode at once).
     #[wasm_bindgen(unchecked_return_type = "Internals")]
     pub fn internals(&self, i: u32) -> Result<JsValue, JsError> {
-        let a = self.agent(i)?;
+        let a = self
+            .world
+            .agent(i as usize)
+            .map_err(|e| js_err("agent", e))?;
         let out = if a.done() {
             Internals {
                 mode: Mode::EndOfSteering,
@@ -652,24 +353,13 @@ impl Lab {
     /// for its current speeds and goal speed (paper 001 Fig. 4).
     #[wasm_bindgen(js_name = etaRing)]
     pub fn eta_ring(&self, i: u32) -> Result<Vec<f32>, JsError> {
-        let a = self.agent(i)?;
+        let a = self
+            .world
+            .agent(i as usize)
+            .map_err(|e| js_err("agent", e))?;
         let d = (a.goal_now.pos - a.state.pos).length();
         Ok(self.eta_ring_at(d, a.state.v, a.state.omega, a.goal_now.speed))
     }
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct ScenarioInfo {
-    name: String,
-    description: String,
-    source: String,
-    agents: usize,
-    min_x: f32,
-    min_y: f32,
-    max_x: f32,
-    max_y: f32,
-    warning: String,
 }
 
 #[wasm_bindgen]

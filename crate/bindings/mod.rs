@@ -5,6 +5,7 @@
 //! | module | page | what |
 //! |---|---|---|
 //! | [`lab`] | `index.html` | `Lab`: a funnelling [`World`](crate::world::World) and its η table |
+//! | `lab_types` | `index.html` | what crosses for `Lab`: the TypeScript interfaces and their serde shapes (goal, agent, internals, table and scenario info) |
 //! | [`crowd`] | `crowd.html` | `CrowdLab`: crowded path following (paper 003) |
 //! | [`wander`] | `wander.html` | `WanderLab`: the random steering toolkit (paper 004) |
 //! | [`boundary`] | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
@@ -13,5 +14,6 @@
 mod boundary;
 pub mod crowd;
 pub mod lab;
+mod lab_types;
 pub mod layout;
 pub mod wander;

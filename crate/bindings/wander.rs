@@ -16,7 +16,7 @@ use crate::wander::{WanderConfig, WanderPreset, Wanderer};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_WANDER_TYPES: &'static str = r#"
-/** Start pose and constant speed (crate::wander::pipeline::AgentConfig). World units per step, degrees. */
+/** Start pose and constant speed (crate::wander::config::AgentConfig). World units per step, degrees. */
 export interface WanderAgent { x?: number; y?: number; heading_deg?: number; speed?: number }
 /** What is controlled and its clamps, degrees (crate::wander::control::ControlConfig). */
 export interface WanderControl {
@@ -72,7 +72,7 @@ export interface WanderMarkov {
 export type WanderPath =
   | { kind: "fractal"; start: [number, number]; end: [number, number]; depth: number; roughness: number; rule: "midpoint" | "thirds" }
   | { kind: "circle"; center: [number, number]; radius: number; coefficients: number[]; random_coefficients?: boolean; samples?: number; shape?: "sine" | "saw" | "square" };
-/** The command source (crate::wander::pipeline::SourceConfig). */
+/** The command source (crate::wander::config::SourceConfig). */
 export type WanderSource =
   | { kind: "random"; distribution: WanderDistribution }
   | { kind: "field"; field: WanderField }

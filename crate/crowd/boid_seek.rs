@@ -98,13 +98,9 @@ impl Seek {
     pub fn validate(&self) -> Result<(), CrowdError> {
         match *self {
             Seek::Reynolds => Ok(()),
-            Seek::Parker { fraction } => check_range(
-                "seek.fraction",
-                fraction,
-                f32::MIN_POSITIVE,
-                1.0,
-                "0 < fraction <= 1",
-            ),
+            Seek::Parker { fraction } => {
+                check_range("seek.fraction", fraction, f32::MIN_POSITIVE, 1.0)
+            }
         }
     }
 

@@ -227,63 +227,15 @@ impl CrowdConfig {
     /// # Errors
     /// The first offending field.
     pub fn validate(&self) -> Result<(), CrowdError> {
-        if self.boids > MAX_BOIDS {
-            return Err(CrowdError::OutOfRange {
-                name: "boids",
-                value: self.boids as f64,
-                expected: "0 <= boids <= 1000000",
-            });
-        }
+        check_range("boids", self.boids as f32, 0.0, MAX_BOIDS as f32)?;
         self.seek.validate()?;
-        check_range(
-            "separation_weight",
-            self.separation_weight,
-            0.0,
-            10.0,
-            "0 <= weight <= 10",
-        )?;
-        check_range(
-            "boid_radius",
-            self.boid_radius,
-            1e-3,
-            1e5,
-            "0 < radius <= 1e5",
-        )?;
-        check_range(
-            "max_speed",
-            self.max_speed,
-            1e-6,
-            1e5,
-            "0 < max_speed <= 1e5",
-        )?;
-        check_range(
-            "max_force",
-            self.max_force,
-            1e-6,
-            1e5,
-            "0 < max_force <= 1e5",
-        )?;
-        check_range(
-            "predict_distance",
-            self.predict_distance,
-            0.0,
-            1e6,
-            "0 <= distance <= 1e6",
-        )?;
-        check_range(
-            "lookahead",
-            self.lookahead,
-            0.0,
-            1e6,
-            "0 <= lookahead <= 1e6",
-        )?;
-        check_range(
-            "spawn_spread",
-            self.spawn_spread,
-            0.0,
-            1.0,
-            "0 <= spread <= 1",
-        )?;
+        check_range("separation_weight", self.separation_weight, 0.0, 10.0)?;
+        check_range("boid_radius", self.boid_radius, 1e-3, 1e5)?;
+        check_range("max_speed", self.max_speed, 1e-6, 1e5)?;
+        check_range("max_force", self.max_force, 1e-6, 1e5)?;
+        check_range("predict_distance", self.predict_distance, 0.0, 1e6)?;
+        check_range("lookahead", self.lookahead, 0.0, 1e6)?;
+        check_range("spawn_spread", self.spawn_spread, 0.0, 1.0)?;
         self.path.build()?;
         Ok(())
     }

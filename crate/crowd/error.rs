@@ -7,6 +7,8 @@
 
 use core::fmt;
 
+use crate::base::range::RangeError;
+
 /// Why a crowd, a path or a crowd configuration was rejected.
 #[derive(Clone, Debug, PartialEq)]
 pub enum CrowdError {
@@ -24,15 +26,9 @@ pub enum CrowdError {
     /// Path points `index` and `index + 1` (or the closing pair) coincide,
     /// so the segment between them has no direction.
     DegenerateSegment(usize),
-    /// A numeric parameter is NaN, infinite or outside its range.
-    OutOfRange {
-        /// Parameter name as it appears in the JSON config.
-        name: &'static str,
-        /// The rejected value.
-        value: f64,
-        /// Human-readable allowed range.
-        expected: &'static str,
-    },
+    /// A numeric parameter (named as in the JSON config) is NaN, infinite
+    /// or outside its range.
+    Range(RangeError),
     /// The JSON text could not be parsed into a `CrowdConfig`.
     Json(String),
 }
@@ -50,11 +46,7 @@ impl fmt::Display for CrowdError {
             Self::DegenerateSegment(i) => {
                 write!(f, "path segment {i} has zero length (repeated point)")
             }
-            Self::OutOfRange {
-                name,
-                value,
-                expected,
-            } => write!(f, "{name} = {value} is out of range (expected {expected})"),
+            Self::Range(e) => e.fmt(f),
             Self::Json(msg) => write!(f, "invalid crowd config JSON: {msg}"),
         }
     }
@@ -62,21 +54,18 @@ impl fmt::Display for CrowdError {
 
 impl std::error::Error for CrowdError {}
 
+impl From<RangeError> for CrowdError {
+    fn from(e: RangeError) -> Self {
+        Self::Range(e)
+    }
+}
+
 /// Checks that `value` is finite and within `[lo, hi]`.
 pub(crate) fn check_range(
     name: &'static str,
     value: f32,
     lo: f32,
     hi: f32,
-    expected: &'static str,
 ) -> Result<(), CrowdError> {
-    if value.is_finite() && value >= lo && value <= hi {
-        Ok(())
-    } else {
-        Err(CrowdError::OutOfRange {
-            name,
-            value: f64::from(value),
-            expected,
-        })
-    }
+    Ok(crate::base::range::check_range(name, value, lo, hi)?)
 }

@@ -239,14 +239,15 @@ impl MetricsAccumulator {
     /// The measures so far.
     #[must_use]
     pub fn metrics(&self) -> CrowdMetrics {
-        let some = |ok: bool, v: f64| ok.then_some(v as f32);
+        // A mean over `n` samples, none when there are none.
+        let mean = |sum: f64, n: u64| (n > 0).then(|| (sum / n as f64) as f32);
         let mut spread_sum = 0.0;
         let mut spread_n = 0usize;
         for k in 0..STATIONS {
             let n = self.station_n[k];
             if n >= 2 {
-                let mean = self.station_sum[k] / n as f64;
-                let var = (self.station_sumsq[k] / n as f64 - mean * mean).max(0.0);
+                let avg = self.station_sum[k] / n as f64;
+                let var = (self.station_sumsq[k] / n as f64 - avg * avg).max(0.0);
                 spread_sum += var.sqrt();
                 spread_n += 1;
             }
@@ -254,36 +255,15 @@ impl MetricsAccumulator {
         CrowdMetrics {
             steps: self.steps,
             laps: self.laps,
-            mean_lap_steps: some(
-                self.laps > 0,
-                self.lap_steps_sum as f64 / self.laps.max(1) as f64,
-            ),
-            mean_distance: some(
-                self.samples > 0,
-                self.sum_distance / self.samples.max(1) as f64,
-            ),
+            mean_lap_steps: mean(self.lap_steps_sum as f64, self.laps),
+            mean_distance: mean(self.sum_distance, self.samples),
             p95_distance: (self.samples > 0).then(|| self.percentile(0.95)),
-            outside_share: some(
-                self.samples > 0,
-                self.outside as f64 / self.samples.max(1) as f64,
-            ),
-            mean_offset: some(
-                self.samples > 0,
-                self.sum_offset / self.samples.max(1) as f64,
-            ),
-            mean_steer: some(
-                self.samples > 0,
-                self.sum_steer / self.samples.max(1) as f64,
-            ),
-            mean_separation: some(
-                self.samples > 0,
-                self.sum_separation / self.samples.max(1) as f64,
-            ),
-            overlapping_pairs_per_step: some(
-                self.overlap_steps > 0,
-                self.overlap_sum as f64 / self.overlap_steps.max(1) as f64,
-            ),
-            trace_spread: some(spread_n > 0, spread_sum / spread_n.max(1) as f64),
+            outside_share: mean(self.outside as f64, self.samples),
+            mean_offset: mean(self.sum_offset, self.samples),
+            mean_steer: mean(self.sum_steer, self.samples),
+            mean_separation: mean(self.sum_separation, self.samples),
+            overlapping_pairs_per_step: mean(self.overlap_sum as f64, self.overlap_steps),
+            trace_spread: mean(spread_sum, spread_n as u64),
         }
     }
 

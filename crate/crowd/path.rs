@@ -96,8 +96,8 @@ impl Path {
         height: f32,
         radius: f32,
     ) -> Result<Self, CrowdError> {
-        check_range("width", width, 1e-3, MAX_COORDINATE, "0 < width <= 1e7")?;
-        check_range("height", height, 1e-3, MAX_COORDINATE, "0 < height <= 1e7")?;
+        check_range("width", width, 1e-3, MAX_COORDINATE)?;
+        check_range("height", height, 1e-3, MAX_COORDINATE)?;
         let h = Vec2::new(width, height) * 0.5;
         Self::new(
             vec![
@@ -133,7 +133,6 @@ impl Path {
                 p.abs().max_element(),
                 0.0,
                 MAX_COORDINATE,
-                "|x|, |y| <= 1e7",
             )?;
         }
         let n_seg = if self.closed {
@@ -197,7 +196,7 @@ impl Path {
     /// # Errors
     /// Radius not finite or not in `(0, 1e6]`.
     pub fn set_radius(&mut self, radius: f32) -> Result<(), CrowdError> {
-        check_range("path radius", radius, 1e-3, 1e6, "0 < radius <= 1e6")?;
+        check_range("path radius", radius, 1e-3, 1e6)?;
         self.radius = radius;
         Ok(())
     }

@@ -378,13 +378,7 @@ impl Crowd {
     /// # Errors
     /// More than [`MAX_BOIDS`].
     pub fn set_boid_count(&mut self, n: usize) -> Result<(), CrowdError> {
-        if n > MAX_BOIDS {
-            return Err(CrowdError::OutOfRange {
-                name: "boids",
-                value: n as f64,
-                expected: "0 <= boids <= 1000000",
-            });
-        }
+        check_range("boids", n as f32, 0.0, MAX_BOIDS as f32)?;
         let was_empty = self.is_empty();
         self.resize_boids(n);
         if self.traced >= n || was_empty {
@@ -449,7 +443,7 @@ impl Crowd {
     /// # Errors
     /// Weight not finite or outside `[0, 10]`.
     pub fn set_separation(&mut self, on: bool, weight: f32) -> Result<(), CrowdError> {
-        check_range("separation_weight", weight, 0.0, 10.0, "0 <= weight <= 10")?;
+        check_range("separation_weight", weight, 0.0, 10.0)?;
         self.config.separation = on;
         self.config.separation_weight = weight;
         Ok(())

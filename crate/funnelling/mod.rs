@@ -11,6 +11,7 @@
 //! | [`funnel`] | 000 §4–5, Figs. 4–5 | the funnelling update, the four modes, μ bounds, halting |
 //! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r; controller choice |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
+//! | [`world_edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation |
 //! | [`envelope`] | 000 §4–6, 001 §4 | seeded study over the whole operating envelope: tolerances × speed × distance, static, moving and chained goals, both controllers |
 //! | [`study`] | 000 §5 | seeded reach study behind the acceptance figures |
@@ -28,3 +29,4 @@ pub mod study;
 pub mod table;
 pub mod vehicle;
 pub mod world;
+pub mod world_edit;

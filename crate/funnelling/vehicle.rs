@@ -13,6 +13,8 @@ use core::fmt;
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
+use crate::base::range::RangeError;
+
 /// How the pose is advanced from the speeds.
 ///
 /// The η table must be built with the integrator the controller runs (the
@@ -92,41 +94,27 @@ impl Default for VehicleParams {
     }
 }
 
-/// Why a parameter set was refused.
+/// Why a parameter set, a state or a goal was refused: a field out of
+/// range or not finite, in the crate's one vocabulary ([`RangeError`]), or
+/// values that are each valid but make no sense together.
 #[derive(Clone, Debug, PartialEq)]
 pub enum ParamError {
-    /// A value is NaN or infinite.
-    NotFinite(&'static str),
-    /// A value that must be strictly positive is not.
-    NotPositive(&'static str, f32),
-    /// A value lies outside the range this implementation supports.
-    OutOfRange {
-        /// Field name.
-        field: &'static str,
-        /// Offending value.
-        value: f32,
-        /// Inclusive lower bound.
-        min: f32,
-        /// Inclusive upper bound.
-        max: f32,
-    },
+    /// A field out of range or not finite.
+    Range(RangeError),
     /// Values that are each valid but make no sense together.
     Inconsistent(&'static str),
+}
+
+impl From<RangeError> for ParamError {
+    fn from(e: RangeError) -> Self {
+        Self::Range(e)
+    }
 }
 
 impl fmt::Display for ParamError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::NotFinite(n) => write!(f, "parameter `{n}` must be a finite number"),
-            Self::NotPositive(n, v) => write!(f, "parameter `{n}` must be > 0 (got {v})"),
-            Self::OutOfRange {
-                field,
-                value,
-                min,
-                max,
-            } => {
-                write!(f, "parameter `{field}` = {value} is outside [{min}, {max}]")
-            }
+            Self::Range(e) => e.fmt(f),
             Self::Inconsistent(m) => f.write_str(m),
         }
     }
@@ -134,51 +122,23 @@ impl fmt::Display for ParamError {
 
 impl std::error::Error for ParamError {}
 
-/// Checks that `value` is finite and within `[min, max]`.
+/// [`crate::base::range::check_range`] with this module's error.
 pub(crate) fn check_range(
     field: &'static str,
     value: f32,
     min: f32,
     max: f32,
 ) -> Result<(), ParamError> {
-    if !value.is_finite() {
-        return Err(ParamError::NotFinite(field));
-    }
-    if value < min || value > max {
-        return Err(ParamError::OutOfRange {
-            field,
-            value,
-            min,
-            max,
-        });
-    }
-    Ok(())
+    crate::base::range::check_range(field, value, min, max).map_err(ParamError::Range)
 }
 
 impl VehicleParams {
-    /// Rejects NaN, non-positive and inconsistent values with a typed error.
+    /// Rejects NaN and out-of-range values (every range excludes 0) with a
+    /// typed error.
     ///
     /// # Errors
     /// The first offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        let fields: [(&'static str, f32); 8] = [
-            ("dt", self.dt),
-            ("vMax", self.v_max),
-            ("accelMax", self.accel_max),
-            ("omegaMax", self.omega_max),
-            ("omegaAccelMax", self.omega_accel_max),
-            ("normalAccelMax", self.normal_accel_max),
-            ("kp", self.kp),
-            ("kd", self.kd),
-        ];
-        for (name, v) in fields {
-            if !v.is_finite() {
-                return Err(ParamError::NotFinite(name));
-            }
-            if v <= 0.0 {
-                return Err(ParamError::NotPositive(name, v));
-            }
-        }
         check_range("dt", self.dt, 1e-4, 0.1)?;
         check_range("vMax", self.v_max, 0.01, 100.0)?;
         check_range("accelMax", self.accel_max, 0.01, 1000.0)?;
@@ -338,23 +298,23 @@ mod tests {
             kp: f32::NAN,
             ..Default::default()
         };
-        assert_eq!(p.validate(), Err(ParamError::NotFinite("kp")));
+        let e = p.validate().unwrap_err();
+        assert!(
+            matches!(&e, ParamError::Range(r) if r.not_finite() && r.field == "kp"),
+            "{e}"
+        );
+        assert_eq!(e.to_string(), "kp = NaN is not finite");
         let p = VehicleParams {
             v_max: -1.0,
             ..Default::default()
         };
-        assert!(matches!(
-            p.validate(),
-            Err(ParamError::NotPositive("vMax", _))
-        ));
+        let e = p.validate().unwrap_err();
+        assert_eq!(e.to_string(), "vMax = -1 is outside [0.01, 100]");
         let p = VehicleParams {
             dt: 1.0,
             ..Default::default()
         };
-        assert!(matches!(
-            p.validate(),
-            Err(ParamError::OutOfRange { field: "dt", .. })
-        ));
+        assert!(matches!(p.validate(), Err(ParamError::Range(r)) if r.field == "dt"));
     }
 
     #[test]

@@ -271,31 +271,7 @@ impl World {
     ) -> Result<usize, ParamError> {
         state.validate(&self.params)?;
         for g in &goals {
-            g.goal.validate(&self.params)?;
-            g.check_halting()?;
-            match g.motion {
-                GoalMotion::Linear { velocity } => {
-                    crate::vehicle::check_range("motion.velocity.x", velocity.x, -100.0, 100.0)?;
-                    crate::vehicle::check_range("motion.velocity.y", velocity.y, -100.0, 100.0)?;
-                }
-                GoalMotion::Circle {
-                    center,
-                    angular_speed,
-                } => {
-                    crate::vehicle::check_range("motion.center.x", center.x, -1e6, 1e6)?;
-                    crate::vehicle::check_range("motion.center.y", center.y, -1e6, 1e6)?;
-                    crate::vehicle::check_range(
-                        "motion.angularSpeed",
-                        angular_speed,
-                        -100.0,
-                        100.0,
-                    )?;
-                }
-                GoalMotion::FaceAgent { distance, .. } => {
-                    crate::vehicle::check_range("motion.distance", distance, 0.0, 1e3)?;
-                }
-                GoalMotion::Static => {}
-            }
+            g.validate(&self.params)?;
         }
         let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
         let internals = if goals.is_empty() {

@@ -86,12 +86,12 @@ impl ControlConfig {
             finite("control.quantize_deg", q)?;
             let max = self.scale_deg();
             if !(q > 0.0 && q <= max) {
-                return Err(WanderError::OutOfRange {
-                    what: "control.quantize_deg",
+                return Err(WanderError::Range(crate::base::range::RangeError {
+                    field: "control.quantize_deg",
                     value: q,
                     min: 0.0,
                     max,
-                });
+                }));
             }
         }
         Ok(())

@@ -110,12 +110,12 @@ impl Curve {
             in_range("curve.points[].u", p[0], -1.0, 1.0)?;
             finite("curve.points[].density", p[1])?;
             if p[1] < 0.0 {
-                return Err(WanderError::OutOfRange {
-                    what: "curve.points[].density",
+                return Err(WanderError::Range(crate::base::range::RangeError {
+                    field: "curve.points[].density",
                     value: p[1],
                     min: 0.0,
                     max: f32::MAX,
-                });
+                }));
             }
             if k > 0 {
                 let q = points[k - 1];

@@ -6,34 +6,22 @@
 
 use core::fmt;
 
+use crate::base::range::{check_range, RangeError};
+
 /// Everything that can be wrong with a wander configuration.
 #[derive(Clone, Debug, PartialEq)]
 pub enum WanderError {
     /// The JSON did not parse or did not match the schema (unknown field,
     /// unknown `kind`, wrong type...). Carries serde's message.
     Json(String),
-    /// A number that must be finite was NaN or infinite.
-    NotFinite {
-        /// Which parameter.
-        what: &'static str,
-    },
+    /// A number was NaN, infinite or outside its closed interval.
+    Range(RangeError),
     /// A number that must be strictly positive was zero or negative.
     NotPositive {
         /// Which parameter.
         what: &'static str,
         /// The offending value.
         value: f32,
-    },
-    /// A number was outside its allowed closed interval.
-    OutOfRange {
-        /// Which parameter.
-        what: &'static str,
-        /// The offending value.
-        value: f32,
-        /// Smallest allowed value.
-        min: f32,
-        /// Largest allowed value.
-        max: f32,
     },
     /// A list that must not be empty was empty.
     Empty {
@@ -83,16 +71,8 @@ impl fmt::Display for WanderError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
             Self::Json(m) => write!(f, "invalid wander config: {m}"),
-            Self::NotFinite { what } => write!(f, "{what} must be a finite number"),
-            Self::NotPositive { what, value } => write!(f, "{what} must be > 0 (got {value})"),
-            Self::OutOfRange {
-                what,
-                value,
-                min,
-                max,
-            } => {
-                write!(f, "{what} must be in [{min}, {max}] (got {value})")
-            }
+            Self::Range(e) => e.fmt(f),
+            Self::NotPositive { what, value } => write!(f, "{what} = {value} must be > 0"),
             Self::Empty { what } => write!(f, "{what} must not be empty"),
             Self::NotIncreasing { what } => write!(f, "{what} must be strictly increasing"),
             Self::ShapeMismatch {
@@ -121,17 +101,19 @@ impl fmt::Display for WanderError {
 
 impl std::error::Error for WanderError {}
 
+impl From<RangeError> for WanderError {
+    fn from(e: RangeError) -> Self {
+        Self::Range(e)
+    }
+}
+
 /// Largest world coordinate or length accepted anywhere (keeps every
 /// derived distance finite in f32).
 pub const WORLD_LIMIT: f32 = 1e6;
 
 /// Checks that `v` is finite.
 pub(crate) fn finite(what: &'static str, v: f32) -> Result<(), WanderError> {
-    if v.is_finite() {
-        Ok(())
-    } else {
-        Err(WanderError::NotFinite { what })
-    }
+    Ok(check_range(what, v, f32::NEG_INFINITY, f32::INFINITY)?)
 }
 
 /// Checks that `v` is finite and strictly positive.
@@ -146,17 +128,7 @@ pub(crate) fn positive(what: &'static str, v: f32) -> Result<(), WanderError> {
 
 /// Checks that `v` is finite and in `[min, max]`.
 pub(crate) fn in_range(what: &'static str, v: f32, min: f32, max: f32) -> Result<(), WanderError> {
-    finite(what, v)?;
-    if (min..=max).contains(&v) {
-        Ok(())
-    } else {
-        Err(WanderError::OutOfRange {
-            what,
-            value: v,
-            min,
-            max,
-        })
-    }
+    Ok(check_range(what, v, min, max)?)
 }
 
 /// Checks that an integer parameter is in `[min, max]`.
@@ -169,11 +141,12 @@ pub(crate) fn in_range_u(
     if (min..=max).contains(&v) {
         Ok(())
     } else {
-        Err(WanderError::OutOfRange {
-            what,
+        Err(RangeError {
+            field: what,
             value: v as f32,
             min: min as f32,
             max: max as f32,
-        })
+        }
+        .into())
     }
 }

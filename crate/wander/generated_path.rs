@@ -136,12 +136,12 @@ impl PathConfig {
                     sum += c.abs();
                 }
                 if sum >= *radius {
-                    return Err(WanderError::OutOfRange {
-                        what: "path.coefficients (sum of |rᵢ|)",
+                    return Err(WanderError::Range(crate::base::range::RangeError {
+                        field: "path.coefficients (sum of |rᵢ|)",
                         value: sum,
                         min: 0.0,
                         max: *radius,
-                    });
+                    }));
                 }
                 in_range_u("path.samples", *samples, 8, 100_000)
             }

@@ -14,9 +14,11 @@
 //! | [`timed`] | §5 | fixed or random hold intervals |
 //! | [`markov`] | §6 | transition tables, two-table variant |
 //! | [`generated_path`] | §7 | fractal and circle-with-sines paths, following |
-//! | [`pipeline`] | all | [`Wanderer`]: the JSON-configured pipeline |
+//! | [`config`] | all | [`WanderConfig`]: the JSON configuration of a pipeline and its validation |
+//! | [`pipeline`] | all | [`Wanderer`]: the pipeline built from a config, stepped, traced; presets |
 //! | [`error`] | — | [`WanderError`] |
 
+pub mod config;
 pub mod control;
 pub mod distribution;
 pub mod error;

@@ -122,3 +122,19 @@ export function section(parent: HTMLElement, title: string): HTMLFieldSetElement
   parent.append(box);
   return box;
 }
+
+/** A row of buttons (class `row`), appended to `parent`. */
+export function row(parent: HTMLElement): HTMLDivElement {
+  const r = document.createElement("div");
+  r.className = "row";
+  parent.append(r);
+  return r;
+}
+
+/** A help paragraph (class `help`), appended to `parent`. */
+export function help(parent: HTMLElement): HTMLParagraphElement {
+  const p = document.createElement("p");
+  p.className = "help";
+  parent.append(p);
+  return p;
+}

@@ -8,24 +8,12 @@
 // (non-blank canvases), a knob rebuilds, a bad JSON edit shows the core's
 // message. Screenshots go to artifacts/ (gitignored).
 // Prints "e2e-gallery: N passed, M failed".
-import { serve, launch, openPage, settle, artifacts } from "./harness.mjs";
+import { serve, launch, openPage, checks, shot, settle, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 import { writeFileSync } from "node:fs";
 import assert from "node:assert/strict";
 
-let passed = 0;
-let failed = 0;
-async function check(name, f) {
-  try {
-    await f();
-    passed++;
-    console.log(`ok - ${name}`);
-  } catch (e) {
-    failed++;
-    console.log(`not ok - ${name}\n  ${String(e && e.stack ? e.stack : e).split("\n").slice(0, 6).join("\n  ")}`);
-  }
-}
-const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
+const { check, finish } = checks("e2e-gallery");
 
 async function waitCrowd(page) {
   await page.waitForFunction(() => {
@@ -347,5 +335,4 @@ try {
 }
 writeFileSync(resolve(artifacts, "gallery-perf.json"), JSON.stringify(report, null, 2));
 if (allProblems.length) console.log(allProblems.join("\n"));
-console.log(`e2e-gallery: ${passed} passed, ${failed} failed`);
-process.exit(failed ? 1 : 0);
+finish();

@@ -5,7 +5,7 @@
 // bound, gain, seek threshold) reaching the core and the URL; URL state round
 // trip and a malformed link; a corrupt table shows a readable message. Screenshots go
 // to artifacts/ (gitignored). Prints "e2e: N passed, M failed".
-import { serve, launch, openPage, waitReady, settle, artifacts } from "./harness.mjs";
+import { serve, launch, openPage, checks, shot, waitReady, settle, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
@@ -14,19 +14,7 @@ import { readFileSync, copyFileSync } from "node:fs";
 const CORE_DEFAULT = { bound: { kind: "turningRadius", factor: 8 }, gain: 2, seekThreshold: 0.25, aim: "entry", minBoundRadius: 1, terminal: { lookahead: 1, heading: 0.5, range: 1 } };
 const coreFunnel = (page) => page.evaluate(() => JSON.parse(JSON.stringify(window.__lab.funnel())));
 
-let passed = 0;
-let failed = 0;
-async function check(name, f) {
-  try {
-    await f();
-    passed++;
-    console.log(`ok - ${name}`);
-  } catch (e) {
-    failed++;
-    console.log(`not ok - ${name}\n  ${String(e && e.stack ? e.stack : e).split("\n").slice(0, 6).join("\n  ")}`);
-  }
-}
-const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
+const { check, finish } = checks("e2e");
 
 /** Canvas-pixel colour census around a CSS-pixel point of the lab canvas. */
 async function colours(page, at, radius) {
@@ -370,5 +358,4 @@ try {
   await browser.close();
   await server.close();
 }
-console.log(`e2e: ${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);
+finish();

@@ -68,3 +68,30 @@ export async function waitReady(page, timeout = 20000) {
 export function settle(page) {
   return page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
 }
+
+/** Named checks that do not stop the run: each prints `ok - name` or
+ *  `not ok - name` with the first lines of the stack; `finish` prints
+ *  "`suite`: N passed, M failed" and exits non-zero on any failure. */
+export function checks(suite) {
+  let passed = 0;
+  let failed = 0;
+  return {
+    async check(name, f) {
+      try {
+        await f();
+        passed++;
+        console.log(`ok - ${name}`);
+      } catch (e) {
+        failed++;
+        console.log(`not ok - ${name}\n  ${String(e && e.stack ? e.stack : e).split("\n").slice(0, 6).join("\n  ")}`);
+      }
+    },
+    finish() {
+      console.log(`${suite}: ${passed} passed, ${failed} failed`);
+      process.exit(failed === 0 ? 0 : 1);
+    },
+  };
+}
+
+/** A screenshot of `page` as artifacts/`name`.png. */
+export const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });

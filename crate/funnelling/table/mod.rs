@@ -5,15 +5,18 @@
 //!
 //! | module | paper | what |
 //! |---|---|---|
-//! | [format](mod@format) | 000 §3 | the file: header, [`BuildParams`], [`TableError`], CRC-32, validation, to/from bytes |
+//! | [format](mod@format) | 000 §3 | the file's header: [`BuildParams`], [`TableError`], layout constants |
+//! | [`codec`] | 000 §3 | the bytes: CRC-32, validation of every field, to/from bytes |
 //! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`] in memory: cells, the multilinear blend, [`Lookup`] |
 //! | [`grid`] | — | where a query falls on a sampled axis, in constant time |
 //! | [`generate`] | 000 §3 | the generator: the same seek code, anisotropic axes, mirror symmetry |
 
+pub mod codec;
 pub mod format;
 pub mod generate;
 pub mod grid;
 pub mod lookup;
 
+pub use codec::crc32;
 pub use format::*;
 pub use lookup::{EtaTable, Lookup};

@@ -1,7 +1,7 @@
 // The crowd page's side panel: seek, separation, boid count, path radius,
 // display switches, path editing buttons, metrics. Built on ../controls.
 
-import { button, checkbox, section, slider } from "../controls";
+import { button, checkbox, help, row, section, slider } from "../controls";
 import type { CrowdMetrics, CrowdSeek } from "../wasm";
 
 /** The paper's five seeks, in preset order. */
@@ -99,10 +99,7 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
       a.separation(sepOn, v);
     },
   });
-  const help = document.createElement("p");
-  help.className = "help";
-  help.textContent = "Weight 1 is the paper's literal separation sum; the presets use 0.05.";
-  strat.append(help);
+  help(strat).textContent = "Weight 1 is the paper's literal separation sum; the presets use 0.05.";
 
   // Crowd.
   const crowd = section(parent, "Crowd");
@@ -139,8 +136,7 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   });
   numRow.append(num);
   crowd.append(numRow);
-  const quick = document.createElement("div");
-  quick.className = "row";
+  const quick = row(crowd);
   for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
     button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => {
       num.value = String(n);
@@ -149,7 +145,6 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
       a.boids(n);
     });
   }
-  crowd.append(quick);
   slider(crowd, {
     id: "speed", label: "steps / frame", unit: "", min: 1, max: 20, step: 1, value: 1, digits: 0, onInput: a.speed,
   });
@@ -160,26 +155,19 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
     id: "radius", label: "radius", unit: "u", min: 2, max: 150, step: 1, value: initial.radius, digits: 0, onInput: a.radius,
   });
   const closed = checkbox(path, "closed", "closed circuit", initial.closed, a.closed);
-  const prow = document.createElement("div");
-  prow.className = "row";
+  const prow = row(path);
   button(prow, "add-point", "Add point", "split the segment after the selected point (or the longest); double-click a segment also adds one", a.addPoint);
   button(prow, "remove-point", "Remove point", "remove the selected path point (also Delete)", a.removePoint);
   button(prow, "fit", "Fit view", "fit the pathway in the canvas", a.fit);
-  path.append(prow);
-  const phelp = document.createElement("p");
-  phelp.className = "help";
-  phelp.innerHTML = "Drag a point to move it; double-click a segment to add one; click a point and press <kbd>Delete</kbd> to remove it. Drag elsewhere to pan, wheel to zoom.";
-  path.append(phelp);
+  help(path).innerHTML = "Drag a point to move it; double-click a segment to add one; click a point and press <kbd>Delete</kbd> to remove it. Drag elsewhere to pan, wheel to zoom.";
 
   // Display.
   const disp = section(parent, "Display");
   checkbox(disp, "show-trace", "lap trace", true, a.showTrace);
   checkbox(disp, "show-handles", "path points", true, a.showHandles);
-  const drow = document.createElement("div");
-  drow.className = "row";
+  const drow = row(disp);
   button(drow, "new-trace", "Another boid", "highlight another random boid's lap", a.newTrace);
   button(drow, "png", "PNG", "download the canvas as PNG", a.png);
-  disp.append(drow);
 
   // Metrics.
   const met = section(parent, "Metrics (since reset)");
@@ -187,14 +175,9 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   pre.className = "metrics";
   pre.id = "metrics";
   met.append(pre);
-  const mrow = document.createElement("div");
-  mrow.className = "row";
+  const mrow = row(met);
   button(mrow, "reset-metrics", "Reset metrics", "start measuring again from now", a.resetMetrics);
-  met.append(mrow);
-  const mhelp = document.createElement("p");
-  mhelp.className = "help";
-  mhelp.textContent = "Distance: boid to the closest path point. Outside: share of boid-steps beyond the radius. Trace spread: how much laps differ (std of lateral offset per stretch; near 0 = one ideal line).";
-  met.append(mhelp);
+  help(met).textContent = "Distance: boid to the closest path point. Outside: share of boid-steps beyond the radius. Trace spread: how much laps differ (std of lateral offset per stretch; near 0 = one ideal line).";
 
   const panel: Panel = {
     set(s) {

@@ -1,27 +1,21 @@
 // The heads-up display: the focus agent's controller internals (μ and its
 // bound μ_max included) and timing.
 
-import { Mode } from "../wasm";
+import { Mode, type Internals } from "../wasm";
 import { MODE_NAMES } from "./render";
 
-export interface HudData {
+/** The focus agent's internals as the core declares them (`Internals`,
+ *  crate/bindings/lab_types.rs; NaN where there is no agent) and timing. */
+export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" | "muMax" | "reachable"> & {
   mode: number | null;
-  d: number;
-  alpha: number;
-  eta: number;
-  deltaEta: number;
-  mu: number;
-  /** Bound on |μ| this update (computed in Funnelling only). */
-  muMax: number;
   speed: number;
-  reachable: boolean;
   usPerUpdate: number;
   frameMs: number;
   agents: number;
   time: number;
   paused: boolean;
   slow: boolean;
-}
+};
 
 const DEG = 180 / Math.PI;
 

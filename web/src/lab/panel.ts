@@ -2,7 +2,7 @@
 // settings, the vehicle limits, the overlays, the η field view, and sharing
 // and export. Every control edits the page's state and hands it on.
 
-import { button, checkbox, section, slider, type Control } from "../controls";
+import { button, checkbox, help, row, section, slider, type Control } from "../controls";
 import { $ } from "../page";
 import { downloadPng } from "../download";
 import { downloadCsv, downloadJson } from "./export";
@@ -17,20 +17,6 @@ export interface GoalControls {
   beta: Control;
   epsTol: Control;
   dTol: Control;
-}
-
-function row(parent: HTMLElement): HTMLDivElement {
-  const r = document.createElement("div");
-  r.className = "row";
-  parent.append(r);
-  return r;
-}
-
-function help(parent: HTMLElement): HTMLParagraphElement {
-  const p = document.createElement("p");
-  p.className = "help";
-  parent.append(p);
-  return p;
 }
 
 export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls {

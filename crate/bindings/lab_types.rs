@@ -1,0 +1,242 @@
+//! What crosses the boundary for [`Lab`](super::lab::Lab), declared once on
+//! each side: the TypeScript interfaces the page compiles against
+//! (`typescript_custom_section`) and the serde shapes that carry them
+//! (flat, camelCase). Conversion only: the core validates what they carry.
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+use wasm_bindgen::prelude::*;
+
+use crate::funnel::{Goal, Internals};
+use crate::vehicle::VehicleParams;
+use crate::world::{GoalMotion, GoalSpec, SwitchRule};
+
+#[wasm_bindgen(typescript_custom_section)]
+const TS_TYPES: &'static str = r#"
+/** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
+export interface VehicleParams {
+  dt: number;
+  vMax: number;
+  accelMax: number;
+  omegaMax: number;
+  omegaAccelMax: number;
+  normalAccelMax: number;
+  kp: number;
+  kd: number;
+  integrator: "euler" | "semiImplicitEuler";
+}
+/** How the modulation μ is bounded (crate::funnel::MuBound). `literal`: the
+ *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
+ *  π/2; `turningRadius`: atan(factor·max(R_min, minBoundRadius) / D), the
+ *  default (factor 8); `constant`: π/2 (does not vanish with distance). */
+export type MuBound =
+  | { kind: "literal" }
+  | { kind: "scaledLiteral"; gain: number }
+  | { kind: "turningRadius"; factor: number }
+  | { kind: "constant" };
+/** The funnelling controller's settings, shared by every agent
+ *  (crate::funnel::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
+ *  bounded by `bound`; Position_only once |Δη| < seekThreshold·ε_tol
+ *  (seekThreshold in [0, 1], default 0.25). */
+export interface FunnelConfig {
+  bound: MuBound;
+  gain: number;
+  seekThreshold: number;
+  /** Aim at the disk's entry point (default) or at the centre (the paper). */
+  aim?: "entry" | "centre";
+  /** Smallest turning radius of the `turningRadius` bound, m (default 1). */
+  minBoundRadius?: number;
+  /** The terminal line pursuit (default on; null or absent: off). */
+  terminal?: TerminalConfig | null;
+}
+/** The terminal line pursuit (crate::funnelling::approach::Terminal): carrot
+ *  `lookahead` seconds of travel ahead on the goal's line; starts within
+ *  `range` carrot distances of the disk when |β − θ| < `heading` (rad). */
+export interface TerminalConfig {
+  lookahead: number;
+  heading: number;
+  range: number;
+}
+/** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
+export interface GoalConfig {
+  x: number;
+  y: number;
+  beta: number;
+  dTol: number;
+  epsTol: number;
+  speed: number;
+  halting: boolean;
+  relaxed: boolean;
+}
+/** One agent: start pose and its goal queue (each reached in turn). */
+export interface AgentConfig {
+  x: number;
+  y: number;
+  theta: number;
+  v?: number;
+  omega?: number;
+  goals: GoalConfig[];
+}
+/** What one controller update computed (crate::funnel::Internals). Angles in rad. */
+export interface Internals {
+  /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
+  mode: 0 | 1 | 2 | 3;
+  d: number;
+  alpha: number;
+  eta: number;
+  deltaEta: number;
+  mu: number;
+  muMax: number;
+  gamma: number;
+  reachable: boolean;
+  vDt: number;
+  /** Relaxed funnelling: arc 𝒜 = [alphaMin, alphaMax] on the ring `radius`, chosen α_r (vehicle frame). */
+  arc?: { alphaMin: number; alphaMax: number; alphaR: number; radius: number } | null;
+}
+/** The loaded η table's shape. */
+export interface TableInfo {
+  entries: number;
+  distances: number[];
+  alphas: number[];
+  omegaFractions: number[];
+  speeds: number[];
+  desiredSpeeds: number[];
+  /** Smallest sampled distance D_η, m. */
+  dEta: number;
+  params: VehicleParams;
+}
+/** A loaded scenario: its name, description and the world box to show. */
+export interface ScenarioInfo {
+  name: string;
+  description: string;
+  source: string;
+  /** Non-empty when the scenario's vehicle differs from the table's. */
+  warning: string;
+  agents: number;
+  minX: number;
+  minY: number;
+  maxX: number;
+  maxY: number;
+}
+"#;
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub(super) struct TableInfo<'a> {
+    pub(super) entries: usize,
+    pub(super) distances: &'a [f32],
+    pub(super) alphas: &'a [f32],
+    pub(super) omega_fractions: &'a [f32],
+    pub(super) speeds: &'a [f32],
+    pub(super) desired_speeds: &'a [f32],
+    pub(super) d_eta: f32,
+    pub(super) params: VehicleParams,
+}
+
+/// A goal as the page edits it (flat, camelCase); `relaxed` selects relaxed
+/// funnelling towards the region goal (paper 001): the disk is `dTol`, the
+/// orientation interval is β ± `epsTol`. The controller is world-wide.
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+pub(super) struct GoalConfig {
+    pub(super) x: f32,
+    pub(super) y: f32,
+    pub(super) beta: f32,
+    pub(super) d_tol: f32,
+    pub(super) eps_tol: f32,
+    pub(super) speed: f32,
+    #[serde(default)]
+    pub(super) halting: bool,
+    #[serde(default)]
+    pub(super) relaxed: bool,
+}
+
+impl GoalConfig {
+    /// The core's goal (validated by the world that receives it).
+    pub(super) fn to_spec(&self) -> GoalSpec {
+        GoalSpec {
+            goal: Goal {
+                pos: Vec2::new(self.x, self.y),
+                beta: self.beta,
+                d_tol: self.d_tol,
+                eps_tol: self.eps_tol,
+                speed: self.speed,
+                halting: self.halting,
+            },
+            motion: GoalMotion::Static,
+            switch: SwitchRule::EndOfSteering,
+        }
+    }
+}
+
+#[derive(Serialize, Deserialize)]
+#[serde(deny_unknown_fields, rename_all = "camelCase")]
+pub(super) struct AgentConfig {
+    pub(super) x: f32,
+    pub(super) y: f32,
+    pub(super) theta: f32,
+    #[serde(default)]
+    pub(super) v: f32,
+    #[serde(default)]
+    pub(super) omega: f32,
+    pub(super) goals: Vec<GoalConfig>,
+}
+
+/// Internals as the page reads them: the mode as its number.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub(super) struct InternalsOut {
+    pub(super) mode: u8,
+    pub(super) d: f32,
+    pub(super) alpha: f32,
+    pub(super) eta: f32,
+    pub(super) delta_eta: f32,
+    pub(super) mu: f32,
+    pub(super) mu_max: f32,
+    pub(super) gamma: f32,
+    pub(super) reachable: bool,
+    pub(super) v_dt: f32,
+    pub(super) arc: Option<ArcOut>,
+}
+
+/// Relaxed funnelling's restricted arc 𝒜 and chosen α_r (vehicle frame).
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub(super) struct ArcOut {
+    pub(super) alpha_min: f32,
+    pub(super) alpha_max: f32,
+    pub(super) alpha_r: f32,
+    pub(super) radius: f32,
+}
+
+impl From<Internals> for InternalsOut {
+    fn from(i: Internals) -> Self {
+        Self {
+            mode: i.mode as u8,
+            d: i.d,
+            alpha: i.alpha,
+            eta: i.eta,
+            delta_eta: i.delta_eta,
+            mu: i.mu,
+            mu_max: i.mu_max,
+            gamma: i.gamma,
+            reachable: i.reachable,
+            v_dt: i.v_dt,
+            arc: None,
+        }
+    }
+}
+
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub(super) struct ScenarioInfo {
+    pub(super) name: String,
+    pub(super) description: String,
+    pub(super) source: String,
+    pub(super) agents: usize,
+    pub(super) min_x: f32,
+    pub(super) min_y: f32,
+    pub(super) max_x: f32,
+    pub(super) max_y: f32,
+    pub(super) warning: String,
+}

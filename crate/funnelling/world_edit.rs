@@ -1,0 +1,213 @@
+//! Edits of a running world (issue 12: the logic of the lab page's drags,
+//! sliders and performance runs lives in the core, the bindings only
+//! convert): a pose reset or a new goal queue restarts the agent's queue and
+//! its mode memory (paper 000 Fig. 5's Position_only latch), and the seeded
+//! random crowd of the performance runs. Every edit validates first and
+//! changes nothing when it refuses, so a front end can pass user input
+//! straight through.
+
+use glam::Vec2;
+
+use crate::funnel::{FunnelMemory, Goal};
+use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::world::{Agent, GoalMotion, GoalSpec, SwitchRule, World};
+
+/// Agents a world may hold (the page's performance runs go to 100,000).
+pub const MAX_AGENTS: usize = 100_001;
+
+/// Goals queued per agent by [`World::spawn_random`] (minutes of funnelling).
+pub const RANDOM_GOALS: usize = 16;
+
+/// Why an edit of a running world (a reset, a new goal, more agents) was
+/// refused; nothing is changed when it is.
+#[derive(Clone, Debug, PartialEq)]
+pub enum EditError {
+    /// There is no agent with this index.
+    NoAgent {
+        /// The index asked for.
+        index: usize,
+        /// Agents in the world.
+        count: usize,
+    },
+    /// Adding the agents would exceed [`MAX_AGENTS`].
+    TooManyAgents {
+        /// Agents asked for.
+        adding: usize,
+        /// Agents already in the world.
+        count: usize,
+    },
+    /// A pose, goal or setting is out of range.
+    Param(ParamError),
+}
+
+impl core::fmt::Display for EditError {
+    fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
+        match self {
+            Self::NoAgent { index, count } => write!(f, "no agent {index} (there are {count})"),
+            Self::TooManyAgents { adding, count } => write!(
+                f,
+                "{adding} more agents would exceed {MAX_AGENTS} (there are {count})"
+            ),
+            Self::Param(e) => e.fmt(f),
+        }
+    }
+}
+
+impl std::error::Error for EditError {}
+
+impl From<ParamError> for EditError {
+    fn from(e: ParamError) -> Self {
+        Self::Param(e)
+    }
+}
+
+impl GoalSpec {
+    /// Checks the goal and its motion against the vehicle `p`.
+    ///
+    /// # Errors
+    /// The first value out of range (NaN included), named.
+    pub fn validate(&self, p: &VehicleParams) -> Result<(), ParamError> {
+        use crate::vehicle::check_range;
+        self.goal.validate(p)?;
+        self.check_halting()?;
+        match self.motion {
+            GoalMotion::Linear { velocity } => {
+                check_range("motion.velocity.x", velocity.x, -100.0, 100.0)?;
+                check_range("motion.velocity.y", velocity.y, -100.0, 100.0)
+            }
+            GoalMotion::Circle {
+                center,
+                angular_speed,
+            } => {
+                check_range("motion.center.x", center.x, -1e6, 1e6)?;
+                check_range("motion.center.y", center.y, -1e6, 1e6)?;
+                check_range("motion.angularSpeed", angular_speed, -100.0, 100.0)
+            }
+            GoalMotion::FaceAgent { distance, .. } => {
+                check_range("motion.distance", distance, 0.0, 1e3)
+            }
+            GoalMotion::Static => Ok(()),
+        }
+    }
+}
+
+/// Edits of a running world, as the lab page makes them (a drag, a slider,
+/// a performance run): each validates first and changes nothing when it
+/// refuses, so a front end can pass user input straight through.
+impl World {
+    /// Agent `i`.
+    ///
+    /// # Errors
+    /// [`EditError::NoAgent`] when there is none.
+    pub fn agent(&self, i: usize) -> Result<&Agent, EditError> {
+        let count = self.agents.len();
+        self.agents
+            .get(i)
+            .ok_or(EditError::NoAgent { index: i, count })
+    }
+
+    /// Restarts agent `i`'s goal queue (the index is valid): first goal as
+    /// it stands now (a goal that faces another agent faces it where it is),
+    /// fresh mode memory (paper 000 Fig. 5's latches open again), not
+    /// finished. An edit, not a step: the states are gathered anew.
+    fn restart(&mut self, i: usize) {
+        let t = self.time;
+        let others: Vec<VehicleState> = self.agents.iter().map(|a| a.state).collect();
+        let a = &mut self.agents[i];
+        a.current = 0;
+        a.goal_now = a
+            .goals
+            .first()
+            .map(|g| g.at(t, &others))
+            .unwrap_or_default();
+        a.memory = FunnelMemory::default();
+        a.finished_at = None;
+    }
+
+    /// Checks that `adding` more agents fit under [`MAX_AGENTS`].
+    ///
+    /// # Errors
+    /// [`EditError::TooManyAgents`].
+    pub fn check_room(&self, adding: usize) -> Result<(), EditError> {
+        let count = self.agents.len();
+        if count.saturating_add(adding) > MAX_AGENTS {
+            return Err(EditError::TooManyAgents { adding, count });
+        }
+        Ok(())
+    }
+
+    /// Puts agent `i` at rest at `pos`, heading `theta` (wrapped), and
+    /// restarts its goal queue.
+    ///
+    /// # Errors
+    /// No such agent, or a pose out of range (NaN included).
+    pub fn set_pose(&mut self, i: usize, pos: Vec2, theta: f32) -> Result<(), EditError> {
+        let s = VehicleState::new(pos, crate::angle::wrap(theta), 0.0, 0.0);
+        self.agent(i)?;
+        s.validate(&self.params)?;
+        self.agents[i].state = s;
+        self.restart(i);
+        Ok(())
+    }
+
+    /// Replaces agent `i`'s goal queue and restarts it.
+    ///
+    /// # Errors
+    /// No such agent, or a goal out of range.
+    pub fn set_goals(&mut self, i: usize, goals: Vec<GoalSpec>) -> Result<(), EditError> {
+        self.agent(i)?;
+        for g in &goals {
+            g.validate(&self.params)?;
+        }
+        self.agents[i].goals = goals;
+        self.restart(i);
+        Ok(())
+    }
+
+    /// Adds `n` agents for performance runs: random poses at rest in the
+    /// square of half-side `extent` centred on the origin, each with a
+    /// queue of [`RANDOM_GOALS`] random oriented goals in the same square
+    /// (D_tol 0.3 m, ε_tol 10°, switched on entering the tolerance) at
+    /// desired speed `speed` clamped to [0.1, v_max]. Seeded PCG32: the same
+    /// seed gives the same crowd natively and in the browser.
+    ///
+    /// # Errors
+    /// `extent` outside [0.001, 1e5] or not finite, or more than
+    /// [`MAX_AGENTS`] agents in all; nothing is added then.
+    pub fn spawn_random(
+        &mut self,
+        n: usize,
+        seed: u64,
+        extent: f32,
+        speed: f32,
+    ) -> Result<(), EditError> {
+        use core::f32::consts::PI;
+        crate::vehicle::check_range("extent", extent, 1e-3, 1e5)?;
+        self.check_room(n)?;
+        let speed = speed.clamp(0.1, self.params.v_max);
+        let mut rng = crate::rng::Rng::new(seed);
+        let point = |rng: &mut crate::rng::Rng| {
+            Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
+        };
+        for _ in 0..n {
+            let pos = point(&mut rng);
+            let state = VehicleState::new(pos, rng.range(-PI, PI), 0.0, 0.0);
+            let goals = (0..RANDOM_GOALS)
+                .map(|_| GoalSpec {
+                    goal: Goal {
+                        pos: point(&mut rng),
+                        beta: rng.range(-PI, PI),
+                        d_tol: 0.3,
+                        eps_tol: 10f32.to_radians(),
+                        speed,
+                        halting: false,
+                    },
+                    motion: GoalMotion::Static,
+                    switch: SwitchRule::Tolerance,
+                })
+                .collect();
+            self.add_agent(state, goals)?;
+        }
+        Ok(())
+    }
+}

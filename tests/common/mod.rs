@@ -1,0 +1,128 @@
+//! What several test files share (issue 12), written once: the FNV-1a hash
+//! behind every golden trajectory, the wander presets with their golden
+//! hashes (checked natively and through the bindings in Chromium), and a
+//! counting allocator for the allocation-free-step checks.
+//!
+//! Each file in `tests/` is its own crate and uses a part of this with
+//! `mod common;`, hence `dead_code`; the allocator is the only unsafe code
+//! and forwards every call unchanged.
+#![allow(dead_code, unsafe_code)]
+
+use std::alloc::{GlobalAlloc, Layout, System};
+use std::cell::Cell;
+
+/// FNV-1a offset basis: the hash of nothing.
+pub const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
+
+/// FNV-1a over the f32 bit patterns (little-endian bytes), so that a golden
+/// value pins the bits, not rounded values (DESIGN §8).
+pub fn fnv(hash: &mut u64, values: &[f32]) {
+    for v in values {
+        for b in v.to_bits().to_le_bytes() {
+            *hash ^= u64::from(b);
+            *hash = hash.wrapping_mul(0x0000_0100_0000_01b3);
+        }
+    }
+}
+
+/// The wander gallery's preset files (paper 004, one per component) and the
+/// golden hash of every variant's trace after the preset's suggested steps
+/// (recorded natively; `tests/web_gallery.rs` checks the same values
+/// through the bindings).
+pub const WANDER_PRESETS: [(&str, &str, u64); 8] = [
+    (
+        "control",
+        include_str!("../../scenarios/wander/control.json"),
+        0xa0ca_8f10_df0b_3566,
+    ),
+    (
+        "distributions",
+        include_str!("../../scenarios/wander/distributions.json"),
+        0xfc4a_d28a_96ea_0ecb,
+    ),
+    (
+        "fields",
+        include_str!("../../scenarios/wander/fields.json"),
+        0xd388_8293_835d_0d35,
+    ),
+    (
+        "time-functions",
+        include_str!("../../scenarios/wander/time-functions.json"),
+        0x6d73_78d6_c8fc_744f,
+    ),
+    (
+        "timed",
+        include_str!("../../scenarios/wander/timed.json"),
+        0xcb03_e86b_eccc_24a2,
+    ),
+    (
+        "markov",
+        include_str!("../../scenarios/wander/markov.json"),
+        0x7cb6_c4f8_9c41_4986,
+    ),
+    (
+        "paths",
+        include_str!("../../scenarios/wander/paths.json"),
+        0xdca7_270c_11a5_ae3b,
+    ),
+    (
+        "composed",
+        include_str!("../../scenarios/wander/composed.json"),
+        0xd2b8_71aa_0185_462c,
+    ),
+];
+
+/// A global allocator that counts the allocations and reallocations made
+/// by the thread inside [`allocations`], and forwards every call unchanged
+/// to the system allocator. A test file installs it with
+/// `#[global_allocator] static GLOBAL: common::CountingAlloc = common::CountingAlloc;`.
+pub struct CountingAlloc;
+
+thread_local! {
+    static COUNTING: Cell<bool> = const { Cell::new(false) };
+    static COUNT: Cell<usize> = const { Cell::new(0) };
+}
+
+fn tally() {
+    if COUNTING.with(Cell::get) {
+        COUNT.with(|c| c.set(c.get() + 1));
+    }
+}
+
+// SAFETY: forwards every call unchanged to the system allocator; the
+// tally touches only const-initialised thread-locals (no allocation).
+unsafe impl GlobalAlloc for CountingAlloc {
+    unsafe fn alloc(&self, layout: Layout) -> *mut u8 {
+        tally();
+        // SAFETY: same contract as the caller's.
+        unsafe { System.alloc(layout) }
+    }
+    unsafe fn dealloc(&self, ptr: *mut u8, layout: Layout) {
+        // SAFETY: same contract as the caller's.
+        unsafe { System.dealloc(ptr, layout) }
+    }
+    unsafe fn realloc(&self, ptr: *mut u8, layout: Layout, new_size: usize) -> *mut u8 {
+        tally();
+        // SAFETY: same contract as the caller's.
+        unsafe { System.realloc(ptr, layout, new_size) }
+    }
+}
+
+/// Runs `f` and returns its result with the number of allocations this
+/// thread made meanwhile (0 unless [`CountingAlloc`] is the global
+/// allocator).
+pub fn allocations<R>(f: impl FnOnce() -> R) -> (R, usize) {
+    COUNT.with(|c| c.set(0));
+    COUNTING.with(|c| c.set(true));
+    let r = f();
+    COUNTING.with(|c| c.set(false));
+    (r, COUNT.with(Cell::get))
+}
+
+/// The committed η table (`tables/eta.bin`), read from disk (native tests).
+pub fn table() -> steering::table::EtaTable {
+    steering::table::EtaTable::from_bytes(
+        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
+    )
+    .unwrap()
+}
