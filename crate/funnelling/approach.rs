@@ -101,6 +101,12 @@ pub fn tolerance_phase(
         out.delta_eta = heading_err;
         let oriented = heading_err.abs() < g.eps_tol
             && (!g.halting || wrap(heading_err - rest_rotation(p, s.omega)).abs() < g.eps_tol);
+        if oriented && !g.halting && !mem.goal_moves && d >= g.d_tol {
+            // Faces β again but has left a static disk: come back
+            // (FunnelMemory's docs).
+            mem.position_met = false;
+            return false;
+        }
         if oriented {
             out.mode = Mode::EndOfSteering;
             out.gamma = s.theta;

@@ -835,14 +835,17 @@ impl EnvelopeReport {
             "≥ 80 %",
             st.oriented >= 0.8,
         );
-        let (mut eos, mut eos_ok, mut rest, mut nh) = (0.0, 0.0, 0.0, 0.0);
+        // End_of_Steering, static goals (single and chained) apart from
+        // moving ones, whose met position is latched (FunnelMemory).
+        let (mut eos, mut eos_ok, mut rest, mut nh) = ([0.0f32; 2], [0.0f32; 2], 0.0, 0.0);
         let ours = ["standard", "relaxed"];
         for v in self.variants.iter().filter(|v| ours.contains(&v.name)) {
             for g in &v.groups {
                 let c = summarise(&g.runs);
-                let k: u32 = g.runs.iter().map(|r| r.eos).sum();
-                eos += k as f32;
-                eos_ok += c.eos_ok * k as f32;
+                let k = g.runs.iter().map(|r| r.eos).sum::<u32>() as f32;
+                let m = usize::from(g.kind == GoalKind::Moving);
+                eos[m] += k;
+                eos_ok[m] += c.eos_ok * k;
                 if c.n_halting > 0 {
                     rest += c.rest_ok * c.n_halting as f32;
                     nh += c.n_halting as f32;
@@ -850,10 +853,16 @@ impl EnvelopeReport {
             }
         }
         row(
-            "End_of_Steering with both tolerances met (standard and relaxed, all groups)",
-            format!("{} %", pct(eos_ok / eos)),
+            "End_of_Steering with both tolerances met (standard and relaxed; static and chained goals)",
+            format!("{} %", pct(eos_ok[0] / eos[0])),
             "≥ 99.5 %",
-            eos_ok / eos >= 0.995,
+            eos_ok[0] / eos[0] >= 0.995,
+        );
+        row(
+            "same, moving goals (met position latched: the disk may move off while the vehicle turns)",
+            format!("{} %", pct(eos_ok[1] / eos[1])),
+            "≥ 99.5 %",
+            eos_ok[1] / eos[1] >= 0.995,
         );
         row(
             "halting: rest pose inside both tolerances (standard and relaxed)",

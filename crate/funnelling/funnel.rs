@@ -226,10 +226,21 @@ impl Default for FunnelConfig {
 /// vehicle entering at speed cannot stop inside a small circle, so the
 /// fact is latched until the target is farther than
 /// [`FunnelMemory::release_radius`] (a moving target can walk away).
+///
+/// A *static* goal that is not halting gets one more rule (issue 13): when
+/// the vehicle, having braked and turned, faces β again but has left the
+/// disk, the fact is forgotten and the goal approached again, so
+/// End_of_Steering always finds both tolerances met (tune seed 1: 97.9 %
+/// → 100 % of declarations, every run still finishes). A moving goal
+/// keeps the latch: chasing it again left 15 % of moving runs unfinished.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct FunnelMemory {
     /// The position tolerance has been met.
     pub position_met: bool,
+    /// The goal moves (set by [`crate::world::World`] for goals in motion
+    /// or following an agent): a met position stays met.
+    #[serde(default)]
+    pub goal_moves: bool,
 }
 
 impl FunnelMemory {

@@ -121,6 +121,12 @@ impl GoalSpec {
         }
     }
 
+    /// True when the goal moves by itself or follows an agent.
+    #[must_use]
+    pub fn moves(&self) -> bool {
+        self.moves_by_itself() || matches!(self.motion, GoalMotion::FaceAgent { .. })
+    }
+
     /// Refuses a halting goal that moves by itself (see [`GoalMotion`]).
     ///
     /// # Errors
@@ -329,6 +335,7 @@ impl World {
             let goal = spec.at(t, &self.snapshot);
             a.goal_now = goal;
             let mut mem = a.memory;
+            mem.goal_moves = spec.moves();
             let (cfg, rcfg) = settings_for(&self.config, &self.relaxed, &spec.motion);
             a.internals = match self.controller {
                 ControllerKind::Standard => cfg.plan(table, &p, &a.state, &goal, &mut mem),
@@ -371,6 +378,7 @@ impl World {
                 let goal = spec.at(t, &self.snapshot);
                 a.goal_now = goal;
                 let (cfg, rcfg) = settings_for(&self.config, &self.relaxed, &spec.motion);
+                a.memory.goal_moves = spec.moves();
                 a.internals = match self.controller {
                     ControllerKind::Standard => {
                         cfg.step(table, &p, &mut a.state, &goal, &mut a.memory)
