@@ -87,5 +87,12 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
             let s = summarise(v.runs(kind));
             assert!(s.finished >= 0.99, "{} {kind:?}: {s:?}", v.name);
         }
+        // End_of_Steering inside both tolerances for static goals, single
+        // or chained; halting runs at rest inside both.
+        for kind in [GoalKind::Static, GoalKind::Chain] {
+            let s = summarise(v.runs(kind));
+            assert!(s.eos_ok >= 0.995, "{} {kind:?}: {s:?}", v.name);
+            assert!(s.rest_ok >= 1.0, "{} {kind:?}: {s:?}", v.name);
+        }
     }
 }

@@ -141,9 +141,10 @@ pub fn literal_relaxed_config() -> RelaxedConfig {
     }
 }
 
-/// The four variants: standard and relaxed, default and literal.
+/// The five variants: standard and relaxed, default and literal, and the
+/// relaxed controller's paper arc with the default funnelling settings.
 #[must_use]
-pub fn variants() -> [Variant; 4] {
+pub fn variants() -> [Variant; 5] {
     let d = FunnelConfig::default();
     let l = literal_config();
     let r = RelaxedConfig::default();
@@ -164,6 +165,16 @@ pub fn variants() -> [Variant; 4] {
         Variant {
             name: "relaxed-literal",
             controller: Controller::Relaxed(l, rl),
+        },
+        Variant {
+            name: "relaxed-paper-arc",
+            controller: Controller::Relaxed(
+                d,
+                RelaxedConfig {
+                    aim: RelaxedAim::PaperArc,
+                    ..r
+                },
+            ),
         },
     ]
 }
