@@ -15,7 +15,7 @@ use wasm_bindgen::prelude::*;
 use super::lab_types::{AgentConfig, ArcOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
 use crate::funnel::{FunnelConfig, Internals, Mode};
-use crate::relaxed::ControllerKind;
+use crate::relaxed::{ControllerKind, RelaxedConfig};
 use crate::rng::Rng;
 use crate::scenario::Scenario;
 use crate::table::EtaTable;
@@ -141,6 +141,21 @@ impl Lab {
         c.validate().map_err(|e| js_err("funnel settings", e))?;
         self.world.config = c;
         Ok(())
+    }
+
+    /// Replaces the relaxed controller's settings (paper 001; in force
+    /// whenever the world runs the relaxed controller), e.g. its aim: the
+    /// disk's entry point (default) or the paper's relaxed point.
+    #[wasm_bindgen(js_name = setRelaxed)]
+    pub fn set_relaxed(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "RelaxedConfig")] config: JsValue,
+    ) -> Result<(), JsError> {
+        let c: RelaxedConfig = from_js_in("relaxed settings", "relaxed.", config)?;
+        let kind = self.world.controller;
+        self.world
+            .set_controller(kind, c)
+            .map_err(|e| js_err("relaxed settings", e))
     }
 
     /// The η field around a vehicle (paper 001 Fig. 3b/c): for every sampled

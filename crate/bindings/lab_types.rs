@@ -57,6 +57,16 @@ export interface TerminalConfig {
   heading: number;
   range: number;
 }
+/** Relaxed funnelling's settings (crate::relaxed::RelaxedConfig). `aim`:
+ *  "entry", the disk's entry point (default, as the standard controller), or
+ *  "paperArc", paper 001 Fig. 7's relaxed point on the ring arc 𝒜. Margins
+ *  in (0, 1]. */
+export interface RelaxedConfig {
+  aim?: "entry" | "paperArc";
+  diskMargin?: number;
+  orientationMargin?: number;
+  endEta?: "linear" | "multilinear";
+}
 /** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
 export interface GoalConfig {
   x: number;

@@ -14,6 +14,7 @@ export type {
   GoalConfig,
   Internals,
   MuBound,
+  RelaxedConfig,
   ScenarioInfo,
   TableInfo,
   VehicleParams,

@@ -193,10 +193,10 @@ try {
     for (const id of ["mu-bound", "mu-gain", "seek-th"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
     const opts = await page.locator("#mu-bound option").allTextContents();
     assert.deepEqual(opts, ["turning radius ×8 (default)", "6 × literal", "literal (paper)", "constant π/2"]);
-    for (const id of ["aim", "pursuit"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
+    for (const id of ["aim", "pursuit", "relaxed-aim"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
     // The page's defaults are the core's.
     assert.deepEqual(await coreFunnel(page), CORE_DEFAULT);
-    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, gain: 2, threshold: 0.25 });
+    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 });
     assert.equal(await page.inputValue("#mu-gain"), "2");
     assert.equal(await page.inputValue("#seek-th"), "0.25");
     const n = await page.evaluate(() => window.__lab.count());
@@ -293,7 +293,7 @@ try {
     assert.match(text, /th="2"/);
     assert.match(text, /aim="left"/);
     assert.match(text, /lp="2"/);
-    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, gain: 2, threshold: 0.25 });
+    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 });
     assert.deepEqual(await coreFunnel(p5.page), CORE_DEFAULT);
     assert.equal(await p5.page.inputValue("#mu-bound"), "tr");
     await shot(p5.page, "11-bad-controller-link-message");

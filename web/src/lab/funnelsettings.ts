@@ -4,8 +4,8 @@
 // running.
 
 import { section, select, slider } from "../controls";
-import type { AimKey, BoundKey, FunnelSettings } from "./state";
-import type { FunnelConfig, MuBound } from "../wasm";
+import type { AimKey, BoundKey, FunnelSettings, RelaxedAimKey } from "./state";
+import type { FunnelConfig, MuBound, RelaxedConfig } from "../wasm";
 
 export const BOUND_CHOICES: ReadonlyArray<{ value: BoundKey; label: string; bound: MuBound }> = [
   { value: "tr", label: "turning radius ×8 (default)", bound: { kind: "turningRadius", factor: 8 } },
@@ -23,6 +23,16 @@ const PURSUIT_CHOICES: ReadonlyArray<{ value: "on" | "off"; label: string }> = [
   { value: "on", label: "line pursuit (default)" },
   { value: "off", label: "table only (paper)" },
 ];
+
+const RELAXED_AIM_CHOICES: ReadonlyArray<{ value: RelaxedAimKey; label: string }> = [
+  { value: "entry", label: "entry point (default)" },
+  { value: "paperArc", label: "relaxed point (paper)" },
+];
+
+/** The core's relaxed settings for the page's (the rest at the core's defaults). */
+export function relaxedConfig(f: FunnelSettings): RelaxedConfig {
+  return { aim: f.relaxedAim };
+}
 
 /** The core's terminal line pursuit defaults (crate::funnelling::approach::Terminal). */
 const TERMINAL = { lookahead: 1, heading: 0.5, range: 1 };
@@ -54,6 +64,11 @@ export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onC
     onChange: (v) => { f.pursuit = v === "on"; onChange(); },
   });
   pursuit.el.title = "Lined up behind the disk, pursue a carrot on the goal's line one second ahead: heading error and lateral offset decay together";
+  const relaxedAim = select(box, {
+    id: "relaxed-aim", label: "relaxed aims at", options: RELAXED_AIM_CHOICES, value: f.relaxedAim,
+    onChange: (v) => { f.relaxedAim = v; onChange(); },
+  });
+  relaxedAim.el.title = "For a relaxed (region) goal: the disk's entry point, as the standard controller (orients on entry), or paper 001's relaxed point on the ring arc (shorter paths, turns to the interval after entering)";
   const gain = slider(box, {
     id: "mu-gain", label: "gain k", unit: "", min: 1, max: 4, step: 0.25, value: f.gain,
     onInput: (v) => { f.gain = v; onChange(); },

@@ -6,7 +6,7 @@
 import { showMessage } from "../page";
 import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
-import { funnelConfig } from "./funnelsettings";
+import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import type { LabState, Pose } from "./state";
 import { Trails } from "./trails";
@@ -119,6 +119,7 @@ export class LabSim {
   applyFunnel(): void {
     try {
       this.lab.setFunnel(funnelConfig(this.st.funnel));
+      this.lab.setRelaxed(relaxedConfig(this.st.funnel));
     } catch (e) {
       showMessage(`Controller settings rejected: ${errorText(e)}`, "warn");
     }

@@ -35,12 +35,19 @@ export type BoundKey = (typeof BOUND_KEYS)[number];
 export const AIM_KEYS = ["entry", "centre"] as const;
 export type AimKey = (typeof AIM_KEYS)[number];
 
+/** Where the relaxed controller aims: the disk's entry point (the core's
+ *  default) or paper 001's relaxed point on the ring arc. */
+export const RELAXED_AIM_KEYS = ["entry", "paperArc"] as const;
+export type RelaxedAimKey = (typeof RELAXED_AIM_KEYS)[number];
+
 /** The funnelling controller's settings as the page edits them. */
 export interface FunnelSettings {
   bound: BoundKey;
   aim: AimKey;
   /** The terminal line pursuit on the last stretch (core default: on). */
   pursuit: boolean;
+  /** Where the relaxed controller aims (core default: the entry point). */
+  relaxedAim: RelaxedAimKey;
   /** μ = −gain·Δη before the bound. */
   gain: number;
   /** Position_only once |Δη| < threshold·ε_tol. */
@@ -87,7 +94,7 @@ export function defaultState(): LabState {
     relaxed: false,
     limits: {},
     // The core's FunnelConfig::default() (e2e checks they agree).
-    funnel: { bound: "tr", aim: "entry", pursuit: true, gain: 2, threshold: 0.25 },
+    funnel: { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 },
     overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     preset: "",

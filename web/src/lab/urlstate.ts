@@ -3,7 +3,7 @@
 // and is reported, so the page can show what was ignored.
 
 import type { View } from "../view";
-import { AIM_KEYS, BOUND_KEYS, defaultState, type AimKey, type BoundKey, type LabState, type Limits, type Overlays } from "./state";
+import { AIM_KEYS, BOUND_KEYS, RELAXED_AIM_KEYS, defaultState, type AimKey, type BoundKey, type RelaxedAimKey, type LabState, type Limits, type Overlays } from "./state";
 
 const DEG = Math.PI / 180;
 
@@ -66,6 +66,7 @@ export function encodeState(s: LabState): string {
   p.set("bound", s.funnel.bound);
   p.set("aim", s.funnel.aim);
   p.set("lp", s.funnel.pursuit ? "1" : "0");
+  p.set("raim", s.funnel.relaxedAim);
   p.set("ov", OVERLAY_KEYS.filter((k) => s.overlays[k]).join(","));
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
@@ -132,6 +133,11 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
   if (aim !== null) {
     if ((AIM_KEYS as readonly string[]).includes(aim)) s.funnel.aim = aim as AimKey;
     else problems.push(`aim="${aim}" is not one of ${AIM_KEYS.join(", ")}; default kept`);
+  }
+  const raim = p.get("raim");
+  if (raim !== null) {
+    if ((RELAXED_AIM_KEYS as readonly string[]).includes(raim)) s.funnel.relaxedAim = raim as RelaxedAimKey;
+    else problems.push(`raim="${raim}" is not one of ${RELAXED_AIM_KEYS.join(", ")}; default kept`);
   }
   const lp = p.get("lp");
   if (lp !== null) {
