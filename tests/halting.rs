@@ -15,12 +15,8 @@ use steering::table::EtaTable;
 use steering::vehicle::{VehicleParams, VehicleState};
 use steering::world::{GoalMotion, GoalSpec, SwitchRule, World, MOVING_HALTING};
 
-fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
-}
+mod common;
+use common::table;
 
 fn state(x: f32, y: f32, theta_deg: f32, v: f32) -> VehicleState {
     VehicleState::new(Vec2::new(x, y), theta_deg.to_radians(), v, 0.0)

@@ -641,6 +641,33 @@ impl EnvelopeStudy {
     }
 }
 
+/// The static cells of `runs` in distance band `band` (`None`: all D):
+/// (ε_tol in degrees, column, column value, summary) for every ε_tol ×
+/// D_tol and ε_tol × desired-speed cell, in that order.
+fn static_cells(
+    runs: &[RunRecord],
+    band: Option<usize>,
+) -> Vec<(f32, &'static str, f32, CellSummary)> {
+    let columns: [(&'static str, &[f32], fn(&RunRecord) -> f32); 2] = [
+        ("dTol", &D_TOLS, |r| r.d_tol),
+        ("speed", &SPEEDS, |r| r.speed),
+    ];
+    let mut out = Vec::new();
+    for e in EPS_TOLS_DEG {
+        for (key, values, f) in columns {
+            for &c in values {
+                let sum = summarise(runs.iter().filter(|r| {
+                    band.is_none_or(|b| band_of(r.d0) == b)
+                        && r.eps_tol_deg.round() == e
+                        && f(r) == c
+                }));
+                out.push((e, key, c, sum));
+            }
+        }
+    }
+    out
+}
+
 fn band_of(d: f32) -> usize {
     BANDS
         .iter()
@@ -776,30 +803,13 @@ impl EnvelopeReport {
         let Some(v) = self.variants.iter().find(|v| v.name == variant) else {
             return (f32::NAN, String::new());
         };
-        let runs = v.runs(GoalKind::Static);
         let mut worst = (f32::INFINITY, String::new());
-        for e in EPS_TOLS_DEG.into_iter().filter(|&e| eps(e)) {
-            for (key, values, f) in [
-                (
-                    "D_tol",
-                    &D_TOLS,
-                    (|r: &RunRecord| r.d_tol) as fn(&RunRecord) -> f32,
-                ),
-                ("v_d", &SPEEDS, |r: &RunRecord| r.speed),
-            ] {
-                for &c in values {
-                    let sum = summarise(runs.iter().filter(|r| {
-                        band.is_none_or(|b| band_of(r.d0) == b)
-                            && r.eps_tol_deg.round() == e
-                            && f(r) == c
-                    }));
-                    if sum.oriented < worst.0 {
-                        worst = (
-                            sum.oriented,
-                            format!("ε_tol {e}°, {key} {c} ({} runs)", sum.n - sum.n_inside),
-                        );
-                    }
-                }
+        for (e, key, c, sum) in static_cells(v.runs(GoalKind::Static), band) {
+            if eps(e) && sum.oriented < worst.0 {
+                worst = (
+                    sum.oriented,
+                    format!("ε_tol {e}°, {key} {c} ({} runs)", sum.n - sum.n_inside),
+                );
             }
         }
         worst
@@ -978,24 +988,10 @@ impl EnvelopeReport {
                 let runs = v.runs(GoalKind::Static);
                 let mut cells = Vec::new();
                 for (b, &(lo, hi)) in BANDS.iter().enumerate() {
-                    for e in EPS_TOLS_DEG {
-                        for (key, values, f) in [
-                            (
-                                "dTol",
-                                &D_TOLS,
-                                (|r: &RunRecord| r.d_tol) as fn(&RunRecord) -> f32,
-                            ),
-                            ("speed", &SPEEDS, |r: &RunRecord| r.speed),
-                        ] {
-                            for &c in values {
-                                let sum = summarise(runs.iter().filter(|r| {
-                                    band_of(r.d0) == b && r.eps_tol_deg.round() == e && f(r) == c
-                                }));
-                                cells.push(json!({
-                                    "band": [lo, hi], "epsTolDeg": e, key: c, "summary": sum
-                                }));
-                            }
-                        }
+                    for (e, key, c, sum) in static_cells(runs, Some(b)) {
+                        cells.push(json!({
+                            "band": [lo, hi], "epsTolDeg": e, key: c, "summary": sum
+                        }));
                     }
                 }
                 let misses: Vec<serde_json::Value> = v
