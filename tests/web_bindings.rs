@@ -246,9 +246,12 @@ fn funnel_settings_round_trip_and_change_the_bound() {
     let f = lab.funnel().map_err(message).unwrap();
     let b = get(&f, "bound");
     assert_eq!(get(&b, "kind").as_string().unwrap(), "turningRadius");
-    assert_eq!(get(&b, "factor").as_f64(), Some(6.0));
+    assert_eq!(get(&b, "factor").as_f64(), Some(8.0));
     assert_eq!(get(&f, "gain").as_f64(), Some(2.0));
     assert_eq!(get(&f, "seekThreshold").as_f64(), Some(0.25));
+    assert_eq!(get(&f, "aim").as_string().as_deref(), Some("entry"));
+    assert_eq!(get(&f, "minBoundRadius").as_f64(), Some(1.0));
+    assert_eq!(get(&get(&f, "terminal"), "lookahead").as_f64(), Some(1.0));
 
     // Every bound round-trips (values exactly representable in f32).
     for (kind, param) in [

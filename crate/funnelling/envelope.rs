@@ -648,7 +648,8 @@ fn static_cells(
     runs: &[RunRecord],
     band: Option<usize>,
 ) -> Vec<(f32, &'static str, f32, CellSummary)> {
-    let columns: [(&'static str, &[f32], fn(&RunRecord) -> f32); 2] = [
+    type Column = (&'static str, &'static [f32], fn(&RunRecord) -> f32);
+    let columns: [Column; 2] = [
         ("dTol", &D_TOLS, |r| r.d_tol),
         ("speed", &SPEEDS, |r| r.speed),
     ];
