@@ -214,7 +214,7 @@ try {
     await page.selectOption("#pursuit", "off");
     const paper = await coreFunnel(page);
     assert.equal(paper.aim, "centre");
-    assert.equal(paper.terminal, undefined);
+    assert.equal(paper.terminal ?? null, null);
     await page.waitForFunction(() => location.hash.includes("aim=centre") && location.hash.includes("lp=0"), null, { timeout: 2000 });
     await page.selectOption("#aim", "entry");
     await page.selectOption("#pursuit", "on");
