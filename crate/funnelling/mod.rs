@@ -10,6 +10,7 @@
 //! | [`table`] | 000 §3, 001 Fig. 3 | the η table: file format, lookup, generator |
 //! | [`funnel`] | 000 §4–5, Figs. 4–5 | the funnelling update, the four modes, μ bounds, halting |
 //! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r; controller choice |
+//! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`world_edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation |
@@ -21,6 +22,7 @@ pub mod approach;
 pub mod controller;
 pub mod envelope;
 pub mod funnel;
+pub mod goals;
 pub mod region_study;
 pub mod relaxed;
 pub mod scenario;

@@ -1,0 +1,161 @@
+//! The entries of an agent's goal queue (paper 000 §6: moving and
+//! successive targets): how a goal moves, when the next one takes over,
+//! which goals may halt, and the settings each is steered with.
+
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
+use crate::funnel::{FunnelConfig, Goal};
+use crate::relaxed::RelaxedConfig;
+use crate::vehicle::{ParamError, VehicleState};
+
+/// The settings a goal is steered with: the world's, except that a goal
+/// following another agent ([`GoalMotion::FaceAgent`]) is aimed at its
+/// centre, as in the paper. Its entry point moves with the agent it
+/// follows, and two agents aiming at each other's entry points (paper 000
+/// Fig. 6, face to face) fell into step side by side and chased each other
+/// for ever.
+#[must_use]
+pub fn settings_for(
+    config: &FunnelConfig,
+    relaxed: &RelaxedConfig,
+    motion: &GoalMotion,
+) -> (FunnelConfig, RelaxedConfig) {
+    if matches!(motion, GoalMotion::FaceAgent { .. }) {
+        (
+            FunnelConfig {
+                aim: crate::funnel::Aim::Centre,
+                ..*config
+            },
+            RelaxedConfig {
+                aim: crate::relaxed::RelaxedAim::PaperArc,
+                ..*relaxed
+            },
+        )
+    } else {
+        (*config, *relaxed)
+    }
+}
+
+/// How a goal moves (paper 000 §1: "a possibly moving target").
+///
+/// A goal that moves by itself ([`GoalMotion::Linear`] with a non-zero
+/// velocity, [`GoalMotion::Circle`] with a non-zero angular speed) cannot be
+/// `halting` (issue 13): it never stops, so no rest pose lies inside its
+/// tolerances for long; [`World::add_agent`], scenario files and the lab
+/// refuse the combination ([`GoalSpec::check_halting`]). A
+/// [`GoalMotion::FaceAgent`] goal may halt: the agent it follows can stop.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase", tag = "kind", deny_unknown_fields)]
+pub enum GoalMotion {
+    /// Static.
+    #[default]
+    Static,
+    /// Constant velocity; the orientation is kept.
+    Linear {
+        /// Velocity, m/s.
+        velocity: Vec2,
+    },
+    /// Around a circle counter-clockwise (clockwise if `angular_speed` < 0),
+    /// starting at the goal's initial position; the orientation turns with
+    /// the tangent.
+    Circle {
+        /// Circle centre, m.
+        center: Vec2,
+        /// Angular speed, rad/s.
+        #[serde(rename = "angularSpeed")]
+        angular_speed: f32,
+    },
+    /// Face another agent (paper 000 Fig. 6): the target is the point
+    /// `distance` in front of agent `agent`, the orientation faces it.
+    FaceAgent {
+        /// Index of the other agent.
+        agent: usize,
+        /// Distance in front of it, m.
+        distance: f32,
+    },
+}
+
+/// When a goal counts as done and the next one in the queue takes over
+/// (paper 000 §6, successive targets).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum SwitchRule {
+    /// On End_of_Steering (position and orientation within tolerance).
+    #[default]
+    EndOfSteering,
+    /// As soon as the position tolerance is entered.
+    Tolerance,
+}
+
+/// A goal in an agent's queue.
+#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
+pub struct GoalSpec {
+    /// The goal at time 0 (or when it becomes current, for static goals).
+    pub goal: Goal,
+    /// Its motion.
+    pub motion: GoalMotion,
+    /// When to switch to the next goal.
+    pub switch: SwitchRule,
+}
+
+/// Why [`GoalSpec::check_halting`] refuses a goal.
+pub const MOVING_HALTING: &str = "a moving goal cannot be halting: a goal in linear or circular \
+     motion never stops, so the vehicle could never rest inside its tolerances (untick halting, \
+     or make the goal static or faceAgent)";
+
+impl GoalSpec {
+    /// True when the goal moves by itself: linear motion with a non-zero
+    /// velocity, or circular motion with a non-zero angular speed.
+    #[must_use]
+    pub fn moves_by_itself(&self) -> bool {
+        match self.motion {
+            GoalMotion::Linear { velocity } => velocity != Vec2::ZERO,
+            GoalMotion::Circle { angular_speed, .. } => angular_speed != 0.0,
+            GoalMotion::Static | GoalMotion::FaceAgent { .. } => false,
+        }
+    }
+
+    /// True when the goal moves by itself or follows an agent.
+    #[must_use]
+    pub fn moves(&self) -> bool {
+        self.moves_by_itself() || matches!(self.motion, GoalMotion::FaceAgent { .. })
+    }
+
+    /// Refuses a halting goal that moves by itself (see [`GoalMotion`]).
+    ///
+    /// # Errors
+    /// [`ParamError::Inconsistent`] with [`MOVING_HALTING`].
+    pub fn check_halting(&self) -> Result<(), ParamError> {
+        if self.goal.halting && self.moves_by_itself() {
+            return Err(ParamError::Inconsistent(MOVING_HALTING));
+        }
+        Ok(())
+    }
+
+    /// The goal at world time `t`, given the agents' states `states`.
+    #[must_use]
+    pub fn at(&self, t: f32, states: &[VehicleState]) -> Goal {
+        let mut g = self.goal;
+        match self.motion {
+            GoalMotion::Static => {}
+            GoalMotion::Linear { velocity } => g.pos += velocity * t,
+            GoalMotion::Circle {
+                center,
+                angular_speed,
+            } => {
+                let r0 = self.goal.pos - center;
+                let rot = crate::trig::unit(angular_speed * t);
+                g.pos = center + rot.rotate(r0);
+                g.beta = self.goal.beta + angular_speed * t;
+            }
+            GoalMotion::FaceAgent { agent, distance } => {
+                if let Some(o) = states.get(agent) {
+                    g.pos = o.pos + o.forward() * distance;
+                    g.beta = o.theta + core::f32::consts::PI;
+                }
+            }
+        }
+        g
+    }
+}
