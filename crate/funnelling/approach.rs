@@ -19,7 +19,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::angle::{diff, wrap};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnel::{Aim, FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::table::{EtaTable, Lookup};
 use crate::vehicle::{VehicleParams, VehicleState};
 
@@ -193,6 +193,8 @@ pub struct Approach<'a> {
     pub alpha: f32,
     /// Desired speed after the halting cap, m/s.
     pub v_d: f32,
+    /// The goal follows another agent ([`FunnelMemory::goal_follows_agent`]).
+    pub follows_agent: bool,
 }
 
 impl<'a> Approach<'a> {
@@ -232,9 +234,22 @@ impl<'a> Approach<'a> {
                 bearing,
                 alpha,
                 v_d,
+                follows_agent: mem.goal_follows_agent,
             },
             out,
         ))
+    }
+
+    /// The aim to use: `configured`, except the centre for a goal that
+    /// follows another agent ([`FunnelMemory::goal_follows_agent`]).
+    #[inline]
+    #[must_use]
+    pub fn aim(&self, configured: Aim) -> Aim {
+        if self.follows_agent {
+            Aim::Centre
+        } else {
+            configured
+        }
     }
 
     /// Distance, world bearing and radial angle α of `point` from the

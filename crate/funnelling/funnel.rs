@@ -237,10 +237,17 @@ impl Default for FunnelConfig {
 pub struct FunnelMemory {
     /// The position tolerance has been met.
     pub position_met: bool,
-    /// The goal moves (set by [`crate::world::World`] for goals in motion
-    /// or following an agent): a met position stays met.
+    /// The goal moves (in motion or following an agent): a met position
+    /// stays met. Set once when the goal becomes current
+    /// ([`crate::world::GoalSpec::fresh_memory`]).
     #[serde(default)]
     pub goal_moves: bool,
+    /// The goal follows another agent: it is aimed at its centre, as in
+    /// the paper. Its entry point moves with the agent it follows, and two
+    /// agents aiming at each other's entry points (paper 000 Fig. 6, face
+    /// to face) fell into step side by side and chased each other for ever.
+    #[serde(default)]
+    pub goal_follows_agent: bool,
 }
 
 impl FunnelMemory {
@@ -343,7 +350,8 @@ impl FunnelConfig {
     pub fn aim_and_funnel(&self, a: &Approach<'_>, g: &Goal, mut out: Internals) -> Internals {
         // β's unit vector, for the terminal pursuit and the entry point
         // (one sin/cos, skipped when neither needs it).
-        let needs_u = self.terminal.is_some() || (self.aim == Aim::Entry && a.entry_depth(g) > 0.0);
+        let needs_u =
+            self.terminal.is_some() || (a.aim(self.aim) == Aim::Entry && a.entry_depth(g) > 0.0);
         let u = if needs_u {
             crate::trig::unit(g.beta)
         } else {
@@ -354,7 +362,7 @@ impl FunnelConfig {
                 return out;
             }
         }
-        let (d, bearing, alpha) = match self.aim {
+        let (d, bearing, alpha) = match a.aim(self.aim) {
             Aim::Centre => (a.d, a.bearing, a.alpha),
             Aim::Entry => a.seen_entry(g, u),
         };

@@ -1,41 +1,12 @@
 //! The entries of an agent's goal queue (paper 000 §6: moving and
 //! successive targets): how a goal moves, when the next one takes over,
-//! which goals may halt, and the settings each is steered with.
+//! which goals may halt, and the mode memory each starts with.
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::funnel::{FunnelConfig, Goal};
-use crate::relaxed::RelaxedConfig;
+use crate::funnel::{FunnelMemory, Goal};
 use crate::vehicle::{ParamError, VehicleState};
-
-/// The settings a goal is steered with: the world's, except that a goal
-/// following another agent ([`GoalMotion::FaceAgent`]) is aimed at its
-/// centre, as in the paper. Its entry point moves with the agent it
-/// follows, and two agents aiming at each other's entry points (paper 000
-/// Fig. 6, face to face) fell into step side by side and chased each other
-/// for ever.
-#[must_use]
-pub fn settings_for(
-    config: &FunnelConfig,
-    relaxed: &RelaxedConfig,
-    motion: &GoalMotion,
-) -> (FunnelConfig, RelaxedConfig) {
-    if matches!(motion, GoalMotion::FaceAgent { .. }) {
-        (
-            FunnelConfig {
-                aim: crate::funnel::Aim::Centre,
-                ..*config
-            },
-            RelaxedConfig {
-                aim: crate::relaxed::RelaxedAim::PaperArc,
-                ..*relaxed
-            },
-        )
-    } else {
-        (*config, *relaxed)
-    }
-}
 
 /// How a goal moves (paper 000 §1: "a possibly moving target").
 ///
@@ -120,6 +91,17 @@ impl GoalSpec {
     #[must_use]
     pub fn moves(&self) -> bool {
         self.moves_by_itself() || matches!(self.motion, GoalMotion::FaceAgent { .. })
+    }
+
+    /// The mode memory of this goal as it becomes current: nothing met
+    /// yet, and the two facts of its motion the controllers read.
+    #[must_use]
+    pub fn fresh_memory(&self) -> FunnelMemory {
+        FunnelMemory {
+            position_met: false,
+            goal_moves: self.moves(),
+            goal_follows_agent: matches!(self.motion, GoalMotion::FaceAgent { .. }),
+        }
     }
 
     /// Refuses a halting goal that moves by itself (see [`GoalMotion`]).

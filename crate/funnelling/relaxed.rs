@@ -389,7 +389,9 @@ impl RelaxedConfig {
             ControlFlow::Continue(begun) => begun,
         };
         let (d, alpha_c) = (a.d, a.alpha);
-        if self.aim == RelaxedAim::Entry {
+        // A goal that follows an agent: the paper's relaxed point, as the
+        // standard aims at its centre (FunnelMemory::goal_follows_agent).
+        if self.aim == RelaxedAim::Entry && !a.follows_agent {
             return self.plan_entry(funnel, &a, g, out, ri);
         }
         if d < table.d_eta() {

@@ -11,9 +11,7 @@ use crate::seek::seek_step;
 use crate::table::EtaTable;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 
-pub use crate::funnelling::goals::{
-    settings_for, GoalMotion, GoalSpec, SwitchRule, MOVING_HALTING,
-};
+pub use crate::funnelling::goals::{GoalMotion, GoalSpec, SwitchRule, MOVING_HALTING};
 
 /// One agent.
 #[derive(Clone, Debug, PartialEq)]
@@ -139,11 +137,14 @@ impl World {
         } else {
             provisional_plan(&self.params, &state, &goal_now)
         };
+        let memory = goals
+            .first()
+            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
         self.agents.push(Agent {
             state,
             goals,
             current: 0,
-            memory: FunnelMemory::default(),
+            memory,
             internals,
             relaxed: RelaxedInternals::default(),
             goal_now,
@@ -185,13 +186,17 @@ impl World {
             let goal = spec.at(t, &self.snapshot);
             a.goal_now = goal;
             let mut mem = a.memory;
-            mem.goal_moves = spec.moves();
-            let (cfg, rcfg) = settings_for(&self.config, &self.relaxed, &spec.motion);
             a.internals = match self.controller {
-                ControllerKind::Standard => cfg.plan(table, &p, &a.state, &goal, &mut mem),
-                ControllerKind::Relaxed => {
-                    rcfg.plan(&cfg, table, &p, &a.state, &goal, &mut mem, &mut a.relaxed)
-                }
+                ControllerKind::Standard => self.config.plan(table, &p, &a.state, &goal, &mut mem),
+                ControllerKind::Relaxed => self.relaxed.plan(
+                    &self.config,
+                    table,
+                    &p,
+                    &a.state,
+                    &goal,
+                    &mut mem,
+                    &mut a.relaxed,
+                ),
             };
         }
     }
@@ -227,14 +232,13 @@ impl World {
                 let spec = a.goals[a.current];
                 let goal = spec.at(t, &self.snapshot);
                 a.goal_now = goal;
-                let (cfg, rcfg) = settings_for(&self.config, &self.relaxed, &spec.motion);
-                a.memory.goal_moves = spec.moves();
                 a.internals = match self.controller {
                     ControllerKind::Standard => {
-                        cfg.step(table, &p, &mut a.state, &goal, &mut a.memory)
+                        self.config
+                            .step(table, &p, &mut a.state, &goal, &mut a.memory)
                     }
-                    ControllerKind::Relaxed => rcfg.step(
-                        &cfg,
+                    ControllerKind::Relaxed => self.relaxed.step(
+                        &self.config,
                         table,
                         &p,
                         &mut a.state,
@@ -251,7 +255,10 @@ impl World {
                 // that agent moves on: it completes like any other.
                 if switch {
                     a.current += 1;
-                    a.memory = FunnelMemory::default();
+                    a.memory = a
+                        .goals
+                        .get(a.current)
+                        .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
                     if a.done() {
                         a.finished_at = Some(t);
                     }

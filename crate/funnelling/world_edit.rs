@@ -120,7 +120,10 @@ impl World {
             .first()
             .map(|g| g.at(t, &others))
             .unwrap_or_default();
-        a.memory = FunnelMemory::default();
+        a.memory = a
+            .goals
+            .first()
+            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
         a.finished_at = None;
     }
 

@@ -34,15 +34,14 @@ export function relaxedConfig(f: FunnelSettings): RelaxedConfig {
   return { aim: f.relaxedAim };
 }
 
-/** The core's terminal line pursuit defaults (crate::funnelling::approach::Terminal). */
-const TERMINAL = { lookahead: 1, heading: 0.5, range: 1 };
-
-/** The core's config for the page's settings. */
+/** The core's config for the page's settings. The line pursuit's numbers
+ *  and the bound's radius floor stay the core's defaults (absent fields);
+ *  turning the pursuit off sends `terminal: null`. */
 export function funnelConfig(f: FunnelSettings): FunnelConfig {
   const choice = BOUND_CHOICES.find((c) => c.value === f.bound) ?? BOUND_CHOICES[0]!;
   return {
-    bound: choice.bound, gain: f.gain, seekThreshold: f.threshold,
-    aim: f.aim, minBoundRadius: 1, terminal: f.pursuit ? TERMINAL : null,
+    bound: choice.bound, gain: f.gain, seekThreshold: f.threshold, aim: f.aim,
+    ...(f.pursuit ? {} : { terminal: null }),
   };
 }
 
