@@ -51,6 +51,7 @@ fn bin(d: f32, beta_deg: f32, tol: (f32, f32), seed: u64) -> Vec<(VehicleState, 
                     eps_tol: tol.1.to_radians(),
                     speed: 1.3,
                     halting: false,
+                    vel: Vec2::ZERO,
                 },
             )
         })

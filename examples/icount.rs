@@ -23,7 +23,7 @@ fn main() {
         .unwrap_or(10_000);
     let t = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
         .expect("tables/eta.bin (run from the repository root)");
-    let p = VehicleParams::default();
+    let p = black_box(VehicleParams::default());
     let mut r = Rng::new(9);
     let qs: Vec<[f32; 6]> = (0..1024)
         .map(|_| {
@@ -38,7 +38,7 @@ fn main() {
             ]
         })
         .collect();
-    let cfg = FunnelConfig::default();
+    let cfg = black_box(FunnelConfig::default());
     let mut s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
     for i in 0..n {
         let q = qs[i & 1023];
@@ -51,13 +51,18 @@ fn main() {
                 black_box(t.lookup(black_box(q[0]), q[1], q[2], q[3], q[4]));
             }
             _ => {
-                let mut st = VehicleState::new(Vec2::ZERO, 0.0, q[3], q[2]);
+                let mut st = VehicleState::new(Vec2::ZERO, black_box(0.0), q[3], q[2]);
                 let g = Goal {
                     pos: Vec2::from_angle(q[1]) * q[0],
                     beta: q[5],
                     ..Default::default()
                 };
                 black_box(cfg.step(&t, &p, &mut st, &g, &mut FunnelMemory::default()));
+                // The moved state is the update's result too: without this
+                // the integrator was dead code (1,279 instructions counted
+                // before issue 13's second stop, integrator and θ's sin/cos
+                // left out).
+                black_box(st);
             }
         }
     }

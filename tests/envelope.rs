@@ -87,12 +87,19 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
             let s = summarise(v.runs(kind));
             assert!(s.finished >= 0.99, "{} {kind:?}: {s:?}", v.name);
         }
-        // End_of_Steering inside both tolerances for static goals, single
-        // or chained; halting runs at rest inside both.
-        for kind in [GoalKind::Static, GoalKind::Chain] {
+        // End_of_Steering inside both tolerances for every goal, static,
+        // chained or moving (a moving goal's position is never latched);
+        // halting runs at rest inside both.
+        for kind in GoalKind::ALL {
             let s = summarise(v.runs(kind));
             assert!(s.eos_ok >= 0.995, "{} {kind:?}: {s:?}", v.name);
-            assert!(s.rest_ok >= 1.0, "{} {kind:?}: {s:?}", v.name);
+            if kind != GoalKind::Moving {
+                assert!(s.rest_ok >= 1.0, "{} {kind:?}: {s:?}", v.name);
+            }
         }
+        // Led to where they will be, moving goals are entered oriented
+        // about as often as static ones (54 % before, tune seed 1).
+        let m = summarise(v.runs(GoalKind::Moving));
+        assert!(m.oriented >= 0.8, "{} moving: {m:?}", v.name);
     }
 }

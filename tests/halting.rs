@@ -31,6 +31,7 @@ fn halting_goal(x: f32, y: f32, beta_deg: f32, d_tol: f32, eps_deg: f32, speed: 
             eps_tol: eps_deg.to_radians(),
             speed,
             halting: true,
+            vel: Vec2::ZERO,
         },
         motion: GoalMotion::Static,
         switch: SwitchRule::EndOfSteering,

@@ -370,6 +370,7 @@ fn issue_13_orbit_example_enters_the_disk_with_both_aims() {
         eps_tol: 5f32.to_radians(),
         speed: 1.3,
         halting: false,
+        vel: Vec2::ZERO,
     };
     for rc in [RelaxedConfig::default(), paper()] {
         let (closest, w) = drive(ControllerKind::Relaxed, rc, s, &[g], 150.0);
@@ -391,6 +392,7 @@ fn three_goal_chain_that_stalled_finishes() {
         eps_tol: eps_deg.to_radians(),
         speed,
         halting: false,
+        vel: Vec2::ZERO,
     };
     let goals = [
         goal(-29.003_305, -7.177_213, -2.860_961, 0.25, 20.0, 1.8),

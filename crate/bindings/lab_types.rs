@@ -172,6 +172,7 @@ impl GoalConfig {
                 eps_tol: self.eps_tol,
                 speed: self.speed,
                 halting: self.halting,
+                vel: Vec2::ZERO,
             },
             motion: GoalMotion::Static,
             switch: SwitchRule::EndOfSteering,

@@ -85,6 +85,12 @@ pub struct Goal {
     pub speed: f32,
     /// Arrive at rest (final halting).
     pub halting: bool,
+    /// The goal's velocity now, m/s: zero for a static goal, filled by
+    /// [`crate::world::GoalSpec::at`] for goals moving by themselves. Not
+    /// part of the file format (the motion is, in the goal's spec): the
+    /// controllers read it to lead the target ([`crate::approach::lead`]).
+    #[serde(skip)]
+    pub vel: Vec2,
 }
 
 impl Default for Goal {
@@ -96,6 +102,7 @@ impl Default for Goal {
             eps_tol: 5f32.to_radians(),
             speed: 1.3,
             halting: false,
+            vel: Vec2::ZERO,
         }
     }
 }
@@ -231,14 +238,16 @@ impl Default for FunnelConfig {
 /// the vehicle, having braked and turned, faces β again but has left the
 /// disk, the fact is forgotten and the goal approached again, so
 /// End_of_Steering always finds both tolerances met (tune seed 1: 97.9 %
-/// → 100 % of declarations, every run still finishes). A moving goal
-/// keeps the latch: chasing it again left 15 % of moving runs unfinished.
+/// → 100 % of declarations, every run still finishes). A goal following
+/// an agent keeps the latch; a goal moving by itself is never latched
+/// ([`crate::approach::tolerance_phase`]): `position_met` then says
+/// whether the vehicle is inside its disk now.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
 pub struct FunnelMemory {
     /// The position tolerance has been met.
     pub position_met: bool,
-    /// The goal moves (in motion or following an agent): a met position
-    /// stays met. Set once when the goal becomes current
+    /// The goal moves (in motion or following an agent): a static goal's
+    /// re-approach rule does not apply. Set once when the goal becomes current
     /// ([`crate::world::GoalSpec::fresh_memory`]).
     #[serde(default)]
     pub goal_moves: bool,
@@ -248,6 +257,11 @@ pub struct FunnelMemory {
     /// to face) fell into step side by side and chased each other for ever.
     #[serde(default)]
     pub goal_follows_agent: bool,
+    /// A goal moving by itself: how often the vehicle has passed through
+    /// its disk without facing β. Each pass lengthens the runway
+    /// ([`crate::approach::Approach::aim_depth`]).
+    #[serde(default)]
+    pub passes: u8,
 }
 
 impl FunnelMemory {
@@ -340,7 +354,7 @@ impl FunnelConfig {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
-        self.aim_and_funnel(&a, g, out)
+        self.aim_and_funnel(&a, &a.goal, out)
     }
 
     /// What follows the tolerance phase: the terminal pursuit, else the
@@ -348,23 +362,14 @@ impl FunnelConfig {
     /// modulation. Shared with the relaxed controller's entry-point aim.
     #[must_use]
     pub fn aim_and_funnel(&self, a: &Approach<'_>, g: &Goal, mut out: Internals) -> Internals {
-        // β's unit vector, for the terminal pursuit and the entry point
-        // (one sin/cos, skipped when neither needs it).
-        let needs_u =
-            self.terminal.is_some() || (a.aim(self.aim) == Aim::Entry && a.entry_depth(g) > 0.0);
-        let u = if needs_u {
-            crate::trig::unit(g.beta)
-        } else {
-            Vec2::X
-        };
         if let Some(t) = &self.terminal {
-            if a.terminal(t, g, u, &mut out) {
+            if a.terminal(t, g, &mut out) {
                 return out;
             }
         }
         let (d, bearing, alpha) = match a.aim(self.aim) {
             Aim::Centre => (a.d, a.bearing, a.alpha),
-            Aim::Entry => a.seen_entry(g, u),
+            Aim::Entry => a.seen_entry(g, a.aim_depth(g, self.terminal.as_ref())),
         };
         out.gamma = bearing;
         let lk = a.look(d, alpha, &mut out);
@@ -374,7 +379,11 @@ impl FunnelConfig {
             // Closer than the first sampled ring the table cannot slow the
             // vehicle down proactively; do it geometrically instead, so a
             // near target is never orbited (paper 000 §3).
-            out.v_dt = out.v_dt.min(orbit_free_speed(a.p, d, alpha));
+            // A moving aim point is never caught below its own speed: at
+            // least twice the goal's (issue 13, tune seed 1: 32 of 2,000
+            // moving goals were ridden alongside for good, 6 with this).
+            let floor = 2.0 * g.vel.length();
+            out.v_dt = out.v_dt.min(orbit_free_speed(a.p, d, alpha).max(floor));
             out.mode = Mode::PositionOnly;
             return out;
         }

@@ -101,6 +101,7 @@ impl GoalSpec {
             position_met: false,
             goal_moves: self.moves(),
             goal_follows_agent: matches!(self.motion, GoalMotion::FaceAgent { .. }),
+            passes: 0,
         }
     }
 
@@ -121,15 +122,20 @@ impl GoalSpec {
         let mut g = self.goal;
         match self.motion {
             GoalMotion::Static => {}
-            GoalMotion::Linear { velocity } => g.pos += velocity * t,
+            GoalMotion::Linear { velocity } => {
+                g.pos += velocity * t;
+                g.vel = velocity;
+            }
             GoalMotion::Circle {
                 center,
                 angular_speed,
             } => {
                 let r0 = self.goal.pos - center;
                 let rot = crate::trig::unit(angular_speed * t);
-                g.pos = center + rot.rotate(r0);
+                let r = rot.rotate(r0);
+                g.pos = center + r;
                 g.beta = self.goal.beta + angular_speed * t;
+                g.vel = r.perp() * angular_speed;
             }
             GoalMotion::FaceAgent { agent, distance } => {
                 if let Some(o) = states.get(agent) {

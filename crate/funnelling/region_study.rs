@@ -130,6 +130,7 @@ impl RegionStudy {
                 eps_tol: tau,
                 speed: self.speed,
                 halting: false,
+                vel: Vec2::ZERO,
             },
         )
     }

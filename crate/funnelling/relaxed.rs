@@ -388,6 +388,9 @@ impl RelaxedConfig {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
+        // Aim at the goal as the vehicle will meet it (approach::lead).
+        let (g_now, led) = (g, a.goal);
+        let g = &led;
         let (d, alpha_c) = (a.d, a.alpha);
         // A goal that follows an agent: the paper's relaxed point, as the
         // standard aims at its centre (FunnelMemory::goal_follows_agent).
@@ -399,7 +402,7 @@ impl RelaxedConfig {
             // radius D, whose ends the vehicle keeps circling: seek the
             // centre at the orbit-free speed, as the standard does.
             ri.branch = Fig7Branch::Fallback;
-            return funnel.plan(table, p, s, g, mem);
+            return funnel.plan(table, p, s, g_now, mem);
         }
         // 1. The restricted arc 𝒜 on the ring nearest the disk centre.
         let r = self.disk_margin * g.d_tol;

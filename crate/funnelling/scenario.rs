@@ -176,6 +176,7 @@ impl GoalFile {
                 eps_tol: self.eps_tol_deg.to_radians(),
                 speed: self.speed,
                 halting: self.halting,
+                vel: Vec2::ZERO,
             },
             motion: self.motion,
             switch: self.switch,

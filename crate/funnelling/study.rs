@@ -160,6 +160,7 @@ impl ReachStudy {
             eps_tol: self.eps_tol,
             speed: self.speed,
             halting: false,
+            vel: Vec2::ZERO,
         };
         (start, goal)
     }

@@ -204,6 +204,7 @@ impl World {
                         eps_tol: 10f32.to_radians(),
                         speed,
                         halting: false,
+                        vel: Vec2::ZERO,
                     },
                     motion: GoalMotion::Static,
                     switch: SwitchRule::Tolerance,

@@ -238,6 +238,7 @@ fn random_goal(r: &mut Rng, from: Vec2, d_range: (f32, f32), halting: bool) -> G
         eps_tol: pick(r, &EPS_TOLS_DEG).to_radians(),
         speed: pick(r, &SPEEDS),
         halting,
+        vel: Vec2::ZERO,
     }
 }
 

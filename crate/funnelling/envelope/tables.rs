@@ -223,7 +223,7 @@ impl EnvelopeReport {
             st.oriented >= 0.8,
         );
         // End_of_Steering, static goals (single and chained) apart from
-        // moving ones, whose met position is latched (FunnelMemory).
+        // moving ones (led and never latched: approach::tolerance_phase).
         let (mut eos, mut eos_ok, mut rest, mut nh) = ([0.0f32; 2], [0.0f32; 2], 0.0, 0.0);
         let ours = ["standard", "relaxed"];
         for v in self.variants.iter().filter(|v| ours.contains(&v.name)) {
@@ -246,7 +246,7 @@ impl EnvelopeReport {
             eos_ok[0] / eos[0] >= 0.995,
         );
         row(
-            "same, moving goals (met position latched: the disk may move off while the vehicle turns)",
+            "same, moving goals (led, never latched: declared only inside the moving disk)",
             format!("{} %", pct(eos_ok[1] / eos[1])),
             "≥ 99.5 %",
             eos_ok[1] / eos[1] >= 0.995,
