@@ -70,12 +70,41 @@ fn files(dir: &str) -> &'static [String] {
 fn hostile_value() -> impl Strategy<Value = Value> {
     prop_oneof![
         prop::sample::select(vec![
-            0.0, -0.0, 1.0, -1.0, 0.5, 1e-45, 1e-7, 0.01, 2.0, 100.0, 1e3, 1e5, 999_980.0, 1e6,
-            1e7, 3.4e38, -3.4e38, 1e300, 4_294_967_295.0, 18_446_744_073_709_551_615.0,
+            0.0,
+            -0.0,
+            1.0,
+            -1.0,
+            0.5,
+            1e-45,
+            1e-7,
+            0.01,
+            2.0,
+            100.0,
+            1e3,
+            1e5,
+            999_980.0,
+            1e6,
+            1e7,
+            3.4e38,
+            -3.4e38,
+            1e300,
+            4_294_967_295.0,
+            18_446_744_073_709_551_615.0,
         ])
         .prop_map(|x| serde_json::json!(x)),
-        prop::sample::select(vec![0i64, 1, -1, 2, 7, 1000, 100_000, 1_000_001, i64::MAX, i64::MIN])
-            .prop_map(|x| serde_json::json!(x)),
+        prop::sample::select(vec![
+            0i64,
+            1,
+            -1,
+            2,
+            7,
+            1000,
+            100_000,
+            1_000_001,
+            i64::MAX,
+            i64::MIN
+        ])
+        .prop_map(|x| serde_json::json!(x)),
         any::<f32>().prop_map(|x| serde_json::json!(x)),
         Just(Value::Null),
         any::<bool>().prop_map(Value::Bool),
@@ -148,7 +177,11 @@ fn mutate(text: &str, muts: &[Mutation]) -> String {
                 let mut bytes = s.into_bytes();
                 if !bytes.is_empty() {
                     let k = i.index(bytes.len());
-                    bytes[k] = if let Mutation::Byte(_, b) = m { *b } else { b'[' };
+                    bytes[k] = if let Mutation::Byte(_, b) = m {
+                        *b
+                    } else {
+                        b'['
+                    };
                 }
                 s = String::from_utf8_lossy(&bytes).into_owned();
             }
@@ -199,6 +232,30 @@ fn mutate(text: &str, muts: &[Mutation]) -> String {
     s
 }
 
+/// Tallies per entry point: (name, refused, ran); printed once all
+/// [`CASES`] of an entry point ran (`--nocapture` shows them).
+static TALLY: std::sync::Mutex<Vec<(&'static str, u32, u32)>> = std::sync::Mutex::new(Vec::new());
+
+fn tally(name: &'static str, ran: bool) {
+    let mut t = TALLY.lock().unwrap();
+    let i = t.iter().position(|e| e.0 == name).unwrap_or_else(|| {
+        t.push((name, 0, 0));
+        t.len() - 1
+    });
+    if ran {
+        t[i].2 += 1;
+    } else {
+        t[i].1 += 1;
+    }
+    if t[i].1 + t[i].2 == CASES {
+        println!(
+            "fuzz {name}: {CASES} cases, {} refused with a message, {} ran",
+            t[i].1, t[i].2
+        );
+    }
+    drop(t);
+}
+
 fn err_has_message<E: std::fmt::Display>(e: &E) {
     assert!(!e.to_string().trim().is_empty(), "empty error message");
 }
@@ -206,11 +263,16 @@ fn err_has_message<E: std::fmt::Display>(e: &E) {
 /// A scenario: refused with a message, or a few streamed steps, all finite.
 fn check_scenario(text: &str) {
     match Scenario::from_json(text) {
-        Err(e) => err_has_message(&e),
+        Err(e) => {
+            tally("scenario", false);
+            err_has_message(&e);
+        }
         Ok(mut sc) => {
             if let Err(e) = table().check_params(&sc.vehicle) {
+                tally("scenario", false);
                 return err_has_message(&e);
             }
+            tally("scenario", true);
             sc.duration = sc.duration.min(4.0 * sc.vehicle.dt);
             let mut out = Vec::new();
             let mut w = sc.world().expect("a validated scenario builds");
@@ -248,7 +310,9 @@ proptest! {
     ) {
         let presets = files("crowd");
         let text = mutate(&presets[which.index(presets.len())], &muts);
-        match CrowdConfig::from_json(&text).and_then(|c| c.check_batch().map(|()| c)) {
+        let r = CrowdConfig::from_json(&text).and_then(|c| c.check_batch().map(|()| c));
+        tally("crowd config", r.is_ok());
+        match r {
             Err(e) => err_has_message(&e),
             Ok(c) => {
                 let mut crowd = Crowd::new(&c).expect("a validated config builds");
@@ -272,7 +336,9 @@ proptest! {
         let vs = file["variants"].as_array().unwrap();
         let cfg = vs[variant.index(vs.len())]["config"].to_string();
         let text = mutate(&cfg, &muts);
-        match Wanderer::from_json(&text) {
+        let r = Wanderer::from_json(&text);
+        tally("wander config", r.is_ok());
+        match r {
             Err(e) => err_has_message(&e),
             Ok(mut w) => {
                 w.run(5);
@@ -283,7 +349,9 @@ proptest! {
 
     #[test]
     fn steer_argument_vectors_are_refused_or_validated(args in steer_args()) {
-        match SteerCli::try_parse_from(&args) {
+        let r = SteerCli::try_parse_from(&args);
+        tally("steer arguments (parsed)", r.is_ok());
+        match r {
             Err(e) => err_has_message(&e),
             Ok(cli) => match cli.command {
                 Command::Run(a) => {
@@ -315,18 +383,23 @@ proptest! {
     }
 
     #[test]
-    fn crowd_metrics_and_eta_table_argument_vectors(args in other_args()) {
-        if args[0] == "eta-table" {
-            match EtaTableCli::try_parse_from(&args) {
-                Err(e) => err_has_message(&e),
-                Ok(cli) => {
-                    let n: usize = cli.counts.iter().product();
-                    assert!(n <= steering::table::format::MAX_ENTRIES);
-                }
+    fn eta_table_argument_vectors(args in other_args("eta-table")) {
+        let r = EtaTableCli::try_parse_from(&args);
+        tally("eta-table arguments (parsed)", r.is_ok());
+        match r {
+            Err(e) => err_has_message(&e),
+            Ok(cli) => {
+                let n: usize = cli.counts.iter().product();
+                assert!(n <= steering::table::format::MAX_ENTRIES);
             }
-            return Ok(());
         }
-        match CrowdMetricsCli::try_parse_from(&args) {
+    }
+
+    #[test]
+    fn crowd_metrics_argument_vectors(args in other_args("crowd-metrics")) {
+        let r = CrowdMetricsCli::try_parse_from(&args);
+        tally("crowd-metrics arguments (parsed)", r.is_ok());
+        match r {
             Err(e) => err_has_message(&e),
             Ok(cli) => {
                 // What crowd-metrics does with each preset, for one preset.
@@ -353,13 +426,54 @@ proptest! {
 fn arg_value() -> impl Strategy<Value = String> {
     prop_oneof![
         prop::sample::select(vec![
-            "0", "1", "2", "-1", "7", "1000000", "1000001", "99999999999", "18446744073709551615",
-            "1e3", "0x10", " 5", "+3", "", "NaN", "inf", "-0", "0.5", "1.5", "256", "257",
-            "standard", "relaxed", "entry", "paper-arc", "standard,relaxed", "nope",
-            "a.csv", "a.CSV", "a.json", "a.jsonl", "a.txt", "scenarios/p000_fig1_seek.json",
-            "{\"gain\": 3}", "{\"gain\": -1}", "{}", "[1]", "max_force=0.3",
-            "measure_steps=4294967295", "boids=1000000", "warmup_steps=-1", "=1", "seed=\"x\"",
-            "16,36,5,9,9", "2,2,2,2,2", "4096,4096,4096,4096,4096", "1,2", "5000,2,2,2,2",
+            "0",
+            "1",
+            "2",
+            "-1",
+            "7",
+            "1000000",
+            "1000001",
+            "99999999999",
+            "18446744073709551615",
+            "1e3",
+            "0x10",
+            " 5",
+            "+3",
+            "",
+            "NaN",
+            "inf",
+            "-0",
+            "0.5",
+            "1.5",
+            "256",
+            "257",
+            "standard",
+            "relaxed",
+            "entry",
+            "paper-arc",
+            "standard,relaxed",
+            "nope",
+            "a.csv",
+            "a.CSV",
+            "a.json",
+            "a.jsonl",
+            "a.txt",
+            "scenarios/p000_fig1_seek.json",
+            "{\"gain\": 3}",
+            "{\"gain\": -1}",
+            "{}",
+            "[1]",
+            "max_force=0.3",
+            "measure_steps=4294967295",
+            "boids=1000000",
+            "warmup_steps=-1",
+            "=1",
+            "seed=\"x\"",
+            "16,36,5,9,9",
+            "2,2,2,2,2",
+            "4096,4096,4096,4096,4096",
+            "1,2",
+            "5000,2,2,2,2",
         ])
         .prop_map(str::to_owned),
         any::<u64>().prop_map(|n| n.to_string()),
@@ -370,9 +484,24 @@ fn arg_value() -> impl Strategy<Value = String> {
 
 fn steer_args() -> impl Strategy<Value = Vec<String>> {
     let flag = prop::sample::select(vec![
-        "--n", "--every", "--seed", "--out", "--table", "--threads", "--controller", "--aim",
-        "--disk-margin", "--orientation-margin", "--only", "--standard", "--json", "--scenarios",
-        "--brief", "--help", "--version", "-h",
+        "--n",
+        "--every",
+        "--seed",
+        "--out",
+        "--table",
+        "--threads",
+        "--controller",
+        "--aim",
+        "--disk-margin",
+        "--orientation-margin",
+        "--only",
+        "--standard",
+        "--json",
+        "--scenarios",
+        "--brief",
+        "--help",
+        "--version",
+        "-h",
     ]);
     (
         prop::sample::select(vec!["run", "reach", "relaxed", "envelope", "walk", ""]),
@@ -394,21 +523,23 @@ fn steer_args() -> impl Strategy<Value = Vec<String>> {
         })
 }
 
-fn other_args() -> impl Strategy<Value = Vec<String>> {
+fn other_args(bin: &'static str) -> impl Strategy<Value = Vec<String>> {
     let flag = prop::sample::select(vec![
-        "--set", "--set", "--write-presets", "--out", "--counts", "--threads", "--help",
+        "--set",
+        "--set",
+        "--write-presets",
+        "--out",
+        "--counts",
+        "--threads",
+        "--help",
     ]);
-    (
-        prop::sample::select(vec!["crowd-metrics", "eta-table"]),
-        prop::collection::vec((flag, arg_value()), 0..4),
-    )
-        .prop_map(|(bin, flags)| {
-            let mut v = vec![bin.to_owned()];
-            for (f, val) in flags {
-                // --write-presets would write files: parse, never run it.
-                v.push(f.to_owned());
-                v.push(val);
-            }
-            v
-        })
+    prop::collection::vec((flag, arg_value()), 0..4).prop_map(move |flags| {
+        let mut v = vec![bin.to_owned()];
+        for (f, val) in flags {
+            // --write-presets would write files: parse, never run it.
+            v.push(f.to_owned());
+            v.push(val);
+        }
+        v
+    })
 }

@@ -45,8 +45,11 @@ fn reach(
 ) -> (bool, f32, f32) {
     let mut w = World::new(p, FunnelConfig::default()).unwrap();
     let g = goal(Vec2::new(x0 + 16.0, 12.0), speed, halting, d_tol);
-    w.add_agent(VehicleState::new(Vec2::new(x0, 0.0), 0.0, 0.0, 0.0), vec![g])
-        .unwrap();
+    w.add_agent(
+        VehicleState::new(Vec2::new(x0, 0.0), 0.0, 0.0, 0.0),
+        vec![g],
+    )
+    .unwrap();
     let steps = (3600f32.min(1200.0 / speed) / p.dt) as u32;
     for _ in 0..steps {
         w.step(t);
@@ -94,8 +97,14 @@ fn at_the_coordinate_limit_every_speed_stays_within_one_percent() {
             // The start, 20 m short of the farthest point, at the limit.
             let x = agent_limit(&p, &[goal(Vec2::ZERO, speed, halting, d_tol)]) - 20.0;
             let (f, l, _) = reach(&t, p, x, speed, halting, d_tol);
-            assert!(f0, "dt {dt} v {speed} halting {halting}: not finished at the origin");
-            assert!(f, "dt {dt} v {speed} halting {halting}: not finished at {x}");
+            assert!(
+                f0,
+                "dt {dt} v {speed} halting {halting}: not finished at the origin"
+            );
+            assert!(
+                f,
+                "dt {dt} v {speed} halting {halting}: not finished at {x}"
+            );
             let err = (l / l0 - 1.0).abs();
             assert!(err < 0.01, "dt {dt} v {speed} at {x}: length {l} vs {l0}");
         }
@@ -113,7 +122,10 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
             x + 16.0
         );
         let e = Scenario::from_json(&json).unwrap_err().to_string();
-        assert!(e.contains("pos.x = ") && e.contains("is outside [-45438, 45438]"), "{e}");
+        assert!(
+            e.contains("pos.x = ") && e.contains("is outside [-45438, 45438]"),
+            "{e}"
+        );
     }
     // A fast vehicle with a coarse step resolves 1e6 m.
     let fast = r#"{"name": "far", "vehicle": {"vMax": 10, "dt": 0.1}, "agents": [{"x": 999980, "y": 0, "goals": [{"x": 999996, "y": 12, "speed": 5, "dTol": 4}]}]}"#;
@@ -141,7 +153,8 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
 
 #[test]
 fn goal_speed_zero_and_fast_circles_are_refused() {
-    let zero = r#"{"name": "x", "agents": [{"x": 0, "y": 0, "goals": [{"x": 5, "y": 0, "speed": 0}]}]}"#;
+    let zero =
+        r#"{"name": "x", "agents": [{"x": 0, "y": 0, "goals": [{"x": 5, "y": 0, "speed": 0}]}]}"#;
     let e = Scenario::from_json(zero).unwrap_err().to_string();
     assert!(e.contains("goal.speed = 0 is outside [0.01, 2]"), "{e}");
     let circle = r#"{"name": "x", "agents": [{"x": 0, "y": 0, "goals": [{"x": 50, "y": 0, "motion": {"kind": "circle", "center": [0, 0], "angularSpeed": 3}}]}]}"#;
@@ -164,7 +177,9 @@ fn positional_arrays_and_huge_scenarios_are_refused() {
         assert!(e.contains("positional arrays are refused"), "{json}: {e}");
     }
     let agents = vec![r#"{"x": 0, "y": 0}"#; 1000].join(",");
-    let json = format!(r#"{{"name": "x", "duration": 3600, "vehicle": {{"dt": 0.001}}, "agents": [{agents}]}}"#);
+    let json = format!(
+        r#"{{"name": "x", "duration": 3600, "vehicle": {{"dt": 0.001}}, "agents": [{agents}]}}"#
+    );
     let e = Scenario::from_json(&json).unwrap_err().to_string();
     assert!(e.contains("agent-steps, more than 1000000000"), "{e}");
 }
@@ -182,22 +197,39 @@ fn study_sizes_and_every_are_bounded_with_the_real_bound() {
         }
         assert!(parse(&["steer", sub, "--n", "1000000"]).is_ok());
     }
-    let e = parse(&["steer", "run", "a.json", "--out", "b.csv", "--every", "99999999999"])
-        .unwrap_err();
+    let e = parse(&[
+        "steer",
+        "run",
+        "a.json",
+        "--out",
+        "b.csv",
+        "--every",
+        "99999999999",
+    ])
+    .unwrap_err();
     assert!(e.contains("99999999999 is outside [1, 36000000]"), "{e}");
     let e = parse(&["steer", "envelope", "--only", "standard,nope"]).unwrap();
     let Command::Envelope(a) = e.command else {
         panic!()
     };
-    assert!(a.variants().unwrap_err().contains("`nope` is not a variant"));
+    assert!(a
+        .variants()
+        .unwrap_err()
+        .contains("`nope` is not a variant"));
 }
 
 #[test]
 fn the_output_path_is_checked_before_simulating() {
-    let sc = Path::new(concat!(env!("CARGO_MANIFEST_DIR"), "/scenarios/p000_fig1_seek.json"));
+    let sc = Path::new(concat!(
+        env!("CARGO_MANIFEST_DIR"),
+        "/scenarios/p000_fig1_seek.json"
+    ));
     assert_eq!(check_out_path(Path::new("T.CSV"), sc), Ok(OutFormat::Csv));
     assert_eq!(check_out_path(Path::new("t.Json"), sc), Ok(OutFormat::Json));
-    assert_eq!(check_out_path(Path::new("t.jsonl"), sc), Ok(OutFormat::JsonLines));
+    assert_eq!(
+        check_out_path(Path::new("t.jsonl"), sc),
+        Ok(OutFormat::JsonLines)
+    );
     for bad in ["t.txt", "t", "t.csv.bak"] {
         let e = check_out_path(Path::new(bad), sc).unwrap_err();
         assert!(e.contains(".csv, .json or .jsonl"), "{e}");
@@ -238,8 +270,10 @@ fn the_three_formats_carry_the_same_trajectory() {
     let fr = doc["frames"].as_array().unwrap();
     assert_eq!(fr.len() as u64, frames);
     let (jsonl, _) = stream(&sc, 7, OutFormat::JsonLines);
-    let lines: Vec<serde_json::Value> =
-        jsonl.lines().map(|l| serde_json::from_str(l).unwrap()).collect();
+    let lines: Vec<serde_json::Value> = jsonl
+        .lines()
+        .map(|l| serde_json::from_str(l).unwrap())
+        .collect();
     assert_eq!(lines.len() as u64, frames + 2);
     assert_eq!(lines[1], fr[0]);
     assert_eq!(lines.last().unwrap()["metrics"], doc["metrics"]);
@@ -251,7 +285,10 @@ fn the_three_formats_carry_the_same_trajectory() {
     let f = &fr[10];
     assert!((row[1] - f["t"].as_f64().unwrap()).abs() < 1e-4);
     for (col, key) in [(2, "x"), (3, "y"), (4, "theta"), (5, "v"), (6, "omega")] {
-        assert!((row[col] - f[key][3].as_f64().unwrap()).abs() < 1e-5, "{key}");
+        assert!(
+            (row[col] - f[key][3].as_f64().unwrap()).abs() < 1e-5,
+            "{key}"
+        );
     }
     let m = doc["metrics"].as_array().unwrap();
     assert_eq!(m.len(), n);

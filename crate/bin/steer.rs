@@ -2,12 +2,12 @@
 //! `steer --help`, `steer run --help`, …).
 //!
 //! ```text
-//! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]
+//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed]
 //! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
 //! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
 //! ```
 //! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
-//! and writes the per-step pose, speeds and mode of every agent plus its
+//! and streams the per-step pose, speeds and mode of every agent plus its
 //! metrics; `--controller` overrides the scenario's controller.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
 //! prints the acceptance figures of the funnelling issue.
@@ -70,7 +70,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     let mut shown = t0;
     let steps = sc.steps();
     let mut progress = |k: u32| {
-        if k % 64 == 0 && shown.elapsed().as_secs_f32() >= 2.0 {
+        if k % 64 == 0 && shown.elapsed().as_secs_f32() >= 10.0 {
             shown = Instant::now();
             eprintln!(
                 "steer: step {k} / {steps} ({:.1} %), {:.0} s",

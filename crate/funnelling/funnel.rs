@@ -118,7 +118,12 @@ impl Goal {
         check_range("goal.beta", self.beta, -1e3, 1e3)?;
         check_range("goal.dTol", self.d_tol, 0.01, 1e3)?;
         check_range("goal.epsTol", self.eps_tol, 1e-3, core::f32::consts::PI)?;
-        check_range("goal.speed", self.speed, MIN_GOAL_SPEED.min(p.v_max), p.v_max)?;
+        check_range(
+            "goal.speed",
+            self.speed,
+            MIN_GOAL_SPEED.min(p.v_max),
+            p.v_max,
+        )?;
         Ok(())
     }
 }

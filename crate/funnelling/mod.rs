@@ -22,9 +22,9 @@
 pub mod approach;
 pub mod controller;
 pub mod envelope;
-pub mod precision;
 pub mod funnel;
 pub mod goals;
+pub mod precision;
 pub mod region_study;
 pub mod relaxed;
 pub mod scenario;

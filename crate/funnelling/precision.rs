@@ -50,7 +50,9 @@ pub const STEP_RESOLUTION_SCALE: f32 = 2_097_152.0;
 /// [`COORD_MAX`]).
 #[must_use]
 pub fn coordinate_limit(p: &VehicleParams, speed: f32) -> f32 {
-    (STEP_RESOLUTION_SCALE * speed * p.dt).min(COORD_MAX).floor()
+    (STEP_RESOLUTION_SCALE * speed * p.dt)
+        .min(COORD_MAX)
+        .floor()
 }
 
 /// Coordinates stay within `TOLERANCE_RESOLUTION_SCALE · D_tol`: `2^18`,
@@ -113,7 +115,10 @@ pub fn check_agent(
                 if let Some(t) = duration {
                     let end = g.goal.pos + velocity * t;
                     check_point(
-                        ("goal.pos.x (at the end of its motion)", "goal.pos.y (at the end of its motion)"),
+                        (
+                            "goal.pos.x (at the end of its motion)",
+                            "goal.pos.y (at the end of its motion)",
+                        ),
                         end,
                         limit,
                     )?;

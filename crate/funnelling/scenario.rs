@@ -31,9 +31,9 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::funnel::{FunnelConfig, Goal};
+use crate::funnelling::precision;
 use crate::relaxed::{ControllerKind, RelaxedConfig};
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
-use crate::funnelling::precision;
 use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
 
 /// A scenario file.
