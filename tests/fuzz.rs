@@ -43,8 +43,11 @@ fn table() -> &'static EtaTable {
     T.get_or_init(common::table)
 }
 
+/// Preset texts per folder of `scenarios/`, read once.
+type PresetCache = std::sync::Mutex<Vec<(String, &'static [String])>>;
+
 fn files(dir: &str) -> &'static [String] {
-    static CACHE: OnceLock<std::sync::Mutex<Vec<(String, &'static [String])>>> = OnceLock::new();
+    static CACHE: OnceLock<PresetCache> = OnceLock::new();
     let cache = CACHE.get_or_init(Default::default);
     let mut c = cache.lock().unwrap();
     if let Some((_, v)) = c.iter().find(|(d, _)| d == dir) {
