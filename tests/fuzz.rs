@@ -149,6 +149,14 @@ fn at<'a>(v: &'a mut Value, path: &[Value]) -> &'a mut Value {
     })
 }
 
+fn get<'a>(v: &'a Value, path: &[Value]) -> Option<&'a Value> {
+    path.iter().try_fold(v, |v, k| match k {
+        Value::String(s) => v.get(s.as_str()),
+        Value::Number(n) => v.get(n.as_u64()? as usize),
+        _ => None,
+    })
+}
+
 /// One mutation: a field replaced, a field removed, an unknown field, or
 /// raw bytes changed.
 #[derive(Clone, Debug)]
@@ -158,6 +166,8 @@ enum Mutation {
     Unknown(prop::sample::Index, String),
     Byte(prop::sample::Index, u8),
     Truncate(prop::sample::Index),
+    /// A number scaled (a near-valid edit: most stay in range).
+    Scale(prop::sample::Index, f64),
 }
 
 fn mutation() -> impl Strategy<Value = Mutation> {
@@ -167,6 +177,8 @@ fn mutation() -> impl Strategy<Value = Mutation> {
         1 => (any::<prop::sample::Index>(), "[a-z]{1,6}").prop_map(|(i, k)| Mutation::Unknown(i, k)),
         1 => (any::<prop::sample::Index>(), any::<u8>()).prop_map(|(i, b)| Mutation::Byte(i, b)),
         1 => any::<prop::sample::Index>().prop_map(Mutation::Truncate),
+        4 => (any::<prop::sample::Index>(), prop::sample::select(vec![0.5, 0.9, 1.1, 2.0, -1.0, 10.0]))
+            .prop_map(|(i, f)| Mutation::Scale(i, f)),
     ]
 }
 
@@ -194,6 +206,21 @@ fn mutate(text: &str, muts: &[Mutation]) -> String {
         paths(&v, &mut Vec::new(), &mut ps);
         match m {
             Mutation::Set(i, x) => *at(&mut v, &ps[i.index(ps.len())]) = x.clone(),
+            Mutation::Scale(i, f) => {
+                let numbers: Vec<&Vec<Value>> = ps
+                    .iter()
+                    .filter(|p| get(&v, p).is_some_and(Value::is_number))
+                    .collect();
+                if let Some(p) = numbers.get(i.index(numbers.len().max(1))) {
+                    let x = at(&mut v, p);
+                    let n = x.as_f64().unwrap_or(0.0) * f;
+                    *x = if x.is_u64() && n >= 0.0 {
+                        serde_json::json!(n.round() as u64)
+                    } else {
+                        serde_json::json!(n)
+                    };
+                }
+            }
             Mutation::Remove(i) => {
                 let p = &ps[i.index(ps.len())];
                 if let Some((last, parent)) = p.split_last() {
@@ -257,6 +284,20 @@ fn tally(name: &'static str, ran: bool) {
         );
     }
     drop(t);
+}
+
+/// Edits (`set_pose`, `set_goals`) applied and refused, printed at the end
+/// of the world-edit property.
+static EDITS: std::sync::Mutex<(u32, u32)> = std::sync::Mutex::new((0, 0));
+
+fn tally_edit(applied: bool) {
+    let mut e = EDITS.lock().unwrap();
+    if applied {
+        e.0 += 1;
+    } else {
+        e.1 += 1;
+    }
+    drop(e);
 }
 
 fn err_has_message<E: std::fmt::Display>(e: &E) {
@@ -421,6 +462,84 @@ proptest! {
                     }
                 }
             }
+        }
+    }
+}
+
+/// Floats a drag, a slider or a URL can produce.
+fn hostile_f32() -> impl Strategy<Value = f32> {
+    prop_oneof![
+        1 => prop::sample::select(vec![
+            0.0f32, -0.0, 0.01, 0.05, 0.1, 1.3, 2.0, 50.0, 100.0, 1e3, 4e4, 1e5, 999_980.0, 1e6,
+            -1e6, 3.4e38, f32::NAN, f32::INFINITY, f32::NEG_INFINITY, f32::MIN_POSITIVE,
+        ]),
+        3 => -1e3f32..1e3,
+        1 => any::<f32>(),
+    ]
+}
+
+proptest! {
+    #![proptest_config(config())]
+
+    /// The lab's edits of a running world (`Lab` passes them through).
+    #[test]
+    fn world_edits_are_refused_unchanged_or_run_finite(
+        v_max in prop_oneof![4 => prop::sample::select(vec![0.01f32, 0.05, 0.5, 2.0, 100.0]), 1 => hostile_f32()],
+        dt in prop_oneof![4 => prop::sample::select(vec![1.0f32 / 60.0, 0.005, 0.1, 1e-4]), 1 => hostile_f32()],
+        n in 0usize..8,
+        seed in any::<u64>(),
+        extent in hostile_f32(),
+        speed in hostile_f32(),
+        edits in prop::collection::vec(
+            (0usize..3, hostile_f32(), hostile_f32(), hostile_f32(), hostile_f32(), hostile_f32(), any::<bool>()),
+            0..4,
+        ),
+    ) {
+        use steering::funnel::{FunnelConfig, Goal};
+        use steering::vehicle::VehicleParams;
+        use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+        let p = VehicleParams { v_max, dt, ..VehicleParams::default() };
+        let mut w = match World::new(p, FunnelConfig::default()) {
+            Err(e) => { tally("world edits (world built)", false); return Ok(err_has_message(&e)); }
+            Ok(w) => w,
+        };
+        tally("world edits (world built)", true);
+        let r = w.spawn_random(n, seed, extent, speed);
+        if let Err(e) = r {
+            err_has_message(&e);
+        }
+        for (i, x, y, a, b, c, goals) in edits {
+            let mut before = Vec::new();
+            w.write_state(&mut before);
+            let r = if goals {
+                let g = GoalSpec {
+                    goal: Goal { pos: glam::Vec2::new(x, y), beta: a, d_tol: b, eps_tol: 0.1, speed: c, halting: false },
+                    motion: if c > 1.0 { GoalMotion::Circle { center: glam::Vec2::ZERO, angular_speed: a } } else { GoalMotion::Static },
+                    switch: SwitchRule::Tolerance,
+                };
+                w.set_goals(i, vec![g])
+            } else {
+                w.set_pose(i, glam::Vec2::new(x, y), a)
+            };
+            tally_edit(r.is_ok());
+            if let Err(e) = r {
+                err_has_message(&e);
+                let mut after = Vec::new();
+                w.write_state(&mut after);
+                assert_eq!(before.len(), after.len());
+                assert!(before.iter().zip(&after).all(|(a, b)| a.to_bits() == b.to_bits()), "a refused edit changed the world");
+            }
+        }
+        for _ in 0..3 {
+            w.step(table());
+        }
+        let mut state = Vec::new();
+        w.write_state(&mut state);
+        assert!(state.iter().all(|x| x.is_finite()));
+        let t = TALLY.lock().unwrap();
+        if t.iter().any(|e| e.0 == "world edits (world built)" && e.1 + e.2 == CASES) {
+            let e = EDITS.lock().unwrap();
+            println!("fuzz world edits: set_pose / set_goals {} applied, {} refused unchanged", e.0, e.1);
         }
     }
 }

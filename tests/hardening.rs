@@ -307,3 +307,18 @@ fn a_missing_table_hints_at_table() {
     let e = String::from_utf8_lossy(&out.stderr);
     assert!(!out.status.success() && e.contains("--table"), "{e}");
 }
+
+#[test]
+fn a_slow_vehicle_gets_a_random_crowd_not_a_panic() {
+    // `clamp(0.1, v_max)` panicked for v_max < 0.1 (`#vmax=0.05`).
+    let p = VehicleParams {
+        v_max: 0.05,
+        ..VehicleParams::default()
+    };
+    let mut w = World::new(p, FunnelConfig::default()).unwrap();
+    w.spawn_random(3, 1, 10.0, 1.3).unwrap();
+    assert!(w.agents.iter().all(|a| a.goals[0].goal.speed == 0.05));
+    let e = w.spawn_random(1, 1, 10.0, f32::NAN).unwrap_err();
+    assert_eq!(e.to_string(), "speed = NaN is not finite");
+    assert_eq!(w.agents.len(), 3);
+}

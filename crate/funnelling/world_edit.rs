@@ -187,11 +187,11 @@ impl World {
     /// square of half-side `extent` centred on the origin, each with a
     /// queue of [`RANDOM_GOALS`] random oriented goals in the same square
     /// (D_tol 0.3 m, ε_tol 10°, switched on entering the tolerance) at
-    /// desired speed `speed` clamped to [0.1, v_max]. Seeded PCG32: the same
+    /// desired speed `speed` clamped to [min(0.1, v_max), v_max]. Seeded PCG32: the same
     /// seed gives the same crowd natively and in the browser.
     ///
     /// # Errors
-    /// `extent` outside [0.001, 1e5] or not finite, or more than
+    /// `extent` outside [0.001, 1e5] or not finite, `speed` not finite, or more than
     /// [`MAX_AGENTS`] agents in all; nothing is added then.
     pub fn spawn_random(
         &mut self,
@@ -202,8 +202,12 @@ impl World {
     ) -> Result<(), EditError> {
         use core::f32::consts::PI;
         crate::vehicle::check_range("extent", extent, 1e-3, 1e5)?;
+        crate::vehicle::check_range("speed", speed, f32::MIN, f32::MAX)?;
         self.check_room(n)?;
-        let speed = speed.clamp(0.1, self.params.v_max);
+        // Not `clamp(0.1, v_max)`: that panics when v_max < 0.1 (issue 16:
+        // `#vmax=0.05` left an empty playground).
+        let v_max = self.params.v_max;
+        let speed = speed.min(v_max).max(0.1f32.min(v_max));
         let mut rng = crate::rng::Rng::new(seed);
         let point = |rng: &mut crate::rng::Rng| {
             Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
