@@ -414,7 +414,7 @@ proptest! {
                     }
                 }
                 Command::Envelope(a) => {
-                    assert!((1..=steering::cli::steer::MAX_STUDY_N).contains(&a.n));
+                    assert!((5..=steering::cli::steer::MAX_STUDY_N).contains(&a.n));
                     if let Err(e) = a.standard_config() {
                         err_has_message(&e);
                     }

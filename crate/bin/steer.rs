@@ -243,7 +243,7 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     println!("| preset | agents | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
     println!("|---|---|---|---|---|---|---|");
     let mut names: Vec<String> = std::fs::read_dir(&args.scenarios)
-        .map_err(|e| format!("cannot read {dir}: {e}"))?
+        .map_err(|e| format!("cannot read {dir}: {e} (relative to the repository root: run from there, or pass --scenarios DIR)"))?
         .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
         .filter(|n| n.starts_with("p001_") && n.ends_with("_standard.json"))
         .collect();

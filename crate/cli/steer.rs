@@ -132,6 +132,18 @@ pub fn parse_study_n(s: &str) -> Result<usize, String> {
     parse_bounded(s, 1, MAX_STUDY_N as u64).map(|v| v as usize)
 }
 
+/// Smallest `steer envelope --n`: the moving and chained groups get N/5
+/// runs each, and an empty group printed rows of NaN.
+pub const MIN_ENVELOPE_N: usize = 5;
+
+/// Parses `steer envelope --n`: [`MIN_ENVELOPE_N`] to [`MAX_STUDY_N`].
+///
+/// # Errors
+/// See [`parse_bounded`].
+pub fn parse_envelope_n(s: &str) -> Result<usize, String> {
+    parse_bounded(s, MIN_ENVELOPE_N as u64, MAX_STUDY_N as u64).map(|v| v as usize)
+}
+
 /// Parses `steer run --every`: 1 to [`super::trajectory::MAX_EVERY`].
 ///
 /// # Errors
@@ -163,8 +175,8 @@ pub fn parse_aim(s: &str) -> Result<crate::relaxed::RelaxedAim, String> {
 /// `steer envelope`.
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct EnvelopeArgs {
-    /// Static scenarios per variant (moving and chained: N/5 each), 1 to 1,000,000.
-    #[arg(long, value_name = "N", default_value_t = 2000, value_parser = parse_study_n)]
+    /// Static scenarios per variant (moving and chained: N/5 each), 5 to 1,000,000.
+    #[arg(long, value_name = "N", default_value_t = 2000, value_parser = parse_envelope_n)]
     pub n: usize,
     /// Seed.
     #[arg(long, value_name = "S", default_value_t = 1)]
