@@ -65,6 +65,7 @@ fn metrics(cli: &CrowdMetricsCli) -> Result<(), Box<dyn std::error::Error>> {
                 }
                 cfg = CrowdConfig::from_json(&v.to_string())?;
             }
+            cfg.check_batch()?;
             let mut crowd = Crowd::new(&cfg)?;
             let m = crowd.run_measured();
             println!(

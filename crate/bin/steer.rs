@@ -2,12 +2,12 @@
 //! `steer --help`, `steer run --help`, …).
 //!
 //! ```text
-//! steer run SCENARIO.json --out TRAJ.json|TRAJ.csv [--every N] [--table FILE] [--controller standard|relaxed]
+//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed]
 //! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
 //! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
 //! ```
 //! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
-//! and writes the per-step pose, speeds and mode of every agent plus its
+//! and streams the per-step pose, speeds and mode of every agent plus its
 //! metrics; `--controller` overrides the scenario's controller.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
 //! prints the acceptance figures of the funnelling issue.
@@ -21,188 +21,82 @@
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 
-use std::fmt::Write as _;
-use std::process::ExitCode;
-
 use std::path::Path;
+use std::process::ExitCode;
+use std::time::Instant;
 
 use clap::Parser;
-use serde::Serialize;
-use steering::angle::diff;
 use steering::cli::steer::{Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli};
-use steering::dubins;
+use steering::cli::trajectory::{check_out_path, create_out, stream_run};
 use steering::funnel::{FunnelConfig, MuBound};
 use steering::metrics::PathMetrics;
 use steering::region_study::{compare, Comparison, RegionStudy};
-use steering::relaxed::{Controller, ControllerKind, RelaxedConfig};
+use steering::relaxed::{Controller, ControllerKind};
 use steering::scenario::Scenario;
 use steering::study::{summarise, ReachStudy};
 use steering::table::EtaTable;
 
-#[derive(Serialize, Default)]
-#[serde(rename_all = "camelCase")]
-struct Trace {
-    t: Vec<f32>,
-    x: Vec<f32>,
-    y: Vec<f32>,
-    theta: Vec<f32>,
-    v: Vec<f32>,
-    omega: Vec<f32>,
-    mode: Vec<u8>,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct AgentOut {
-    trajectory: Trace,
-    metrics: Metrics,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct Metrics {
-    path_length: f32,
-    integrated_curvature: f32,
-    goals_done: usize,
-    goals: usize,
-    time_to_reach: Option<f32>,
-    arrival_position_error: f32,
-    arrival_orientation_error_deg: f32,
-    dubins_length: f32,
-    limit_violations: u32,
-}
-
-#[derive(Serialize)]
-#[serde(rename_all = "camelCase")]
-struct RunOut {
-    name: String,
-    source: String,
-    dt: f32,
-    steps: u32,
-    agents: Vec<AgentOut>,
-}
-
 fn load_table(path: &Path) -> Result<EtaTable, String> {
     let shown = path.display();
-    let bytes = std::fs::read(path).map_err(|e| format!("cannot read η table {shown}: {e}"))?;
+    let bytes = std::fs::read(path).map_err(|e| {
+        let hint = if e.kind() == std::io::ErrorKind::NotFound {
+            " (the default is relative to the repository root: run from there, or pass --table PATH/TO/tables/eta.bin)"
+        } else {
+            ""
+        };
+        format!("cannot read η table {shown}: {e}{hint}")
+    })?;
     EtaTable::from_bytes(&bytes).map_err(|e| format!("{shown}: {e}"))
 }
 
+/// `steer run`: checks everything (output path included) before the first
+/// step, then streams the trajectory (`steering::cli::trajectory`).
 fn run(args: &RunArgs) -> Result<(), String> {
     let scenario = args.scenario.display();
-    let out = args.out.display().to_string();
-    let (every, table_path, controller) = (args.every, &args.table, args.controller);
+    let format = check_out_path(&args.out, &args.scenario)?;
     let text = std::fs::read_to_string(&args.scenario)
         .map_err(|e| format!("cannot read {scenario}: {e}"))?;
     let mut sc = Scenario::from_json(&text).map_err(|e| format!("{scenario}: {e}"))?;
-    if let Some(c) = controller {
+    if let Some(c) = args.controller {
         sc.controller = c;
     }
-    let table = load_table(table_path)?;
+    let table = load_table(&args.table)?;
     table
         .check_params(&sc.vehicle)
-        .map_err(|e| format!("{}: {e}", table_path.display()))?;
-    let mut world = sc.world().map_err(|e| format!("{scenario}: {e}"))?;
-    // The first row reports the mode the controller chooses at t = 0.
-    world.plan(&table);
-    let starts: Vec<_> = world.agents.iter().map(|a| a.state).collect();
-    let mut traces: Vec<Trace> = world.agents.iter().map(|_| Trace::default()).collect();
+        .map_err(|e| format!("{}: {e}", args.table.display()))?;
+    sc.world().map_err(|e| format!("{scenario}: {e}"))?;
+    let mut out = create_out(&args.out)?;
+    let t0 = Instant::now();
+    let mut shown = t0;
     let steps = sc.steps();
-    for k in 0..=steps {
-        if k % every == 0 {
-            for (a, tr) in world.agents.iter().zip(&mut traces) {
-                tr.t.push(world.time);
-                tr.x.push(a.state.pos.x);
-                tr.y.push(a.state.pos.y);
-                tr.theta.push(a.state.theta);
-                tr.v.push(a.state.v);
-                tr.omega.push(a.state.omega);
-                tr.mode.push(a.internals.mode as u8);
-            }
+    let mut progress = |k: u32| {
+        if k % 64 == 0 && shown.elapsed().as_secs_f32() >= 10.0 {
+            shown = Instant::now();
+            eprintln!(
+                "steer: step {k} / {steps} ({:.1} %), {:.0} s",
+                100.0 * f64::from(k) / f64::from(steps.max(1)),
+                t0.elapsed().as_secs_f32()
+            );
         }
-        if k < steps {
-            world.step(&table);
-        }
-    }
-    let p = world.params;
-    let agents: Vec<AgentOut> = world
-        .agents
-        .iter()
-        .zip(traces)
-        .zip(&starts)
-        .map(|((a, trajectory), s0)| {
-            let last = a.goal_now;
-            let mut dub = 0.0;
-            let mut from = (s0.pos.x, s0.pos.y, s0.theta);
-            for g in &a.goals {
-                let to = (g.goal.pos.x, g.goal.pos.y, g.goal.beta);
-                dub += dubins::shortest_length(from, to, p.min_turn_radius(g.goal.speed));
-                from = to;
-            }
-            AgentOut {
-                trajectory,
-                metrics: Metrics {
-                    path_length: a.metrics.length,
-                    integrated_curvature: a.metrics.curvature,
-                    goals_done: a.current,
-                    goals: a.goals.len(),
-                    time_to_reach: a.finished_at,
-                    arrival_position_error: (last.pos - a.state.pos).length(),
-                    arrival_orientation_error_deg: diff(last.beta, a.state.theta)
-                        .abs()
-                        .to_degrees(),
-                    dubins_length: dub,
-                    limit_violations: a.metrics.violations,
-                },
-            }
-        })
-        .collect();
-    let result = RunOut {
-        name: sc.name.clone(),
-        source: sc.source.clone(),
-        dt: p.dt,
-        steps,
-        agents,
     };
-    let body = if out.ends_with(".csv") {
-        let mut s = String::from("agent,t,x,y,theta,v,omega,mode\n");
-        for (i, a) in result.agents.iter().enumerate() {
-            let tr = &a.trajectory;
-            for k in 0..tr.t.len() {
-                let _ = writeln!(
-                    s,
-                    "{i},{:.4},{:.5},{:.5},{:.5},{:.5},{:.5},{}",
-                    tr.t[k], tr.x[k], tr.y[k], tr.theta[k], tr.v[k], tr.omega[k], tr.mode[k]
-                );
-            }
-        }
-        s
-    } else {
-        serde_json::to_string(&result).map_err(|e| e.to_string())?
-    };
-    std::fs::write(&out, body).map_err(|e| format!("cannot write {out}: {e}"))?;
-    let done = result
-        .agents
-        .iter()
-        .filter(|a| a.metrics.goals_done == a.metrics.goals)
-        .count();
-    let viol: u32 = result
-        .agents
-        .iter()
-        .map(|a| a.metrics.limit_violations)
-        .sum();
+    let s = stream_run(&sc, &table, args.every, format, &mut out, &mut progress)
+        .map_err(|e| format!("{scenario}: {e}"))?;
     println!(
-        "steer: {} ({}) — {} agents, {steps} steps, {done} finished all goals, {viol} limit violations -> {out}",
+        "steer: {} ({}) — {} agents, {} steps, {} finished all goals, {} limit violations -> {}",
         sc.name,
         sc.controller.name(),
-        result.agents.len()
+        s.agents,
+        s.steps,
+        s.finished,
+        s.violations,
+        args.out.display()
     );
     Ok(())
 }
 
 /// `steer envelope`: the envelope study (`steering::funnelling::envelope`).
 fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
-    use steering::funnelling::envelope::{variants, EnvelopeStudy};
+    use steering::funnelling::envelope::EnvelopeStudy;
     let mut study = EnvelopeStudy {
         seed: args.seed,
         ..EnvelopeStudy::default()
@@ -211,11 +105,8 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     let table = load_table(&args.table)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
-    let mut vs = variants().to_vec();
-    if let Some(json) = &args.standard {
-        let cfg: steering::funnel::FunnelConfig =
-            serde_json::from_str(json).map_err(|e| format!("--standard: {e}"))?;
-        cfg.validate().map_err(|e| format!("--standard: {e}"))?;
+    let mut vs = args.variants()?;
+    if let Some(cfg) = args.standard_config()? {
         for v in &mut vs {
             match &mut v.controller {
                 steering::relaxed::Controller::Standard(f) if v.name == "standard" => *f = cfg,
@@ -223,9 +114,6 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
                 _ => {}
             }
         }
-    }
-    if let Some(only) = &args.only {
-        vs.retain(|v| only.split(',').any(|n| n == v.name));
     }
     let report = study.run_all(&table, &p, &vs);
     let detail: &[&str] = if args.brief {
@@ -346,17 +234,7 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     };
     let table_path = &args.table;
     let dir = args.scenarios.display();
-    let mut rcfg = RelaxedConfig::default();
-    if let Some(aim) = args.aim {
-        rcfg.aim = aim;
-    }
-    if let Some(m) = args.disk_margin {
-        rcfg.disk_margin = m;
-    }
-    if let Some(m) = args.orientation_margin {
-        rcfg.orientation_margin = m;
-    }
-    rcfg.validate().map_err(|e| e.to_string())?;
+    let rcfg = args.relaxed_config()?;
     let table = load_table(table_path)?;
     let p = steering::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
@@ -365,7 +243,7 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     println!("| preset | agents | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
     println!("|---|---|---|---|---|---|---|");
     let mut names: Vec<String> = std::fs::read_dir(&args.scenarios)
-        .map_err(|e| format!("cannot read {dir}: {e}"))?
+        .map_err(|e| format!("cannot read {dir}: {e} (relative to the repository root: run from there, or pass --scenarios DIR)"))?
         .filter_map(|e| e.ok().map(|e| e.file_name().to_string_lossy().into_owned()))
         .filter(|n| n.starts_with("p001_") && n.ends_with("_standard.json"))
         .collect();

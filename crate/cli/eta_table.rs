@@ -24,7 +24,12 @@ pub struct EtaTableCli {
     pub pool: PoolArgs,
 }
 
-/// Parses `ND,NA,NS,NV,NVD`: five integers ≥ 2.
+/// Most samples on one axis.
+pub const MAX_AXIS_COUNT: usize = 4096;
+
+/// Parses `ND,NA,NS,NV,NVD`: five integers in `[2, MAX_AXIS_COUNT]` whose
+/// product (the entries) is at most the loader's
+/// [`MAX_ENTRIES`](crate::table::format::MAX_ENTRIES).
 ///
 /// # Errors
 /// A message naming what is wrong.
@@ -43,8 +48,17 @@ pub fn parse_counts(s: &str) -> Result<[usize; AXES], String> {
             v.len()
         )
     })?;
-    if c.iter().any(|&n| n < 2) {
-        return Err("every count must be ≥ 2, e.g. 16,36,5,9,9".into());
+    if c.iter().any(|&n| !(2..=MAX_AXIS_COUNT).contains(&n)) {
+        return Err(format!(
+            "every count must be in [2, {MAX_AXIS_COUNT}], e.g. 16,36,5,9,9"
+        ));
+    }
+    let entries: usize = c.iter().product();
+    let max = crate::table::format::MAX_ENTRIES;
+    if entries > max {
+        return Err(format!(
+            "{entries} entries, more than a table may hold ({max})"
+        ));
     }
     Ok(c)
 }

@@ -10,8 +10,10 @@
 //! | [`eta_table`] | `eta-table`: output file, sample counts per axis, thread count |
 //! | [`crowd_metrics`] | `crowd-metrics`: `--write-presets`, repeatable `--set key=value` |
 //! | [`pool`] | `--threads`: the rayon pool a study or the table generator runs on |
+//! | [`trajectory`] | `steer run`'s output streamed (CSV, time-ordered JSON, JSON Lines), the `--out` checks before simulating |
 
 pub mod crowd_metrics;
 pub mod eta_table;
 pub mod pool;
 pub mod steer;
+pub mod trajectory;

@@ -37,11 +37,17 @@ pub struct RunArgs {
     /// Scenario file (schema: `crate/funnelling/scenario.rs`).
     #[arg(value_name = "SCENARIO.json")]
     pub scenario: PathBuf,
-    /// Trajectory output.
+    /// Trajectory output, streamed while simulating; the extension
+    /// (case-insensitive) chooses the format: `.csv` one row per agent per
+    /// recorded step (agent,t,x,y,theta,v,omega,mode), time-ordered;
+    /// `.json` one document {name, source, dt, steps, every, agents,
+    /// frames: [{t, x: [per agent], y, theta, v, omega, mode}], metrics:
+    /// [per agent]}; `.jsonl` the same as JSON Lines (header, one frame per
+    /// line, then {metrics}). Checked before simulating; never the scenario.
     #[arg(long, value_name = "FILE")]
     pub out: PathBuf,
-    /// Record every N-th step.
-    #[arg(long, value_name = "N", default_value_t = 1, value_parser = clap::value_parser!(u32).range(1..))]
+    /// Record every N-th step, 1 to 36,000,000.
+    #[arg(long, value_name = "N", default_value_t = 1, value_parser = parse_every)]
     pub every: u32,
     /// η table.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
@@ -54,8 +60,8 @@ pub struct RunArgs {
 /// `steer reach`.
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct ReachArgs {
-    /// Number of random scenarios.
-    #[arg(long, value_name = "N", default_value_t = crate::study::ReachStudy::default().n)]
+    /// Number of random scenarios, 1 to 1,000,000.
+    #[arg(long, value_name = "N", default_value_t = crate::study::ReachStudy::default().n, value_parser = parse_study_n)]
     pub n: usize,
     /// Seed.
     #[arg(long, value_name = "S", default_value_t = crate::study::ReachStudy::default().seed)]
@@ -71,8 +77,8 @@ pub struct ReachArgs {
 /// `steer relaxed`.
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct RelaxedArgs {
-    /// Number of random region goals.
-    #[arg(long, value_name = "N", default_value_t = crate::region_study::RegionStudy::default().n)]
+    /// Number of random region goals, 1 to 1,000,000.
+    #[arg(long, value_name = "N", default_value_t = crate::region_study::RegionStudy::default().n, value_parser = parse_study_n)]
     pub n: usize,
     /// Seed.
     #[arg(long, value_name = "S", default_value_t = crate::region_study::RegionStudy::default().seed)]
@@ -95,6 +101,55 @@ pub struct RelaxedArgs {
     /// Thread pool.
     #[command(flatten)]
     pub pool: PoolArgs,
+}
+
+/// Largest `--n` of a study (`reach`, `relaxed`, `envelope`): results are
+/// kept per case (tens of bytes each) and the time grows linearly (the
+/// default 10,000 takes seconds), so a million is minutes and megabytes.
+pub const MAX_STUDY_N: usize = 1_000_000;
+
+/// Parses a whole number in `[min, max]`, naming the bound when it is
+/// outside (a number too large for any integer type included).
+///
+/// # Errors
+/// Not a whole number, or outside the bounds.
+pub fn parse_bounded(s: &str, min: u64, max: u64) -> Result<u64, String> {
+    let t = s.trim();
+    if t.is_empty() || !t.bytes().all(|b| b.is_ascii_digit()) {
+        return Err(format!("`{s}` is not a whole number in [{min}, {max}]"));
+    }
+    match t.parse::<u64>() {
+        Ok(v) if (min..=max).contains(&v) => Ok(v),
+        _ => Err(format!("{t} is outside [{min}, {max}]")),
+    }
+}
+
+/// Parses `--n` of a study: 1 to [`MAX_STUDY_N`].
+///
+/// # Errors
+/// See [`parse_bounded`].
+pub fn parse_study_n(s: &str) -> Result<usize, String> {
+    parse_bounded(s, 1, MAX_STUDY_N as u64).map(|v| v as usize)
+}
+
+/// Smallest `steer envelope --n`: the moving and chained groups get N/5
+/// runs each, and an empty group printed rows of NaN.
+pub const MIN_ENVELOPE_N: usize = 5;
+
+/// Parses `steer envelope --n`: [`MIN_ENVELOPE_N`] to [`MAX_STUDY_N`].
+///
+/// # Errors
+/// See [`parse_bounded`].
+pub fn parse_envelope_n(s: &str) -> Result<usize, String> {
+    parse_bounded(s, MIN_ENVELOPE_N as u64, MAX_STUDY_N as u64).map(|v| v as usize)
+}
+
+/// Parses `steer run --every`: 1 to [`super::trajectory::MAX_EVERY`].
+///
+/// # Errors
+/// See [`parse_bounded`].
+pub fn parse_every(s: &str) -> Result<u32, String> {
+    parse_bounded(s, 1, u64::from(super::trajectory::MAX_EVERY)).map(|v| v as u32)
 }
 
 /// Parses `standard` or `relaxed`.
@@ -120,8 +175,8 @@ pub fn parse_aim(s: &str) -> Result<crate::relaxed::RelaxedAim, String> {
 /// `steer envelope`.
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct EnvelopeArgs {
-    /// Static scenarios per variant (moving and chained: N/5 each).
-    #[arg(long, value_name = "N", default_value_t = 2000)]
+    /// Static scenarios per variant (moving and chained: N/5 each), 5 to 1,000,000.
+    #[arg(long, value_name = "N", default_value_t = 2000, value_parser = parse_envelope_n)]
     pub n: usize,
     /// Seed.
     #[arg(long, value_name = "S", default_value_t = 1)]
@@ -143,4 +198,61 @@ pub struct EnvelopeArgs {
     /// Print the summary and the targets only, not the per-cell tables.
     #[arg(long)]
     pub brief: bool,
+}
+
+impl RelaxedArgs {
+    /// The relaxed settings: the defaults with `--aim`, `--disk-margin` and
+    /// `--orientation-margin` applied, validated.
+    ///
+    /// # Errors
+    /// A margin out of range, named.
+    pub fn relaxed_config(&self) -> Result<crate::relaxed::RelaxedConfig, String> {
+        let mut rcfg = crate::relaxed::RelaxedConfig::default();
+        if let Some(aim) = self.aim {
+            rcfg.aim = aim;
+        }
+        if let Some(m) = self.disk_margin {
+            rcfg.disk_margin = m;
+        }
+        if let Some(m) = self.orientation_margin {
+            rcfg.orientation_margin = m;
+        }
+        rcfg.validate().map_err(|e| e.to_string())?;
+        Ok(rcfg)
+    }
+}
+
+impl EnvelopeArgs {
+    /// `--standard` parsed and validated (`None` without it).
+    ///
+    /// # Errors
+    /// Not a `FunnelConfig`, or a value out of range.
+    pub fn standard_config(&self) -> Result<Option<crate::funnel::FunnelConfig>, String> {
+        let Some(json) = &self.standard else {
+            return Ok(None);
+        };
+        let cfg: crate::funnel::FunnelConfig =
+            serde_json::from_str(json).map_err(|e| format!("--standard: {e}"))?;
+        cfg.validate().map_err(|e| format!("--standard: {e}"))?;
+        Ok(Some(cfg))
+    }
+
+    /// The variants to run: all, or those named by `--only`.
+    ///
+    /// # Errors
+    /// A name that is not a variant.
+    pub fn variants(&self) -> Result<Vec<crate::funnelling::envelope::Variant>, String> {
+        let mut vs = crate::funnelling::envelope::variants().to_vec();
+        if let Some(only) = &self.only {
+            let known: Vec<&str> = vs.iter().map(|v| v.name).collect();
+            if let Some(bad) = only.split(',').find(|n| !known.contains(n)) {
+                return Err(format!(
+                    "--only: `{bad}` is not a variant (known: {})",
+                    known.join(", ")
+                ));
+            }
+            vs.retain(|v| only.split(',').any(|n| n == v.name));
+        }
+        Ok(vs)
+    }
 }

@@ -34,6 +34,18 @@ use crate::crowd::path::Path;
 /// Most boids a crowd accepts (keeps buffers within a browser's memory).
 pub const MAX_BOIDS: usize = 1_000_000;
 
+/// Most steps in a batch run's warm-up or measurement window (issue 16:
+/// `measure_steps = 4294967295` ran for hours with no output); the paper
+/// presets use 1,500 + 6,000.
+pub const MAX_RUN_STEPS: u32 = 1_000_000;
+
+/// Most boid-steps in a batch run, `boids × (warmup_steps +
+/// measure_steps)`: about 2 minutes at 130 ns per boid step.
+pub const MAX_BOID_STEPS: u64 = 1_000_000_000;
+
+/// Most points in a path.
+pub const MAX_PATH_POINTS: usize = 100_000;
+
 /// The path part of a [`CrowdConfig`].
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(deny_unknown_fields)]
@@ -236,7 +248,33 @@ impl CrowdConfig {
         check_range("predict_distance", self.predict_distance, 0.0, 1e6)?;
         check_range("lookahead", self.lookahead, 0.0, 1e6)?;
         check_range("spawn_spread", self.spawn_spread, 0.0, 1.0)?;
+        let max_steps = MAX_RUN_STEPS as f32;
+        check_range("warmup_steps", self.warmup_steps as f32, 0.0, max_steps)?;
+        check_range("measure_steps", self.measure_steps as f32, 0.0, max_steps)?;
+        check_range(
+            "path.points (count)",
+            self.path.points.len() as f32,
+            0.0,
+            MAX_PATH_POINTS as f32,
+        )?;
         self.path.build()?;
         Ok(())
+    }
+
+    /// Checks that a batch run ([`crate::crowd::Crowd::run_measured`], the
+    /// `crowd-metrics` table) stays under [`MAX_BOID_STEPS`]; an
+    /// interactive crowd (the page) steps as long as it is shown.
+    ///
+    /// # Errors
+    /// `boids × (warmup_steps + measure_steps)` out of range.
+    pub fn check_batch(&self) -> Result<(), CrowdError> {
+        let work =
+            self.boids as f64 * (f64::from(self.warmup_steps) + f64::from(self.measure_steps));
+        check_range(
+            "boids × (warmup_steps + measure_steps)",
+            work as f32,
+            0.0,
+            MAX_BOID_STEPS as f32,
+        )
     }
 }

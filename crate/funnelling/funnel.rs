@@ -107,6 +107,12 @@ impl Default for Goal {
     }
 }
 
+/// Slowest desired speed a goal may ask for, m/s (issue 16: a goal speed of
+/// 0 gave an agent that never moves, with no message). Equal to the
+/// smallest `vMax`; 20 m at this speed take about 35 minutes, and it sets
+/// the tightest coordinate range ([`crate::funnelling::precision`]).
+pub const MIN_GOAL_SPEED: f32 = 0.01;
+
 impl Goal {
     /// Rejects non-finite or out-of-range goals.
     ///
@@ -119,7 +125,12 @@ impl Goal {
         check_range("goal.beta", self.beta, -1e3, 1e3)?;
         check_range("goal.dTol", self.d_tol, 0.01, 1e3)?;
         check_range("goal.epsTol", self.eps_tol, 1e-3, core::f32::consts::PI)?;
-        check_range("goal.speed", self.speed, 0.0, p.v_max)?;
+        check_range(
+            "goal.speed",
+            self.speed,
+            MIN_GOAL_SPEED.min(p.v_max),
+            p.v_max,
+        )?;
         Ok(())
     }
 }

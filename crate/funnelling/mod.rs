@@ -13,7 +13,8 @@
 //! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`world_edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
-//! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation |
+//! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
+//! | [`precision`] | — | the coordinate range where f32 resolves a quarter of one step (slowest goal speed × dt), measured; checked on every agent and goal |
 //! | [`envelope`] | 000 §4–6, 001 §4 | seeded study over the whole operating envelope: tolerances × speed × distance, static, moving and chained goals, both controllers |
 //! | [`study`] | 000 §5 | seeded reach study behind the acceptance figures |
 //! | [`region_study`] | 001 §5 | seeded region-goal study: standard vs relaxed |
@@ -23,6 +24,7 @@ pub mod controller;
 pub mod envelope;
 pub mod funnel;
 pub mod goals;
+pub mod precision;
 pub mod region_study;
 pub mod relaxed;
 pub mod scenario;

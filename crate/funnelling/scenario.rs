@@ -31,6 +31,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::funnel::{FunnelConfig, Goal};
+use crate::funnelling::precision;
 use crate::relaxed::{ControllerKind, RelaxedConfig};
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
@@ -135,6 +136,60 @@ fn default_speed() -> f32 {
     1.3
 }
 
+/// Longest scenario, s.
+pub const MAX_DURATION: f32 = 3600.0;
+
+/// Most agents in a scenario.
+pub const MAX_SCENARIO_AGENTS: usize = 100_000;
+
+/// Most goals queued per agent in a scenario.
+pub const MAX_GOALS: usize = 10_000;
+
+/// Most agent-steps (agents × duration / dt) in a scenario: 1e9 is about
+/// 7 minutes of simulation at 0.4 µs per agent update; 1,000 agents ×
+/// 3,600 s at 60 Hz is 2.16e8 (issue 16: 100,000 agents × 3,600 s, 2.2e10,
+/// was admitted).
+pub const MAX_AGENT_STEPS: u64 = 1_000_000_000;
+
+/// Refuses structs written as positional arrays (serde accepts
+/// `["name", "", …]` for a struct): in a scenario, an array either holds
+/// objects only (`agents`, `goals`) or is a pair of numbers under
+/// `velocity` / `center`.
+///
+/// # Errors
+/// [`ScenarioError::Parse`] naming the path of the first such array.
+fn refuse_positional(v: &serde_json::Value, path: &str) -> Result<(), ScenarioError> {
+    use serde_json::Value;
+    let positional = || {
+        ScenarioError::Parse(format!(
+            "`{path}` is an array where an object with named fields is expected (positional \
+             arrays are refused)"
+        ))
+    };
+    match v {
+        Value::Object(m) => m.iter().try_for_each(|(k, x)| {
+            let pair = matches!(x, Value::Array(a) if a.len() == 2 && a.iter().all(Value::is_number));
+            if (k == "velocity" || k == "center") && pair {
+                Ok(())
+            } else {
+                refuse_positional(x, &format!("{path}.{k}"))
+            }
+        }),
+        Value::Array(_) if path == "scenario" => Err(positional()),
+        Value::Array(a) => a.iter().enumerate().try_for_each(|(i, x)| {
+            if x.is_object() {
+                refuse_positional(x, &format!("{path}[{i}]"))
+            } else {
+                Err(ScenarioError::Parse(format!(
+                    "`{path}[{i}]` is not an object with named fields (positional arrays are refused)"
+                )))
+            }
+        }),
+        _ if path == "scenario" => Err(positional()),
+        _ => Ok(()),
+    }
+}
+
 /// Why a scenario was refused.
 #[derive(Debug)]
 pub enum ScenarioError {
@@ -190,6 +245,9 @@ impl Scenario {
     /// # Errors
     /// [`ScenarioError::Parse`] with the parser's message and position.
     pub fn from_json(text: &str) -> Result<Self, ScenarioError> {
+        let value: serde_json::Value =
+            serde_json::from_str(text).map_err(|e| ScenarioError::Parse(e.to_string()))?;
+        refuse_positional(&value, "scenario")?;
         let s: Self =
             serde_json::from_str(text).map_err(|e| ScenarioError::Parse(e.to_string()))?;
         s.validate()?;
@@ -204,22 +262,36 @@ impl Scenario {
         self.vehicle.validate()?;
         self.funnel.validate()?;
         self.relaxed.validate()?;
-        crate::vehicle::check_range("duration", self.duration, 0.0, 3600.0)?;
-        if self.agents.len() > 100_000 {
+        crate::vehicle::check_range("duration", self.duration, 0.0, MAX_DURATION)?;
+        let n = self.agents.len();
+        if n > MAX_SCENARIO_AGENTS {
             return Err(ScenarioError::Invalid(format!(
-                "{} agents (at most 100,000)",
-                self.agents.len()
+                "{n} agents (at most {MAX_SCENARIO_AGENTS})"
+            )));
+        }
+        let work = n as u64 * u64::from(self.steps());
+        if work > MAX_AGENT_STEPS {
+            return Err(ScenarioError::Invalid(format!(
+                "{n} agents × {} steps (duration {} s at dt {} s) = {work} agent-steps, more than \
+                 {MAX_AGENT_STEPS}: shorten the duration or use fewer agents",
+                self.steps(),
+                self.duration,
+                self.vehicle.dt
             )));
         }
         for (i, a) in self.agents.iter().enumerate() {
             let st = VehicleState::new(Vec2::new(a.x, a.y), a.theta_deg.to_radians(), a.v, a.omega);
             st.validate(&self.vehicle)
                 .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
-            for g in &a.goals {
-                let spec = g.to_spec();
-                spec.goal
-                    .validate(&self.vehicle)
-                    .and_then(|()| spec.check_halting())
+            if a.goals.len() > MAX_GOALS {
+                return Err(ScenarioError::Invalid(format!(
+                    "agent {i}: {} goals (at most {MAX_GOALS})",
+                    a.goals.len()
+                )));
+            }
+            let specs: Vec<GoalSpec> = a.goals.iter().map(GoalFile::to_spec).collect();
+            for (spec, g) in specs.iter().zip(&a.goals) {
+                spec.validate(&self.vehicle)
                     .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
                 if let GoalMotion::FaceAgent { agent, .. } = g.motion {
                     if agent >= self.agents.len() || agent == i {
@@ -229,6 +301,14 @@ impl Scenario {
                     }
                 }
             }
+            precision::check_agent(&self.vehicle, st.pos, &specs, Some(self.duration)).map_err(
+                |e| {
+                    ScenarioError::Invalid(format!(
+                        "agent {i}: {e} (f32 positions resolve a quarter of one step, slowest goal \
+                         speed × dt, only within that range: move the scene nearer the origin)"
+                    ))
+                },
+            )?;
         }
         Ok(())
     }

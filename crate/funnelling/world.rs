@@ -127,6 +127,7 @@ impl World {
         for g in &goals {
             g.validate(&self.params)?;
         }
+        crate::funnelling::precision::check_agent(&self.params, state.pos, &goals, None)?;
         let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
         let internals = if goals.is_empty() {
             Internals {

@@ -9,8 +9,14 @@
 use glam::Vec2;
 
 use crate::funnel::{FunnelMemory, Goal};
+use crate::funnelling::precision;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::world::{Agent, GoalMotion, GoalSpec, SwitchRule, World};
+
+/// Fastest a goal may move by itself, m/s: each component of a linear
+/// velocity, and the tangential speed `radius·|ω|` of a circling goal
+/// (issue 16: a circle of 1e6 m at 100 rad/s moved its goal at 1e8 m/s).
+pub const MAX_GOAL_MOTION_SPEED: f32 = 100.0;
 
 /// Agents a world may hold (the page's performance runs go to 100,000).
 pub const MAX_AGENTS: usize = 100_001;
@@ -72,8 +78,9 @@ impl GoalSpec {
         self.check_halting()?;
         match self.motion {
             GoalMotion::Linear { velocity } => {
-                check_range("motion.velocity.x", velocity.x, -100.0, 100.0)?;
-                check_range("motion.velocity.y", velocity.y, -100.0, 100.0)
+                let m = MAX_GOAL_MOTION_SPEED;
+                check_range("motion.velocity.x", velocity.x, -m, m)?;
+                check_range("motion.velocity.y", velocity.y, -m, m)
             }
             GoalMotion::Circle {
                 center,
@@ -81,7 +88,14 @@ impl GoalSpec {
             } => {
                 check_range("motion.center.x", center.x, -1e6, 1e6)?;
                 check_range("motion.center.y", center.y, -1e6, 1e6)?;
-                check_range("motion.angularSpeed", angular_speed, -100.0, 100.0)
+                check_range("motion.angularSpeed", angular_speed, -100.0, 100.0)?;
+                let radius = (self.goal.pos - center).length();
+                check_range(
+                    "motion tangential speed (radius·|angularSpeed|)",
+                    radius * angular_speed.abs(),
+                    0.0,
+                    MAX_GOAL_MOTION_SPEED,
+                )
             }
             GoalMotion::FaceAgent { distance, .. } => {
                 check_range("motion.distance", distance, 0.0, 1e3)
@@ -148,6 +162,7 @@ impl World {
         let s = VehicleState::new(pos, crate::angle::wrap(theta), 0.0, 0.0);
         self.agent(i)?;
         s.validate(&self.params)?;
+        precision::check_agent(&self.params, pos, &self.agents[i].goals, None)?;
         self.agents[i].state = s;
         self.restart(i);
         Ok(())
@@ -162,6 +177,7 @@ impl World {
         for g in &goals {
             g.validate(&self.params)?;
         }
+        precision::check_agent(&self.params, self.agents[i].state.pos, &goals, None)?;
         self.agents[i].goals = goals;
         self.restart(i);
         Ok(())
@@ -171,11 +187,11 @@ impl World {
     /// square of half-side `extent` centred on the origin, each with a
     /// queue of [`RANDOM_GOALS`] random oriented goals in the same square
     /// (D_tol 0.3 m, ε_tol 10°, switched on entering the tolerance) at
-    /// desired speed `speed` clamped to [0.1, v_max]. Seeded PCG32: the same
+    /// desired speed `speed` clamped to [min(0.1, v_max), v_max]. Seeded PCG32: the same
     /// seed gives the same crowd natively and in the browser.
     ///
     /// # Errors
-    /// `extent` outside [0.001, 1e5] or not finite, or more than
+    /// `extent` outside [0.001, 1e5] or not finite, `speed` not finite, or more than
     /// [`MAX_AGENTS`] agents in all; nothing is added then.
     pub fn spawn_random(
         &mut self,
@@ -186,8 +202,12 @@ impl World {
     ) -> Result<(), EditError> {
         use core::f32::consts::PI;
         crate::vehicle::check_range("extent", extent, 1e-3, 1e5)?;
+        crate::vehicle::check_range("speed", speed, f32::MIN, f32::MAX)?;
         self.check_room(n)?;
-        let speed = speed.clamp(0.1, self.params.v_max);
+        // Not `clamp(0.1, v_max)`: that panics when v_max < 0.1 (issue 16:
+        // `#vmax=0.05` left an empty playground).
+        let v_max = self.params.v_max;
+        let speed = speed.min(v_max).max(0.1f32.min(v_max));
         let mut rng = crate::rng::Rng::new(seed);
         let point = |rng: &mut crate::rng::Rng| {
             Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
