@@ -29,6 +29,18 @@ pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_owned()
 }
 
+/// The core's validation ranges, one per user-settable field
+/// ([`crate::funnelling::ranges::ALL`]): the page derives its URL decoder,
+/// sliders and number inputs from them, so it accepts exactly what the
+/// core accepts.
+///
+/// # Errors
+/// Never in practice (plain numbers and strings).
+#[wasm_bindgen(unchecked_return_type = "FieldRange[]")]
+pub fn ranges() -> Result<JsValue, JsError> {
+    to_js(&crate::funnelling::ranges::ALL.as_slice())
+}
+
 /// `n` uniform samples in `[0, 1)` from the shared PCG32 generator, seeded:
 /// the same seed gives the same numbers natively and in the browser.
 #[wasm_bindgen(js_name = randomSamples)]
@@ -281,6 +293,16 @@ impl Lab {
             .set_goals(i as usize, vec![g.to_spec()])
             .map_err(|e| js_err("goal", e))?;
         self.use_controller(g.relaxed)
+    }
+
+    /// Refuses `n` more agents when they would not fit (the core's
+    /// `World::check_room`), without adding any: what `spawnRandom` checks
+    /// first, for a caller that wants the answer before the work.
+    #[wasm_bindgen(js_name = checkRoom)]
+    pub fn check_room(&self, n: u32) -> Result<(), JsError> {
+        self.world
+            .check_room(n as usize)
+            .map_err(|e| js_err("random agents", e))
     }
 
     /// Adds `n` funnelling agents for performance runs (see

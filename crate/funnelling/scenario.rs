@@ -203,11 +203,15 @@ impl Scenario {
         self.vehicle.validate()?;
         self.funnel.validate()?;
         self.relaxed.validate()?;
-        crate::vehicle::check_range("duration", self.duration, 0.0, 3600.0)?;
-        if self.agents.len() > 100_000 {
+        let ranges = &crate::funnelling::ranges::AGENTS;
+        crate::funnelling::ranges::DURATION
+            .check(self.duration)
+            .map_err(ParamError::Range)?;
+        if self.agents.len() as f64 > ranges.max {
             return Err(ScenarioError::Invalid(format!(
-                "{} agents (at most 100,000)",
-                self.agents.len()
+                "{} agents (at most {})",
+                self.agents.len(),
+                ranges.max
             )));
         }
         for (i, a) in self.agents.iter().enumerate() {
