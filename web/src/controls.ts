@@ -5,6 +5,19 @@
 // `parse` (the core's range), and a refused one is reported under the row
 // while the previous value stays.
 
+const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+const INTEGER = /^[+-]?\d+$/;
+
+/** A decimal number as a person types it ("1.5", "-2", "1e3"), else null:
+ *  no hexadecimal, no "Infinity", no empty text; an integer field takes
+ *  digits only ("0x10" and "16.0" are refused). */
+export function parseDecimal(text: string, integer: boolean): number | null {
+  const t = text.trim();
+  if (!(integer ? INTEGER : DECIMAL).test(t)) return null;
+  const v = Number(t);
+  return Number.isFinite(v) ? v : null;
+}
+
 export interface SliderSpec {
   id: string;
   label: string;

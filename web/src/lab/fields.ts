@@ -3,7 +3,10 @@
 // all check a value here, so the page accepts exactly what the core accepts
 // (issue 16). Pure: no wasm at run time, so the Node fuzz test runs it as is.
 
+import { parseDecimal } from "../controls";
 import type { FieldRange } from "../wasm";
+
+export { parseDecimal };
 import type { LabState, Limits } from "./state";
 
 const DEG = Math.PI / 180;
@@ -114,19 +117,6 @@ export function bounds(f: LabField, ranges: RangeTable, s: LabState, d: LimitDef
     }
   }
   return { min, max, integer: r.integer, by };
-}
-
-const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
-const INTEGER = /^[+-]?\d+$/;
-
-/** A decimal number as a person types it ("1.5", "-2", "1e3"), else null:
- *  no hexadecimal, no "Infinity", no empty text; an integer field takes
- *  digits only ("0x10" and "16.0" are refused). */
-export function parseDecimal(text: string, integer: boolean): number | null {
-  const t = text.trim();
-  if (!(integer ? INTEGER : DECIMAL).test(t)) return null;
-  const v = Number(t);
-  return Number.isFinite(v) ? v : null;
 }
 
 /** A number for a message: at most 4 decimals, no trailing zeros. */

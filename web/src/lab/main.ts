@@ -40,7 +40,9 @@ async function start(): Promise<void> {
   const decoded = decodeState(location.hash, presetNames(), table, lab.params());
   const st = decoded.state;
   hook.problems = decoded.problems;
-  if (decoded.problems.length > 0) showMessages("Some of the link's state was ignored:", decoded.problems, "warn");
+  const title = "Some of the link's state was ignored:";
+  if (decoded.problems.length > 0) showMessages(title, decoded.problems, "warn");
+  const shown = currentMessage();
 
   const canvas = $<HTMLCanvasElement>("lab");
   const view = new View();
@@ -82,7 +84,7 @@ async function start(): Promise<void> {
   if (decoded.problems.length > 0) {
     // The build may have warned too (a vehicle limit the table was not built for): both stay.
     const other = currentMessage();
-    showMessages("Some of the link's state was ignored:", other ? [...decoded.problems, other] : decoded.problems, "warn");
+    showMessages(title, other !== null && other !== shown ? [...decoded.problems, other] : decoded.problems, "warn");
     sim.url.writeNow();
   }
   transport.setPaused(false);
