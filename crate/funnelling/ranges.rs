@@ -122,8 +122,7 @@ pub const ACCEL_MAX: FieldRange = range(
     "maximum forward acceleration",
 );
 /// Maximum angular speed.
-pub const OMEGA_MAX: FieldRange =
-    range("omegaMax", 0.01, 100.0, "rad/s", "maximum angular speed");
+pub const OMEGA_MAX: FieldRange = range("omegaMax", 0.01, 100.0, "rad/s", "maximum angular speed");
 /// Maximum angular acceleration.
 pub const OMEGA_ACCEL_MAX: FieldRange = range(
     "omegaAccelMax",
@@ -166,11 +165,9 @@ pub const GOAL_X: FieldRange = range("goal.pos.x", -WORLD, WORLD, "m", "target x
 /// Target y.
 pub const GOAL_Y: FieldRange = range("goal.pos.y", -WORLD, WORLD, "m", "target y");
 /// Target orientation β.
-pub const GOAL_BETA: FieldRange =
-    range("goal.beta", -TURNS, TURNS, "rad", "target orientation β");
+pub const GOAL_BETA: FieldRange = range("goal.beta", -TURNS, TURNS, "rad", "target orientation β");
 /// Position tolerance `D_tol`.
-pub const GOAL_D_TOL: FieldRange =
-    range("goal.dTol", 0.01, 1e3, "m", "position tolerance D_tol");
+pub const GOAL_D_TOL: FieldRange = range("goal.dTol", 0.01, 1e3, "m", "position tolerance D_tol");
 /// Orientation tolerance `ε_tol`.
 pub const GOAL_EPS_TOL: FieldRange = range(
     "goal.epsTol",
@@ -195,11 +192,21 @@ pub const MOTION_VX: FieldRange =
 pub const MOTION_VY: FieldRange =
     range("motion.velocity.y", -100.0, 100.0, "m/s", "goal velocity y");
 /// Circular motion, centre x.
-pub const MOTION_CX: FieldRange =
-    range("motion.center.x", -WORLD, WORLD, "m", "goal circle centre x");
+pub const MOTION_CX: FieldRange = range(
+    "motion.center.x",
+    -WORLD,
+    WORLD,
+    "m",
+    "goal circle centre x",
+);
 /// Circular motion, centre y.
-pub const MOTION_CY: FieldRange =
-    range("motion.center.y", -WORLD, WORLD, "m", "goal circle centre y");
+pub const MOTION_CY: FieldRange = range(
+    "motion.center.y",
+    -WORLD,
+    WORLD,
+    "m",
+    "goal circle centre y",
+);
 /// Circular motion, angular speed.
 pub const MOTION_ANGULAR_SPEED: FieldRange = range(
     "motion.angularSpeed",
@@ -209,8 +216,13 @@ pub const MOTION_ANGULAR_SPEED: FieldRange = range(
     "goal circle angular speed",
 );
 /// Facing an agent, distance in front of it.
-pub const MOTION_DISTANCE: FieldRange =
-    range("motion.distance", 0.0, 1e3, "m", "distance in front of the followed agent");
+pub const MOTION_DISTANCE: FieldRange = range(
+    "motion.distance",
+    0.0,
+    1e3,
+    "m",
+    "distance in front of the followed agent",
+);
 
 // Funnel settings (`FunnelConfig`, paper 000 Fig. 4–5).
 /// Seek threshold (fraction of ε_tol).
@@ -224,8 +236,13 @@ pub const SEEK_THRESHOLD: FieldRange = range(
 /// Gain k of μ = −k·Δη.
 pub const FUNNEL_GAIN: FieldRange = range("funnel.gain", 0.0, 100.0, "", "μ gain k");
 /// Gain of the scaled literal μ bound.
-pub const BOUND_GAIN: FieldRange =
-    range("funnel.bound.gain", 0.0, 100.0, "", "scaled literal bound gain");
+pub const BOUND_GAIN: FieldRange = range(
+    "funnel.bound.gain",
+    0.0,
+    100.0,
+    "",
+    "scaled literal bound gain",
+);
 /// Factor of the turning-radius μ bound.
 pub const BOUND_FACTOR: FieldRange = range(
     "funnel.bound.factor",
@@ -254,11 +271,25 @@ pub const DURATION: FieldRange = range("duration", 0.0, 3600.0, "s", "simulated 
 /// Agents in a scenario, or random agents added to the lab's playground.
 pub const AGENTS: FieldRange = integer(range("agents", 0.0, 100_000.0, "", "number of agents"));
 /// Seed of the lab's random agents (a u32 at the boundary).
-pub const SEED: FieldRange =
-    integer(range("seed", 0.0, 4_294_967_295.0, "", "seed of the random agents"));
+pub const SEED: FieldRange = integer(range(
+    "seed",
+    0.0,
+    4_294_967_295.0,
+    "",
+    "seed of the random agents",
+));
 /// Half-side of the square the random agents start in.
-pub const EXTENT: FieldRange =
-    range("extent", 1e-3, 1e5, "m", "half-side of the random agents' square");
+pub const EXTENT: FieldRange = range(
+    "extent",
+    1e-3,
+    1e5,
+    "m",
+    "half-side of the random agents' square",
+);
+
+// Every vehicle has goals: the smallest desired speed fits the slowest
+// vehicle, the largest the fastest (checked when compiling).
+const _: () = assert!(GOAL_SPEED.min <= V_MAX.min && GOAL_SPEED.max >= V_MAX.max);
 
 /// Every range, in the order above (exported to the page as `ranges()`).
 pub const ALL: [FieldRange; 35] = [
@@ -312,7 +343,10 @@ mod tests {
     #[test]
     fn keys_are_unique_and_ranges_finite_and_ordered() {
         for (i, r) in ALL.iter().enumerate() {
-            assert!(r.min.is_finite() && r.max.is_finite() && r.min < r.max, "{r:?}");
+            assert!(
+                r.min.is_finite() && r.max.is_finite() && r.min < r.max,
+                "{r:?}"
+            );
             assert!(!r.integer || (r.min.fract() == 0.0 && r.max.fract() == 0.0));
             if let Some(f) = r.at_most {
                 assert!(find(f).is_some(), "{} is bounded by unknown {f}", r.key);
@@ -321,12 +355,6 @@ mod tests {
                 assert_ne!(q.key, r.key, "duplicate key");
             }
         }
-    }
-
-    #[test]
-    fn the_smallest_desired_speed_fits_the_slowest_vehicle() {
-        assert!(GOAL_SPEED.min <= V_MAX.min);
-        assert!(GOAL_SPEED.max >= V_MAX.max);
     }
 
     #[test]

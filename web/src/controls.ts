@@ -79,6 +79,7 @@ export function slider(parent: HTMLElement, s: SliderSpec): Control {
   const { parse } = s;
   if (parse) {
     // A number box: the exact value, typed or shown.
+    row.classList.add("numeric");
     tail = document.createElement("span");
     tail.className = "numbox";
     const box = document.createElement("input");
