@@ -7,7 +7,9 @@
 //! - typed: configuration objects cross via serde-wasm-bindgen and carry real
 //!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`,
 //!   both in [`lab_types`](super::lab_types));
-//! - bulk per-agent state crosses as `Float32Array` (one copy per call).
+//! - bulk per-agent state crosses as `Float32Array` (one copy per call);
+//! - the core's validation ranges cross too (`ranges()`), so the page
+//!   checks what the core checks.
 
 use glam::Vec2;
 use wasm_bindgen::prelude::*;
