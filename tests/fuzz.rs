@@ -316,7 +316,7 @@ proptest! {
             w.write_state(&mut before);
             let r = if goals {
                 let g = GoalSpec {
-                    goal: Goal { pos: glam::Vec2::new(x, y), beta: a, d_tol: b, eps_tol: 0.1, speed: c, halting: false },
+                    goal: Goal { pos: glam::Vec2::new(x, y), beta: a, d_tol: b, eps_tol: 0.1, speed: c, halting: false, vel: glam::Vec2::ZERO },
                     motion: if c > 1.0 { GoalMotion::Circle { center: glam::Vec2::ZERO, angular_speed: a } } else { GoalMotion::Static },
                     switch: SwitchRule::Tolerance,
                 };

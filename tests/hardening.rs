@@ -27,6 +27,7 @@ fn goal(pos: Vec2, speed: f32, halting: bool, d_tol: f32) -> GoalSpec {
             eps_tol: 5f32.to_radians(),
             speed,
             halting,
+            vel: Vec2::ZERO,
         },
         motion: GoalMotion::Static,
         switch: SwitchRule::EndOfSteering,

@@ -150,7 +150,7 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
     });
     assert!(settled, "Orientation_only or done within 20 s");
     // Many agents.
-    lab.spawn_random(500, 3, 20.0, 1.3)
+    lab.spawn_random(500.0, 3.0, 20.0, 1.3)
         .map_err(message)
         .unwrap();
     assert_eq!(lab.count(), 501);
@@ -175,7 +175,7 @@ fn bad_inputs_are_errors_not_panics() {
     js_sys::Reflect::set(&params, &"vMax".into(), &(-1.0).into()).unwrap();
     let m = message(lab.set_params(params).err().unwrap());
     assert!(m.contains("vMax"), "{m}");
-    let m = message(lab.spawn_random(1, 1, f32::NAN, 1.0).err().unwrap());
+    let m = message(lab.spawn_random(1.0, 1.0, f32::NAN, 1.0).err().unwrap());
     assert!(m.contains("extent"), "{m}");
 }
 

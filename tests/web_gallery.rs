@@ -202,3 +202,34 @@ fn bad_wander_input_is_a_js_error_with_a_message() {
     assert!(message(e).starts_with("wander configuration"));
     assert!(WanderLab::parse_preset("[]").is_err());
 }
+
+/// The wander page's JSON box goes to `fromJson` (issue 16): the native
+/// parser's rules hold in the browser, a duplicate key is refused as in the
+/// files, and a 5,000-deep nesting is a message, not a stack overflow
+/// (the page also refuses more than 32 levels before parsing).
+#[wasm_bindgen_test]
+fn the_json_box_refuses_duplicate_keys_and_deep_nesting() {
+    let ok = r#"{"seed": 3, "control": {"mode": "velocity", "max_velocity_deg": 10}, "source": {"kind": "random", "distribution": {"kind": "uniform"}}}"#;
+    let lab = WanderLab::from_json(ok).map_err(message).unwrap();
+    assert!(lab.config().is_ok());
+    let dup = ok.replacen(r#""seed": 3,"#, r#""seed": 3, "seed": 4,"#, 1);
+    let m = message(WanderLab::from_json(&dup).err().unwrap());
+    assert!(m.contains("duplicate field `seed`"), "{m}");
+    let dup = ok.replacen(
+        r#""mode": "velocity","#,
+        r#""mode": "velocity", "mode": "velocity","#,
+        1,
+    );
+    let m = message(WanderLab::from_json(&dup).err().unwrap());
+    assert!(m.contains("duplicate field `mode`"), "{m}");
+    // serde_json refuses the wrong type at the first bracket (and stops at
+    // 128 levels where a type could nest): a message either way.
+    for deep in [
+        format!("{}{}", "[".repeat(5000), "]".repeat(5000)),
+        format!(r#"{{"seed": {}{}}}"#, "[".repeat(5000), "]".repeat(5000)),
+    ] {
+        let m = message(WanderLab::from_json(&deep).err().unwrap());
+        assert!(m.starts_with("wander configuration: "), "{m}");
+        assert!(m.contains("invalid type: sequence"), "{m}");
+    }
+}

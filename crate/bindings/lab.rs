@@ -7,7 +7,9 @@
 //! - typed: configuration objects cross via serde-wasm-bindgen and carry real
 //!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`,
 //!   both in [`lab_types`](super::lab_types));
-//! - bulk per-agent state crosses as `Float32Array` (one copy per call).
+//! - bulk per-agent state crosses as `Float32Array` (one copy per call);
+//! - the core's validation ranges cross too (`ranges()`), so the page
+//!   checks what the core checks.
 
 use glam::Vec2;
 use wasm_bindgen::prelude::*;
@@ -27,6 +29,34 @@ use crate::world::{World, STATE_STRIDE};
 #[must_use]
 pub fn version() -> String {
     env!("CARGO_PKG_VERSION").to_owned()
+}
+
+/// The core's validation ranges, one per user-settable field
+/// ([`crate::funnelling::ranges::ALL`]): the page derives its URL decoder,
+/// sliders and number inputs from them, so it accepts exactly what the
+/// core accepts.
+///
+/// # Errors
+/// Never in practice (plain numbers and strings).
+#[wasm_bindgen(unchecked_return_type = "FieldRange[]")]
+pub fn ranges() -> Result<JsValue, JsError> {
+    to_js(&crate::funnelling::ranges::ALL.as_slice())
+}
+
+/// A JavaScript number that must be a whole number in `r` (compared in
+/// f64: f32 cannot tell 2³² from 2³² − 1).
+fn whole(r: &crate::funnelling::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
+    if v.is_finite() && v.fract() == 0.0 && v >= r.min && v <= r.max {
+        Ok(v as u64)
+    } else {
+        Err(js_err(
+            "random agents",
+            format!(
+                "{} = {v} is not a whole number in [{}, {}]",
+                r.key, r.min, r.max
+            ),
+        ))
+    }
 }
 
 /// `n` uniform samples in `[0, 1)` from the shared PCG32 generator, seeded:
@@ -283,19 +313,35 @@ impl Lab {
         self.use_controller(g.relaxed)
     }
 
+    /// Refuses `n` more agents when they would not fit (the core's
+    /// `World::check_room`), without adding any: what `spawnRandom` checks
+    /// first, for a caller that wants the answer before the work.
+    #[wasm_bindgen(js_name = checkRoom)]
+    pub fn check_room(&self, n: f64) -> Result<(), JsError> {
+        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
+        self.world
+            .check_room(n as usize)
+            .map_err(|e| js_err("random agents", e))
+    }
+
     /// Adds `n` funnelling agents for performance runs (see
     /// `World::spawn_random`: random poses and 16 random goals each in a
     /// square of half-side `extent`, seeded).
+    /// `n` and `seed` are JavaScript numbers checked here against the
+    /// core's ranges (`agents`, `seed`): a `u32` would wrap 2³² to 0 and
+    /// −1 to 4,294,967,295 without a word.
     #[wasm_bindgen(js_name = spawnRandom)]
     pub fn spawn_random(
         &mut self,
-        n: u32,
-        seed: u32,
+        n: f64,
+        seed: f64,
         extent: f32,
         speed: f32,
     ) -> Result<(), JsError> {
+        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
+        let seed = whole(&crate::funnelling::ranges::SEED, seed)?;
         self.world
-            .spawn_random(n as usize, u64::from(seed), extent, speed)
+            .spawn_random(n as usize, seed, extent, speed)
             .map_err(|e| js_err("random agents", e))
     }
 

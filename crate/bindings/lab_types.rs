@@ -13,6 +13,20 @@ use crate::world::{GoalMotion, GoalSpec, SwitchRule};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &'static str = r#"
+/** One user-settable field's accepted range (crate::funnelling::ranges): the
+ *  key as errors name it (`vMax`, `goal.dTol`, `funnel.gain`), the closed
+ *  interval [min, max] in SI units and radians, whole numbers only when
+ *  `integer`, and `atMost`: a field whose current value also bounds this one
+ *  (its magnitude, for a range symmetric about 0), e.g. goal.speed ≤ vMax. */
+export interface FieldRange {
+  key: string;
+  min: number;
+  max: number;
+  unit: string;
+  integer: boolean;
+  atMost: string | null;
+  what: string;
+}
 /** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
 export interface VehicleParams {
   dt: number;

@@ -107,30 +107,20 @@ impl Default for Goal {
     }
 }
 
-/// Slowest desired speed a goal may ask for, m/s (issue 16: a goal speed of
-/// 0 gave an agent that never moves, with no message). Equal to the
-/// smallest `vMax`; 20 m at this speed take about 35 minutes, and it sets
-/// the tightest coordinate range ([`crate::funnelling::precision`]).
-pub const MIN_GOAL_SPEED: f32 = 0.01;
-
 impl Goal {
-    /// Rejects non-finite or out-of-range goals.
+    /// Rejects non-finite or out-of-range goals ([`crate::funnelling::ranges`]),
+    /// a desired speed of 0 included (the agent would never move).
     ///
     /// # Errors
     /// The offending field.
     pub fn validate(&self, p: &VehicleParams) -> Result<(), crate::vehicle::ParamError> {
-        use crate::vehicle::check_range;
-        check_range("goal.pos.x", self.pos.x, -1e6, 1e6)?;
-        check_range("goal.pos.y", self.pos.y, -1e6, 1e6)?;
-        check_range("goal.beta", self.beta, -1e3, 1e3)?;
-        check_range("goal.dTol", self.d_tol, 0.01, 1e3)?;
-        check_range("goal.epsTol", self.eps_tol, 1e-3, core::f32::consts::PI)?;
-        check_range(
-            "goal.speed",
-            self.speed,
-            MIN_GOAL_SPEED.min(p.v_max),
-            p.v_max,
-        )?;
+        use crate::funnelling::ranges as r;
+        r::GOAL_X.check(self.pos.x)?;
+        r::GOAL_Y.check(self.pos.y)?;
+        r::GOAL_BETA.check(self.beta)?;
+        r::GOAL_D_TOL.check(self.d_tol)?;
+        r::GOAL_EPS_TOL.check(self.eps_tol)?;
+        r::GOAL_SPEED.check_at_most(self.speed, p.v_max)?;
         Ok(())
     }
 }
@@ -301,16 +291,15 @@ impl FunnelConfig {
     /// # Errors
     /// The offending field.
     pub fn validate(&self) -> Result<(), crate::vehicle::ParamError> {
-        use crate::vehicle::check_range;
-        check_range("funnel.seekThreshold", self.seek_threshold, 0.0, 1.0)?;
-        check_range("funnel.gain", self.gain, 0.0, 100.0)?;
+        use crate::funnelling::ranges as r;
+        r::SEEK_THRESHOLD.check(self.seek_threshold)?;
+        r::FUNNEL_GAIN.check(self.gain)?;
         match self.bound {
-            MuBound::ScaledLiteral { gain } => check_range("funnel.bound.gain", gain, 0.0, 100.0),
-            MuBound::TurningRadius { factor } => {
-                check_range("funnel.bound.factor", factor, 0.0, 1000.0)
-            }
-            MuBound::Literal | MuBound::Constant => Ok(()),
+            MuBound::ScaledLiteral { gain } => r::BOUND_GAIN.check(gain)?,
+            MuBound::TurningRadius { factor } => r::BOUND_FACTOR.check(factor)?,
+            MuBound::Literal | MuBound::Constant => {}
         }
+        Ok(())
     }
 
     /// The modulation `μ = −gain·Δη`, bounded by `±mu_max` (paper 000

@@ -13,6 +13,7 @@
 //! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`world_edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`ranges`] | — | one table of validation ranges (key, min, max, unit, integer, cross-field bound) that the checks below and the page use |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
 //! | [`precision`] | — | the coordinate range where f32 resolves a quarter of one step (slowest goal speed × dt), measured; checked on every agent and goal |
 //! | [`envelope`] | 000 §4–6, 001 §4 | seeded study over the whole operating envelope: tolerances × speed × distance, static, moving and chained goals, both controllers |
@@ -25,6 +26,7 @@ pub mod envelope;
 pub mod funnel;
 pub mod goals;
 pub mod precision;
+pub mod ranges;
 pub mod region_study;
 pub mod relaxed;
 pub mod scenario;

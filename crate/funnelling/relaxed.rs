@@ -356,14 +356,10 @@ impl RelaxedConfig {
     /// # Errors
     /// The offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        use crate::vehicle::check_range;
-        check_range("relaxed.diskMargin", self.disk_margin, 0.05, 1.0)?;
-        check_range(
-            "relaxed.orientationMargin",
-            self.orientation_margin,
-            0.05,
-            1.0,
-        )
+        use crate::funnelling::ranges as r;
+        r::DISK_MARGIN.check(self.disk_margin)?;
+        r::ORIENTATION_MARGIN.check(self.orientation_margin)?;
+        Ok(())
     }
 
     /// Chooses the mode and seek command for one step (no motion).

@@ -136,11 +136,11 @@ fn default_speed() -> f32 {
     1.3
 }
 
-/// Longest scenario, s.
-pub const MAX_DURATION: f32 = 3600.0;
+/// Longest scenario, s ([`crate::funnelling::ranges::DURATION`]).
+pub const MAX_DURATION: f32 = crate::funnelling::ranges::DURATION.max as f32;
 
-/// Most agents in a scenario.
-pub const MAX_SCENARIO_AGENTS: usize = 100_000;
+/// Most agents in a scenario ([`crate::funnelling::ranges::AGENTS`]).
+pub const MAX_SCENARIO_AGENTS: usize = crate::funnelling::ranges::AGENTS.max as usize;
 
 /// Most goals queued per agent in a scenario.
 pub const MAX_GOALS: usize = 10_000;
@@ -262,7 +262,9 @@ impl Scenario {
         self.vehicle.validate()?;
         self.funnel.validate()?;
         self.relaxed.validate()?;
-        crate::vehicle::check_range("duration", self.duration, 0.0, MAX_DURATION)?;
+        crate::funnelling::ranges::DURATION
+            .check(self.duration)
+            .map_err(ParamError::Range)?;
         let n = self.agents.len();
         if n > MAX_SCENARIO_AGENTS {
             return Err(ScenarioError::Invalid(format!(

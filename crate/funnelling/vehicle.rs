@@ -133,20 +133,21 @@ pub(crate) fn check_range(
 }
 
 impl VehicleParams {
-    /// Rejects NaN and out-of-range values (every range excludes 0) with a
-    /// typed error.
+    /// Rejects NaN and out-of-range values (every range excludes 0; the
+    /// ranges are [`crate::funnelling::ranges`]'s) with a typed error.
     ///
     /// # Errors
     /// The first offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        check_range("dt", self.dt, 1e-4, 0.1)?;
-        check_range("vMax", self.v_max, 0.01, 100.0)?;
-        check_range("accelMax", self.accel_max, 0.01, 1000.0)?;
-        check_range("omegaMax", self.omega_max, 0.01, 100.0)?;
-        check_range("omegaAccelMax", self.omega_accel_max, 0.01, 10_000.0)?;
-        check_range("normalAccelMax", self.normal_accel_max, 0.01, 1000.0)?;
-        check_range("kp", self.kp, 0.01, 10_000.0)?;
-        check_range("kd", self.kd, 0.01, 10_000.0)?;
+        use crate::funnelling::ranges as r;
+        r::DT.check(self.dt)?;
+        r::V_MAX.check(self.v_max)?;
+        r::ACCEL_MAX.check(self.accel_max)?;
+        r::OMEGA_MAX.check(self.omega_max)?;
+        r::OMEGA_ACCEL_MAX.check(self.omega_accel_max)?;
+        r::NORMAL_ACCEL_MAX.check(self.normal_accel_max)?;
+        r::KP.check(self.kp)?;
+        r::KD.check(self.kd)?;
         Ok(())
     }
 
@@ -271,11 +272,12 @@ impl VehicleState {
     /// # Errors
     /// A [`ParamError`] naming the offending field.
     pub fn validate(&self, p: &VehicleParams) -> Result<(), ParamError> {
-        check_range("pos.x", self.pos.x, -1e6, 1e6)?;
-        check_range("pos.y", self.pos.y, -1e6, 1e6)?;
-        check_range("theta", self.theta, -1e3, 1e3)?;
-        check_range("v", self.v, 0.0, p.v_max)?;
-        check_range("omega", self.omega, -p.omega_max, p.omega_max)?;
+        use crate::funnelling::ranges as r;
+        r::POS_X.check(self.pos.x)?;
+        r::POS_Y.check(self.pos.y)?;
+        r::THETA.check(self.theta)?;
+        r::V.check_at_most(self.v, p.v_max)?;
+        r::OMEGA.check_at_most(self.omega, p.omega_max)?;
         let lim = p.omega_limit(self.v);
         check_range(
             "omega (normal acceleration |v·ω| ≤ A)",

@@ -14,12 +14,15 @@ use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::world::{Agent, GoalMotion, GoalSpec, SwitchRule, World};
 
 /// Fastest a goal may move by itself, m/s: each component of a linear
-/// velocity, and the tangential speed `radius·|ω|` of a circling goal
-/// (issue 16: a circle of 1e6 m at 100 rad/s moved its goal at 1e8 m/s).
-pub const MAX_GOAL_MOTION_SPEED: f32 = 100.0;
+/// velocity ([`crate::funnelling::ranges::MOTION_VX`]), and the tangential
+/// speed `radius·|ω|` of a circling goal (issue 16: a circle of 1e6 m at
+/// 100 rad/s moved its goal at 1e8 m/s).
+pub const MAX_GOAL_MOTION_SPEED: f32 = crate::funnelling::ranges::MOTION_VX.max as f32;
 
-/// Agents a world may hold (the page's performance runs go to 100,000).
-pub const MAX_AGENTS: usize = 100_001;
+/// Agents a world may hold: the lab's playground agent and
+/// [`AGENTS`](crate::funnelling::ranges::AGENTS)' largest count of random
+/// agents (the page's performance runs go to 100,000).
+pub const MAX_AGENTS: usize = crate::funnelling::ranges::AGENTS.max as usize + 1;
 
 /// Goals queued per agent by [`World::spawn_random`] (minutes of funnelling).
 pub const RANDOM_GOALS: usize = 16;
@@ -73,35 +76,33 @@ impl GoalSpec {
     /// # Errors
     /// The first value out of range (NaN included), named.
     pub fn validate(&self, p: &VehicleParams) -> Result<(), ParamError> {
-        use crate::vehicle::check_range;
+        use crate::funnelling::ranges as r;
         self.goal.validate(p)?;
         self.check_halting()?;
         match self.motion {
             GoalMotion::Linear { velocity } => {
-                let m = MAX_GOAL_MOTION_SPEED;
-                check_range("motion.velocity.x", velocity.x, -m, m)?;
-                check_range("motion.velocity.y", velocity.y, -m, m)
+                r::MOTION_VX.check(velocity.x)?;
+                r::MOTION_VY.check(velocity.y)?;
             }
             GoalMotion::Circle {
                 center,
                 angular_speed,
             } => {
-                check_range("motion.center.x", center.x, -1e6, 1e6)?;
-                check_range("motion.center.y", center.y, -1e6, 1e6)?;
-                check_range("motion.angularSpeed", angular_speed, -100.0, 100.0)?;
+                r::MOTION_CX.check(center.x)?;
+                r::MOTION_CY.check(center.y)?;
+                r::MOTION_ANGULAR_SPEED.check(angular_speed)?;
                 let radius = (self.goal.pos - center).length();
-                check_range(
+                crate::vehicle::check_range(
                     "motion tangential speed (radius·|angularSpeed|)",
                     radius * angular_speed.abs(),
                     0.0,
                     MAX_GOAL_MOTION_SPEED,
-                )
+                )?;
             }
-            GoalMotion::FaceAgent { distance, .. } => {
-                check_range("motion.distance", distance, 0.0, 1e3)
-            }
-            GoalMotion::Static => Ok(()),
+            GoalMotion::FaceAgent { distance, .. } => r::MOTION_DISTANCE.check(distance)?,
+            GoalMotion::Static => {}
         }
+        Ok(())
     }
 }
 
@@ -201,13 +202,14 @@ impl World {
         speed: f32,
     ) -> Result<(), EditError> {
         use core::f32::consts::PI;
-        crate::vehicle::check_range("extent", extent, 1e-3, 1e5)?;
+        crate::funnelling::ranges::EXTENT
+            .check(extent)
+            .map_err(ParamError::Range)?;
         crate::vehicle::check_range("speed", speed, f32::MIN, f32::MAX)?;
         self.check_room(n)?;
-        // Not `clamp(0.1, v_max)`: that panics when v_max < 0.1 (issue 16:
-        // `#vmax=0.05` left an empty playground).
-        let v_max = self.params.v_max;
-        let speed = speed.min(v_max).max(0.1f32.min(v_max));
+        // At least 0.1 m/s, unless the vehicle is slower: `clamp` panics
+        // when its lower end is above the upper (v_max 0.05 did, in wasm).
+        let speed = speed.clamp(0.1f32.min(self.params.v_max), self.params.v_max);
         let mut rng = crate::rng::Rng::new(seed);
         let point = |rng: &mut crate::rng::Rng| {
             Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
@@ -233,5 +235,23 @@ impl World {
             self.add_agent(state, goals)?;
         }
         Ok(())
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+    use crate::funnel::FunnelConfig;
+
+    #[test]
+    fn random_agents_of_a_vehicle_slower_than_a_tenth_of_a_metre_per_second() {
+        let p = VehicleParams {
+            v_max: 0.05,
+            ..Default::default()
+        };
+        let mut w = World::new(p, FunnelConfig::default()).unwrap();
+        w.spawn_random(3, 7, 10.0, 1.3).unwrap();
+        assert_eq!(w.agents.len(), 3);
+        assert!(w.agents[0].goals.iter().all(|g| g.goal.speed == 0.05));
     }
 }

@@ -1,6 +1,22 @@
 // Sliders with units, selects, checkboxes and buttons, built into a panel element.
 // Each control writes through a callback; `set` updates it from outside
 // (a drag on the canvas, a preset, the URL) without firing the callback.
+// A slider given `parse` also has a number box: a typed value is checked by
+// `parse` (the core's range), and a refused one is reported under the row
+// while the previous value stays.
+
+const DECIMAL = /^[+-]?(\d+\.?\d*|\.\d+)([eE][+-]?\d+)?$/;
+const INTEGER = /^[+-]?\d+$/;
+
+/** A decimal number as a person types it ("1.5", "-2", "1e3"), else null:
+ *  no hexadecimal, no "Infinity", no empty text; an integer field takes
+ *  digits only ("0x10" and "16.0" are refused). */
+export function parseDecimal(text: string, integer: boolean): number | null {
+  const t = text.trim();
+  if (!(integer ? INTEGER : DECIMAL).test(t)) return null;
+  const v = Number(t);
+  return Number.isFinite(v) ? v : null;
+}
 
 export interface SliderSpec {
   id: string;
@@ -14,11 +30,18 @@ export interface SliderSpec {
   display?: number;
   digits?: number;
   onInput(v: number): void;
+  /** Checks a typed value (shown units): the value, or why it is refused.
+   *  With it, the row has a number box instead of a read-only output. */
+  parse?(text: string): { value: number } | { error: string };
 }
 
 export interface Control {
   set(v: number): void;
   el: HTMLElement;
+  /** Moves the slider's ends (e.g. the desired speed's maximum follows the max speed). */
+  setRange(min: number, max: number): void;
+  /** Shows `text` under the row (null hides it). */
+  note(text: string | null): void;
 }
 
 /** A `<label>` row of class `className` that starts with the control's name. */
@@ -41,24 +64,73 @@ export function slider(parent: HTMLElement, s: SliderSpec): Control {
   input.min = String(s.min * k);
   input.max = String(s.max * k);
   input.step = String(s.step * k);
-  const out = document.createElement("output");
-  out.htmlFor.add(s.id);
-  const show = (v: number): void => {
-    out.textContent = `${(v * k).toFixed(s.digits ?? 2)} ${s.unit}`;
+  const msg = document.createElement("div");
+  msg.className = "field-msg";
+  msg.id = `${s.id}-msg`;
+  msg.setAttribute("role", "alert");
+  msg.hidden = true;
+  const note = (text: string | null): void => {
+    msg.hidden = text === null;
+    msg.textContent = text ?? "";
   };
+  let current = s.value;
+  let show: (v: number) => void;
+  let tail: HTMLElement;
+  const { parse } = s;
+  if (parse) {
+    // A number box: the exact value, typed or shown.
+    row.classList.add("numeric");
+    tail = document.createElement("span");
+    tail.className = "numbox";
+    const box = document.createElement("input");
+    box.type = "text";
+    box.inputMode = "decimal";
+    box.id = `${s.id}-num`;
+    box.setAttribute("aria-label", `${s.label} (${s.unit || "value"})`);
+    tail.append(box, ` ${s.unit}`);
+    show = (v) => {
+      box.value = String(Number((v * k).toFixed(s.digits ?? 2)));
+    };
+    box.addEventListener("change", () => {
+      const r = parse(box.value);
+      if ("error" in r) {
+        note(`${r.error}; ${Number((current * k).toFixed(s.digits ?? 2))}${s.unit ? ` ${s.unit}` : ""} kept`);
+        show(current);
+        return;
+      }
+      note(null);
+      set(r.value);
+      s.onInput(r.value);
+    });
+  } else {
+    const out = document.createElement("output");
+    out.htmlFor.add(s.id);
+    tail = out;
+    show = (v) => {
+      out.textContent = `${(v * k).toFixed(s.digits ?? 2)} ${s.unit}`;
+    };
+  }
   const set = (v: number): void => {
+    current = v;
     input.value = String(v * k);
     show(v);
   };
   input.addEventListener("input", () => {
     const v = Number(input.value) / k;
+    current = v;
     show(v);
+    note(null);
     s.onInput(v);
   });
+  const setRange = (min: number, max: number): void => {
+    input.min = String(min * k);
+    input.max = String(max * k);
+    input.value = String(current * k);
+  };
   set(s.value);
-  row.append(input, out);
-  parent.append(row);
-  return { set, el: row };
+  row.append(input, tail);
+  parent.append(row, msg);
+  return { set, el: row, setRange, note };
 }
 
 export interface SelectSpec<T extends string> {

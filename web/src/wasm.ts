@@ -3,13 +3,14 @@
 
 import init, { Lab, version } from "../pkg/steering.js";
 
-export { CrowdLab, Lab, Mode, StateField, WanderLab } from "../pkg/steering.js";
+export { CrowdLab, Lab, Mode, StateField, WanderLab, ranges } from "../pkg/steering.js";
 export type {
   AgentConfig,
   CrowdConfig,
   CrowdMetrics,
   CrowdPathConfig,
   CrowdSeek,
+  FieldRange,
   FunnelConfig,
   GoalConfig,
   Internals,

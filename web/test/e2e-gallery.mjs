@@ -200,6 +200,30 @@ try {
       console.log(`# 10,000 boids on the page: ${s.fps.toFixed(0)} fps, step ${s.step.toFixed(2)} ms, draw ${s.draw.toFixed(2)} ms per frame`);
       await shot(page, "crowd-10000");
     });
+    await check("crowd: a count above the page's limit is refused with a message; a heavy count asks first", async () => {
+      const n0 = await page.evaluate(() => window.__crowd.count());
+      for (const bad of ["1000000", "0x10", "1e4", "-5", ""]) {
+        await page.fill("#boids", bad);
+        await page.press("#boids", "Enter");
+        const msg = page.locator("#boids-msg");
+        assert.equal(await msg.isVisible(), true, bad);
+        assert.match(await msg.textContent(), /boid count: .* \[0, 200,000\] \(this page's limit\); 10,000 kept/, bad);
+        assert.equal(await page.evaluate(() => window.__crowd.count()), n0, bad);
+        assert.equal(await page.$eval("#boids", (el) => el.value), String(n0));
+      }
+      await shot(page, "crowd-count-refused");
+      await page.fill("#boids", "50000");
+      await page.press("#boids", "Enter");
+      assert.match(await page.locator("#boids-msg").textContent(), /50,000 boids is heavy: above 15,000/);
+      assert.equal(await page.evaluate(() => window.__crowd.count()), n0, "not run before asked");
+      await shot(page, "crowd-count-heavy");
+      await page.click("#boids-confirm");
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 50000);
+      assert.equal(await page.locator("#boids-msg").isHidden(), true);
+      await page.fill("#boids", "10000");
+      await page.press("#boids", "Enter");
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 10000);
+    });
     await check("crowd: a bad edit shows the core's message and changes nothing", async () => {
       await page.fill("#boids", "300");
       await page.press("#boids", "Enter");
@@ -319,6 +343,21 @@ try {
       await tile.locator("details button").click();
       const err = await tile.locator(".err").textContent();
       assert.match(err, /wander configuration/);
+      await ta.fill(text);
+      await tile.locator("details button").click();
+      assert.equal(await tile.locator(".err").textContent(), "");
+    });
+    await check("wander: 5,000-deep JSON and duplicate keys are refused with a message, the tile unchanged", async () => {
+      const tile = page.locator("#panel-timed .tile").first();
+      const ta = tile.locator("textarea");
+      const text = await ta.inputValue();
+      await ta.fill(`${"[".repeat(5000)}${"]".repeat(5000)}`);
+      await tile.locator("details button").click();
+      assert.match(await tile.locator(".err").textContent(), /nested more than 32 levels deep/);
+      await ta.fill(`{"seed": 1, ${text.trim().slice(1)}`);
+      await tile.locator("details button").click();
+      assert.match(await tile.locator(".err").textContent(), /duplicate field `seed`/);
+      await shot(page, "wander-duplicate-key");
       await ta.fill(text);
       await tile.locator("details button").click();
       assert.equal(await tile.locator(".err").textContent(), "");

@@ -314,6 +314,101 @@ try {
     await p4.context.close();
   });
 
+  // ------------------------------------------- values the core would refuse
+  /** Opens `frag`; returns the page, its message, state and a few measures. */
+  const openLink = async (frag, viewport = { width: 1280, height: 800 }) => {
+    const p = await openPage(browser, viewport);
+    await p.page.goto(`${url}${frag}`);
+    assert.equal(await waitReady(p.page), null);
+    await p.page.waitForTimeout(600);
+    const m = await p.page.evaluate(() => {
+      const msg = document.getElementById("message");
+      const c = document.getElementById("lab").getBoundingClientRect();
+      return { hidden: msg.hidden, text: msg.textContent, msgHeight: msg.getBoundingClientRect().height, canvasHeight: c.height, count: window.__lab.count(), st: window.__lab.state(), hash: location.hash, hud: document.getElementById("hud").textContent };
+    });
+    return { ...p, ...m };
+  };
+  const refusedLinks = [
+    ["#vd=50", /vd="50": desired speed v_d: 50 is not a number in \[0\.01, 2\] m\/s \(at most max speed\); default kept/, (st) => st.speed === 1.3],
+    ["#vmax=0.05", /vd: desired speed v_d 1\.3 m\/s set to 0\.05 m\/s: max speed is 0\.05 m\/s/, (st) => st.speed === 0.05 && st.limits.vMax === 0.05],
+    ["#vd=0", /vd="0": desired speed v_d: 0 is not a number in \[0\.01, 2\]/, (st) => st.speed === 1.3],
+    ["#n=0x10", /n="0x10": random agents: "0x10" is not a whole number in \[0, 100000\]/, (st) => st.agents === 0],
+    ["#vmax=0.05&vd=1", /vd="1": desired speed v_d: 1 is not a number in \[0\.01, 0\.05\] m\/s \(at most max speed\)/, (st) => st.speed === 0.05],
+  ];
+  for (const [frag, want, stateOk] of refusedLinks) {
+    await check(`link ${frag}: refused at the field with a message, playground running, URL rewritten`, async () => {
+      const p = await openLink(frag);
+      assert.equal(p.hidden, false, "message shown");
+      assert.match(p.text, want);
+      assert.equal(p.count, 1, "the playground has its agent");
+      assert.ok(stateOk(p.st), JSON.stringify({ speed: p.st.speed, limits: p.st.limits, agents: p.st.agents }));
+      assert.ok(p.canvasHeight > 200, `canvas ${p.canvasHeight} px`);
+      // The address bar holds the state in force: it decodes without a word.
+      const again = await openLink(p.hash);
+      assert.ok(again.hidden || !/ignored/.test(again.text), again.text);
+      assert.equal(again.st.speed, p.st.speed);
+      // The agent moves.
+      const moved = await p.page.evaluate(() => window.__lab.internals().d);
+      assert.ok(Number.isFinite(moved) && moved > 0.3, `D ${moved}`);
+      await again.context.close();
+      allProblems.push(...p.problems, ...again.problems);
+      await p.context.close();
+    });
+  }
+  await check("link #dtol=20: the HUD shows the real distance, not 0 m unreachable", async () => {
+    const p = await openLink("#dtol=20");
+    assert.equal(p.hidden, true, p.text);
+    assert.equal(p.count, 1);
+    await p.page.waitForFunction(() => window.__lab.mode() === 0, null, { timeout: 10000 });
+    const hud = await p.page.locator("#hud").textContent();
+    const d = Number(/D\s+([\d.]+) m/.exec(hud)?.[1]);
+    assert.ok(d > 5 && d < 10, hud);
+    assert.doesNotMatch(hud, /unreachable/);
+    allProblems.push(...p.problems);
+    await p.context.close();
+  });
+  for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+    await check(`10,000 unknown link keys: the message is capped, the canvas keeps its height (${viewport.width}×${viewport.height})`, async () => {
+      const keys = Array.from({ length: 10000 }, (_, i) => `junk${i}=1`).join("&");
+      const p = await openLink(`#${keys}&vd=50`, viewport);
+      assert.equal(p.hidden, false);
+      assert.match(p.text, /… and 9,993 more$/);
+      assert.ok(p.msgHeight < viewport.height * 0.31, `message ${p.msgHeight} px`);
+      assert.ok(p.canvasHeight > 200, `canvas ${p.canvasHeight} px`);
+      assert.equal(p.count, 1);
+      assert.ok(p.hash.length < 1000 && !p.hash.includes("junk"), "URL rewritten");
+      await shot(p.page, `12-message-cap-${viewport.width}`);
+      allProblems.push(...p.problems);
+      await p.context.close();
+    });
+  }
+  for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
+    await check(`panel: a refused number is reported at its field and the value kept; a lower max speed clamps the desired speed (${viewport.width}×${viewport.height})`, async () => {
+      const p = await openLink("", viewport);
+      await p.page.fill("#speed-num", "50");
+      await p.page.press("#speed-num", "Enter");
+      const msg = p.page.locator("#speed-msg");
+      assert.equal(await msg.isVisible(), true);
+      assert.match(await msg.textContent(), /desired speed v_d: 50 is not a number in \[0\.01, 2\] m\/s \(at most max speed\); 1\.3 m\/s kept/);
+      assert.equal(await p.page.evaluate(() => window.__lab.state().speed), 1.3);
+      assert.equal(await p.page.inputValue("#speed-num"), "1.3");
+      await p.page.locator("#speed-msg").scrollIntoViewIfNeeded();
+      await shot(p.page, `13-refused-value-${viewport.width}`);
+      // The max speed below the desired speed: clamped, said at the field.
+      await p.page.fill("#vmax-num", "0.5");
+      await p.page.press("#vmax-num", "Enter");
+      assert.equal(await p.page.evaluate(() => window.__lab.state().speed), 0.5);
+      assert.match(await msg.textContent(), /desired speed v_d 1\.3 m\/s set to 0\.5 m\/s: max speed is 0\.5 m\/s/);
+      assert.equal(await p.page.getAttribute("#speed", "max"), "0.5", "the slider's end follows the max speed");
+      await p.page.click("#reset");
+      await settle(p.page);
+      assert.equal(await p.page.evaluate(() => window.__lab.count()), 1, "Reset keeps the playground");
+      await p.page.waitForFunction(() => location.hash.includes("vmax=0.5") && location.hash.includes("vd=0.5"), null, { timeout: 3000 });
+      allProblems.push(...p.problems);
+      await p.context.close();
+    });
+  }
+
   await check("touch: a finger drags the target (pointer events with capture)", async () => {
     const t = await openPage(browser, { width: 800, height: 600 }, 1, { hasTouch: true, isMobile: false });
     await t.page.goto(url);

@@ -2,6 +2,7 @@
 // display switches, path editing buttons, metrics. Built on ../controls.
 
 import { button, checkbox, help, row, section, slider } from "../controls";
+import { decideCount, PAGE_MAX_BOIDS } from "./count";
 import type { CrowdMetrics, CrowdSeek } from "../wasm";
 
 /** The paper's five seeks, in preset order. */
@@ -103,13 +104,38 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
 
   // Crowd.
   const crowd = section(parent, "Crowd");
+  let boids = initial.boids;
+  /** The count in force, everywhere it shows. */
+  const showBoids = (n: number): void => {
+    boids = n;
+    num.value = String(n);
+    count.set(toSlider(n));
+    showCount(n);
+  };
+  /** Runs `n` boids, after asking when the count is heavy; a refused count changes nothing. */
+  const askBoids = (text: string): void => {
+    const d = decideCount(text, boids);
+    if (d.kind === "run") {
+      note.hidden = true;
+      showBoids(d.n);
+      a.boids(d.n);
+      return;
+    }
+    showBoids(boids);
+    note.hidden = false;
+    note.className = d.kind === "ask" ? "field-msg warn" : "field-msg";
+    note.textContent = d.message;
+    if (d.kind === "ask") {
+      button(note, "boids-confirm", `Run ${d.n.toLocaleString("en")} boids`, "run the heavy count anyway", () => {
+        note.hidden = true;
+        showBoids(d.n);
+        a.boids(d.n);
+      });
+    }
+  };
   const count = slider(crowd, {
     id: "boids-slider", label: "boids", unit: "", min: 0, max: 1, step: 0.001, value: toSlider(initial.boids), digits: 0,
-    onInput: (x) => {
-      const n = fromSlider(x);
-      num.value = String(n);
-      a.boids(n);
-    },
+    onInput: (x) => askBoids(String(fromSlider(x))),
   });
   // Show the boid count, not the slider position.
   const countOut = count.el.querySelector("output");
@@ -124,26 +150,23 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   num.type = "number";
   num.id = "boids";
   num.min = "0";
-  num.max = "200000";
+  num.max = String(PAGE_MAX_BOIDS);
   num.step = "1";
   num.value = String(initial.boids);
-  num.addEventListener("change", () => {
-    const n = Math.max(0, Math.min(200_000, Math.round(Number(num.value) || 0)));
-    num.value = String(n);
-    count.set(toSlider(n));
-    showCount(n);
-    a.boids(n);
-  });
+  // A text box reads what was typed: type=number hides "1e6" and "0x10" behind "".
+  num.type = "text";
+  num.inputMode = "numeric";
+  num.addEventListener("change", () => askBoids(num.value));
   numRow.append(num);
-  crowd.append(numRow);
+  const note = document.createElement("div");
+  note.id = "boids-msg";
+  note.className = "field-msg";
+  note.setAttribute("role", "alert");
+  note.hidden = true;
+  crowd.append(numRow, note);
   const quick = row(crowd);
   for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
-    button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => {
-      num.value = String(n);
-      count.set(toSlider(n));
-      showCount(n);
-      a.boids(n);
-    });
+    button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => askBoids(String(n)));
   }
   slider(crowd, {
     id: "speed", label: "steps / frame", unit: "", min: 1, max: 20, step: 1, value: 1, digits: 0, onInput: a.speed,
@@ -186,9 +209,8 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
       sepOn = s.separation;
       weight = s.weight;
       w.set(s.weight);
-      num.value = String(s.boids);
-      count.set(toSlider(s.boids));
-      showCount(s.boids);
+      note.hidden = true;
+      showBoids(s.boids);
       radius.set(s.radius);
       closed.set(s.closed);
     },

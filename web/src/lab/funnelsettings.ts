@@ -3,7 +3,7 @@
 // core's FunnelConfig. Every change goes straight to the core; agents keep
 // running.
 
-import { section, select, slider } from "../controls";
+import { section, select, type Control } from "../controls";
 import type { AimKey, BoundKey, FunnelSettings, RelaxedAimKey } from "./state";
 import type { FunnelConfig, MuBound, RelaxedConfig } from "../wasm";
 
@@ -45,8 +45,12 @@ export function funnelConfig(f: FunnelSettings): FunnelConfig {
   };
 }
 
+/** A slider with a number box for the lab field `url` (its range the core's),
+ *  over the handy window [lo, hi]. */
+export type NumericControl = (parent: HTMLElement, url: string, w: { id: string; lo: number; hi: number; step: number }, onInput: (v: number) => void) => Control;
+
 /** Builds the section; edits `f` in place and calls `onChange` after each change. */
-export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onChange: () => void): void {
+export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onChange: () => void, numeric: NumericControl): void {
   const box = section(panel, "Controller");
   const bound = select(box, {
     id: "mu-bound", label: "μ bound", options: BOUND_CHOICES, value: f.bound,
@@ -68,14 +72,8 @@ export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onC
     onChange: (v) => { f.relaxedAim = v; onChange(); },
   });
   relaxedAim.el.title = "For a relaxed (region) goal: the disk's entry point, as the standard controller (orients on entry), or paper 001's relaxed point on the ring arc (shorter paths, turns to the interval after entering)";
-  const gain = slider(box, {
-    id: "mu-gain", label: "gain k", unit: "", min: 1, max: 4, step: 0.25, value: f.gain,
-    onInput: (v) => { f.gain = v; onChange(); },
-  });
-  const threshold = slider(box, {
-    id: "seek-th", label: "seek threshold", unit: "ε_tol", min: 0.1, max: 1, step: 0.05, value: f.threshold,
-    onInput: (v) => { f.threshold = v; onChange(); },
-  });
+  const gain = numeric(box, "gain", { id: "mu-gain", lo: 1, hi: 4, step: 0.25 }, (v) => { f.gain = v; onChange(); });
+  const threshold = numeric(box, "th", { id: "seek-th", lo: 0.1, hi: 1, step: 0.05 }, (v) => { f.threshold = v; onChange(); });
   gain.el.title = "μ = −k·Δη before the bound (paper: k = 1)";
   threshold.el.title = "Plain seek (Position_only) once |Δη| is below this fraction of ε_tol (paper: 1)";
 }

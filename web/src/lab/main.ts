@@ -2,9 +2,10 @@
 // wires the simulation, the panel, the canvas drags and the loop together.
 
 import { setupCanvas } from "../canvas";
-import { $, showMessage, showVersion } from "../page";
+import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
-import { createLab, errorText, loadCore, type Lab } from "../wasm";
+import { createLab, errorText, loadCore, ranges, type Lab } from "../wasm";
+import { RangeTable } from "./fields";
 import { attachDrags, handlePositions, type Handles } from "./handles";
 import { installHook, Perf } from "./hook";
 import { runLoop } from "./loop";
@@ -20,13 +21,6 @@ const TABLE_URL = "tables/eta.bin";
 const hook = installHook();
 
 async function start(): Promise<void> {
-  const decoded = decodeState(location.hash, presetNames());
-  const st = decoded.state;
-  hook.problems = decoded.problems;
-  if (decoded.problems.length > 0) {
-    showMessage(`Some of the link's state was ignored:\n• ${decoded.problems.join("\n• ")}`, "warn");
-  }
-
   const version = await loadCore();
   hook.version = version;
   showVersion(version);
@@ -41,9 +35,18 @@ async function start(): Promise<void> {
     return;
   }
 
+  // The link is read against the core's ranges and default limits.
+  const table = new RangeTable(ranges());
+  const decoded = decodeState(location.hash, presetNames(), table, lab.params());
+  const st = decoded.state;
+  hook.problems = decoded.problems;
+  const title = "Some of the link's state was ignored:";
+  if (decoded.problems.length > 0) showMessages(title, decoded.problems, "warn");
+  const shown = currentMessage();
+
   const canvas = $<HTMLCanvasElement>("lab");
   const view = new View();
-  const sim = new LabSim(lab, st, view);
+  const sim = new LabSim(lab, st, view, table);
   const surface = setupCanvas(canvas, (sf) => {
     view.resize(sf.width, sf.height);
     sim.dirty = true;
@@ -77,6 +80,13 @@ async function start(): Promise<void> {
 
   const since = performance.now();
   await sim.rebuild(true);
+  // A refused value does not stick in the address bar: it now holds the state in force.
+  if (decoded.problems.length > 0) {
+    // The build may have warned too (a vehicle limit the table was not built for): both stay.
+    const other = currentMessage();
+    showMessages(title, other !== null && other !== shown ? [...decoded.problems, other] : decoded.problems, "warn");
+    sim.url.writeNow();
+  }
   transport.setPaused(false);
   hook.ready = true;
   runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), hook, perf, since);

@@ -1,8 +1,13 @@
 // The funnelling page's side panel: the playground's target, the controller
 // settings, the vehicle limits, the overlays, the η field view, and sharing
-// and export. Every control edits the page's state and hands it on.
+// and export. Every control edits the page's state and hands it on. Each
+// number's slider spans the core's range (crate/funnelling/ranges.rs) within
+// a handy window, and its number box takes the whole range; the desired
+// speeds' maximum follows the max speed, and lowering the max speed below
+// the desired speed clamps the desired speed, with a message at its field.
 
 import { button, checkbox, help, row, section, slider, type Control } from "../controls";
+import { bounds, field, parseField } from "./fields";
 import { $ } from "../page";
 import { downloadPng } from "../download";
 import { downloadCsv, downloadJson } from "./export";
@@ -11,6 +16,15 @@ import type { LabSim } from "./sim";
 import type { Overlays } from "./state";
 
 const DEG = Math.PI / 180;
+
+/** A slider's handy window (stored units), within the core's range. */
+interface Window {
+  id: string;
+  lo: number;
+  hi: number;
+  step: number;
+  digits?: number;
+}
 
 /** The target sliders a drag on the canvas moves too. */
 export interface GoalControls {
@@ -24,47 +38,63 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   const panel = $("panel");
   const caption = $("caption");
   const updateGoal = (): void => sim.updateGoal();
+  const controls = new Map<string, Control>();
+  /** The slider and number box of the lab field with URL key `url`. */
+  const numeric = (parent: HTMLElement, url: string, w: Window, onInput: (v: number) => void): Control => {
+    const f = field(url);
+    const b = bounds(f, sim.ranges, st, sim.defaults);
+    const c = slider(parent, {
+      id: w.id, label: f.label, unit: f.unit, min: Math.max(b.min, w.lo), max: Math.min(b.max, w.hi), step: w.step,
+      value: f.get(st, sim.defaults), display: f.scale, digits: w.digits ?? 2,
+      parse: (t) => parseField(f, t, sim.ranges, st, sim.defaults),
+      onInput,
+    });
+    controls.set(url, c);
+    return c;
+  };
+  /** Moves the sliders bounded by a vehicle limit (desired speeds ≤ max speed). */
+  const followLimits = (): void => {
+    for (const [url, hi, lo] of [["vd", 4, 0], ["fvd", 4, 0], ["fvc", 4, 0], ["fwc", 3, -3]] as const) {
+      const b = bounds(field(url), sim.ranges, st, sim.defaults);
+      controls.get(url)?.setRange(Math.max(b.min, lo), Math.min(b.max, hi));
+    }
+  };
 
   const goalBox = section(panel, "Target (playground)");
   sim.onScene = (text, playground) => {
     caption.textContent = text;
     goalBox.disabled = !playground;
   };
-  slider(goalBox, {
-    id: "speed", label: "desired speed v_d", unit: "m/s", min: 0.1, max: 4, step: 0.05, value: st.speed,
-    onInput: (v) => { st.speed = v; updateGoal(); },
-  });
-  const dTol = slider(goalBox, {
-    id: "dtol", label: "position tol. D_tol", unit: "m", min: 0.02, max: 3, step: 0.01, value: st.dTol,
-    onInput: (v) => { st.dTol = v; updateGoal(); },
-  });
-  const epsTol = slider(goalBox, {
-    id: "etol", label: "orient. tol. ε_tol", unit: "°", min: 0.5 * DEG, max: 90 * DEG, step: 0.5 * DEG, value: st.epsTol,
-    display: 1 / DEG, digits: 1, onInput: (v) => { st.epsTol = v; updateGoal(); },
-  });
-  const beta = slider(goalBox, {
-    id: "beta", label: "orientation β", unit: "°", min: -180 * DEG, max: 180 * DEG, step: DEG, value: st.target.theta,
-    display: 1 / DEG, digits: 0, onInput: (v) => { st.target.theta = v; updateGoal(); },
-  });
+  numeric(goalBox, "vd", { id: "speed", lo: 0, hi: 4, step: 0.01 }, (v) => { st.speed = v; updateGoal(); });
+  const dTol = numeric(goalBox, "dtol", { id: "dtol", lo: 0, hi: 3, step: 0.01 }, (v) => { st.dTol = v; updateGoal(); });
+  const epsTol = numeric(goalBox, "etol", { id: "etol", lo: 0.5 * DEG, hi: 90 * DEG, step: 0.5 * DEG, digits: 1 }, (v) => { st.epsTol = v; updateGoal(); });
+  const beta = numeric(goalBox, "tb", { id: "beta", lo: -180 * DEG, hi: 180 * DEG, step: DEG, digits: 1 }, (v) => { st.target.theta = v; updateGoal(); });
   const goalRow = row(goalBox);
   checkbox(goalRow, "halting", "final halting", st.halting, (v) => { st.halting = v; updateGoal(); });
   const relaxedBox = checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
   relaxedBox.el.title = "paper 001: any point of the disk and any heading within β ± ε_tol is a valid goal";
 
-  funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); });
+  funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); }, (parent, url, w, onInput) => numeric(parent, url, w, onInput));
 
   const limBox = section(panel, "Vehicle limits");
-  const lim = (id: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", label: string, unit: string, max: number): void => {
-    slider(limBox, {
-      id, label, unit, min: 0.05, max, step: 0.05, value: st.limits[key] ?? sim.defaults[key],
-      onInput: (v) => { st.limits[key] = v; sim.applyParams(); sim.url.save(); },
+  const lim = (url: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", hi: number): void => {
+    numeric(limBox, url, { id: url, lo: 0.05, hi, step: 0.05 }, (v) => {
+      st.limits[key] = v;
+      followLimits();
+      const clamped = sim.applyParams();
+      for (const c of clamped) {
+        const ctl = controls.get(c.field.url);
+        ctl?.set(c.field.get(st, sim.defaults));
+        ctl?.note(c.message);
+      }
+      sim.url.save();
     });
   };
-  lim("vmax", "vMax", "max speed", "m/s", 6);
-  lim("amax", "accelMax", "max accel.", "m/s²", 10);
-  lim("wmax", "omegaMax", "max ang. speed", "rad/s", 10);
-  lim("awmax", "omegaAccelMax", "max ang. accel.", "rad/s²", 60);
-  lim("anmax", "normalAccelMax", "max normal acc. A", "m/s²", 10);
+  lim("vmax", "vMax", 6);
+  lim("amax", "accelMax", 10);
+  lim("wmax", "omegaMax", 10);
+  lim("awmax", "omegaAccelMax", 60);
+  lim("anmax", "normalAccelMax", 10);
 
   const ovBox = section(panel, "Overlays");
   const ov = (key: keyof Overlays, label: string): void => {
@@ -79,15 +109,13 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   ov("field", "η field (Fig. 3b/c)");
 
   const fieldBox = section(panel, "η field view");
-  const fieldSlider = (id: string, key: "vC" | "omegaC" | "vD", label: string, unit: string, min: number, max: number): void => {
-    slider(fieldBox, {
-      id, label, unit, min, max, step: 0.05, value: st.field[key],
-      onInput: (v) => { st.field[key] = v; sim.dirty = true; sim.url.save(); },
-    });
+  const fieldSlider = (url: string, key: "vC" | "omegaC" | "vD", lo: number, hi: number): void => {
+    numeric(fieldBox, url, { id: url, lo, hi, step: 0.05 }, (v) => { st.field[key] = v; sim.dirty = true; sim.url.save(); });
   };
-  fieldSlider("fvc", "vC", "current v_c", "m/s", 0, 4);
-  fieldSlider("fwc", "omegaC", "current ω_c", "rad/s", -3, 3);
-  fieldSlider("fvd", "vD", "desired v_d", "m/s", 0.1, 4);
+  fieldSlider("fvc", "vC", 0, 4);
+  fieldSlider("fwc", "omegaC", -3, 3);
+  fieldSlider("fvd", "vD", 0, 4);
+  followLimits();
   help(fieldBox).textContent = "Arrows: final direction α+η at each sampled target around the vehicle; darker = unreachable at v_d (η shown for the stored v_dt).";
 
   const exBox = section(panel, "Share and export");

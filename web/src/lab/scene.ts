@@ -75,12 +75,19 @@ export class SceneBuilder {
   /** The HUD's figures for `inter` (as for scene). */
   hud(inter: Internals | null, frameMs: number): HudData {
     const { sim } = this;
+    // A finished agent's internals carry no measurement (D 0, "unreachable"):
+    // the HUD shows its distance to the last goal and no reachability.
+    const done = inter?.mode === Mode.EndOfSteering;
+    const i = sim.shown;
+    const dx = (sim.field(i, StateField.GoalX) ?? NaN) - (sim.field(i, StateField.X) ?? NaN);
+    const dy = (sim.field(i, StateField.GoalY) ?? NaN) - (sim.field(i, StateField.Y) ?? NaN);
     return {
       mode: inter?.mode ?? null,
-      d: inter?.d ?? NaN, alpha: inter?.alpha ?? NaN, eta: inter?.eta ?? NaN,
-      deltaEta: inter?.deltaEta ?? NaN, mu: inter?.mu ?? NaN, muMax: inter?.muMax ?? NaN,
+      d: done ? Math.hypot(dx, dy) : (inter?.d ?? NaN),
+      alpha: done ? NaN : (inter?.alpha ?? NaN), eta: done ? NaN : (inter?.eta ?? NaN),
+      deltaEta: done ? NaN : (inter?.deltaEta ?? NaN), mu: done ? NaN : (inter?.mu ?? NaN), muMax: inter?.muMax ?? NaN,
       speed: sim.field(sim.shown, StateField.V) ?? 0,
-      reachable: inter?.reachable ?? true,
+      reachable: done || (inter?.reachable ?? true),
       usPerUpdate: sim.usPerUpdate, frameMs, agents: sim.count, time: sim.time, paused: sim.paused, slow: sim.st.slow,
     };
   }

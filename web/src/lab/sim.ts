@@ -6,6 +6,7 @@
 import { showMessage } from "../page";
 import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
+import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import type { LabState, Pose } from "./state";
@@ -44,11 +45,11 @@ export class LabSim {
   /** The URL's view, shown once (the first build); later builds fit when asked. */
   private sharedView: LabState["view"];
 
-  constructor(readonly lab: Lab, readonly st: LabState, private readonly view: View) {
+  constructor(readonly lab: Lab, readonly st: LabState, private readonly view: View, readonly ranges: RangeTable) {
     this.defaults = lab.params();
     this.dt = this.defaults.dt;
     this.sharedView = st.view;
-    this.url = new UrlSync(st, view);
+    this.url = new UrlSync(st, view, ranges, this.defaults);
   }
 
   params(): VehicleParams {
@@ -106,13 +107,27 @@ export class LabSim {
     }
   }
 
-  applyParams(): void {
+  /** The page's vehicle limits to the core. A desired speed above a new
+   *  max speed (or a field-view speed) is first clamped to it, and the
+   *  playground's goal updated: the core would refuse the goal, and a reset
+   *  would leave an empty playground. Returns what was clamped, with a
+   *  message for its field. A limit the core refuses (none within the
+   *  ranges) restores the previous limits. */
+  applyParams(): Array<{ field: LabField; message: string }> {
+    const before = this.lab.params();
+    const clamped = clampToLimits(this.ranges, this.st, this.defaults);
     try {
       const warning = this.lab.setParams(this.params());
       if (warning) showMessage(`Vehicle limits: ${warning}`, "warn");
     } catch (e) {
       showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
+      for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = before[f.limit];
     }
+    if (clamped.fields.length > 0) {
+      this.dirty = true;
+      this.updateGoal();
+    }
+    return clamped.fields.map((field, i) => ({ field, message: clamped.messages[i] ?? "" }));
   }
 
   /** The page's controller settings to the core (world-wide, presets included). */

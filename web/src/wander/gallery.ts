@@ -7,6 +7,7 @@ import { beginFrame, setupCanvas, type Surface } from "../canvas";
 import { button, slider } from "../controls";
 import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../wasm";
 import { PAPER_UNITS, View } from "../view";
+import { tooDeep } from "./jsontext";
 import { drawTile } from "./render";
 
 /** Frames a re-run takes to draw the traces. */
@@ -155,13 +156,20 @@ export class GalleryPanel {
       base: variant.config, variant, canvas, surface: null, view: new View(PAPER_UNITS), lab: null, error, json, pending: 0, drawn: false,
     };
     apply.addEventListener("click", () => {
+      const deep = tooDeep(json.value);
+      if (deep !== null) {
+        error.textContent = deep;
+        return;
+      }
       try {
-        const parsed: unknown = JSON.parse(json.value);
-        if (typeof parsed !== "object" || parsed === null) throw new Error("the configuration must be a JSON object");
-        // The core validates every field (a bad one is a JsError naming it).
-        tile.base = parsed as WanderConfig;
+        // The core parses the text as the native code does (duplicate keys,
+        // unknown fields and ranges refused, the field named), then hands
+        // back the configuration the knobs edit.
+        const checked = WanderLab.fromJson(json.value);
+        tile.base = checked.config();
+        checked.free();
       } catch (e) {
-        error.textContent = `JSON: ${errorText(e)}`;
+        error.textContent = errorText(e);
         return;
       }
       this.build(tile);
