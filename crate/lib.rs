@@ -33,5 +33,5 @@ pub mod bindings;
 
 pub use base::{angle, dubins, metrics, parallel, range, rng, trig};
 pub use funnelling::{
-    funnel, region_study, relaxed, scenario, seek, study, table, vehicle, world, world_edit,
+    funnel, ghost, region_study, relaxed, scenario, seek, study, table, vehicle, world, world_edit,
 };
