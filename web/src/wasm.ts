@@ -11,6 +11,7 @@ export type {
   CrowdPathConfig,
   CrowdSeek,
   FunnelConfig,
+  Ghost,
   GoalConfig,
   Internals,
   MuBound,

@@ -44,7 +44,7 @@ const NUMS: NumField[] = [
   { key: "seed", min: 0, max: 2 ** 32 - 1, integer: true, get: (s) => s.seed, set: (s, v) => { s.seed = v; } },
 ];
 
-const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc"];
+const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc", "ghost"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];
 
 function isBoundKey(k: string): k is BoundKey {
@@ -96,7 +96,7 @@ export function decodeState(fragment: string, presets: readonly string[]): Decod
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["ov", "bound", "preset", "zx", "zy", "zs", ...FLAGS, ...NUMS.map((f) => f.key), ...LIMIT_KEYS.map((l) => l[0])]);
+  const known = new Set<string>(["ov", "bound", "aim", "lp", "raim", "preset", "zx", "zy", "zs", ...FLAGS, ...NUMS.map((f) => f.key), ...LIMIT_KEYS.map((l) => l[0])]);
   for (const key of p.keys()) {
     if (!known.has(key)) problems.push(`unknown field "${key}" ignored`);
   }
