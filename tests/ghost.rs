@@ -50,7 +50,11 @@ fn the_ghost_ends_where_the_seek_simulation_ends() {
         let (s, target, vd) = query(&t, &p, &mut rng);
         out.clear();
         let g = seek_ghost(&p, s, target, vd, &lim, MAX_POINTS, &mut out);
-        assert!(out.len() <= MAX_POINTS && out.len() >= 2, "{} points", out.len());
+        assert!(
+            out.len() <= MAX_POINTS && out.len() >= 2,
+            "{} points",
+            out.len()
+        );
         assert_eq!(out[0], s.pos, "the path starts at the vehicle");
         let radial0 = {
             let d = target - s.pos;
@@ -60,19 +64,30 @@ fn the_ghost_ends_where_the_seek_simulation_ends() {
             ReachOutcome::Reached { eta, time, length } => {
                 reached += 1;
                 assert!(g.reached);
-                assert_eq!(g.eta.to_bits(), eta.to_bits(), "η is the simulation's, bit for bit");
+                assert_eq!(
+                    g.eta.to_bits(),
+                    eta.to_bits(),
+                    "η is the simulation's, bit for bit"
+                );
                 assert_eq!((g.time, g.length), (time, length));
                 assert_eq!(g.final_dir, wrap(radial0 + eta));
                 // The path ends on the reach circle.
                 let end = *out.last().unwrap();
                 let r = (end - target).length();
-                assert!((r - lim.reach_radius).abs() < 2e-3, "end {r} m from the target");
+                assert!(
+                    (r - lim.reach_radius).abs() < 2e-3,
+                    "end {r} m from the target"
+                );
                 // Its last segment points along the final direction.
                 let prev = out[out.len() - 2];
                 let seg = end - prev;
                 if seg.length() > 0.05 {
                     let dir = steering::trig::atan2(seg.y, seg.x);
-                    assert!(diff(dir, g.final_dir).abs() < 0.35, "last segment {dir} vs {}", g.final_dir);
+                    assert!(
+                        diff(dir, g.final_dir).abs() < 0.35,
+                        "last segment {dir} vs {}",
+                        g.final_dir
+                    );
                 }
             }
             ReachOutcome::Unreachable => {
@@ -153,8 +168,13 @@ fn the_update_ghost_is_the_seek_the_funnel_asked_about() {
             continue; // inside the tolerance or on the terminal line
         }
         // It seeks the aim point: the entry point along β (default aim).
-        let entry = g.pos - steering::trig::unit(g.beta) * (g.d_tol - t.params().reach_radius).max(0.0);
-        assert!((ghost.target - entry).length() < 1e-3, "{} vs {entry}", ghost.target);
+        let entry =
+            g.pos - steering::trig::unit(g.beta) * (g.d_tol - t.params().reach_radius).max(0.0);
+        assert!(
+            (ghost.target - entry).length() < 1e-3,
+            "{} vs {entry}",
+            ghost.target
+        );
         slowed += usize::from(ghost.slowed);
         if ghost.reached {
             errors.push(diff(inter.eta, ghost.eta).abs().to_degrees());

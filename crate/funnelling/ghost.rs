@@ -190,10 +190,7 @@ pub fn update_ghost(
     out.clear();
     let (target, v) = if inter.aim_d > 0.0 {
         let dir = s.theta + inter.aim_alpha;
-        (
-            s.pos + crate::trig::unit(dir) * inter.aim_d,
-            inter.v_query,
-        )
+        (s.pos + crate::trig::unit(dir) * inter.aim_d, inter.v_query)
     } else {
         (g.pos, g.speed.max(table.axis(4)[0]))
     };

@@ -169,6 +169,7 @@ try {
         // The lab's agent sits where the figure's vehicle starts, with the figure's target.
         const h = await lab.evaluate(() => window.__lab.internals());
         assert.ok(h && Number.isFinite(h.d), `${name}: internals`);
+        assert.equal(st.overlays.ghost, true, `${name}: the lab's ghost overlay`);
       }
       await lab.close();
     }

@@ -15,7 +15,7 @@ const V0 = 1.3;
 
 export function etaSection(host: HTMLElement, base: Lab): LiveFigure {
   const start = { x: -4, y: -1, theta: 0 };
-  const target = { x: 1.5, y: 2.5 };
+  const target = { x: -2, y: 1.5 };
   const lab = base.fork();
   let ghost: Ghost | null = null;
   let inter: Internals | null = null;
