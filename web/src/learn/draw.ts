@@ -28,6 +28,17 @@ export function vehicle(ctx: CanvasRenderingContext2D, v: View, x: number, y: nu
   ctx.fill();
 }
 
+/** A position-only target (seek's red circle), drawn at the table's reach
+ *  radius, 0.25 m: where the predicted seek path ends. */
+export function positionTarget(ctx: CanvasRenderingContext2D, v: View, x: number, y: number): void {
+  const p = v.toScreen(x, y);
+  ctx.strokeStyle = COLOURS.seek;
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  ctx.arc(p.x, p.y, Math.max(4, 0.25 * v.scale), 0, 2 * Math.PI);
+  ctx.stroke();
+}
+
 /** A polyline through world points (x, y pairs). */
 export function path(ctx: CanvasRenderingContext2D, v: View, xy: ArrayLike<number>, colour: string, width = 2, dash: number[] = []): void {
   const n = Math.floor(xy.length / 2);

@@ -5,7 +5,7 @@
 // final direction — next to the η the table interpolates.
 
 import type { Ghost, Internals, Lab } from "../../wasm";
-import { angleArc, backdrop, COLOURS, deg, drawGhost, line, path, ray, vehicle } from "../draw";
+import { angleArc, backdrop, COLOURS, deg, drawGhost, line, path, positionTarget, ray, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";
 
@@ -46,12 +46,7 @@ export function etaSection(host: HTMLElement, base: Lab): LiveFigure {
       const x = run.x(0);
       const y = run.y(0);
       const th = run.field(0, 2);
-      const tc = v.toScreen(target.x, target.y);
-      ctx.strokeStyle = COLOURS.seek;
-      ctx.lineWidth = 2;
-      ctx.beginPath();
-      ctx.arc(tc.x, tc.y, Math.max(4, 0.25 * v.scale), 0, 2 * Math.PI);
-      ctx.stroke();
+      positionTarget(ctx, v, target.x, target.y);
       if (inter && ghost) {
         const radial = th + inter.alpha;
         // The radial direction, extended past the target: η is measured from it.

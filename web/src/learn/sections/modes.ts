@@ -16,7 +16,7 @@ const DEG = Math.PI / 180;
 const DIAGRAM: ReadonlyArray<{ mode: number; test: string }> = [
   { mode: Mode.EndOfSteering, test: "D < D_tol and |β − θ| < ε_tol" },
   { mode: Mode.OrientationOnly, test: "else if D < D_tol" },
-  { mode: Mode.PositionOnly, test: "else if D < D_η or |Δη| small" },
+  { mode: Mode.PositionOnly, test: "else if D < D_η or |Δη| < 0.25·ε_tol" },
   { mode: Mode.Funnelling, test: "else" },
 ];
 

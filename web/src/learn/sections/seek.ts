@@ -3,7 +3,7 @@
 // seek paths arrive with three different headings. Play runs them.
 
 import type { Lab } from "../../wasm";
-import { backdrop, COLOURS, deg, drawGhost, label, path, ray, vehicle } from "../draw";
+import { backdrop, COLOURS, deg, drawGhost, label, path, positionTarget, ray, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";
 import type { Ghost } from "../../wasm";
@@ -42,12 +42,7 @@ export function seekSection(host: HTMLElement, base: Lab): LiveFigure {
     draw(ctx, v) {
       backdrop(ctx, v);
       ghosts.forEach((g) => drawGhost(ctx, v, { points: g.points, reached: g.reached, finalDir: g.finalDir, slowed: false }));
-      const p = v.toScreen(target.x, target.y);
-      ctx.strokeStyle = COLOURS.seek;
-      ctx.lineWidth = 2;
-      ctx.beginPath();
-      ctx.arc(p.x, p.y, Math.max(4, 0.25 * v.scale), 0, 2 * Math.PI);
-      ctx.stroke();
+      positionTarget(ctx, v, target.x, target.y);
       for (let i = 0; i < run.count; i++) {
         path(ctx, v, run.trails[i]!, COLOURS.trail, 1.5);
         vehicle(ctx, v, run.x(i), run.y(i), run.field(i, 2));
