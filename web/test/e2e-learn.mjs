@@ -79,6 +79,8 @@ try {
   const err = await waitLearn(page);
   await check("the learn page loads the core and the table, eight figures", async () => {
     assert.equal(err, null);
+    const hrefs = await page.$$eval("nav.labnav a", (as) => as.map((a) => a.getAttribute("href")));
+    assert.deepEqual(hrefs, ["./index.html", "./crowd.html", "./wander.html", "./learn.html"]);
     const figs = await page.evaluate(() => window.__learn.figures);
     assert.deepEqual(figs, Object.keys(DRAGS));
     assert.equal(await page.locator("#message").isHidden(), true);
