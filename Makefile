@@ -8,7 +8,8 @@ WASM_PACK_VERSION := 0.15.1
 WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"/,"",$$3); print $$3; exit}' Cargo.lock)
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
-	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz
+	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
+	test-e2e-learn
 
 setup: setup-rust setup-browser setup-web
 
@@ -72,11 +73,17 @@ test-e2e: setup-browser web-build
 test-e2e-gallery: setup-browser web-build
 	node web/test/e2e-gallery.mjs
 
+# Playwright against the learn page (learn.html, issue 15): every section
+# draws, one handle per section drags and changes its number, the "show in
+# the lab" links, reduced motion, phone width; screenshots in artifacts/.
+test-e2e-learn: setup-browser web-build
+	node web/test/e2e-learn.mjs
+
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium.
 bench-web: setup-browser web-build
 	node web/test/perf.mjs
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn
 	@echo "make test: all suites passed"
 
 demo: setup web-build

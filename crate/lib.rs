@@ -33,5 +33,6 @@ pub mod bindings;
 
 pub use base::{angle, dubins, metrics, parallel, range, rng, trig};
 pub use funnelling::{
-    funnel, ranges, region_study, relaxed, scenario, seek, study, table, vehicle, world, world_edit,
+    funnel, ghost, ranges, region_study, relaxed, scenario, seek, study, table, vehicle, world,
+    world_edit,
 };

@@ -492,3 +492,48 @@ fn the_exported_layout_matches_the_state_buffer() {
     assert_eq!(at(&s, F::Reachable), if reachable { 1.0 } else { 0.0 });
     assert!(at(&s, F::V) > 0.0, "accelerating: v = {}", at(&s, F::V));
 }
+
+/// Issue 15: the ghost path through the bindings. Its η is the table's
+/// within the interpolation error (the native `tests/ghost.rs` measures
+/// the distribution); a forked lab shares the table and starts empty.
+#[wasm_bindgen_test]
+fn the_ghost_is_the_seek_the_update_asked_about_and_forks_share_the_table() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    lab.add_agent(agent(-4.0, -1.0, 0.0, &[goal(3.0, 1.5, 1.57)]))
+        .map_err(message)
+        .unwrap();
+    let inter = lab.internals(0).map_err(message).unwrap();
+    let g = lab.ghost(0).map_err(message).unwrap();
+    assert_eq!(get(&g, "reached").as_bool(), Some(true));
+    let eta = get(&g, "eta").as_f64().unwrap();
+    let table_eta = get(&inter, "eta").as_f64().unwrap();
+    assert!(
+        (eta - table_eta).abs().to_degrees() < 2.0,
+        "ghost η {eta} vs table η {table_eta}"
+    );
+    let pts = js_sys::Float32Array::from(get(&g, "points"));
+    let n = pts.length() as usize;
+    assert!(n >= 4 && n % 2 == 0 && n <= 512, "{n}");
+    assert_eq!((pts.get_index(0), pts.get_index(1)), (-4.0, -1.0));
+    // The free-state form: straight ahead, η = 0, ends 0.25 m short.
+    let g = lab
+        .ghost_from(0.0, 0.0, 0.0, 1.0, 0.0, 10.0, 0.0, 1.3)
+        .map_err(message)
+        .unwrap();
+    assert!(get(&g, "eta").as_f64().unwrap().abs() < 1e-3);
+    let pts = js_sys::Float32Array::from(get(&g, "points"));
+    let end = pts.get_index(pts.length() - 2);
+    assert!((end - 9.75).abs() < 1e-3, "{end}");
+    // Bad input names its field; nothing panics.
+    let m = message(lab.ghost(7).err().expect("no agent 7"));
+    assert!(m.contains("agent"), "{m}");
+    let m = message(
+        lab.ghost_from(0.0, 0.0, 0.0, 1.0, 0.0, f32::NAN, 0.0, 1.3)
+            .err()
+            .expect("NaN target"),
+    );
+    assert!(m.contains("ghost.tx"), "{m}");
+    let fork = lab.fork().map_err(message).unwrap();
+    assert_eq!(fork.count(), 0);
+    assert!(!fork.eta_field(1.0, 0.0, 1.3).is_empty());
+}

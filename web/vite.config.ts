@@ -52,12 +52,14 @@ export default defineConfig({
   build: {
     target: "es2022",
     sourcemap: false,
-    // The gallery pages (crowd path following, random steering) beside the funnelling lab.
+    // The gallery pages (crowd path following, random steering) and the learn
+    // page (issue 15) beside the funnelling lab.
     rolldownOptions: {
       input: {
         index: resolve(import.meta.dirname, "index.html"),
         crowd: resolve(import.meta.dirname, "crowd.html"),
         wander: resolve(import.meta.dirname, "wander.html"),
+        learn: resolve(import.meta.dirname, "learn.html"),
       },
     },
   },

@@ -11,12 +11,17 @@
 //! - the core's validation ranges cross too (`ranges()`), so the page
 //!   checks what the core checks.
 
+use std::rc::Rc;
+
 use glam::Vec2;
 use wasm_bindgen::prelude::*;
 
-use super::lab_types::{AgentConfig, ArcOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo};
+use super::lab_types::{
+    AgentConfig, ArcOut, GhostOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo,
+};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
 use crate::funnel::{FunnelConfig, Internals, Mode};
+use crate::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
 use crate::relaxed::{ControllerKind, RelaxedConfig};
 use crate::rng::Rng;
 use crate::scenario::Scenario;
@@ -88,12 +93,17 @@ fn field_samples(
     }
 }
 
+/// Points a ghost path keeps at most ([`crate::ghost`]).
+const GHOST_POINTS: usize = 256;
+
 /// The lab: the η table, the vehicle parameters and the agents.
 #[wasm_bindgen]
 pub struct Lab {
-    table: EtaTable,
+    /// Shared by the labs [`Lab::fork`] makes (one copy in memory, ~10 MB).
+    table: Rc<EtaTable>,
     world: World,
     buf: Vec<f32>,
+    ghost: Vec<Vec2>,
 }
 
 #[wasm_bindgen]
@@ -107,9 +117,23 @@ impl Lab {
         let world = World::new(params, FunnelConfig::default())
             .map_err(|e| js_err("η table parameters", e))?;
         Ok(Lab {
-            table,
+            table: Rc::new(table),
             world,
             buf: Vec::new(),
+            ghost: Vec::new(),
+        })
+    }
+
+    /// A new lab on the same η table (shared, not copied) with an empty
+    /// world and default settings: one per live figure of the learn page.
+    pub fn fork(&self) -> Result<Lab, JsError> {
+        let world = World::new(self.table.params().vehicle, FunnelConfig::default())
+            .map_err(|e| js_err("η table parameters", e))?;
+        Ok(Lab {
+            table: Rc::clone(&self.table),
+            world,
+            buf: Vec::new(),
+            ghost: Vec::new(),
         })
     }
 
@@ -377,7 +401,104 @@ impl Lab {
             .world
             .agent(i as usize)
             .map_err(|e| js_err("agent", e))?;
-        let out = if a.done() {
+        let mut out = InternalsOut::from(self.plan_of(i)?);
+        if self.world.controller == ControllerKind::Relaxed && !a.done() {
+            let r = &a.relaxed;
+            out.arc = Some(ArcOut {
+                alpha_min: r.arc_min,
+                alpha_max: r.arc_max,
+                alpha_r: r.alpha_r,
+                radius: r.ring,
+                f_min: r.f_min,
+                f_max: r.f_max,
+                t_min: r.t_min,
+                t_max: r.t_max,
+                branch: r.branch as u8,
+            });
+        }
+        to_js(&out)
+    }
+
+    /// The predicted seek path of agent `i`'s current update (paper 000
+    /// Fig. 1c, [`crate::ghost::update_ghost`]): from its state towards the
+    /// point its controller asked the η table about, at the queried speed
+    /// (or the fallback v_dt where the table says unreachable). `points`
+    /// holds x, y pairs (at most 256 points).
+    #[wasm_bindgen(unchecked_return_type = "Ghost")]
+    pub fn ghost(&mut self, i: u32) -> Result<JsValue, JsError> {
+        let inter = self.plan_of(i)?;
+        let a = self
+            .world
+            .agent(i as usize)
+            .map_err(|e| js_err("agent", e))?;
+        let g = update_ghost(
+            &self.table,
+            &self.world.params,
+            &a.state,
+            &inter,
+            &a.goal_now,
+            GHOST_POINTS,
+            &mut self.ghost,
+        );
+        self.ghost_out(&g)
+    }
+
+    /// The predicted seek path from any state (position, heading θ, speed
+    /// v, angular speed ω) towards the point (`tx`, `ty`) at desired speed
+    /// `v_d`: the table generator's simulation ([`crate::ghost::seek_ghost`]).
+    #[wasm_bindgen(js_name = ghostFrom, unchecked_return_type = "Ghost")]
+    #[allow(clippy::too_many_arguments)]
+    pub fn ghost_from(
+        &mut self,
+        x: f32,
+        y: f32,
+        theta: f32,
+        v: f32,
+        omega: f32,
+        tx: f32,
+        ty: f32,
+        v_d: f32,
+    ) -> Result<JsValue, JsError> {
+        let s = VehicleState::new(Vec2::new(x, y), theta, v, omega);
+        s.validate(&self.world.params)
+            .map_err(|e| js_err("ghost state", e))?;
+        crate::range::check_range("ghost.tx", tx, -1e6, 1e6).map_err(|e| js_err("ghost", e))?;
+        crate::range::check_range("ghost.ty", ty, -1e6, 1e6).map_err(|e| js_err("ghost", e))?;
+        crate::range::check_range("ghost.vD", v_d, 0.0, self.world.params.v_max)
+            .map_err(|e| js_err("ghost", e))?;
+        self.ghost.clear();
+        let g = seek_ghost(
+            &self.world.params,
+            s,
+            Vec2::new(tx, ty),
+            v_d,
+            &table_limits(&self.table),
+            GHOST_POINTS,
+            &mut self.ghost,
+        );
+        self.ghost_out(&g)
+    }
+
+    fn ghost_out(&self, g: &Ghost) -> Result<JsValue, JsError> {
+        let out = to_js(&GhostOut::from(g))?;
+        let pts: Vec<f32> = self.ghost.iter().flat_map(|p| [p.x, p.y]).collect();
+        js_sys::Reflect::set(
+            &out,
+            &JsValue::from_str("points"),
+            &js_sys::Float32Array::from(pts.as_slice()),
+        )
+        .map_err(|_| JsError::new("ghost: could not attach the points"))?;
+        Ok(out)
+    }
+
+    /// What agent `i`'s controller chooses for its current state and goal
+    /// (no stepping; the relaxed controller's last update).
+    fn plan_of(&self, i: u32) -> Result<Internals, JsError> {
+        let a = self
+            .world
+            .agent(i as usize)
+            .map_err(|e| js_err("agent", e))?;
+        Ok(if a.done() {
             Internals {
                 mode: Mode::EndOfSteering,
                 gamma: a.state.theta,
@@ -396,18 +517,7 @@ impl Lab {
                 &a.goal_now,
                 &mut mem,
             )
-        };
-        let mut out = InternalsOut::from(out);
-        if self.world.controller == ControllerKind::Relaxed && !a.done() {
-            let r = &a.relaxed;
-            out.arc = Some(ArcOut {
-                alpha_min: r.arc_min,
-                alpha_max: r.arc_max,
-                alpha_r: r.alpha_r,
-                radius: r.ring,
-            });
-        }
-        to_js(&out)
+        })
     }
 
     /// The table ring nearest to agent `i`'s target distance, in its frame,

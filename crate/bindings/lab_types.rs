@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 use crate::funnel::{Goal, Internals};
+use crate::ghost::Ghost;
 use crate::vehicle::VehicleParams;
 use crate::world::{GoalMotion, GoalSpec, SwitchRule};
 
@@ -114,8 +115,34 @@ export interface Internals {
   gamma: number;
   reachable: boolean;
   vDt: number;
-  /** Relaxed funnelling: arc 𝒜 = [alphaMin, alphaMax] on the ring `radius`, chosen α_r (vehicle frame). */
-  arc?: { alphaMin: number; alphaMax: number; alphaR: number; radius: number } | null;
+  /** Where the table was asked (the aim point, vehicle frame: distance m, radial angle rad; 0 when not
+   *  asked) and with which desired speed (m/s). */
+  aimD: number;
+  aimAlpha: number;
+  vQuery: number;
+  /** Relaxed funnelling (paper 001 Fig. 7), vehicle frame: arc 𝒜 = [alphaMin, alphaMax] on the ring
+   *  `radius`, chosen α_r, final-orientation span F = [fMin, fMax] (may pass ±π), searched interval
+   *  T = [tMin, tMax], Fig. 7 branch (crate::relaxed::Fig7Branch: 0 none … 8 entry point). */
+  arc?: {
+    alphaMin: number; alphaMax: number; alphaR: number; radius: number;
+    fMin: number; fMax: number; tMin: number; tMax: number; branch: number;
+  } | null;
+}
+/** A predicted seek path (crate::ghost): `points` x, y pairs (world, m; start first, on arrival the
+ *  crossing of the reach circle last); η and the final direction (world) in rad, NaN when not reached. */
+export interface Ghost {
+  reached: boolean;
+  eta: number;
+  finalDir: number;
+  time: number;
+  length: number;
+  /** Desired speed simulated, m/s. */
+  speed: number;
+  /** Seeking at the queried speed failed: this is the path at the fallback speed v_dt (paper 000 §3). */
+  slowed: boolean;
+  targetX: number;
+  targetY: number;
+  points: Float32Array;
 }
 /** The loaded η table's shape. */
 export interface TableInfo {
@@ -221,6 +248,9 @@ pub(super) struct InternalsOut {
     pub(super) gamma: f32,
     pub(super) reachable: bool,
     pub(super) v_dt: f32,
+    pub(super) aim_d: f32,
+    pub(super) aim_alpha: f32,
+    pub(super) v_query: f32,
     pub(super) arc: Option<ArcOut>,
 }
 
@@ -232,6 +262,43 @@ pub(super) struct ArcOut {
     pub(super) alpha_max: f32,
     pub(super) alpha_r: f32,
     pub(super) radius: f32,
+    pub(super) f_min: f32,
+    pub(super) f_max: f32,
+    pub(super) t_min: f32,
+    pub(super) t_max: f32,
+    pub(super) branch: u8,
+}
+
+/// A predicted seek path's summary (the points are attached as a
+/// `Float32Array` by the binding).
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub(super) struct GhostOut {
+    pub(super) reached: bool,
+    pub(super) eta: f32,
+    pub(super) final_dir: f32,
+    pub(super) time: f32,
+    pub(super) length: f32,
+    pub(super) speed: f32,
+    pub(super) slowed: bool,
+    pub(super) target_x: f32,
+    pub(super) target_y: f32,
+}
+
+impl From<&Ghost> for GhostOut {
+    fn from(g: &Ghost) -> Self {
+        Self {
+            reached: g.reached,
+            eta: g.eta,
+            final_dir: g.final_dir,
+            time: g.time,
+            length: g.length,
+            speed: g.speed,
+            slowed: g.slowed,
+            target_x: g.target.x,
+            target_y: g.target.y,
+        }
+    }
 }
 
 impl From<Internals> for InternalsOut {
@@ -247,6 +314,9 @@ impl From<Internals> for InternalsOut {
             gamma: i.gamma,
             reachable: i.reachable,
             v_dt: i.v_dt,
+            aim_d: i.aim_d,
+            aim_alpha: i.aim_alpha,
+            v_query: i.v_query,
             arc: None,
         }
     }

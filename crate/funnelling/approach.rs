@@ -465,6 +465,9 @@ impl<'a> Approach<'a> {
     pub fn look(&self, dist: f32, alpha: f32, out: &mut Internals) -> Lookup {
         let s = self.s;
         let lk = self.table.lookup(dist, alpha, s.omega, s.v, self.v_query());
+        out.aim_d = dist;
+        out.aim_alpha = alpha;
+        out.v_query = self.v_query();
         out.reachable = lk.reachable;
         out.v_dt = if lk.reachable { self.v_d } else { lk.v_dt };
         out.eta = lk.eta;

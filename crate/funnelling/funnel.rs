@@ -149,6 +149,20 @@ pub struct Internals {
     pub reachable: bool,
     /// Desired speed used (fallback when unreachable), m/s.
     pub v_dt: f32,
+    /// Where this update asked the table (the aim: goal centre, entry
+    /// point or relaxed point), distance from the vehicle, m; 0 when it
+    /// did not ask (tolerance phase, terminal pursuit). With `aim_alpha`
+    /// and `v_query` it says which seek the η above predicts, so the
+    /// predicted path can be drawn ([`crate::funnelling::ghost`]).
+    #[serde(default)]
+    pub aim_d: f32,
+    /// Radial angle of that aim point (vehicle frame), rad.
+    #[serde(default)]
+    pub aim_alpha: f32,
+    /// The desired speed the table was asked with, m/s (v_d after the
+    /// halting cap, at least the lowest sampled desired speed).
+    #[serde(default)]
+    pub v_query: f32,
 }
 
 /// The default: a geometric bound of eight turning radii (each at least

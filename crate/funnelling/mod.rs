@@ -7,6 +7,7 @@
 //! |---|---|---|
 //! | [`vehicle`] | 000 §3 | forward-only unicycle, every limit enforced exactly; `VehicleParams` |
 //! | [`seek`] | 000 §3 | PD seek; the static reach simulation that *defines* η; the committed step |
+//! | [`ghost`] | 000 §3, Fig. 1c | the predicted seek path behind η (the generator's simulation, points bounded), drawn by the lab and the learn page |
 //! | [`table`] | 000 §3, 001 Fig. 3 | the η table: file format, lookup, generator |
 //! | [`funnel`] | 000 §4–5, Figs. 4–5 | the funnelling update, the four modes, μ bounds, halting |
 //! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r; controller choice |
@@ -24,6 +25,7 @@ pub mod approach;
 pub mod controller;
 pub mod envelope;
 pub mod funnel;
+pub mod ghost;
 pub mod goals;
 pub mod precision;
 pub mod ranges;

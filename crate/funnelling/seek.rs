@@ -140,6 +140,24 @@ pub fn simulate_reach(
     v_d: f32,
     lim: &ReachLimits,
 ) -> ReachOutcome {
+    simulate_reach_traced(p, start, target, v_d, lim, &mut |_| {})
+}
+
+/// [`simulate_reach`], telling `visit` every position the simulated
+/// vehicle passes: the start, each step's, and on arrival the point where
+/// the path crosses the reach circle (interpolated like the heading, or the
+/// end of the straight run the early exit skips). The one simulation behind
+/// both the η table ([`crate::table`]) and the predicted seek path the
+/// pages draw ([`crate::funnelling::ghost`]); with a no-op `visit` it is
+/// `simulate_reach` itself (the call is generic and inlined).
+pub fn simulate_reach_traced(
+    p: &VehicleParams,
+    start: VehicleState,
+    target: Vec2,
+    v_d: f32,
+    lim: &ReachLimits,
+    visit: &mut impl FnMut(Vec2),
+) -> ReachOutcome {
     let mut s = start;
     let d0 = target - s.pos;
     let radial0 = trig::atan2(d0.y, d0.x);
@@ -148,7 +166,7 @@ pub fn simulate_reach(
     let orbit = lim.orbit_turns * core::f32::consts::TAU;
     let mut turned = 0.0f32;
     let mut length = 0.0f32;
-    let mut prev: Option<(f32, f32)> = None; // (distance, heading) one step back
+    let mut prev: Option<(f32, f32, Vec2)> = None; // (distance, heading, position) one step back
     for step in 0..max_steps {
         let d = target - s.pos;
         let dist2 = d.length_squared();
@@ -157,8 +175,9 @@ pub fn simulate_reach(
             // circle, so η does not jitter with the step phase.
             let dist = dist2.sqrt();
             let theta = match prev {
-                Some((d0, th0)) if d0 > dist => {
+                Some((d0, th0, p0)) if d0 > dist => {
                     let f = ((d0 - lim.reach_radius) / (d0 - dist)).clamp(0.0, 1.0);
+                    visit(p0.lerp(s.pos, f));
                     th0 + f * diff(s.theta, th0)
                 }
                 _ => s.theta,
@@ -170,6 +189,7 @@ pub fn simulate_reach(
             };
         }
         let dist = dist2.sqrt();
+        visit(s.pos);
         let bearing = trig::atan2(d.y, d.x);
         // Steady straight approach: heading on the target, no rotation. The
         // rest of the path is a straight line ending with this bearing, so
@@ -179,13 +199,14 @@ pub fn simulate_reach(
             && diff(bearing, s.theta).abs() < 1e-3
         {
             let rest = (dist - lim.reach_radius) / s.v.max(1e-3);
+            visit(s.pos + d * ((dist - lim.reach_radius) / dist));
             return ReachOutcome::Reached {
                 eta: wrap(bearing - radial0),
                 time: step as f32 * p.dt + rest,
                 length: length + dist - lim.reach_radius,
             };
         }
-        prev = Some((dist, s.theta));
+        prev = Some((dist, s.theta, s.pos));
         let th0 = s.theta;
         let p0 = s.pos;
         seek_step(p, &mut s, bearing, v_d);

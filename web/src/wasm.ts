@@ -12,6 +12,7 @@ export type {
   CrowdSeek,
   FieldRange,
   FunnelConfig,
+  Ghost,
   GoalConfig,
   Internals,
   MuBound,

@@ -61,9 +61,9 @@ try {
       assert.equal(await page.locator("#message").isHidden(), true);
       assert.ok((await inked(page, "#crowd")) > 0.05, "canvas drawn");
     });
-    await check("crowd: nav bar links the three pages", async () => {
+    await check("crowd: nav bar links the four pages", async () => {
       const hrefs = await page.$$eval("nav.labnav a", (as) => as.map((a) => a.getAttribute("href")));
-      assert.deepEqual(hrefs, ["./index.html", "./crowd.html", "./wander.html"]);
+      assert.deepEqual(hrefs, ["./index.html", "./crowd.html", "./wander.html", "./learn.html"]);
     });
     await check("crowd: HiDPI backing store", async () => {
       const r = await page.evaluate(() => {

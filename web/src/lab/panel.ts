@@ -102,6 +102,7 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   };
   ov("radial", "radial direction");
   ov("eta", "η at target");
+  ov("ghost", "predicted seek path (η)");
   ov("gamma", "heading γ");
   ov("ring", "nearest η ring");
   ov("arc", "relaxed arc 𝒜, α_r");

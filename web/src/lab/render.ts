@@ -65,7 +65,51 @@ export interface Overlay {
   arc: { r: number; a0: number; a1: number; ar: number } | null;
 }
 
+/** A predicted seek path (crate::ghost): x, y pairs (world), and its end. */
+export interface GhostDraw {
+  points: Float32Array;
+  reached: boolean;
+  /** Final tangential direction (world), NaN when not reached. */
+  finalDir: number;
+  /** Drawn at the fallback speed v_dt (the queried speed orbits). */
+  slowed: boolean;
+}
+
+/** The ghost path: dashed in η's colour, with its final direction as an
+ *  arrow (the direction η measures); an orbit ends in a cross. */
+export function drawGhost(ctx: CanvasRenderingContext2D, v: View, g: GhostDraw, width = 2): void {
+  const n = Math.floor(g.points.length / 2);
+  if (n < 2) return;
+  ctx.save();
+  ctx.strokeStyle = COLOURS.eta;
+  ctx.globalAlpha = 0.7;
+  ctx.lineWidth = width;
+  ctx.setLineDash(g.slowed ? [2, 4] : [7, 5]);
+  ctx.beginPath();
+  for (let k = 0; k < n; k++) {
+    const p = v.toScreen(g.points[2 * k]!, g.points[2 * k + 1]!);
+    if (k === 0) ctx.moveTo(p.x, p.y);
+    else ctx.lineTo(p.x, p.y);
+  }
+  ctx.stroke();
+  ctx.setLineDash([]);
+  const e = v.toScreen(g.points[2 * n - 2]!, g.points[2 * n - 1]!);
+  if (g.reached && Number.isFinite(g.finalDir)) {
+    arrow(ctx, e.x, e.y, g.finalDir, 26, 7);
+  } else {
+    ctx.beginPath();
+    ctx.moveTo(e.x - 5, e.y - 5);
+    ctx.lineTo(e.x + 5, e.y + 5);
+    ctx.moveTo(e.x + 5, e.y - 5);
+    ctx.lineTo(e.x - 5, e.y + 5);
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
 export interface Scene {
+  /** The followed agent's predicted seek path, or null. */
+  ghost: GhostDraw | null;
   state: Float32Array;
   stride: number;
   count: number;
@@ -82,7 +126,7 @@ export interface Scene {
   handlePx: number;
 }
 
-function arrow(ctx: CanvasRenderingContext2D, x: number, y: number, ang: number, len: number, head = 6): void {
+export function arrow(ctx: CanvasRenderingContext2D, x: number, y: number, ang: number, len: number, head = 6): void {
   const ex = x + Math.cos(ang) * len;
   const ey = y - Math.sin(ang) * len;
   ctx.beginPath();
@@ -95,7 +139,7 @@ function arrow(ctx: CanvasRenderingContext2D, x: number, y: number, ang: number,
   ctx.stroke();
 }
 
-function grid(s: Surface, v: View): void {
+export function grid(s: Surface, v: View): void {
   const { ctx } = s;
   let step = 1;
   while (step * v.scale < 18) step *= 5;
@@ -188,7 +232,7 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
   }
 }
 
-function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: number, lineWidth: number): void {
+export function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: number, lineWidth: number): void {
   const n = Math.floor(f.samples.length / FIELD_STRIDE);
   const cos = Math.cos(f.theta);
   const sin = Math.sin(f.theta);
@@ -293,6 +337,7 @@ export function drawScene(s: Surface, v: View, sc: Scene): void {
     drawTarget(ctx, v, t, Math.min(sc.handlePx, 0.9 * sc.handlePx), false);
   }
   if (sc.focusTarget) drawTarget(ctx, v, sc.focusTarget, sc.handlePx, true);
+  if (sc.ghost) drawGhost(ctx, v, sc.ghost);
   const o = sc.overlay;
   if (o) {
     const p = v.toScreen(o.x, o.y);

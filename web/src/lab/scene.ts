@@ -5,7 +5,7 @@
 
 import { Mode, StateField, type Internals } from "../wasm";
 import type { HudData } from "./hud";
-import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type Overlay, type Scene, type TargetDraw } from "./render";
+import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type GhostDraw, type Overlay, type Scene, type TargetDraw } from "./render";
 import type { LabSim } from "./sim";
 
 /** Screen length of the orientation/heading handles, CSS px. */
@@ -62,8 +62,17 @@ export class SceneBuilder {
     const focusTarget: TargetDraw | null = sim.focus >= 0
       ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: inter?.mode ?? Mode.Funnelling }
       : null;
+    let ghost: GhostDraw | null = null;
+    if (st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD) {
+      try {
+        const g = lab.ghost(who);
+        ghost = { points: g.points, reached: g.reached, finalDir: g.finalDir, slowed: g.slowed };
+      } catch {
+        ghost = null;
+      }
+    }
     return {
-      state: sim.state, stride: sim.stride, count,
+      state: sim.state, stride: sim.stride, count, ghost,
       targets: this.targets(),
       trails: st.overlays.trails && count <= sim.trails.maxAgents ? sim.trails : null,
       focus: sim.focus, focusTarget, overlay,

@@ -14,6 +14,8 @@ export interface Overlays {
   field: boolean;
   trails: boolean;
   arc: boolean;
+  /** The predicted seek path behind η (paper 000 Fig. 1c; crate::ghost). */
+  ghost: boolean;
 }
 
 /** Vehicle limits the sliders edit; absent = the core's default. */
@@ -95,7 +97,7 @@ export function defaultState(): LabState {
     limits: {},
     // The core's FunnelConfig::default() (e2e checks they agree).
     funnel: { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 },
-    overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false },
+    overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false, ghost: true },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     preset: "",
     agents: 0,

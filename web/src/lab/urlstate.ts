@@ -8,7 +8,7 @@ import type { View } from "../view";
 import { clampToLimits, clip, FIELDS, parseField, type LimitDefaults, type RangeTable } from "./fields";
 import { AIM_KEYS, BOUND_KEYS, RELAXED_AIM_KEYS, defaultState, type AimKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
 
-const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc"];
+const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc", "ghost"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];
 
 function isBoundKey(k: string): k is BoundKey {

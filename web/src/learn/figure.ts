@@ -1,0 +1,175 @@
+// The live figure every section of the learn page uses: a HiDPI canvas
+// with draggable handles over it, play / pause / step / reset, a "show in
+// the lab" link built from the lab's own URL state format, and a caption.
+// The section supplies the simulation (its own Lab, forked from the page's
+// one η table), the drawing and the live numbers in its prose.
+//
+// Motion: a figure starts playing the first time it scrolls into view,
+// unless the reader asked for reduced motion (then only the buttons run it).
+
+import { beginFrame, setupCanvas, type Surface } from "../canvas";
+import { COLOURS } from "../lab/render";
+import type { LabState } from "../lab/state";
+import { encodeState } from "../lab/urlstate";
+import { View } from "../view";
+import { Handle, type HandleSpec } from "./handle";
+
+export interface FigureSpec {
+  /** The section's id (the figure's data-figure). */
+  name: string;
+  /** What the canvas shows, for screen readers. */
+  label: string;
+  /** World box to fit, m: [x0, y0, x1, y1] (read again by `LiveFigure.refit`). */
+  box(): readonly [number, number, number, number];
+  handles: HandleSpec[];
+  /** Back to the start state after an edit (a drag, a slider, Reset). */
+  reset(): void;
+  /** One simulation step of dt; false when the run is over. */
+  step(): boolean;
+  /** Simulated seconds since the start state. */
+  time(): number;
+  draw(ctx: CanvasRenderingContext2D, view: View): void;
+  /** Writes the live numbers of the prose (called after every change). */
+  numbers(): void;
+  /** The lab's state that shows this figure's set-up. */
+  labState(): LabState;
+}
+
+const reducedMotion = (): boolean => window.matchMedia("(prefers-reduced-motion: reduce)").matches;
+
+/** Figures currently playing; one animation frame drives them all. */
+const playing = new Set<LiveFigure>();
+let rafId = 0;
+let last = 0;
+
+function tick(now: number): void {
+  const dtMs = last === 0 ? 16.7 : Math.min(100, now - last);
+  last = now;
+  for (const f of playing) f.advance(dtMs);
+  rafId = playing.size > 0 ? requestAnimationFrame(tick) : 0;
+  if (rafId === 0) last = 0;
+}
+
+export class LiveFigure {
+  readonly view = new View();
+  /** Where a section puts its sliders and choices (under the canvas). */
+  readonly controls: HTMLDivElement;
+  private readonly surface: Surface;
+  private readonly handles: Handle[];
+  private readonly playBtn: HTMLButtonElement;
+  private readonly clock: HTMLSpanElement;
+  private readonly link: HTMLAnchorElement;
+  private acc = 0;
+  private over = false;
+  private autoplayed = false;
+  /** Frames drawn (tests wait for one). */
+  frames = 0;
+
+  constructor(host: HTMLElement, readonly spec: FigureSpec, private readonly dt: number) {
+    host.classList.add("figure");
+    host.dataset["figure"] = spec.name;
+    const stage = document.createElement("div");
+    stage.className = "fig-stage";
+    const canvas = document.createElement("canvas");
+    canvas.setAttribute("role", "img");
+    canvas.setAttribute("aria-label", spec.label);
+    stage.append(canvas);
+    const bar = document.createElement("div");
+    bar.className = "fig-bar";
+    this.playBtn = this.button(bar, "play", "Play", () => this.setPlaying(!playing.has(this)));
+    this.button(bar, "step", "Step", () => { this.setPlaying(false); this.stepOnce(); });
+    this.button(bar, "reset", "Reset", () => { this.setPlaying(false); this.changed(); });
+    this.clock = document.createElement("span");
+    this.clock.className = "fig-clock";
+    this.link = document.createElement("a");
+    this.link.className = "tolab";
+    this.link.textContent = "Show in the lab ↗";
+    this.link.target = "_blank";
+    this.link.rel = "noopener";
+    bar.append(this.clock, this.link);
+    this.controls = document.createElement("div");
+    this.controls.className = "fig-controls";
+    host.append(stage, bar, this.controls);
+    this.surface = setupCanvas(canvas, (s) => {
+      this.view.resize(s.width, s.height);
+      this.refit();
+    });
+    this.handles = spec.handles.map((h) => new Handle(h, stage, this.view, () => this.changed()));
+    new IntersectionObserver((entries) => {
+      if (entries.some((e) => e.isIntersecting) && !this.autoplayed && !reducedMotion()) {
+        this.autoplayed = true;
+        this.setPlaying(true);
+      }
+    }, { threshold: 0.6 }).observe(stage);
+    this.changed();
+    this.refit();
+  }
+
+  private button(bar: HTMLElement, role: string, text: string, onClick: () => void): HTMLButtonElement {
+    const b = document.createElement("button");
+    b.type = "button";
+    b.dataset["role"] = role;
+    b.textContent = text;
+    b.addEventListener("click", onClick);
+    bar.append(b);
+    return b;
+  }
+
+  /** An edit: back to the start state, numbers, link and picture updated. */
+  changed(): void {
+    this.spec.reset();
+    this.over = false;
+    this.acc = 0;
+    this.spec.numbers();
+    this.link.href = `./index.html#${encodeState(this.spec.labState())}`;
+    this.redraw();
+  }
+
+  /** Fits the view to the spec's box (a new set-up; never during a drag). */
+  refit(): void {
+    const [x0, y0, x1, y1] = this.spec.box();
+    this.view.fit(x0, y0, x1, y1, 16);
+    this.redraw();
+  }
+
+  setPlaying(on: boolean): void {
+    if (on) {
+      if (this.over) this.changed();
+      playing.add(this);
+      if (rafId === 0) rafId = requestAnimationFrame(tick);
+    } else {
+      playing.delete(this);
+    }
+    this.playBtn.textContent = on ? "Pause" : "Play";
+    this.playBtn.setAttribute("aria-pressed", String(on));
+  }
+
+  private stepOnce(): void {
+    if (this.over) this.changed();
+    this.over = !this.spec.step();
+    this.spec.numbers();
+    this.redraw();
+  }
+
+  /** Runs the steps `ms` of wall time is worth (called by the shared frame). */
+  advance(ms: number): void {
+    this.acc += ms / 1000;
+    let k = Math.min(4, Math.floor(this.acc / this.dt));
+    this.acc -= k * this.dt;
+    if (k === 4) this.acc = 0;
+    while (k-- > 0 && !this.over) this.over = !this.spec.step();
+    if (this.over) this.setPlaying(false);
+    this.spec.numbers();
+    this.redraw();
+  }
+
+  redraw(): void {
+    const s = this.surface;
+    if (!s) return;
+    beginFrame(s, COLOURS.background);
+    this.spec.draw(s.ctx, this.view);
+    for (const h of this.handles ?? []) h.place();
+    this.clock.textContent = `t ${this.spec.time().toFixed(1)} s`;
+    this.frames++;
+  }
+}

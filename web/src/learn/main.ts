@@ -1,0 +1,68 @@
+// The learn page (learn.html): an explorable explanation of funnelling.
+// Loads the core and the η table once, then builds one live figure per
+// section, each on its own Lab forked from the first (the table is shared,
+// not copied). window.__learn tells the tests when every figure is up.
+
+import { $, showMessage, showVersion } from "../page";
+import { createLab, errorText, loadCore, type Lab } from "../wasm";
+import type { LiveFigure } from "./figure";
+import { challengesSection } from "./sections/challenges";
+import { etaSection } from "./sections/eta";
+import { modesSection } from "./sections/modes";
+import { modulationSection } from "./sections/modulation";
+import { movingSection } from "./sections/moving";
+import { regionSection } from "./sections/region";
+import { seekSection } from "./sections/seek";
+import { tableSection } from "./sections/table";
+
+/** What the end-to-end test reads. */
+export interface LearnHook {
+  ready: boolean;
+  error: string | null;
+  /** Section ids with a figure, in page order. */
+  figures: string[];
+  /** Frames drawn per figure. */
+  frames(): Record<string, number>;
+}
+
+declare global {
+  interface Window {
+    __learn?: LearnHook;
+  }
+}
+
+const SECTIONS: ReadonlyArray<[string, (host: HTMLElement, lab: Lab) => LiveFigure]> = [
+  ["seek", seekSection],
+  ["eta", etaSection],
+  ["table", tableSection],
+  ["modulation", modulationSection],
+  ["modes", modesSection],
+  ["moving", movingSection],
+  ["region", regionSection],
+  ["challenges", challengesSection],
+];
+
+const figures: LiveFigure[] = [];
+const hook: LearnHook = {
+  ready: false,
+  error: null,
+  figures: [],
+  frames: () => Object.fromEntries(figures.map((f) => [f.spec.name, f.frames])),
+};
+window.__learn = hook;
+
+async function start(): Promise<void> {
+  showVersion(await loadCore());
+  const lab = await createLab("tables/eta.bin");
+  for (const [name, build] of SECTIONS) {
+    figures.push(build($(`fig-${name}`), lab));
+    hook.figures.push(name);
+  }
+  hook.ready = true;
+}
+
+start().catch((e: unknown) => {
+  const msg = `The learn page could not start: ${errorText(e)}`;
+  hook.error = msg;
+  showMessage(msg, "error");
+});

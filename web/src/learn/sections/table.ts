@@ -1,0 +1,84 @@
+// Section 3, "The η table" (paper 000 §3, Fig. 2; paper 001 §3, Fig. 3):
+// the field of final directions α+η around the vehicle as the lab draws it,
+// changing with the current speed v_c, angular speed ω_c and desired speed
+// v_d; where the seek orbits instead of arriving (darker arrows), and the
+// stored proactive speed v_dt that makes the target reachable.
+
+import { slider } from "../../controls";
+import { FIELD_STRIDE, type Ghost, type Internals, type Lab } from "../../wasm";
+import { backdrop, COLOURS, deg, drawField, drawGhost, ray, vehicle } from "../draw";
+import { LiveFigure } from "../figure";
+import { goal, labState, live, Run } from "../run";
+
+export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
+  const probe = { x: 1.2, y: 1.4 };
+  const speeds = { vC: 1.6, omegaC: 0, vD: 1.6 };
+  const lab = base.fork();
+  const A = lab.params().normalAccelMax;
+  const wMax = lab.params().omegaMax;
+  let field: Float32Array = new Float32Array(0);
+  let fieldKey = "";
+  let inter: Internals | null = null;
+  let ghost: Ghost | null = null;
+  let orbit: Ghost | null = null;
+  const omega = (): number => {
+    const lim = Math.min(wMax, speeds.vC > 0 ? A / speeds.vC : wMax);
+    return Math.max(-lim, Math.min(lim, speeds.omegaC));
+  };
+  const run = new Run(lab, (l) => {
+    l.addAgent({ x: 0, y: 0, theta: 0, v: speeds.vC, omega: omega(), goals: [goal(probe.x, probe.y, 0, { dTol: 0.25, epsTol: Math.PI, speed: speeds.vD, halting: false })] });
+  });
+  const refresh = (): void => {
+    const key = `${speeds.vC}|${omega()}|${speeds.vD}`;
+    if (key !== fieldKey) {
+      fieldKey = key;
+      field = lab.etaField(speeds.vC, omega(), speeds.vD);
+    }
+    inter = run.count > 0 && lab.internals(0).mode !== 0 ? lab.internals(0) : null;
+    ghost = inter ? lab.ghost(0) : null;
+    orbit = ghost?.slowed ? lab.ghostFrom(run.x(0), run.y(0), run.field(0, 2), run.field(0, 3), run.field(0, 4), probe.x, probe.y, speeds.vD) : null;
+  };
+  const fig = new LiveFigure(host, {
+    name: "table",
+    label: "the η field: at each sampled target around the vehicle, an arrow along the final direction α+η; darker arrows are unreachable at v_d",
+    box: () => [-4.5, -4.5, 4.5, 4.5],
+    handles: [{ name: "probe", label: "probe target", colour: COLOURS.ring, get: () => probe, set: (p) => { probe.x = p.x; probe.y = p.y; } }],
+    reset: () => { run.reset(); refresh(); },
+    step: () => { const more = run.step(); refresh(); return more; },
+    time: () => run.time,
+    draw(ctx, v) {
+      backdrop(ctx, v);
+      drawField(ctx, v, { samples: field, originX: 0, originY: 0, theta: 0, light: COLOURS.field, dark: COLOURS.fieldDark }, 12, 1.2);
+      if (orbit) drawGhost(ctx, v, { points: orbit.points, reached: false, finalDir: NaN, slowed: false }, 1.5);
+      if (ghost) drawGhost(ctx, v, { points: ghost.points, reached: ghost.reached, finalDir: ghost.finalDir, slowed: ghost.slowed });
+      if (inter && Number.isFinite(inter.eta)) ray(ctx, v, probe.x, probe.y, run.field(0, 2) + inter.alpha + inter.eta, 40, COLOURS.eta, 2.5);
+      vehicle(ctx, v, run.x(0), run.y(0), run.field(0, 2));
+    },
+    numbers() {
+      live("table-vc", `${speeds.vC.toFixed(2)} m/s`);
+      live("table-vd", `${speeds.vD.toFixed(2)} m/s`);
+      live("table-D", inter ? `${inter.d.toFixed(2)} m` : "—");
+      live("table-eta", deg(inter?.eta ?? NaN));
+      live("table-reach", inter ? (inter.reachable ? "reachable" : "unreachable") : "—");
+      live("table-vdt", inter ? `${inter.vDt.toFixed(2)} m/s` : "—");
+      let n = 0;
+      let dark = 0;
+      for (let k = 0; k < field.length; k += FIELD_STRIDE) {
+        n++;
+        if (field[k + 3]! < 0.5) dark++;
+      }
+      live("table-dark", `${dark} of ${n}`);
+    },
+    labState: () => labState({ x: 0, y: 0, theta: 0 }, goal(probe.x, probe.y, 0, { speed: speeds.vD }), {
+      field: { vC: speeds.vC, omegaC: omega(), vD: speeds.vD },
+      overlays: { ...labState({ x: 0, y: 0, theta: 0 }, goal(0, 0, 0)).overlays, field: true },
+    }),
+  }, lab.params().dt);
+  const s = (id: string, lbl: string, key: "vC" | "omegaC" | "vD", min: number, max: number): void => {
+    slider(fig.controls, { id, label: lbl, unit: key === "omegaC" ? "rad/s" : "m/s", min, max, step: 0.05, value: speeds[key], onInput: (x) => { speeds[key] = x; fig.changed(); } });
+  };
+  s("table-vc-slider", "current speed v_c", "vC", 0, 2);
+  s("table-wc-slider", "angular speed ω_c", "omegaC", -2, 2);
+  s("table-vd-slider", "desired speed v_d", "vD", 0.25, 2);
+  return fig;
+}

@@ -1,0 +1,231 @@
+// Browser end-to-end test of the learn page (learn.html, issue 15): the
+// built page in Debian's headless Chromium via playwright-core. Checks:
+// every section's canvas draws; one handle per section drags (pointer) and
+// changes a number in the prose; handles move with the keyboard; the
+// "show in the lab" links open the lab in the figure's state (the lab's
+// window.__lab hook); reduced motion means no autoplay, and without it a
+// figure plays once in view; no console errors. Screenshots of every
+// section at 1280x800 and 390x844 go to artifacts/learn-*.png.
+// Prints "e2e-learn: N passed, M failed".
+import { serve, launch, openPage, checks, waitReady, settle, artifacts } from "./harness.mjs";
+import { resolve } from "node:path";
+import assert from "node:assert/strict";
+
+const { check, finish } = checks("e2e-learn");
+
+/** Section → [handle to drag, live number it must change, drag offset in CSS px]. */
+const DRAGS = {
+  seek: ["target", "seek-A", { x: -40, y: -50 }],
+  eta: ["target", "eta-sim", { x: -30, y: 45 }],
+  table: ["probe", "table-eta", { x: 50, y: -30 }],
+  modulation: ["beta", "mod-deta", { x: -50, y: 20 }],
+  modes: ["target", "modes-D", { x: 40, y: 30 }],
+  moving: ["middle", "moving-chain", { x: 40, y: 40 }],
+  region: ["centre", "region-arc", { x: 0, y: -40 }],
+  challenges: ["target", "break-D", { x: 40, y: -30 }],
+};
+
+async function waitLearn(page) {
+  await page.waitForFunction(() => {
+    const l = window.__learn;
+    return l && (l.error !== null || (l.ready && Object.values(l.frames()).every((n) => n > 0)));
+  }, null, { timeout: 30000 });
+  return page.evaluate(() => window.__learn.error);
+}
+
+/** Pixels of a figure's canvas that differ from the background (#fbfaf7). */
+async function inked(page, name) {
+  return page.evaluate((name) => {
+    const c = document.querySelector(`[data-figure="${name}"] canvas`);
+    const copy = document.createElement("canvas");
+    copy.width = c.width;
+    copy.height = c.height;
+    const ctx = copy.getContext("2d", { willReadFrequently: true });
+    ctx.drawImage(c, 0, 0);
+    const d = ctx.getImageData(0, 0, c.width, c.height).data;
+    let n = 0;
+    let colour = 0;
+    for (let i = 0; i < d.length; i += 4) {
+      const dr = Math.abs(d[i] - 251), dg = Math.abs(d[i + 1] - 250), db = Math.abs(d[i + 2] - 247);
+      if (dr + dg + db > 30) n++;
+      if (Math.max(d[i], d[i + 1], d[i + 2]) - Math.min(d[i], d[i + 1], d[i + 2]) > 60) colour++;
+    }
+    return { n, colour, total: d.length / 4 };
+  }, name);
+}
+
+const liveText = (page, name) => page.locator(`[data-live="${name}"]`).first().textContent();
+
+async function dragHandle(page, section, handle, by) {
+  const h = page.locator(`[data-figure="${section}"] [data-handle="${handle}"]`);
+  await h.scrollIntoViewIfNeeded();
+  const box = await h.boundingBox();
+  const x = box.x + box.width / 2;
+  const y = box.y + box.height / 2;
+  await page.mouse.move(x, y);
+  await page.mouse.down();
+  await page.mouse.move(x + by.x, y + by.y, { steps: 8 });
+  await page.mouse.up();
+  await settle(page);
+}
+
+const { server, url } = await serve();
+const browser = await launch();
+const allProblems = [];
+try {
+  // ------------------------------------------------------------ desktop, reduced motion
+  const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1, { reducedMotion: "reduce" });
+  await page.goto(`${url}learn.html`);
+  const err = await waitLearn(page);
+  await check("the learn page loads the core and the table, eight figures", async () => {
+    assert.equal(err, null);
+    const hrefs = await page.$$eval("nav.labnav a", (as) => as.map((a) => a.getAttribute("href")));
+    assert.deepEqual(hrefs, ["./index.html", "./crowd.html", "./wander.html", "./learn.html"]);
+    const figs = await page.evaluate(() => window.__learn.figures);
+    assert.deepEqual(figs, Object.keys(DRAGS));
+    assert.equal(await page.locator("#message").isHidden(), true);
+  });
+
+  for (const name of Object.keys(DRAGS)) {
+    await check(`${name}: the canvas draws (non-blank, coloured)`, async () => {
+      await page.locator(`#${name}`).scrollIntoViewIfNeeded();
+      await settle(page);
+      const p = await inked(page, name);
+      assert.ok(p.n > 0.02 * p.total && p.colour > 200, JSON.stringify(p));
+    });
+  }
+
+  await check("reduced motion: nothing plays on its own", async () => {
+    await page.locator("#modes").scrollIntoViewIfNeeded();
+    await page.waitForTimeout(600);
+    const clocks = await page.locator(".fig-clock").allTextContents();
+    assert.ok(clocks.every((c) => c === "t 0.0 s"), clocks.join(", "));
+  });
+
+  for (const [name, [handle, live, by]] of Object.entries(DRAGS)) {
+    await check(`${name}: dragging the ${handle} changes ${live} in the text`, async () => {
+      const before = await liveText(page, live);
+      await dragHandle(page, name, handle, by);
+      const after = await liveText(page, live);
+      assert.ok(before && after && before !== "…", `${live}: ${before}`);
+      assert.notEqual(after, before, `${live} stayed ${before}`);
+    });
+  }
+
+  await check("keyboard: a focused handle moves with the arrow keys", async () => {
+    const before = await liveText(page, "eta-sim");
+    await page.locator('[data-figure="eta"] [data-handle="target"]').focus();
+    for (let k = 0; k < 5; k++) await page.keyboard.press("ArrowUp");
+    await settle(page);
+    assert.notEqual(await liveText(page, "eta-sim"), before);
+  });
+
+  await check("play, pause and step run the figure's simulation", async () => {
+    const fig = page.locator('[data-figure="modes"]');
+    await fig.locator('[data-role="step"]').click();
+    assert.equal(await fig.locator(".fig-clock").textContent(), "t 0.0 s");
+    await fig.locator('[data-role="play"]').click();
+    await page.waitForTimeout(800);
+    await fig.locator('[data-role="play"]').click();
+    const t = parseFloat((await fig.locator(".fig-clock").textContent()).slice(2));
+    assert.ok(t > 0.2, `clock ${t}`);
+    await fig.locator('[data-role="reset"]').click();
+    assert.equal(await fig.locator(".fig-clock").textContent(), "t 0.0 s");
+  });
+
+  await check("challenges: each set-up runs and explains itself", async () => {
+    for (const key of ["tiny", "close", "behind"]) {
+      await page.locator(`[data-challenge-button="${key}"]`).click();
+      await settle(page);
+      assert.equal(await page.locator(`[data-challenge="${key}"]`).isVisible(), true);
+      const t = await liveText(page, "break-time");
+      assert.ok(/s$/.test(t), `${key}: ${t}`);
+    }
+  });
+
+  // Screenshots of every section (desktop).
+  for (const name of Object.keys(DRAGS)) {
+    await page.locator(`#${name}`).screenshot({ path: resolve(artifacts, `learn-${name}-1280.png`) });
+  }
+
+  await check("the 'show in the lab' links open the lab in the figure's state", async () => {
+    for (const name of Object.keys(DRAGS)) {
+      const href = await page.locator(`[data-figure="${name}"] a.tolab`).getAttribute("href");
+      const want = new URLSearchParams(href.slice(href.indexOf("#") + 1));
+      const lab = await context.newPage();
+      lab.on("console", (m) => { if (m.type() === "error" || m.type() === "warning") problems.push(`lab from ${name}: ${m.text()}`); });
+      await lab.goto(new URL(href, `${url}learn.html`).toString());
+      assert.equal(await waitReady(lab), null);
+      const st = await lab.evaluate(() => window.__lab.state());
+      const probs = await lab.evaluate(() => window.__lab.problems);
+      assert.deepEqual(probs, [], `${name}: ${probs.join("; ")}`);
+      if (want.get("preset")) {
+        assert.equal(st.preset, want.get("preset"));
+        assert.ok((await lab.evaluate(() => window.__lab.count())) >= 2);
+      } else {
+        const near = (a, b, what) => assert.ok(Math.abs(a - Number(b)) < 1e-3, `${name} ${what}: ${a} vs ${b}`);
+        near(st.target.x, want.get("tx"), "target x");
+        near(st.target.y, want.get("ty"), "target y");
+        near(st.vehicle.x, want.get("vx"), "vehicle x");
+        near(st.vehicle.y, want.get("vy"), "vehicle y");
+        // The lab's agent sits where the figure's vehicle starts, with the figure's target.
+        const h = await lab.evaluate(() => window.__lab.internals());
+        assert.ok(h && Number.isFinite(h.d), `${name}: internals`);
+        assert.equal(st.overlays.ghost, true, `${name}: the lab's ghost overlay`);
+      }
+      await lab.close();
+    }
+    // The dragged target of section 2 is the one the lab opens with.
+    const href = await page.locator('[data-figure="eta"] a.tolab').getAttribute("href");
+    assert.notEqual(new URLSearchParams(href.split("#")[1]).get("tx"), "3");
+  });
+
+  await check("no console errors or warnings (learn page and the labs it opened)", async () => {
+    assert.deepEqual(problems, []);
+  });
+  allProblems.push(...problems);
+  await context.close();
+
+  // ------------------------------------------------------------ autoplay without reduced motion
+  {
+    const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 });
+    await page.goto(`${url}learn.html`);
+    await waitLearn(page);
+    await check("without reduced motion a figure plays once scrolled into view", async () => {
+      await page.locator('[data-figure="modes"] canvas').scrollIntoViewIfNeeded();
+      await page.waitForFunction(() => document.querySelector('[data-figure="modes"] .fig-clock').textContent !== "t 0.0 s", null, { timeout: 5000 });
+    });
+    await check("autoplay context: no console errors", async () => assert.deepEqual(problems, []));
+    await context.close();
+  }
+
+  // ------------------------------------------------------------ phone
+  {
+    const { page, problems, context } = await openPage(browser, { width: 390, height: 844 }, 2, { reducedMotion: "reduce", hasTouch: true, isMobile: true });
+    await page.goto(`${url}learn.html`);
+    await check("phone: loads, no horizontal scrolling", async () => {
+      assert.equal(await waitLearn(page), null);
+      const w = await page.evaluate(() => document.documentElement.scrollWidth);
+      assert.ok(w <= 392, `page is ${w} px wide`);
+    });
+    for (const name of Object.keys(DRAGS)) {
+      await check(`phone: ${name} draws and fits`, async () => {
+        await page.locator(`#${name}`).scrollIntoViewIfNeeded();
+        await settle(page);
+        const p = await inked(page, name);
+        assert.ok(p.n > 0.02 * p.total, JSON.stringify(p));
+        const box = await page.locator(`[data-figure="${name}"] canvas`).boundingBox();
+        assert.ok(box.width <= 390 && box.width > 300, `canvas ${box.width} px`);
+        await page.locator(`#${name}`).screenshot({ path: resolve(artifacts, `learn-${name}-390.png`) });
+      });
+    }
+    await check("phone: no console errors", async () => assert.deepEqual(problems, []));
+    allProblems.push(...problems);
+    await context.close();
+  }
+} finally {
+  await browser.close();
+  await server.close();
+}
+if (allProblems.length) console.log(`# console problems:\n${allProblems.join("\n")}`);
+finish();
