@@ -106,19 +106,19 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
             .map(|_| ()),
         "motion.center.x" => lab
             .load_scenario(&scenario(
-                &format!(r#"{{"kind": "circle", "center": [{v}, 0], "angularSpeed": 0.1}}"#),
+                &format!(r#"{{"kind": "circle", "center": [{v}, 0], "angularSpeed": 0.001}}"#),
                 10.0,
             ))
             .map(|_| ()),
         "motion.center.y" => lab
             .load_scenario(&scenario(
-                &format!(r#"{{"kind": "circle", "center": [0, {v}], "angularSpeed": 0.1}}"#),
+                &format!(r#"{{"kind": "circle", "center": [0, {v}], "angularSpeed": 0.001}}"#),
                 10.0,
             ))
             .map(|_| ()),
         "motion.angularSpeed" => lab
             .load_scenario(&scenario(
-                &format!(r#"{{"kind": "circle", "center": [0, 0], "angularSpeed": {v}}}"#),
+                &format!(r#"{{"kind": "circle", "center": [3, 0.5], "angularSpeed": {v}}}"#),
                 10.0,
             ))
             .map(|_| ()),
@@ -157,8 +157,32 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
     Some(result.err().map(message))
 }
 
-/// The bound a field has with the default vehicle (2 m/s, 2 rad/s).
+/// The bound a field has with the default vehicle (2 m/s, 2 rad/s) and
+/// the playground agent: positions also stay where f32 resolves a step of
+/// the agent's goal (`precision::agent_limit`, 45,438 m at 1.3 m/s and
+/// 1/60 s; the range's ±1e6 m is the cap for fast, coarse vehicles), a
+/// circle's centre so that its far side does.
 fn effective_max(r: &FieldRange) -> f64 {
+    let on_circle = r.key.starts_with("motion.center");
+    if r.key.ends_with("pos.x") || r.key.ends_with("pos.y") || on_circle {
+        let p = steering::vehicle::VehicleParams::default();
+        let goal = steering::funnelling::goals::GoalSpec {
+            goal: steering::funnel::Goal {
+                speed: 1.3,
+                d_tol: 0.3,
+                ..Default::default()
+            },
+            ..Default::default()
+        };
+        let limit = f64::from(steering::funnelling::precision::agent_limit(&p, &[goal]));
+        // A circle's far side (2·centre − goal, the goal at (3, 1)) must
+        // stay inside too.
+        return if on_circle {
+            (limit - 3.0) / 2.0
+        } else {
+            limit
+        };
+    }
     match r.at_most {
         Some("vMax") => r.max.min(2.0),
         Some("omegaMax") => r.max.min(2.0),
@@ -171,7 +195,7 @@ fn effective_max(r: &FieldRange) -> f64 {
 fn a_value_just_outside_each_range_is_refused_with_the_field_named() {
     for r in &ALL {
         let max = effective_max(r);
-        let min = if r.min < 0.0 && r.at_most.is_some() {
+        let min = if r.min < 0.0 && (r.at_most.is_some() || max < r.max) {
             -max
         } else {
             r.min

@@ -48,6 +48,23 @@ pub fn ranges() -> Result<JsValue, JsError> {
     to_js(&crate::funnelling::ranges::ALL.as_slice())
 }
 
+/// The coordinate rule of [`crate::funnelling::precision`]: an agent and
+/// its goals stay within `min(⌊stepScale·v·dt⌋, ⌊toleranceScale·D_tol⌋,
+/// coordMax)` metres (v its slowest goal speed). The page bounds its
+/// positions with it, as it bounds the desired speed by the max speed.
+///
+/// # Errors
+/// Never in practice (plain numbers).
+#[wasm_bindgen(unchecked_return_type = "PrecisionRule")]
+pub fn precision() -> Result<JsValue, JsError> {
+    use crate::funnelling::precision as p;
+    to_js(&super::lab_types::PrecisionRule {
+        step_scale: p::STEP_RESOLUTION_SCALE,
+        tolerance_scale: p::TOLERANCE_RESOLUTION_SCALE,
+        coord_max: p::COORD_MAX,
+    })
+}
+
 /// A JavaScript number that must be a whole number in `r` (compared in
 /// f64: f32 cannot tell 2³² from 2³² − 1).
 fn whole(r: &crate::funnelling::ranges::FieldRange, v: f64) -> Result<u64, JsError> {

@@ -28,6 +28,13 @@ export interface FieldRange {
   atMost: string | null;
   what: string;
 }
+/** Where f32 positions resolve an agent's steps (crate::funnelling::precision):
+ *  |coordinate| ≤ min(⌊stepScale·v·dt⌋, ⌊toleranceScale·D_tol⌋, coordMax), in f32. */
+export interface PrecisionRule {
+  stepScale: number;
+  toleranceScale: number;
+  coordMax: number;
+}
 /** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
 export interface VehicleParams {
   dt: number;
@@ -334,4 +341,13 @@ pub(super) struct ScenarioInfo {
     pub(super) max_x: f32,
     pub(super) max_y: f32,
     pub(super) warning: String,
+}
+
+/// [`PrecisionRule`](precision) on the wire.
+#[derive(Serialize)]
+#[serde(rename_all = "camelCase")]
+pub struct PrecisionRule {
+    pub step_scale: f32,
+    pub tolerance_scale: f32,
+    pub coord_max: f32,
 }

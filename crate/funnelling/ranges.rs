@@ -144,7 +144,11 @@ pub const KP: FieldRange = range("kp", 0.01, 10_000.0, "1/s²", "seek proportion
 /// Damping gain of the seek's angular controller.
 pub const KD: FieldRange = range("kd", 0.01, 10_000.0, "1/s", "seek damping gain");
 
-// A vehicle's state (the start pose of an agent).
+// A vehicle's state (the start pose of an agent). Positions have a
+// cross-field rule too: an agent and its goals stay within
+// `precision::agent_limit` (where f32 still resolves a quarter of a step
+// of its slowest goal; 45,438 m at 1.3 m/s and 1/60 s). ±1e6 m is the cap
+// for fast, coarse vehicles.
 /// Start x.
 pub const POS_X: FieldRange = range("pos.x", -WORLD, WORLD, "m", "start x");
 /// Start y.
@@ -278,11 +282,13 @@ pub const SEED: FieldRange = integer(range(
     "",
     "seed of the random agents",
 ));
-/// Half-side of the square the random agents start in.
+/// Half-side of the square the random agents start in: 10 km, inside the
+/// coordinate limit of `precision.rs` for goal speeds from 0.29 m/s (a
+/// slower crowd spread that far is refused there, with the limit named).
 pub const EXTENT: FieldRange = range(
     "extent",
     1e-3,
-    1e5,
+    1e4,
     "m",
     "half-side of the random agents' square",
 );

@@ -3,7 +3,7 @@
 
 import init, { Lab, version } from "../pkg/steering.js";
 
-export { CrowdLab, Lab, Mode, StateField, WanderLab, ranges } from "../pkg/steering.js";
+export { CrowdLab, Lab, Mode, StateField, WanderLab, precision, ranges } from "../pkg/steering.js";
 export type {
   AgentConfig,
   CrowdConfig,
@@ -16,6 +16,7 @@ export type {
   GoalConfig,
   Internals,
   MuBound,
+  PrecisionRule,
   RelaxedConfig,
   ScenarioInfo,
   TableInfo,

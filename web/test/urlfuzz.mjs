@@ -45,7 +45,7 @@ core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
 const tableBytes = readFileSync(resolve(root, "tables/eta.bin"));
 let lab = new core.Lab(tableBytes);
 const defaults = lab.params();
-const table = new page.RangeTable(core.ranges());
+const table = new page.RangeTable(core.ranges(), core.precision());
 const PRESETS = ["p000_fig1_seek", "p000_fig7_variety"];
 
 // mulberry32: the same cases on every run.

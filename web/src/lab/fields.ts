@@ -4,15 +4,16 @@
 // (issue 16). Pure: no wasm at run time, so the Node fuzz test runs it as is.
 
 import { parseDecimal } from "../controls";
-import type { FieldRange } from "../wasm";
+import type { FieldRange, PrecisionRule } from "../wasm";
 
 export { parseDecimal };
 import type { LabState, Limits } from "./state";
 
 const DEG = Math.PI / 180;
 
-/** The core's default vehicle limits (`lab.params()`): what an unset limit is. */
-export type LimitDefaults = Required<Limits>;
+/** The core's default vehicle limits (`lab.params()`): what an unset limit
+ *  is, and the time step (the coordinate rule needs it). */
+export type LimitDefaults = Required<Limits> & { dt: number };
 
 /** One number of the lab state, tied to the core's range `core`. */
 export interface LabField {
@@ -75,11 +76,14 @@ export function field(url: string): LabField {
   return f;
 }
 
-/** The core's ranges by key. */
+/** The core's keys of the coordinates bounded by its precision rule. */
+const COORDINATES = new Set(["pos.x", "pos.y", "goal.pos.x", "goal.pos.y"]);
+
+/** The core's ranges by key, and its coordinate rule (`precision()`). */
 export class RangeTable {
   private readonly byKey = new Map<string, FieldRange>();
 
-  constructor(list: readonly FieldRange[]) {
+  constructor(list: readonly FieldRange[], readonly precision: PrecisionRule) {
     for (const r of list) this.byKey.set(r.key, r);
     for (const f of FIELDS) if (!this.byKey.has(f.core)) throw new Error(`the core exports no range for ${f.core}`);
   }
@@ -99,12 +103,34 @@ export interface Bounds {
   integer: boolean;
   /** The field that narrowed the maximum, if it did. */
   by: LabField | null;
+  /** Narrowed by the coordinate rule (desired speed and D_tol). */
+  resolution: boolean;
+}
+
+/** The largest |coordinate| of the playground agent and its goal: where
+ *  f32 still resolves a quarter of a step at the desired speed, and D_tol / 32
+ *  (crate/funnelling/precision.rs), computed in f32 as the core does. */
+export function coordinateLimit(ranges: RangeTable, s: LabState, d: LimitDefaults): number {
+  const f = Math.fround;
+  const r = ranges.precision;
+  const step = Math.floor(Math.min(f(f(f(r.stepScale) * f(s.speed)) * f(d.dt)), r.coordMax));
+  const tol = Math.floor(f(f(r.toleranceScale) * f(s.dTol)));
+  return Math.min(step, tol, r.coordMax);
 }
 
 export function bounds(f: LabField, ranges: RangeTable, s: LabState, d: LimitDefaults): Bounds {
   const r = ranges.get(f.core);
   let { min, max } = r;
   let by: LabField | null = null;
+  let resolution = false;
+  if (COORDINATES.has(f.core)) {
+    const lim = coordinateLimit(ranges, s, d);
+    if (lim < max) {
+      max = lim;
+      min = Math.max(min, -lim);
+      resolution = true;
+    }
+  }
   if (r.atMost !== null) {
     const lf = FIELDS.find((x) => x.core === r.atMost);
     if (lf) {
@@ -116,7 +142,7 @@ export function bounds(f: LabField, ranges: RangeTable, s: LabState, d: LimitDef
       if (min < 0) min = Math.max(min, -lim);
     }
   }
-  return { min, max, integer: r.integer, by };
+  return { min, max, integer: r.integer, by, resolution };
 }
 
 /** A number for a message: at most 4 decimals, no trailing zeros. */
@@ -131,7 +157,8 @@ export function describe(f: LabField, b: Bounds): string {
   const unit = f.unit ? ` ${f.unit}` : "";
   const lo = Math.min(b.min * k, b.max * k);
   const hi = Math.max(b.min * k, b.max * k);
-  return `${b.integer ? "a whole number" : "a number"} in [${show(lo)}, ${show(hi)}]${unit}${b.by ? ` (at most ${b.by.label})` : ""}`;
+  const why = b.by ? ` (at most ${b.by.label})` : b.resolution ? " (where f32 resolves a step at this desired speed and D_tol)" : "";
+  return `${b.integer ? "a whole number" : "a number"} in [${show(lo)}, ${show(hi)}]${unit}${why}`;
 }
 
 /** Checks the shown value `text` for `f`; the stored value, or the reason it is refused. */

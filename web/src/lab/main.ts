@@ -4,7 +4,7 @@
 import { setupCanvas } from "../canvas";
 import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
-import { createLab, errorText, loadCore, ranges, type Lab } from "../wasm";
+import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
 import { RangeTable } from "./fields";
 import { attachDrags, handlePositions, type Handles } from "./handles";
 import { installHook, Perf } from "./hook";
@@ -36,7 +36,7 @@ async function start(): Promise<void> {
   }
 
   // The link is read against the core's ranges and default limits.
-  const table = new RangeTable(ranges());
+  const table = new RangeTable(ranges(), precision());
   const decoded = decodeState(location.hash, presetNames(), table, lab.params());
   const st = decoded.state;
   hook.problems = decoded.problems;

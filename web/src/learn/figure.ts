@@ -8,6 +8,7 @@
 // unless the reader asked for reduced motion (then only the buttons run it).
 
 import { beginFrame, setupCanvas, type Surface } from "../canvas";
+import type { LimitDefaults, RangeTable } from "../lab/fields";
 import { COLOURS } from "../lab/render";
 import type { LabState } from "../lab/state";
 import { encodeState } from "../lab/urlstate";
@@ -33,6 +34,14 @@ export interface FigureSpec {
   numbers(): void;
   /** The lab's state that shows this figure's set-up. */
   labState(): LabState;
+}
+
+/** What the "show in the lab" links are encoded against: the core's ranges
+ *  and default limits, as the lab reads them (set once by main.ts). */
+let linkContext: { ranges: RangeTable; defaults: LimitDefaults } | null = null;
+
+export function setLinkContext(ranges: RangeTable, defaults: LimitDefaults): void {
+  linkContext = { ranges, defaults };
 }
 
 const reducedMotion = (): boolean => window.matchMedia("(prefers-reduced-motion: reduce)").matches;
@@ -121,7 +130,7 @@ export class LiveFigure {
     this.over = false;
     this.acc = 0;
     this.spec.numbers();
-    this.link.href = `./index.html#${encodeState(this.spec.labState())}`;
+    if (linkContext) this.link.href = `./index.html#${encodeState(this.spec.labState(), linkContext.ranges, linkContext.defaults)}`;
     this.redraw();
   }
 

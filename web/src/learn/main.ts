@@ -4,8 +4,9 @@
 // not copied). window.__learn tells the tests when every figure is up.
 
 import { $, showMessage, showVersion } from "../page";
-import { createLab, errorText, loadCore, type Lab } from "../wasm";
-import type { LiveFigure } from "./figure";
+import { RangeTable } from "../lab/fields";
+import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
+import { setLinkContext, type LiveFigure } from "./figure";
 import { challengesSection } from "./sections/challenges";
 import { etaSection } from "./sections/eta";
 import { modesSection } from "./sections/modes";
@@ -54,6 +55,7 @@ window.__learn = hook;
 async function start(): Promise<void> {
   showVersion(await loadCore());
   const lab = await createLab("tables/eta.bin");
+  setLinkContext(new RangeTable(ranges(), precision()), lab.params());
   for (const [name, build] of SECTIONS) {
     figures.push(build($(`fig-${name}`), lab));
     hook.figures.push(name);
