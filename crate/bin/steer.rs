@@ -49,6 +49,48 @@ fn load_table(path: &Path) -> Result<EtaTable, String> {
     EtaTable::from_bytes(&bytes).map_err(|e| format!("{shown}: {e}"))
 }
 
+/// The table `steer run` runs with (issue 14): `--table` or the
+/// scenario's `table` must match the vehicle (a mismatch is an error);
+/// otherwise the committed table if it matches, else the cache's
+/// (`steering::cli::table_cache`), built if missing. Never a table built
+/// for other limits.
+fn run_table(args: &RunArgs, sc: &Scenario) -> Result<EtaTable, String> {
+    let named = args.table.clone().or_else(|| {
+        sc.table.as_ref().map(|t| {
+            let base = args.scenario.parent().unwrap_or(Path::new(""));
+            base.join(t)
+        })
+    });
+    if let Some(path) = named {
+        let table = load_table(&path)?;
+        table
+            .check_params(&sc.vehicle)
+            .map_err(|e| format!("{}: {e} (eta-table --vehicle builds one)", path.display()))?;
+        return Ok(table);
+    }
+    let committed = Path::new("tables/eta.bin");
+    if let Ok(t) = load_table(committed) {
+        if t.check_params(&sc.vehicle).is_ok() {
+            return Ok(t);
+        }
+    }
+    let dir = steering::cli::table_cache::cache_dir();
+    let t0 = Instant::now();
+    let (table, source) = steering::cli::table_cache::table_for(&sc.vehicle, &dir)
+        .map_err(|e| format!("{}: {e}", args.scenario.display()))?;
+    match source {
+        steering::cli::table_cache::Source::Cached(p) => {
+            eprintln!("steer: η table for this vehicle from the cache {}", p.display());
+        }
+        steering::cli::table_cache::Source::Built(p) => eprintln!(
+            "steer: built the η table for this vehicle in {:.1} s -> {}",
+            t0.elapsed().as_secs_f32(),
+            p.display()
+        ),
+    }
+    Ok(table)
+}
+
 /// `steer run`: checks everything (output path included) before the first
 /// step, then streams the trajectory (`steering::cli::trajectory`).
 fn run(args: &RunArgs) -> Result<(), String> {
@@ -60,10 +102,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     if let Some(c) = args.controller {
         sc.controller = c;
     }
-    let table = load_table(&args.table)?;
-    table
-        .check_params(&sc.vehicle)
-        .map_err(|e| format!("{}: {e}", args.table.display()))?;
+    let table = run_table(args, &sc)?;
     sc.world().map_err(|e| format!("{scenario}: {e}"))?;
     let mut out = create_out(&args.out)?;
     let t0 = Instant::now();

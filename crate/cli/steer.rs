@@ -49,9 +49,13 @@ pub struct RunArgs {
     /// Record every N-th step, 1 to 36,000,000.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = parse_every)]
     pub every: u32,
-    /// η table.
-    #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
-    pub table: PathBuf,
+    /// η table; it must match the scenario's vehicle (else an error).
+    /// Without it: the scenario's `table`, else `tables/eta.bin` if built
+    /// for the scenario's vehicle, else the matching table from the cache
+    /// (`$STEER_TABLE_CACHE`, `$XDG_CACHE_HOME/steering-lab/tables` or
+    /// `~/.cache/steering-lab/tables`), built there if missing.
+    #[arg(long, value_name = "FILE")]
+    pub table: Option<PathBuf>,
     /// Override the scenario's controller.
     #[arg(long, value_name = "standard|relaxed", value_parser = parse_controller)]
     pub controller: Option<ControllerKind>,
