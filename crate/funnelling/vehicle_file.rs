@@ -90,6 +90,15 @@ pub fn parse(text: &str) -> Result<VehicleFile, String> {
             None => format!("not a JSON vehicle file: {e}"),
         }
     })?;
+    // serde's type errors carry no path: name the key of a non-number.
+    let obj = value.get("vehicle").unwrap_or(&value);
+    if let Some(m) = obj.as_object() {
+        for (k, v) in m {
+            if k != "integrator" && !v.is_number() {
+                return Err(format!("field `{k}`: expected a number, got {v}"));
+            }
+        }
+    }
     let file = if value.get("vehicle").is_some() {
         let w: Wrapped = serde_json::from_value(value).map_err(|e| format!("vehicle file: {e}"))?;
         VehicleFile {
