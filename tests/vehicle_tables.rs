@@ -66,7 +66,10 @@ fn refused(text: &str, field: &str) {
 fn bad_vehicle_files_are_refused_with_the_field_named() {
     // NaN and Infinity are not JSON: the key they follow is named.
     refused(r#"{"vMax": NaN}"#, "vMax");
-    refused("{\n  \"vehicle\": {\n    \"dt\": 0.01,\n    \"omegaMax\": Infinity\n  }\n}", "omegaMax");
+    refused(
+        "{\n  \"vehicle\": {\n    \"dt\": 0.01,\n    \"omegaMax\": Infinity\n  }\n}",
+        "omegaMax",
+    );
     refused(r#"{"vehicle": {"accelMax": "fast"}}"#, "accelMax");
     // Zero and negative values: out of range.
     refused(r#"{"vehicle": {"omegaMax": 0}}"#, "omegaMax");
@@ -77,13 +80,19 @@ fn bad_vehicle_files_are_refused_with_the_field_named() {
     refused(r#"{"vMax": 1e9}"#, "vMax");
     // Unknown keys (a misspelling) and a missing vehicle object.
     refused(r#"{"vmax": 2}"#, "vmax");
-    refused(r#"{"name": "x", "vehicle": {"vMax": 2}, "colour": 1}"#, "colour");
+    refused(
+        r#"{"name": "x", "vehicle": {"vMax": 2}, "colour": 1}"#,
+        "colour",
+    );
     // Absurd ratios.
     refused(
         r#"{"vMax": 100, "dt": 0.1, "omegaMax": 100, "normalAccelMax": 1000}"#,
         "vMax·dt",
     );
-    refused(r#"{"omegaMax": 0.01, "normalAccelMax": 0.01}"#, "turning radius / vMax / dt");
+    refused(
+        r#"{"omegaMax": 0.01, "normalAccelMax": 0.01}"#,
+        "turning radius / vMax / dt",
+    );
     refused(r#"{"accelMax": 0.01}"#, "accelMax");
     refused(r#"{"omegaAccelMax": 0.01}"#, "omegaAccelMax");
     refused(r#"{"kd": 100}"#, "kd·dt");
@@ -231,8 +240,16 @@ fn eta_table_writes_a_vehicles_table() {
     let t = EtaTable::from_bytes(&std::fs::read(&out).unwrap()).unwrap();
     assert_eq!(t.params().vehicle.v_max, 1.0);
     std::fs::write(&vf, r#"{"vehicle": {"vMax": 0}}"#).unwrap();
-    let o = run(&["--vehicle", vf.to_str().unwrap(), "--out", out.to_str().unwrap()]);
+    let o = run(&[
+        "--vehicle",
+        vf.to_str().unwrap(),
+        "--out",
+        out.to_str().unwrap(),
+    ]);
     let e = String::from_utf8_lossy(&o.stderr);
-    assert!(!o.status.success() && e.contains("vMax") && e.contains("v.json"), "{e}");
+    assert!(
+        !o.status.success() && e.contains("vMax") && e.contains("v.json"),
+        "{e}"
+    );
     let _ = std::fs::remove_dir_all(&dir);
 }

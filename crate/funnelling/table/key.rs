@@ -44,7 +44,10 @@ impl TableSpec {
     /// The parameter key of the table this spec generates.
     #[must_use]
     pub fn key(&self) -> String {
-        key_of(&self.params, core::array::from_fn(|k| self.axes[k].as_slice()))
+        key_of(
+            &self.params,
+            core::array::from_fn(|k| self.axes[k].as_slice()),
+        )
     }
 }
 
