@@ -47,7 +47,10 @@ fn every_reference_vehicle_meets_the_targets() {
             100.0 * a.far_oriented,
             a.far_runs
         );
-        assert!(acc.median_deg <= 0.2 && acc.p95_deg <= 2.0, "{name}: {acc:?}");
+        assert!(
+            acc.median_deg <= 0.2 && acc.p95_deg <= 2.0,
+            "{name}: {acc:?}"
+        );
         assert!(acc.agreement >= 0.99, "{name}: {acc:?}");
         assert!(a.reach >= 0.995, "{name}: {a:?}");
         assert!(a.far_runs >= 50 && a.far_oriented >= 0.95, "{name}: {a:?}");

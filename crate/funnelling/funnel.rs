@@ -19,11 +19,11 @@ use core::ops::ControlFlow;
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::table::generate::VehicleScale;
 use crate::angle::diff;
 use crate::funnelling::approach::Approach;
 pub use crate::funnelling::approach::{halting_speed, tolerance_phase, Terminal};
 use crate::seek::seek_step_committed;
+use crate::table::generate::VehicleScale;
 use crate::table::{EtaTable, Lookup};
 use crate::vehicle::{VehicleParams, VehicleState};
 
