@@ -3,7 +3,19 @@
 
 import init, { Lab, version } from "../pkg/steering.js";
 
-export { CrowdLab, Lab, Mode, StateField, WanderLab, ranges } from "../pkg/steering.js";
+export {
+  CrowdLab,
+  Lab,
+  Mode,
+  StateField,
+  WanderLab,
+  assembleTable,
+  ranges,
+  referenceVehicles,
+  tableJob,
+  tableKeyOf,
+  tableSlice,
+} from "../pkg/steering.js";
 export type {
   AgentConfig,
   CrowdConfig,
