@@ -105,7 +105,8 @@ try {
     timings.carMs = (await table(page)).ms;
     timings.carWall = Date.now() - start;
     const p = await page.evaluate(() => window.__lab.params());
-    assert.deepEqual([p.vMax, p.accelMax, p.omegaMax, p.omegaAccelMax, p.normalAccelMax], [15, 3, 0.8, 2, 4]);
+    assert.deepEqual([p.vMax, p.accelMax, p.omegaMax, p.omegaAccelMax, p.normalAccelMax], [15, 3, 0.8, 2, 4].map(Math.fround));
+    assert.equal(await page.inputValue("#vehicle"), "car");
     assert.match(page.url(), /vmax=15/);
     await page.setViewportSize({ width: 390, height: 844 });
     await settle(page);

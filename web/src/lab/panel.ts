@@ -125,7 +125,11 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   lim("kp", "kp", 400);
   lim("kd", "kd", 60);
   help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit.";
-  const syncVehicle = (): void => vehicleSelect.set(current());
+  // A limit edited by hand shows "custom" (or the vehicle it matches); the
+  // select's own events are its own business.
+  const syncVehicle = (ev: Event): void => {
+    if (!(ev.target instanceof HTMLSelectElement)) vehicleSelect.set(current());
+  };
   limBox.addEventListener("input", syncVehicle);
   limBox.addEventListener("change", syncVehicle);
 

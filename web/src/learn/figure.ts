@@ -10,9 +10,18 @@
 import { beginFrame, setupCanvas, type Surface } from "../canvas";
 import { COLOURS } from "../lab/render";
 import type { LabState } from "../lab/state";
+import { RangeTable } from "../lab/fields";
 import { encodeState } from "../lab/urlstate";
+import { ranges } from "../wasm";
 import { View } from "../view";
 import { Handle, type HandleSpec } from "./handle";
+
+/** The lab's ranges for the links (the core is loaded before any figure). */
+let rangeTable: RangeTable | null = null;
+const linkRanges = (): RangeTable => (rangeTable ??= new RangeTable(ranges()));
+/** The learn page's figures run the default vehicle (the pedestrian,
+ *  crate::vehicle::VehicleParams::default): its limits stay out of the links. */
+const LINK_DEFAULTS = { vMax: 2, accelMax: 1.5, omegaMax: 2, omegaAccelMax: 8, normalAccelMax: 1.5, kp: 12, kd: 6 };
 
 export interface FigureSpec {
   /** The section's id (the figure's data-figure). */
@@ -121,7 +130,7 @@ export class LiveFigure {
     this.over = false;
     this.acc = 0;
     this.spec.numbers();
-    this.link.href = `./index.html#${encodeState(this.spec.labState())}`;
+    this.link.href = `./index.html#${encodeState(this.spec.labState(), linkRanges(), LINK_DEFAULTS)}`;
     this.redraw();
   }
 
