@@ -13,7 +13,7 @@ import type { LabState, Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { Cancelled } from "../workers/pool";
-import { buildTable, tableKeyFor } from "../workers/tables";
+import { buildTable, cancelBuild, tableKeyFor } from "../workers/tables";
 
 /** The η table in force against the limits in force (issue 14). */
 export interface TableStatus {
@@ -105,6 +105,7 @@ export class LabSim {
     const gen = ++this.tableGen;
     this.table = { ...this.table, wanted, message: "" };
     if (wanted === this.lab.tableKey()) {
+      cancelBuild();
       this.table = { ...this.table, state: "exact", progress: 1 };
       this.dirty = true;
       return;

@@ -32,6 +32,11 @@ function workers(): WorkerPool<SliceTask, Float32Array> {
   return pool;
 }
 
+/** Stops the build in flight, if any (its promise rejects with `Cancelled`). */
+export function cancelBuild(): void {
+  pool?.cancel();
+}
+
 /** The key of `params`' table (throws the core's message, field named,
  *  when no table can be built for them). */
 export function tableKeyFor(params: VehicleParams): string {
