@@ -8,7 +8,12 @@
 //! ```
 //! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
 //! and streams the per-step pose, speeds and mode of every agent plus its
-//! metrics; `--controller` overrides the scenario's controller.
+//! metrics; `--controller` overrides the scenario's controller. Its η table
+//! is `--table` or the scenario's `table` (built for its vehicle, else an
+//! error), else `tables/eta.bin` if it matches the vehicle, else the
+//! matching table from the cache (`steering::cli::table_cache`), built
+//! there if missing (issue 14). `envelope --vehicle FILE` scales the
+//! envelope study to a vehicle and prints its per-vehicle measures.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
 //! prints the acceptance figures of the funnelling issue.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
