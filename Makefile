@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn
+	test-e2e-learn test-e2e-vehicle
 
 setup: setup-rust setup-browser setup-web
 
@@ -79,11 +79,16 @@ test-e2e-gallery: setup-browser web-build
 test-e2e-learn: setup-browser web-build
 	node web/test/e2e-learn.mjs
 
+# Playwright for issue 14: vehicle limits build their η table in Web
+# Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
+test-e2e-vehicle: setup-browser web-build
+	node web/test/e2e-vehicle.mjs
+
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium.
 bench-web: setup-browser web-build
 	node web/test/perf.mjs
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle
 	@echo "make test: all suites passed"
 
 demo: setup web-build

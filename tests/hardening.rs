@@ -131,8 +131,15 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
     // A fast vehicle with a coarse step resolves 1e6 m.
     let fast = r#"{"name": "far", "vehicle": {"vMax": 10, "dt": 0.1}, "agents": [{"x": 999980, "y": 0, "goals": [{"x": 999996, "y": 12, "speed": 5, "dTol": 4}]}]}"#;
     let sc = Scenario::from_json(fast).unwrap();
-    let t = common::table();
     let p = sc.vehicle;
+    // Its own table (issue 14), not the pedestrian's.
+    let t = steering::table::generate::TableSpec::for_vehicle(
+        p,
+        steering::table::generate::DEFAULT_COUNTS,
+    )
+    .unwrap()
+    .generate()
+    .unwrap();
     let (f0, l0, _) = reach(&t, p, 0.0, 5.0, false, 4.0);
     let (f, l, _) = reach(&t, p, 999_980.0, 5.0, false, 4.0);
     assert!(f0 && f && (l / l0 - 1.0).abs() < 0.01, "{l} vs {l0}");

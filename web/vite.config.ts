@@ -49,6 +49,8 @@ export default defineConfig({
   plugins: [tables()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
+  // The η-table workers (issue 14) import the wasm module: ES workers.
+  worker: { format: "es" },
   build: {
     target: "es2022",
     sourcemap: false,

@@ -2,7 +2,7 @@
 //! (arguments: [`steering::cli::eta_table`]; `eta-table --help`).
 //!
 //! ```text
-//! eta-table [--out tables/eta.bin] [--threads N] [--counts ND,NA,NS,NV,NVD]
+//! eta-table [--out tables/eta.bin] [--vehicle VEHICLE.json] [--threads N] [--counts ND,NA,NS,NV,NVD]
 //! ```
 //! Deterministic: the same parameters give the same bytes, whatever the
 //! thread count (entries run on rayon and are collected in order).
@@ -18,7 +18,6 @@ use std::time::Instant;
 use clap::Parser;
 use steering::cli::eta_table::EtaTableCli;
 use steering::table::generate::TableSpec;
-use steering::vehicle::VehicleParams;
 
 fn main() -> ExitCode {
     match generate(&EtaTableCli::parse()) {
@@ -32,7 +31,7 @@ fn main() -> ExitCode {
 
 fn generate(cli: &EtaTableCli) -> Result<(), String> {
     let out = cli.out.display();
-    let spec = TableSpec::with_counts(VehicleParams::default(), cli.counts);
+    let spec = TableSpec::for_vehicle(cli.vehicle_params()?, cli.counts)?;
     let t0 = Instant::now();
     let (table, threads) = cli
         .pool
@@ -45,12 +44,13 @@ fn generate(cli: &EtaTableCli) -> Result<(), String> {
         .count();
     std::fs::write(&cli.out, &bytes).map_err(|e| format!("cannot write {out}: {e}"))?;
     println!(
-        "eta-table: {} entries ({} reachable, {:.1} %) in {secs:.2} s on {threads} threads -> {out} ({} bytes, crc32 {:#010x})",
+        "eta-table: {} entries ({} reachable, {:.1} %) in {secs:.2} s on {threads} threads -> {out} ({} bytes, crc32 {:#010x}, key {})",
         table.len(),
         reachable,
         100.0 * reachable as f64 / table.len() as f64,
         bytes.len(),
         steering::table::crc32(&bytes[..bytes.len() - 4]),
+        spec.key(),
     );
     Ok(())
 }

@@ -8,7 +8,12 @@
 //! ```
 //! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
 //! and streams the per-step pose, speeds and mode of every agent plus its
-//! metrics; `--controller` overrides the scenario's controller.
+//! metrics; `--controller` overrides the scenario's controller. Its η table
+//! is `--table` or the scenario's `table` (built for its vehicle, else an
+//! error), else `tables/eta.bin` if it matches the vehicle, else the
+//! matching table from the cache (`steering::cli::table_cache`), built
+//! there if missing (issue 14). `envelope --vehicle FILE` scales the
+//! envelope study to a vehicle and prints its per-vehicle measures.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
 //! prints the acceptance figures of the funnelling issue.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
@@ -49,6 +54,51 @@ fn load_table(path: &Path) -> Result<EtaTable, String> {
     EtaTable::from_bytes(&bytes).map_err(|e| format!("{shown}: {e}"))
 }
 
+/// The table `steer run` runs with (issue 14): `--table` or the
+/// scenario's `table` must match the vehicle (a mismatch is an error);
+/// otherwise the committed table if it matches, else the cache's
+/// (`steering::cli::table_cache`), built if missing. Never a table built
+/// for other limits.
+fn run_table(args: &RunArgs, sc: &Scenario) -> Result<EtaTable, String> {
+    let named = args.table.clone().or_else(|| {
+        sc.table.as_ref().map(|t| {
+            let base = args.scenario.parent().unwrap_or(Path::new(""));
+            base.join(t)
+        })
+    });
+    if let Some(path) = named {
+        let table = load_table(&path)?;
+        table
+            .check_params(&sc.vehicle)
+            .map_err(|e| format!("{}: {e} (eta-table --vehicle builds one)", path.display()))?;
+        return Ok(table);
+    }
+    let committed = Path::new("tables/eta.bin");
+    if let Ok(t) = load_table(committed) {
+        if t.check_params(&sc.vehicle).is_ok() {
+            return Ok(t);
+        }
+    }
+    let dir = steering::cli::table_cache::cache_dir();
+    let t0 = Instant::now();
+    let (table, source) = steering::cli::table_cache::table_for(&sc.vehicle, &dir)
+        .map_err(|e| format!("{}: {e}", args.scenario.display()))?;
+    match source {
+        steering::cli::table_cache::Source::Cached(p) => {
+            eprintln!(
+                "steer: η table for this vehicle from the cache {}",
+                p.display()
+            );
+        }
+        steering::cli::table_cache::Source::Built(p) => eprintln!(
+            "steer: built the η table for this vehicle in {:.1} s -> {}",
+            t0.elapsed().as_secs_f32(),
+            p.display()
+        ),
+    }
+    Ok(table)
+}
+
 /// `steer run`: checks everything (output path included) before the first
 /// step, then streams the trajectory (`steering::cli::trajectory`).
 fn run(args: &RunArgs) -> Result<(), String> {
@@ -60,10 +110,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     if let Some(c) = args.controller {
         sc.controller = c;
     }
-    let table = load_table(&args.table)?;
-    table
-        .check_params(&sc.vehicle)
-        .map_err(|e| format!("{}: {e}", args.table.display()))?;
+    let table = run_table(args, &sc)?;
     sc.world().map_err(|e| format!("{scenario}: {e}"))?;
     let mut out = create_out(&args.out)?;
     let t0 = Instant::now();
@@ -97,14 +144,35 @@ fn run(args: &RunArgs) -> Result<(), String> {
 /// `steer envelope`: the envelope study (`steering::funnelling::envelope`).
 fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     use steering::funnelling::envelope::EnvelopeStudy;
+    let p = match &args.vehicle {
+        None => steering::vehicle::VehicleParams::default(),
+        Some(path) => {
+            let text = std::fs::read_to_string(path)
+                .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
+            steering::funnelling::vehicle_file::parse(&text)
+                .map_err(|e| format!("{}: {e}", path.display()))?
+                .vehicle
+        }
+    };
     let mut study = EnvelopeStudy {
         seed: args.seed,
-        ..EnvelopeStudy::default()
+        ..EnvelopeStudy::for_vehicle(&p)
     };
     (study.n_static, study.n_moving, study.n_chain) = (args.n, args.n / 5, args.n / 5);
-    let table = load_table(&args.table)?;
-    let p = steering::vehicle::VehicleParams::default();
-    table.check_params(&p).map_err(|e| e.to_string())?;
+    let table = match (load_table(&args.table), &args.vehicle) {
+        (Ok(t), _) if t.check_params(&p).is_ok() => t,
+        (_, Some(_)) => {
+            let dir = steering::cli::table_cache::cache_dir();
+            let (t, src) = steering::cli::table_cache::table_for(&p, &dir)?;
+            eprintln!("steer: η table for this vehicle: {src:?}");
+            t
+        }
+        (Ok(t), None) => {
+            t.check_params(&p).map_err(|e| e.to_string())?;
+            t
+        }
+        (Err(e), None) => return Err(e),
+    };
     let mut vs = args.variants()?;
     if let Some(cfg) = args.standard_config()? {
         for v in &mut vs {
@@ -116,6 +184,39 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
         }
     }
     let report = study.run_all(&table, &p, &vs);
+    if args.vehicle.is_some() {
+        use steering::funnelling::vehicle_study::{accuracy, oriented_far};
+        let r = steering::table::generate::turn_radius(&p);
+        let acc = accuracy(&table, &p, args.queries as usize, args.seed, 4.0);
+        println!(
+            "vehicle: vMax {} m/s, turning radius R = {r:.3} m (× {:.4} the pedestrian's), speeds × {:.4}; table key {}",
+            p.v_max,
+            study.scale.length,
+            study.scale.speed,
+            table.key()
+        );
+        println!(
+            "η accuracy at D ≥ 4 R, {} off-grid queries (seed {}): {} both reachable, median {:.3}°, p95 {:.3}°, reachability agreement {:.2} %",
+            acc.queries,
+            args.seed,
+            acc.both_reachable,
+            acc.median_deg,
+            acc.p95_deg,
+            100.0 * acc.agreement
+        );
+        for v in &report.variants {
+            let a = oriented_far(v);
+            println!(
+                "{}: reach {:.2} % of {} static runs; oriented on entry at D ≥ 5 R, ε_tol 5°: {:.1} % of {}",
+                v.name,
+                100.0 * a.reach,
+                a.runs,
+                100.0 * a.far_oriented,
+                a.far_runs
+            );
+        }
+        println!("(tables below: distances and D_tol in pedestrian-equivalent m = × {:.4} for this vehicle, speeds × {:.4})\n", study.scale.length, study.scale.speed);
+    }
     let detail: &[&str] = if args.brief {
         &[]
     } else {

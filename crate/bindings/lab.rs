@@ -169,6 +169,25 @@ impl Lab {
         })
     }
 
+    /// Replaces the η table (the bytes of a table file, e.g. one built
+    /// by the workers for the limits in force); the agents keep their
+    /// state. Returns the table's key. A corrupt file is an error and
+    /// changes nothing.
+    #[wasm_bindgen(js_name = setTable)]
+    pub fn set_table(&mut self, bytes: &[u8]) -> Result<String, JsError> {
+        let t = EtaTable::from_bytes(bytes).map_err(|e| js_err("η table", e))?;
+        let key = t.key();
+        self.table = Rc::new(t);
+        Ok(key)
+    }
+
+    /// The key of the table in force (its cache key).
+    #[wasm_bindgen(js_name = tableKey)]
+    #[must_use]
+    pub fn table_key(&self) -> String {
+        self.table.key()
+    }
+
     /// The vehicle parameters in force.
     #[wasm_bindgen(unchecked_return_type = "VehicleParams")]
     pub fn params(&self) -> Result<JsValue, JsError> {

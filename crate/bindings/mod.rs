@@ -6,6 +6,7 @@
 //! |---|---|---|
 //! | [`lab`] | `index.html` | `Lab`: a funnelling [`World`](crate::world::World) and its η table |
 //! | `lab_types` | `index.html` | what crosses for `Lab`: the TypeScript interfaces and their serde shapes (goal, agent, internals, table and scenario info) |
+//! | [`tables`] | `index.html` workers | η tables built in the browser: `tableJob` (key, entries), `tableSlice` (a worker's share), `assembleTable` (the file's bytes), `tableKeyOf`, `referenceVehicles` |
 //! | [`crowd`] | `crowd.html` | `CrowdLab`: crowded path following (paper 003) |
 //! | [`wander`] | `wander.html` | `WanderLab`: the random steering toolkit (paper 004) |
 //! | [`boundary`] | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
@@ -16,4 +17,5 @@ pub mod crowd;
 pub mod lab;
 mod lab_types;
 pub mod layout;
+pub mod tables;
 pub mod wander;

@@ -8,14 +8,20 @@ use clap::Parser;
 use super::pool::PoolArgs;
 use crate::table::AXES;
 
-/// Generates the η table from the committed default parameters
-/// (deterministic: the same bytes whatever the thread count).
+/// Generates the η table for a vehicle (default: the pedestrian of the
+/// committed table; axes scale with the vehicle's turning radius and
+/// v_max). Deterministic: the same bytes whatever the thread count.
 #[derive(Parser, Clone, Debug, PartialEq)]
 #[command(name = "eta-table", version, about)]
 pub struct EtaTableCli {
     /// Output file.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
     pub out: PathBuf,
+    /// Vehicle file (the scenarios' `vehicle` schema, bare or as
+    /// `{"name", "description", "vehicle": {…}}`; e.g.
+    /// `scenarios/vehicles/car.json`). Default: the pedestrian.
+    #[arg(long, value_name = "VEHICLE.json")]
+    pub vehicle: Option<PathBuf>,
     /// Samples per axis: distance, α, ω fraction, current speed, desired speed.
     #[arg(long, value_name = "ND,NA,NS,NV,NVD", value_parser = parse_counts, default_value = "16,36,5,9,9")]
     pub counts: [usize; AXES],
@@ -61,6 +67,27 @@ pub fn parse_counts(s: &str) -> Result<[usize; AXES], String> {
         ));
     }
     Ok(c)
+}
+
+impl EtaTableCli {
+    /// The vehicle: `--vehicle`'s file, parsed and checked, or the
+    /// pedestrian.
+    ///
+    /// # Errors
+    /// An unreadable file, or a refused field, named.
+    pub fn vehicle_params(&self) -> Result<crate::vehicle::VehicleParams, String> {
+        match &self.vehicle {
+            None => Ok(crate::vehicle::VehicleParams::default()),
+            Some(path) => {
+                let shown = path.display();
+                let text = std::fs::read_to_string(path)
+                    .map_err(|e| format!("cannot read {shown}: {e}"))?;
+                crate::funnelling::vehicle_file::parse(&text)
+                    .map(|f| f.vehicle)
+                    .map_err(|e| format!("{shown}: {e}"))
+            }
+        }
+    }
 }
 
 #[cfg(test)]

@@ -49,9 +49,13 @@ pub struct RunArgs {
     /// Record every N-th step, 1 to 36,000,000.
     #[arg(long, value_name = "N", default_value_t = 1, value_parser = parse_every)]
     pub every: u32,
-    /// η table.
-    #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
-    pub table: PathBuf,
+    /// η table; it must match the scenario's vehicle (else an error).
+    /// Without it: the scenario's `table`, else `tables/eta.bin` if built
+    /// for the scenario's vehicle, else the matching table from the cache
+    /// (`$STEER_TABLE_CACHE`, `$XDG_CACHE_HOME/steering-lab/tables` or
+    /// `~/.cache/steering-lab/tables`), built there if missing.
+    #[arg(long, value_name = "FILE")]
+    pub table: Option<PathBuf>,
     /// Override the scenario's controller.
     #[arg(long, value_name = "standard|relaxed", value_parser = parse_controller)]
     pub controller: Option<ControllerKind>,
@@ -198,6 +202,18 @@ pub struct EnvelopeArgs {
     /// Print the summary and the targets only, not the per-cell tables.
     #[arg(long)]
     pub brief: bool,
+    /// Vehicle file (issue 14; e.g. `scenarios/vehicles/car.json`): the
+    /// study's distances, tolerances and speeds are scaled to its turning
+    /// radius and v_max (the tables stay in pedestrian-equivalent units),
+    /// the table is `--table` if built for it, else the cached or newly
+    /// built one (`steer run`'s cache); the per-vehicle measures
+    /// (η accuracy at D ≥ 4 turning radii, reach, oriented entries at
+    /// D ≥ 5 turning radii and ε_tol 5°) are printed first.
+    #[arg(long, value_name = "VEHICLE.json")]
+    pub vehicle: Option<PathBuf>,
+    /// Off-grid queries of the η accuracy measure (with `--vehicle`).
+    #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
+    pub queries: u32,
 }
 
 impl RelaxedArgs {

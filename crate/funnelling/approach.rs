@@ -180,11 +180,15 @@ pub struct Terminal {
 
 impl Terminal {
     /// The carrot distance, m: `lookahead` seconds at the current speed,
-    /// the goal's desired speed if higher, and at least 0.5 m/s.
+    /// the goal's desired speed if higher, and at least 0.5 m/s (seconds
+    /// and speed scaled with the vehicle, [`crate::table::generate::VehicleScale`]).
     #[inline]
     #[must_use]
-    pub fn look(&self, s: &VehicleState, g: &Goal) -> f32 {
-        self.lookahead * s.v.max(g.speed).max(0.5)
+    pub fn look(&self, p: &VehicleParams, s: &VehicleState, g: &Goal) -> f32 {
+        // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
+        // the vehicle (×1 for the pedestrian; issue 14).
+        let sc = crate::table::generate::VehicleScale::of(p);
+        self.lookahead * sc.time() * s.v.max(g.speed).max(0.5 * sc.speed)
     }
 }
 
@@ -386,7 +390,7 @@ impl<'a> Approach<'a> {
         let entry = self.entry_depth(g);
         match t {
             Some(t) if g.vel != Vec2::ZERO => {
-                entry.max(g.d_tol + 0.75 * self.terminal_range(t) * t.look(self.s, g))
+                entry.max(g.d_tol + 0.75 * self.terminal_range(t) * t.look(self.p, self.s, g))
             }
             _ => entry,
         }
@@ -435,7 +439,7 @@ impl<'a> Approach<'a> {
         let r = s.pos - g.pos;
         let along = r.dot(u);
         let lateral = r.perp_dot(u);
-        let look = t.look(s, g);
+        let look = t.look(self.p, s, g);
         if along >= 0.0
             || -along - g.d_tol >= self.terminal_range(t) * look
             || lateral.abs() >= 0.5 * (-along).max(g.d_tol)

@@ -23,6 +23,7 @@ use crate::angle::diff;
 use crate::funnelling::approach::Approach;
 pub use crate::funnelling::approach::{halting_speed, tolerance_phase, Terminal};
 use crate::seek::seek_step_committed;
+use crate::table::generate::VehicleScale;
 use crate::table::{EtaTable, Lookup};
 use crate::vehicle::{VehicleParams, VehicleState};
 
@@ -345,7 +346,10 @@ impl FunnelConfig {
                 (gain * table.straight_abs_eta_at(lk, delta_eta).unwrap_or(0.0)).min(FRAC_PI_2)
             }
             MuBound::TurningRadius { factor } => {
-                let r = factor * p.min_turn_radius(lk.v_dt.max(v)).max(self.min_bound_radius);
+                // The floor is the pedestrian's metres, scaled with the
+                // vehicle's turning radius (×1 for the pedestrian; issue 14).
+                let floor = self.min_bound_radius * VehicleScale::of(p).length;
+                let r = factor * p.min_turn_radius(lk.v_dt.max(v)).max(floor);
                 crate::trig::atan2(r, d).min(FRAC_PI_2)
             }
             MuBound::Constant => FRAC_PI_2,

@@ -14,6 +14,8 @@
 //! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`world_edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`vehicle_file`] | — | vehicle JSON files (`--vehicle`, the reference pedestrian, car and robot): parsed, fields named, ranges and the generator's ratios checked |
+//! | [`vehicle_study`] | 000 §3, §5 | per-vehicle measures in the vehicle's units: η interpolation error at D ≥ 4 turning radii, reachability agreement, reach and oriented entries at D ≥ 5 turning radii |
 //! | [`ranges`] | — | one table of validation ranges (key, min, max, unit, integer, cross-field bound) that the checks below and the page use |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
 //! | [`precision`] | — | the coordinate range where f32 resolves a quarter of one step (slowest goal speed × dt), measured; checked on every agent and goal |
@@ -36,5 +38,7 @@ pub mod seek;
 pub mod study;
 pub mod table;
 pub mod vehicle;
+pub mod vehicle_file;
+pub mod vehicle_study;
 pub mod world;
 pub mod world_edit;

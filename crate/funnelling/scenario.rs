@@ -54,6 +54,12 @@ pub struct Scenario {
     /// Vehicle parameters (defaults: pedestrian).
     #[serde(default)]
     pub vehicle: VehicleParams,
+    /// The η table to run with (issue 14), relative to the scenario file;
+    /// it must have been built for `vehicle` (`eta-table --vehicle`).
+    /// Without it `steer run` uses the committed table if it matches the
+    /// vehicle, else builds the matching one or loads it from its cache.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub table: Option<String>,
     /// Funnelling settings.
     #[serde(default)]
     pub funnel: FunnelConfig,

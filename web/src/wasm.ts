@@ -3,7 +3,20 @@
 
 import init, { Lab, version } from "../pkg/steering.js";
 
-export { CrowdLab, Lab, Mode, StateField, WanderLab, precision, ranges } from "../pkg/steering.js";
+export {
+  CrowdLab,
+  Lab,
+  Mode,
+  StateField,
+  WanderLab,
+  assembleTable,
+  precision,
+  ranges,
+  referenceVehicles,
+  tableJob,
+  tableKeyOf,
+  tableSlice,
+} from "../pkg/steering.js";
 export type {
   AgentConfig,
   CrowdConfig,

@@ -47,6 +47,7 @@ use crate::dubins;
 use crate::funnel::{FunnelConfig, Goal, Mode, MuBound};
 use crate::relaxed::{Controller, ControllerKind, RelaxedAim, RelaxedConfig};
 use crate::rng::Rng;
+use crate::table::generate::VehicleScale;
 use crate::table::EtaTable;
 use crate::vehicle::{VehicleParams, VehicleState};
 use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
@@ -201,8 +202,15 @@ pub struct EnvelopeStudy {
     pub n_moving: usize,
     /// Chains per variant.
     pub n_chain: usize,
-    /// Time limit per goal, s.
+    /// Time limit per goal, s (at scale 1; multiplied by the time scale).
     pub max_time: f32,
+    /// The vehicle's scale (issue 14, [`EnvelopeStudy::for_vehicle`]):
+    /// sampled distances and tolerances are multiplied by `scale.length`,
+    /// speeds by `scale.speed`. The records keep the pedestrian-equivalent
+    /// values (divided back), so the tables' cells are the same for every
+    /// vehicle: a D of 13.3 there is 5 turning radii. 1 and 1 for the
+    /// pedestrian, whose samples are unchanged.
+    pub scale: VehicleScale,
 }
 
 impl Default for EnvelopeStudy {
@@ -213,6 +221,10 @@ impl Default for EnvelopeStudy {
             n_moving: 400,
             n_chain: 400,
             max_time: 150.0,
+            scale: VehicleScale {
+                length: 1.0,
+                speed: 1.0,
+            },
         }
     }
 }
@@ -228,21 +240,38 @@ fn pick<T: Copy>(r: &mut Rng, xs: &[T]) -> T {
 
 /// A random goal at `from + D·(cos, sin)(bearing)` with tolerances and
 /// speed drawn from the envelope's sets.
-fn random_goal(r: &mut Rng, from: Vec2, d_range: (f32, f32), halting: bool) -> Goal {
-    let d = log_uniform(r, d_range);
+fn random_goal(
+    r: &mut Rng,
+    from: Vec2,
+    d_range: (f32, f32),
+    halting: bool,
+    scale: VehicleScale,
+) -> Goal {
+    let d = log_uniform(r, d_range) * scale.length;
     let bearing = r.range(-PI, PI);
     Goal {
         pos: from + crate::trig::unit(bearing) * d,
         beta: r.range(-PI, PI),
-        d_tol: pick(r, &D_TOLS),
+        // A robot's smallest tolerance (0.1 × 0.0625 m) is below the
+        // core's D_tol range: run at its minimum (0.01 m).
+        d_tol: (pick(r, &D_TOLS) * scale.length).max(crate::ranges::GOAL_D_TOL.min as f32),
         eps_tol: pick(r, &EPS_TOLS_DEG).to_radians(),
-        speed: pick(r, &SPEEDS),
+        speed: pick(r, &SPEEDS) * scale.speed,
         halting,
         vel: Vec2::ZERO,
     }
 }
 
 impl EnvelopeStudy {
+    /// The default study scaled to vehicle `p` (see [`EnvelopeStudy::scale`]).
+    #[must_use]
+    pub fn for_vehicle(p: &VehicleParams) -> Self {
+        Self {
+            scale: VehicleScale::of(p),
+            ..Self::default()
+        }
+    }
+
     /// Scenarios in `kind`'s group.
     #[must_use]
     pub fn count(&self, kind: GoalKind) -> usize {
@@ -263,11 +292,14 @@ impl EnvelopeStudy {
         let goals = match kind {
             GoalKind::Static => {
                 let halting = r.next_f32() < 0.5;
-                vec![spec(random_goal(&mut r, start.pos, D_RANGE, halting))]
+                vec![spec(random_goal(
+                    &mut r, start.pos, D_RANGE, halting, self.scale,
+                ))]
             }
             GoalKind::Moving => {
-                let g = random_goal(&mut r, start.pos, D_RANGE, false);
-                let velocity = crate::trig::unit(r.range(-PI, PI)) * r.range(0.0, GOAL_SPEED_MAX);
+                let g = random_goal(&mut r, start.pos, D_RANGE, false, self.scale);
+                let velocity = crate::trig::unit(r.range(-PI, PI))
+                    * (r.range(0.0, GOAL_SPEED_MAX) * self.scale.speed);
                 vec![GoalSpec {
                     motion: GoalMotion::Linear { velocity },
                     ..spec(g)
@@ -278,7 +310,7 @@ impl EnvelopeStudy {
                 let mut from = start.pos;
                 (0..3)
                     .map(|k| {
-                        let g = random_goal(&mut r, from, CHAIN_LEG, halting && k == 2);
+                        let g = random_goal(&mut r, from, CHAIN_LEG, halting && k == 2, self.scale);
                         from = g.pos;
                         spec(g)
                     })

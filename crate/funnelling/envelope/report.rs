@@ -160,7 +160,24 @@ impl EnvelopeStudy {
             .collect();
         let records = crate::base::parallel::map_indices(jobs.len(), |j| {
             let (v, sc) = jobs[j];
-            run(table, p, &variants[v].controller, sc, self.max_time)
+            let mut r = run(
+                table,
+                p,
+                &variants[v].controller,
+                sc,
+                self.max_time * self.scale.time(),
+            );
+            // Pedestrian-equivalent units, so the tables' cells match.
+            r.d0 /= self.scale.length;
+            // The sampled value's cell (a tolerance raised to the core's
+            // minimum keeps its cell).
+            let t = r.d_tol / self.scale.length;
+            r.d_tol = super::D_TOLS
+                .into_iter()
+                .min_by(|a, b| (a / t).ln().abs().total_cmp(&(b / t).ln().abs()))
+                .unwrap_or(t);
+            r.speed /= self.scale.speed;
+            r
         });
         let mut it = records.into_iter();
         let variants = variants

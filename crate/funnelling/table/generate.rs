@@ -3,6 +3,14 @@
 //! records η, reachability and the fallback speed.
 //!
 //! # Axes, and why
+//! Every axis is dimensionless, scaled with the vehicle ([`VehicleScale`],
+//! issue 14): distances in units of the vehicle's turning radius at full
+//! speed, speeds in fractions of `v_max`, the reach radius with the
+//! distances and the simulated-time cap with distance over speed. The
+//! pedestrian of [`VehicleParams::default`] is the unit (scale exactly 1,
+//! so its committed table is unchanged); a car with 21 times its turning
+//! radius gets rings from 10.5 m to 675 m, one generator serves both. The
+//! figures below are the pedestrian's.
 //! - **Distance D**: 16 samples, geometric from 0.5 m to 32 m (ratio ≈ 1.32).
 //!   η changes fast near the vehicle (the turn-in dominates) and slowly far
 //!   away (η → 0 as the path becomes a straight line), so the rings are
@@ -68,6 +76,108 @@ pub fn anisotropic_alphas(step: f64) -> Vec<f32> {
     out
 }
 
+/// How a vehicle's table axes scale against the reference pedestrian
+/// ([`VehicleParams::default`]): lengths with the turning radius at full
+/// speed `v_max / min(ω_max, A/v_max)`, speeds with `v_max`, times with
+/// length over speed. Exactly 1, 1, 1 for the pedestrian.
+#[derive(Clone, Copy, Debug, PartialEq)]
+pub struct VehicleScale {
+    /// Turning radius over the pedestrian's (2.67 m).
+    pub length: f32,
+    /// `v_max` over the pedestrian's (2 m/s).
+    pub speed: f32,
+}
+
+impl VehicleScale {
+    /// The scale of vehicle `p`.
+    #[must_use]
+    pub fn of(p: &VehicleParams) -> Self {
+        let r = VehicleParams::default();
+        Self {
+            length: turn_radius(p) / turn_radius(&r),
+            speed: p.v_max / r.v_max,
+        }
+    }
+
+    /// Time scale: length over speed.
+    #[must_use]
+    pub fn time(&self) -> f32 {
+        self.length / self.speed
+    }
+}
+
+/// The turning radius at full speed, m: `v_max / min(ω_max, A/v_max)`.
+#[must_use]
+pub fn turn_radius(p: &VehicleParams) -> f32 {
+    p.v_max / p.omega_limit(p.v_max)
+}
+
+/// Largest build cost of a table relative to the pedestrian's (steps per
+/// entry scale with the time scale over the time step).
+pub const MAX_COST_RATIO: f32 = 20.0;
+/// Largest ratio of a response time (reaching `v_max`, reaching `ω_max`)
+/// to the time to cross one turning radius at full speed.
+pub const MAX_RESPONSE_RATIO: f32 = 50.0;
+
+/// Checks that a table can be built for `p`: every field in its range
+/// ([`VehicleParams::validate`], the scenarios' validation), then the
+/// ratios that make a vehicle absurd for the generator, each message
+/// starting with the fields it names:
+/// - a step at most a quarter of the turning radius (`vMax·dt ≤ R/4`),
+/// - build cost at most [`MAX_COST_RATIO`] × the pedestrian's,
+/// - reaching `v_max` and `ω_max` within [`MAX_RESPONSE_RATIO`] × `R/v_max`,
+/// - a stable discrete PD seek (`kd·dt ≤ 1`, `kp·dt² ≤ 1`).
+///
+/// # Errors
+/// The first refused field or ratio, named.
+pub fn check_vehicle(p: &VehicleParams) -> Result<(), String> {
+    p.validate().map_err(|e| format!("vehicle: {e}"))?;
+    let r = turn_radius(p);
+    let step = p.v_max * p.dt;
+    if step > 0.25 * r {
+        return Err(format!(
+            "vehicle: vMax·dt = {step} m per step is more than a quarter of the turning radius \
+             vMax / min(omegaMax, normalAccelMax/vMax) = {r} m: lower vMax or dt, or raise omegaMax / normalAccelMax"
+        ));
+    }
+    let reference = VehicleParams::default();
+    let cost = VehicleScale::of(p).time() * reference.dt / p.dt;
+    if cost > MAX_COST_RATIO {
+        return Err(format!(
+            "vehicle: turning radius / vMax / dt is {cost:.1} times the pedestrian's (at most {MAX_COST_RATIO}): \
+             the table would take that much longer to build; raise dt or vMax, or lower the turning radius"
+        ));
+    }
+    let cross = r / p.v_max;
+    let speed_up = p.v_max / p.accel_max;
+    if speed_up > MAX_RESPONSE_RATIO * cross {
+        return Err(format!(
+            "vehicle: accelMax = {} m/s² takes {speed_up} s to reach vMax, more than {MAX_RESPONSE_RATIO} × the {cross} s to cross one turning radius",
+            p.accel_max
+        ));
+    }
+    let turn_up = p.omega_max / p.omega_accel_max;
+    if turn_up > MAX_RESPONSE_RATIO * cross {
+        return Err(format!(
+            "vehicle: omegaAccelMax = {} rad/s² takes {turn_up} s to reach omegaMax, more than {MAX_RESPONSE_RATIO} × the {cross} s to cross one turning radius",
+            p.omega_accel_max
+        ));
+    }
+    if p.kd * p.dt > 1.0 {
+        return Err(format!(
+            "vehicle: kd·dt = {} exceeds 1: the discrete seek controller oscillates; lower kd or dt",
+            p.kd * p.dt
+        ));
+    }
+    if p.kp * p.dt * p.dt > 1.0 {
+        return Err(format!(
+            "vehicle: kp·dt² = {} exceeds 1: the discrete seek controller oscillates; lower kp or dt",
+            p.kp * p.dt * p.dt
+        ));
+    }
+    Ok(())
+}
+
 /// What to generate: build parameters and the five axes.
 #[derive(Clone, Debug, PartialEq)]
 pub struct TableSpec {
@@ -84,20 +194,31 @@ impl TableSpec {
         Self::with_counts(vehicle, DEFAULT_COUNTS)
     }
 
+    /// The default layout for vehicle `p`, after [`check_vehicle`].
+    ///
+    /// # Errors
+    /// [`check_vehicle`]'s message.
+    pub fn for_vehicle(p: VehicleParams, counts: [usize; AXES]) -> Result<Self, String> {
+        check_vehicle(&p)?;
+        Ok(Self::with_counts(p, counts))
+    }
+
     /// The default layout with other sample counts per axis (for studies of
     /// accuracy against size; speed axes stay uniform).
     #[must_use]
     pub fn with_counts(vehicle: VehicleParams, counts: [usize; AXES]) -> Self {
         let [nd, na, ns, nv, nvd] = counts;
         let lim = ReachLimits::default();
+        let scale = VehicleScale::of(&vehicle);
         let params = BuildParams {
             vehicle,
-            reach_radius: lim.reach_radius,
+            reach_radius: lim.reach_radius * scale.length,
             orbit_turns: lim.orbit_turns,
-            max_time: lim.max_time,
+            max_time: lim.max_time * scale.time(),
         };
+        let d0 = 0.5 * scale.length;
         let distances: Vec<f32> = (0..nd)
-            .map(|i| 0.5 * (64.0f64).powf(i as f64 / (nd - 1) as f64) as f32)
+            .map(|i| d0 * (64.0f64).powf(i as f64 / (nd - 1) as f64) as f32)
             .collect();
         let alphas = anisotropic_alphas(360.0 / na as f64);
         let fractions: Vec<f32> = (0..ns)
@@ -109,8 +230,10 @@ impl TableSpec {
         let speeds: Vec<f32> = (0..nv)
             .map(|k| vm * g(k as f32 / (nv - 1) as f32))
             .collect();
+        // The slowest desired speed, an eighth of v_max (0.25 m/s walking).
+        let v0 = 0.125 * vm;
         let desired: Vec<f32> = (0..nvd)
-            .map(|k| 0.25 + (vm - 0.25) * g(k as f32 / (nvd - 1) as f32))
+            .map(|k| v0 + (vm - v0) * g(k as f32 / (nvd - 1) as f32))
             .collect();
         Self {
             params,
@@ -254,6 +377,54 @@ impl TableSpec {
     /// If the spec itself is invalid.
     pub fn generate(&self) -> Result<EtaTable, TableError> {
         let partial = crate::parallel::map_indices(self.len(), |i| self.unless_mirrored(i));
+        self.assemble(self.fill_mirrors(&partial))
+    }
+
+    /// Entries `range` encoded for a worker (issue 14: the browser splits
+    /// the generation across Web Workers): three f32 per entry, η, the
+    /// desired-or-fallback speed and the flags, with flags −1 for an entry
+    /// left to its mirror ([`TableSpec::is_mirrored`]).
+    #[must_use]
+    pub fn encode_slice(&self, range: core::ops::Range<usize>) -> Vec<f32> {
+        let mut out = Vec::with_capacity(3 * range.len());
+        for e in self.entries(range) {
+            match e {
+                Some((eta, v, f)) => out.extend([eta, v, f32::from(f)]),
+                None => out.extend([0.0, 0.0, -1.0]),
+            }
+        }
+        out
+    }
+
+    /// Assembles the table from the encoded slices of every entry, in
+    /// index order ([`TableSpec::encode_slice`] over `0..len`, possibly in
+    /// pieces). The bytes equal [`TableSpec::generate`]'s.
+    ///
+    /// # Errors
+    /// A wrong length, a flag that is not one a slice writes, or an
+    /// invalid table.
+    pub fn assemble_encoded(&self, data: &[f32]) -> Result<EtaTable, TableError> {
+        if data.len() != 3 * self.len() {
+            return Err(TableError::Invalid(format!(
+                "{} encoded values for {} entries (3 per entry expected)",
+                data.len(),
+                self.len()
+            )));
+        }
+        let mut partial = Vec::with_capacity(self.len());
+        for (i, c) in data.chunks_exact(3).enumerate() {
+            let f = c[2];
+            partial.push(if f == -1.0 {
+                if !self.is_mirrored(i) {
+                    return Err(TableError::Invalid(format!("entry {i} missing")));
+                }
+                None
+            } else if f == f.trunc() && (0.0..=3.0).contains(&f) {
+                Some((c[0], c[1], f as u8))
+            } else {
+                return Err(TableError::Invalid(format!("entry {i} has flags {f}")));
+            });
+        }
         self.assemble(self.fill_mirrors(&partial))
     }
 

@@ -9,12 +9,14 @@
 //! | [`codec`] | 000 §3 | the bytes: CRC-32, validation of every field, to/from bytes |
 //! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`] in memory: cells, the multilinear blend, [`Lookup`] |
 //! | [`grid`] | — | where a query falls on a sampled axis, in constant time |
+//! | [`key`] | — | the parameter key (hash of build parameters and axes) that table caches are keyed by |
 //! | [`generate`] | 000 §3 | the generator: the same seek code, anisotropic axes, mirror symmetry |
 
 pub mod codec;
 pub mod format;
 pub mod generate;
 pub mod grid;
+pub mod key;
 pub mod lookup;
 
 pub use codec::crc32;

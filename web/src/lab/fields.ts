@@ -50,6 +50,8 @@ export const FIELDS: readonly LabField[] = [
   lim("wmax", "omegaMax", "max ang. speed", "rad/s"),
   lim("awmax", "omegaAccelMax", "max ang. accel.", "rad/s²"),
   lim("anmax", "normalAccelMax", "max normal acc. A", "m/s²"),
+  lim("kp", "kp", "seek gain kp", "1/s²"),
+  lim("kd", "kd", "seek gain kd", "1/s"),
   num("vx", "pos.x", "vehicle x", "m", (s) => s.vehicle.x, (s, v) => { s.vehicle.x = v; }),
   num("vy", "pos.y", "vehicle y", "m", (s) => s.vehicle.y, (s, v) => { s.vehicle.y = v; }),
   num("vth", "theta", "vehicle heading", "°", (s) => s.vehicle.theta, (s, v) => { s.vehicle.theta = v; }, 1 / DEG),

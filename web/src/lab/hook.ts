@@ -1,7 +1,8 @@
 // window.__lab: what the end-to-end tests and the perf harness read and
 // drive, and the frame-time record behind perfStats().
 
-import type { FunnelConfig, Internals } from "../wasm";
+import type { FunnelConfig, Internals, VehicleParams } from "../wasm";
+import type { TableStatus } from "./sim";
 import type { Handles } from "./handles";
 import { presetNames } from "./presets";
 import { defaultState, type LabState } from "./state";
@@ -39,6 +40,12 @@ export interface LabHook {
   setPaused(p: boolean): void;
   perfReset(): void;
   perfStats(): PerfStats;
+  /** The η table's status (issue 14). */
+  table(): TableStatus | null;
+  /** The vehicle parameters in force in the core. */
+  params(): VehicleParams | null;
+  /** Keys in the browser's table cache. */
+  cachedTables(): Promise<string[]>;
 }
 
 declare global {
@@ -58,6 +65,9 @@ export function installHook(): LabHook {
     frames: 0,
     count: () => 0,
     mode: () => null,
+    table: () => null,
+    params: () => null,
+    cachedTables: () => Promise.resolve([]),
     internals: () => null,
     funnel: () => null,
     state: () => defaultState(),

@@ -15,6 +15,9 @@ export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" 
   time: number;
   paused: boolean;
   slow: boolean;
+  /** The η table's status line (issue 14: exact, or approximate while the
+   *  table of the limits in force is built). */
+  table: string;
 };
 
 const DEG = 180 / Math.PI;
@@ -36,6 +39,7 @@ export function renderHud(el: HTMLElement, h: HudData): void {
     `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
     `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,
+    `table  ${h.table}`,
     `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`,
   ];
   el.textContent = lines.join("\n");

@@ -15,6 +15,7 @@ import { HANDLE_PX, SceneBuilder } from "./scene";
 import { LabSim } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
+import { cacheKeys } from "../workers/tablecache";
 
 const TABLE_URL = "tables/eta.bin";
 
@@ -77,6 +78,9 @@ async function start(): Promise<void> {
   hook.setPaused = transport.setPaused;
   hook.perfReset = () => perf.reset();
   hook.perfStats = () => perf.stats(sim.count);
+  hook.table = () => ({ ...sim.table });
+  hook.params = () => lab.params();
+  hook.cachedTables = cacheKeys;
 
   const since = performance.now();
   await sim.rebuild(true);

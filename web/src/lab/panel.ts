@@ -6,7 +6,8 @@
 // speeds' maximum follows the max speed, and lowering the max speed below
 // the desired speed clamps the desired speed, with a message at its field.
 
-import { button, checkbox, help, row, section, slider, type Control } from "../controls";
+import { button, checkbox, help, row, section, select, slider, type Control } from "../controls";
+import { referenceVehicles } from "../wasm";
 import { bounds, field, parseField } from "./fields";
 import { $ } from "../page";
 import { downloadPng } from "../download";
@@ -77,7 +78,7 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); }, (parent, url, w, onInput) => numeric(parent, url, w, onInput));
 
   const limBox = section(panel, "Vehicle limits");
-  const lim = (url: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax", hi: number): void => {
+  const lim = (url: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax" | "kp" | "kd", hi: number): void => {
     numeric(limBox, url, { id: url, lo: 0.05, hi, step: 0.05 }, (v) => {
       st.limits[key] = v;
       followLimits();
@@ -90,11 +91,47 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
       sim.url.save();
     });
   };
-  lim("vmax", "vMax", 6);
+  const reference = referenceVehicles();
+  const LIMIT_KEYS = ["vMax", "accelMax", "omegaMax", "omegaAccelMax", "normalAccelMax", "kp", "kd"] as const;
+  const urlOf = { vMax: "vmax", accelMax: "amax", omegaMax: "wmax", omegaAccelMax: "awmax", normalAccelMax: "anmax", kp: "kp", kd: "kd" } as const;
+  const current = (): string =>
+    reference.find((r) => LIMIT_KEYS.every((k) => Math.fround(st.limits[k] ?? sim.defaults[k]) === Math.fround(r.vehicle[k])))?.name ?? "custom";
+  const vehicleSelect = select(limBox, {
+    id: "vehicle", label: "vehicle", value: current(),
+    options: [...reference.map((r) => ({ value: r.name, label: r.name })), { value: "custom", label: "custom" }],
+    onChange: (name) => {
+      const r = reference.find((x) => x.name === name);
+      if (!r) return;
+      for (const k of LIMIT_KEYS) {
+        if (r.vehicle[k] === sim.defaults[k]) delete st.limits[k];
+        else st.limits[k] = r.vehicle[k];
+        controls.get(urlOf[k])?.set(r.vehicle[k]);
+      }
+      followLimits();
+      for (const c of sim.applyParams()) {
+        const ctl = controls.get(c.field.url);
+        ctl?.set(c.field.get(st, sim.defaults));
+        ctl?.note(c.message);
+      }
+      sim.url.save();
+    },
+  });
+  vehicleSelect.el.title = reference.map((r) => `${r.name}: ${r.description}`).join("\n");
+  lim("vmax", "vMax", 20);
   lim("amax", "accelMax", 10);
   lim("wmax", "omegaMax", 10);
   lim("awmax", "omegaAccelMax", 60);
   lim("anmax", "normalAccelMax", 10);
+  lim("kp", "kp", 400);
+  lim("kd", "kd", 60);
+  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit.";
+  // A limit edited by hand shows "custom" (or the vehicle it matches); the
+  // select's own events are its own business.
+  const syncVehicle = (ev: Event): void => {
+    if (!(ev.target instanceof HTMLSelectElement)) vehicleSelect.set(current());
+  };
+  limBox.addEventListener("input", syncVehicle);
+  limBox.addEventListener("change", syncVehicle);
 
   const ovBox = section(panel, "Overlays");
   const ov = (key: keyof Overlays, label: string): void => {

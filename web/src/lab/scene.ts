@@ -98,6 +98,7 @@ export class SceneBuilder {
       speed: sim.field(sim.shown, StateField.V) ?? 0,
       reachable: done || (inter?.reachable ?? true),
       usPerUpdate: sim.usPerUpdate, frameMs, agents: sim.count, time: sim.time, paused: sim.paused, slow: sim.st.slow,
+      table: sim.tableLine(),
     };
   }
 }

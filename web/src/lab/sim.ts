@@ -12,6 +12,27 @@ import { findPreset } from "./presets";
 import type { LabState, Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
+import { Cancelled } from "../workers/pool";
+import { buildTable, cancelBuild, tableKeyFor } from "../workers/tables";
+
+/** The η table in force against the limits in force (issue 14). */
+export interface TableStatus {
+  /** `exact`: built for these limits; `building`: the old one, approximate,
+   *  while workers build the new one; `error`: no table can be built for
+   *  these limits (the old one stays, approximate). */
+  state: "exact" | "building" | "error";
+  /** Build progress, 0..1. */
+  progress: number;
+  /** Key of the table in force. */
+  key: string;
+  /** Key wanted for the limits in force. */
+  wanted: string;
+  /** The last build: wall ms, from the cache or built, workers. */
+  ms: number;
+  cached: boolean;
+  workers: number;
+  message: string;
+}
 
 const PLAYGROUND_HELP =
   "Playground: drag the vehicle (body: position, white knob: heading), the target (centre), its β knob, " +
@@ -40,8 +61,11 @@ export class LabSim {
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
   onScene: (caption: string, playground: boolean) => void = () => {};
+  /** The η table's status (HUD, window.__lab.table()). */
+  table: TableStatus;
   private acc = 0;
   private generation = 0;
+  private tableGen = 0;
   /** The URL's view, shown once (the first build); later builds fit when asked. */
   private sharedView: LabState["view"];
 
@@ -50,6 +74,68 @@ export class LabSim {
     this.dt = this.defaults.dt;
     this.sharedView = st.view;
     this.url = new UrlSync(st, view, ranges, this.defaults);
+    const key = lab.tableKey();
+    this.table = { state: "exact", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
+  }
+
+  /** The HUD's table line. */
+  tableLine(): string {
+    const t = this.table;
+    if (t.state === "building") return `approximate — building ${Math.round(100 * t.progress)} %`;
+    if (t.state === "error") return "approximate — no table for these limits";
+    const how = t.ms === 0 ? "" : t.cached ? ` (cache, ${t.ms.toFixed(0)} ms)` : ` (built, ${(t.ms / 1000).toFixed(1)} s)`;
+    return `exact for these limits${how}`;
+  }
+
+  /** Brings the η table in line with the limits in force: nothing when it
+   *  matches, else the matching one from the browser's cache or built in
+   *  Web Workers (the old table, labelled approximate, runs meanwhile). */
+  syncTable(): void {
+    let wanted: string;
+    try {
+      wanted = tableKeyFor(this.params());
+    } catch (e) {
+      this.tableGen++;
+      this.table = { ...this.table, state: "error", message: errorText(e) };
+      showMessage(`No η table for these limits: ${errorText(e)}`, "warn");
+      this.dirty = true;
+      return;
+    }
+    if (wanted === this.table.wanted && this.table.state !== "error") return;
+    const gen = ++this.tableGen;
+    this.table = { ...this.table, wanted, message: "" };
+    if (wanted === this.lab.tableKey()) {
+      cancelBuild();
+      this.table = { ...this.table, state: "exact", progress: 1 };
+      this.dirty = true;
+      return;
+    }
+    this.table = { ...this.table, state: "building", progress: 0 };
+    this.dirty = true;
+    const params = this.params();
+    buildTable(params, (f) => {
+      if (gen === this.tableGen) {
+        this.table.progress = f;
+        this.dirty = true;
+      }
+    }).then(
+      (t) => {
+        if (gen !== this.tableGen) return;
+        try {
+          const key = this.lab.setTable(t.bytes);
+          this.table = { ...this.table, state: "exact", progress: 1, key, ms: t.ms, cached: t.cached, workers: t.workers };
+        } catch (e) {
+          this.table = { ...this.table, state: "error", message: errorText(e) };
+        }
+        this.dirty = true;
+      },
+      (e: unknown) => {
+        if (e instanceof Cancelled || gen !== this.tableGen) return;
+        this.table = { ...this.table, state: "error", message: errorText(e) };
+        showMessage(`The η table could not be built: ${errorText(e)}`, "warn");
+        this.dirty = true;
+      },
+    );
   }
 
   params(): VehicleParams {
@@ -117,12 +203,14 @@ export class LabSim {
     const before = this.lab.params();
     const clamped = clampToLimits(this.ranges, this.st, this.defaults);
     try {
-      const warning = this.lab.setParams(this.params());
-      if (warning) showMessage(`Vehicle limits: ${warning}`, "warn");
+      // A mismatched table is labelled approximate in the HUD while the
+      // matching one is built (syncTable), not warned about.
+      this.lab.setParams(this.params());
     } catch (e) {
       showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
       for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = before[f.limit];
     }
+    this.syncTable();
     if (clamped.fields.length > 0) {
       this.dirty = true;
       this.updateGoal();
@@ -192,8 +280,10 @@ export class LabSim {
         const text = await p.load();
         if (gen !== this.generation) return;
         const info = lab.loadScenario(text);
+        // The page's vehicle limits apply to presets too (issue 14:
+        // `#preset=…&vmax=0.05` runs at 0.05 m/s).
+        lab.setParams(this.params());
         this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false);
-        if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
         if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
       } catch (e) {
         showMessage(`Preset ${st.preset} could not be loaded: ${errorText(e)}`, "error");

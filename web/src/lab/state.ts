@@ -25,6 +25,9 @@ export interface Limits {
   omegaMax?: number;
   omegaAccelMax?: number;
   normalAccelMax?: number;
+  /** Seek gains (a reference vehicle may set them; issue 14). */
+  kp?: number;
+  kd?: number;
 }
 
 /** The μ-bound choices of the controller section, as the URL writes them:

@@ -1,0 +1,101 @@
+// A pool of Web Workers that splits one job into tasks (issue 14; reusable:
+// any worker module that answers `{ id, task }` with `{ id, ok, result }`).
+// `navigator.hardwareConcurrency` workers by default, created on first use
+// and kept (a worker's wasm instantiation is paid once); tasks are handed
+// out one at a time to whichever worker is free, so a slow task does not
+// hold the others back; results come back in task order. `cancel()` ends
+// the job in flight (its workers are terminated, its promise rejects).
+
+/** What a pool worker receives. */
+export interface TaskMessage<T> {
+  id: number;
+  task: T;
+}
+
+/** What a pool worker answers. */
+export type ResultMessage<R> = { id: number; ok: true; result: R } | { id: number; ok: false; error: string };
+
+export class Cancelled extends Error {
+  constructor() {
+    super("cancelled");
+  }
+}
+
+export class WorkerPool<T, R> {
+  private workers: Worker[] = [];
+  private job = 0;
+  private abort: (() => void) | null = null;
+
+  /** `make` creates one worker; `size` workers at most. */
+  constructor(
+    private readonly make: () => Worker,
+    readonly size = Math.max(1, Math.min(16, navigator.hardwareConcurrency || 2)),
+  ) {}
+
+  /** Runs every task; `onProgress(done, total)` after each. One job at a
+   *  time: a new run cancels the one in flight. */
+  run(tasks: readonly T[], onProgress: (done: number, total: number) => void = () => {}): Promise<R[]> {
+    this.cancel();
+    const job = ++this.job;
+    while (this.workers.length < Math.min(this.size, tasks.length)) this.workers.push(this.make());
+    const results: R[] = new Array<R>(tasks.length);
+    let next = 0;
+    let done = 0;
+    return new Promise<R[]>((resolve, reject) => {
+      const fail = (e: Error): void => {
+        this.abort = null;
+        reject(e);
+      };
+      this.abort = () => fail(new Cancelled());
+      const feed = (w: Worker): void => {
+        if (next >= tasks.length) return;
+        const id = next++;
+        const msg: TaskMessage<T> = { id, task: tasks[id] as T };
+        w.postMessage(msg);
+      };
+      for (const w of this.workers) {
+        w.onmessage = (ev: MessageEvent<ResultMessage<R>>) => {
+          if (job !== this.job) return;
+          const m = ev.data;
+          if (!m.ok) {
+            this.cancel();
+            fail(new Error(m.error));
+            return;
+          }
+          results[m.id] = m.result;
+          done++;
+          onProgress(done, tasks.length);
+          if (done === tasks.length) {
+            this.abort = null;
+            resolve(results);
+          } else feed(w);
+        };
+        w.onerror = (ev: ErrorEvent) => {
+          if (job !== this.job) return;
+          this.cancel();
+          fail(new Error(`worker failed: ${ev.message}`));
+        };
+        feed(w);
+      }
+      if (tasks.length === 0) resolve(results);
+    });
+  }
+
+  /** Ends the job in flight, if any (its workers are replaced on the next run). */
+  cancel(): void {
+    if (!this.abort) return;
+    const abort = this.abort;
+    this.abort = null;
+    this.job++;
+    for (const w of this.workers) w.terminate();
+    this.workers = [];
+    abort();
+  }
+
+  /** Terminates every worker. */
+  terminate(): void {
+    this.cancel();
+    for (const w of this.workers) w.terminate();
+    this.workers = [];
+  }
+}

@@ -1,0 +1,73 @@
+// The browser's η-table cache (issue 14): IndexedDB database
+// `steering-lab`, store `tables`, one record per parameter key (the core's
+// `tableJob(params).key`, the same hash as the native cache's file names).
+// A record is used only after the core has loaded it and recomputed the
+// same key from its header (`tableKeyOf`), so a stale or corrupt record is
+// rebuilt, never used. Every failure (private mode, quota) is a miss.
+
+const DB = "steering-lab";
+const STORE = "tables";
+
+function open(): Promise<IDBDatabase> {
+  return new Promise((resolve, reject) => {
+    const req = indexedDB.open(DB, 1);
+    req.onupgradeneeded = () => {
+      if (!req.result.objectStoreNames.contains(STORE)) req.result.createObjectStore(STORE);
+    };
+    req.onsuccess = () => resolve(req.result);
+    req.onerror = () => reject(req.error ?? new Error("indexedDB.open failed"));
+  });
+}
+
+function request<T>(mode: IDBTransactionMode, f: (s: IDBObjectStore) => IDBRequest): Promise<T | undefined> {
+  return open().then(
+    (db) =>
+      new Promise<T | undefined>((resolve) => {
+        try {
+          const tx = db.transaction(STORE, mode);
+          const req = f(tx.objectStore(STORE));
+          tx.oncomplete = () => {
+            db.close();
+            resolve(req.result as T | undefined);
+          };
+          tx.onerror = tx.onabort = () => {
+            db.close();
+            resolve(undefined);
+          };
+        } catch {
+          db.close();
+          resolve(undefined);
+        }
+      }),
+  );
+}
+
+/** The bytes cached under `key`, or null. */
+export async function cacheGet(key: string): Promise<Uint8Array | null> {
+  try {
+    const v = await request<ArrayBuffer>("readonly", (s) => s.get(key));
+    return v instanceof ArrayBuffer ? new Uint8Array(v) : null;
+  } catch {
+    return null;
+  }
+}
+
+/** Stores `bytes` under `key` (failures ignored: the next visit rebuilds). */
+export async function cachePut(key: string, bytes: Uint8Array): Promise<void> {
+  try {
+    const copy = bytes.slice().buffer;
+    await request("readwrite", (s) => s.put(copy, key));
+  } catch {
+    /* a miss next time */
+  }
+}
+
+/** The keys in the cache (tests). */
+export async function cacheKeys(): Promise<string[]> {
+  try {
+    const v = await request<IDBValidKey[]>("readonly", (s) => s.getAllKeys());
+    return (v ?? []).map(String);
+  } catch {
+    return [];
+  }
+}

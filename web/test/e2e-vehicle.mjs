@@ -1,0 +1,122 @@
+// Browser end-to-end test of issue 14 (η tables for the vehicle in use),
+// against the built page (web/dist) in Debian's headless Chromium:
+// - a preset with a vehicle limit in the link really runs with it
+//   (`#preset=p000_fig1_seek&vmax=0.05`: the core's vMax and the agents'
+//   speeds), and its table is built;
+// - changing a limit in the playground builds the matching table in Web
+//   Workers (the HUD says "approximate — building N %", then "exact"), the
+//   page keeps animating meanwhile, the URL carries the limit, the
+//   playground is not empty; reloading finds the table in IndexedDB
+//   (cached, ≤ 100 ms target) and the cache holds its key;
+// - lowering max speed below the desired speed, then Reset: the playground
+//   keeps its agent;
+// - the reference vehicles (select "vehicle"): the car's table built;
+// - no console errors. Prints the build and cache timings (README figures)
+//   and "e2e-vehicle: N passed, M failed". Screenshots in artifacts/.
+import { serve, launch, openPage, checks, shot, waitReady, settle } from "./harness.mjs";
+import assert from "node:assert/strict";
+
+const { check, finish } = checks("e2e-vehicle");
+const { server, url } = await serve();
+const browser = await launch();
+const timings = {};
+
+const table = (page) => page.evaluate(() => window.__lab.table());
+const waitExact = (page, timeout = 90000) =>
+  page.waitForFunction(() => window.__lab.table()?.state === "exact" && window.__lab.table()?.key === window.__lab.table()?.wanted, null, { timeout, polling: 50 });
+const hud = (page) => page.locator("#hud").textContent();
+
+try {
+  await check("a preset runs with the link's vehicle limit (vmax=0.05) and gets its table", async () => {
+    const { context, page, problems } = await openPage(browser);
+    await page.goto(`${url}index.html#preset=p000_fig1_seek&vmax=0.05`);
+    assert.equal(await waitReady(page), null);
+    const p = await page.evaluate(() => window.__lab.params());
+    assert.ok(Math.abs(p.vMax - 0.05) < 1e-6, `core vMax ${p.vMax}`);
+    await waitExact(page);
+    await page.waitForTimeout(1500);
+    const text = await hud(page);
+    const m = /speed\s+([\d.]+) m\/s/.exec(text);
+    assert.ok(m && Number(m[1]) <= 0.0501, `HUD speed: ${text}`);
+    assert.match(text, /table\s+exact/);
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  let context, page, problems;
+  await check("changing a limit builds the table in workers; HUD, URL, animation", async () => {
+    ({ context, page, problems } = await openPage(browser));
+    await page.goto(`${url}index.html`);
+    assert.equal(await waitReady(page), null);
+    const t0 = await table(page);
+    assert.equal(t0.state, "exact");
+    const frames0 = await page.evaluate(() => window.__lab.frames);
+    await page.locator("#vmax-num").fill("1.2");
+    await page.locator("#vmax-num").press("Enter");
+    await page.waitForFunction(() => window.__lab.table()?.state !== "exact", null, { timeout: 5000, polling: 10 }).catch(() => {});
+    const during = await hud(page);
+    const start = Date.now();
+    await waitExact(page);
+    const wall = Date.now() - start;
+    const t = await table(page);
+    timings.buildMs = t.ms;
+    timings.workers = t.workers;
+    assert.equal(t.cached, false);
+    assert.ok(/approximate — building|exact/.test(during), during);
+    const frames1 = await page.evaluate(() => window.__lab.frames);
+    assert.ok(frames1 - frames0 > 10, `the page kept animating: ${frames1 - frames0} frames in ${wall} ms`);
+    assert.match(await hud(page), /table\s+exact for these limits \(built/);
+    assert.match(page.url(), /vmax=1\.2/);
+    assert.ok((await page.evaluate(() => window.__lab.count())) >= 1, "the playground has its agent");
+    assert.ok(Math.abs((await page.evaluate(() => window.__lab.params())).vMax - 1.2) < 1e-6);
+    assert.ok((await page.evaluate(() => window.__lab.cachedTables())).includes(t.key));
+    await shot(page, "vehicle-built");
+  });
+
+  await check("reloading finds the table in the browser's cache", async () => {
+    const key = (await table(page)).key;
+    await page.reload();
+    assert.equal(await waitReady(page), null);
+    await waitExact(page, 10000);
+    const t = await table(page);
+    timings.cacheMs = t.ms;
+    assert.equal(t.key, key);
+    assert.equal(t.cached, true);
+    assert.match(await hud(page), /table\s+exact for these limits \(cache/);
+  });
+
+  await check("max speed below the desired speed, then Reset: the playground keeps its agent", async () => {
+    await page.locator("#vmax-num").fill("0.3");
+    await page.locator("#vmax-num").press("Enter");
+    await settle(page);
+    const st = await page.evaluate(() => window.__lab.state());
+    assert.ok(st.speed <= 0.3 + 1e-9, `desired speed ${st.speed}`);
+    await page.keyboard.press("r");
+    await settle(page);
+    assert.ok((await page.evaluate(() => window.__lab.count())) >= 1);
+    await waitExact(page);
+    assert.match(page.url(), /vmax=0\.3/);
+  });
+
+  await check("reference vehicles: the car's table is built and its limits are in the URL", async () => {
+    await page.selectOption("#vehicle", "car");
+    const start = Date.now();
+    await waitExact(page, 120000);
+    timings.carMs = (await table(page)).ms;
+    timings.carWall = Date.now() - start;
+    const p = await page.evaluate(() => window.__lab.params());
+    assert.deepEqual([p.vMax, p.accelMax, p.omegaMax, p.omegaAccelMax, p.normalAccelMax], [15, 3, 0.8, 2, 4].map(Math.fround));
+    assert.equal(await page.inputValue("#vehicle"), "car");
+    assert.match(page.url(), /vmax=15/);
+    await page.setViewportSize({ width: 390, height: 844 });
+    await settle(page);
+    await shot(page, "vehicle-car-phone");
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+} finally {
+  console.log(`e2e-vehicle timings: ${JSON.stringify(timings)}`);
+  await browser.close();
+  await server.close();
+}
+finish();
