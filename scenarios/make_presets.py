@@ -23,13 +23,15 @@ def write(name, source, description, agents, duration=40.0, **extra):
         json.dump(sc, f, indent=1)
         f.write("\n")
 
-# Paper 000 Fig. 1 / paper 001 Fig. 1a: plain seek to three position goals
-# (orientation tolerance 180 degrees, so no orientation is enforced).
+# Paper 000 Fig. 1 / paper 001 Fig. 1a: plain seek to three position goals.
+# The seek controller ignores beta and epsTol (issue 19: with the standard
+# controller and epsTol 180 a target behind was still funnelled towards
+# beta); epsTol 180 only draws the targets without an orientation triangle.
 write("p000_fig1_seek", "paper 000 Fig. 1, paper 001 Fig. 1a",
       "Seek: three agents reach three position targets without a prescribed orientation (red circles).",
       [agent(0, 0, 0, [goal(6, 4, 0, epsTolDeg=180, halting=True)]),
        agent(0, -1, 0, [goal(7, -2, 0, epsTolDeg=180, halting=True)]),
-       agent(0, -2, 0, [goal(-3, -5, 0, epsTolDeg=180, halting=True)])], duration=20)
+       agent(0, -2, 0, [goal(-3, -5, 0, epsTolDeg=180, halting=True)])], duration=20, controller="seek")
 
 # Paper 000 Fig. 3 / paper 001 Fig. 1b: the same targets with prescribed orientations.
 write("p000_fig3_funnel", "paper 000 Fig. 3, paper 001 Fig. 1b",
@@ -82,7 +84,9 @@ for i in range(80):
                                                              motion={"kind": "circle", "center": [cx, cy], "angularSpeed": 0.05})],
                         v=rnd.uniform(0, 1.5)))
 write("p000_fig8_eighty", "paper 000 Fig. 8",
-      "Performance case: 80 agents assigned to five slowly moving oriented targets; draw 500-point traces.",
+      "Performance case: 80 agents assigned to five slowly moving oriented targets. The paper draws a "
+      "500-point polyline per agent; the lab keeps the last 3,000 points (50 s at 60 Hz), since 500 "
+      "points of 60 Hz steps would show only the last 8 s, not the three sections.",
       agents, duration=60)
 
 # Paper 001 Figs. 10-12: relaxed vs standard funnelling towards region goals

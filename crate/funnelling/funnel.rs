@@ -108,6 +108,17 @@ impl Default for Goal {
 }
 
 impl Goal {
+    /// The goal without a prescribed orientation (the seek controller,
+    /// [`crate::relaxed::ControllerKind::Seek`]): any heading is within an
+    /// infinite ε_tol, so the tolerance phase judges the position alone.
+    #[must_use]
+    pub fn unoriented(&self) -> Self {
+        Self {
+            eps_tol: f32::INFINITY,
+            ..*self
+        }
+    }
+
     /// Rejects non-finite or out-of-range goals ([`crate::funnelling::ranges`]),
     /// a desired speed of 0 included (the agent would never move).
     ///
@@ -300,6 +311,21 @@ pub fn orbit_free_speed(p: &VehicleParams, d: f32, alpha: f32) -> f32 {
 }
 
 impl FunnelConfig {
+    /// Plain seek with these settings (paper 000 §3, Fig. 1): aim at the
+    /// centre, no terminal pursuit, Position_only whatever Δη (an infinite
+    /// seek threshold). The table lookup stays: it lowers the desired speed
+    /// where the target appears unreachable, which is the paper's seek
+    /// mode. Use it with [`Goal::unoriented`].
+    #[must_use]
+    pub fn plain_seek(&self) -> Self {
+        Self {
+            seek_threshold: f32::INFINITY,
+            aim: Aim::Centre,
+            terminal: None,
+            ..*self
+        }
+    }
+
     /// Rejects non-finite or out-of-range settings.
     ///
     /// # Errors

@@ -39,7 +39,7 @@ export class LabSim {
   /** Smoothed core cost per agent update, µs. */
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
-  onScene: (caption: string, playground: boolean) => void = () => {};
+  onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
   private acc = 0;
   private generation = 0;
   /** The URL's view, shown once (the first build); later builds fit when asked. */
@@ -192,7 +192,7 @@ export class LabSim {
         const text = await p.load();
         if (gen !== this.generation) return;
         const info = lab.loadScenario(text);
-        this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false);
+        this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false, info.claim, info.measured);
         if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
         if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
       } catch (e) {
