@@ -120,4 +120,27 @@ both("p001_fig12_successive", "paper 001 Fig. 12",
      "Successive region goals (2 m disks, 10 deg tolerance); the last one halts.",
      nine_from_left([goal(x, y, b, dTol=2.0, epsTolDeg=10, halting=(i == len(chain) - 1))
                      for i, (x, y, b) in enumerate(chain)]), 70)
+# Paper 001 Figs. 6b/c, 8 and 9: one entity heading right towards a 2 m
+# region goal. 6b: the standard controller aiming at the disk centre (the
+# paper's standard: alpha measured to the centre) gives an artificially
+# curved path; 6c: a better point of the disk (the relaxed point, paper
+# arc) a smoother one. Fig. 8: the same case, relaxed: some point of the arc
+# gives delta-eta = 0, the one of smallest |alpha_r| is taken. Fig. 9: a goal
+# oriented back towards the entity: no point gives delta-eta = 0, the arc
+# end of smallest |delta-eta| is taken.
+def region(beta, eps=10):
+    return [agent(-10, 0, 0, [goal(0, 0, beta, dTol=2.0, epsTolDeg=eps)], v=1.3)]
+
+write("p001_fig6b_centre", "paper 001 Fig. 6b",
+      "Standard funnelling towards a 2 m region goal oriented 90 deg, aiming at the disk centre: an artificially curved path.",
+      region(90), duration=15, funnel={"aim": "centre"})
+write("p001_fig6c_relaxed", "paper 001 Fig. 6c",
+      "The same goal, aimed at a better point of the disk (relaxed funnelling, the paper's relaxed point on the arc): a smoother path.",
+      region(90), duration=15, controller="relaxed", relaxed={"aim": "paperArc"})
+write("p001_fig8_zero_delta_eta", "paper 001 Fig. 8",
+      "Relaxed funnelling, the case of Fig. 6b: some point of the arc gives delta-eta = 0; the one of smallest |alpha_r| is steered to.",
+      region(10, 20), duration=15, controller="relaxed", relaxed={"aim": "paperArc"})
+write("p001_fig9_arc_end", "paper 001 Fig. 9",
+      "A region goal oriented back towards the entity: no point of the arc gives delta-eta = 0, so the arc end of smallest |delta-eta| is steered to.",
+      region(180), duration=20, controller="relaxed", relaxed={"aim": "paperArc"})
 print("presets written to", HERE)
