@@ -584,3 +584,166 @@ mod crowd {
         assert!(offs[3] < -12.0 && offs[4] < -12.0, "{offs:?}");
     }
 }
+
+// ---------------------------------------------------------------- paper 004
+
+mod wander {
+    use core::f32::consts::TAU;
+
+    use steering::angle::diff;
+    use steering::wander::{WanderConfig, WanderPreset, Wanderer};
+
+    fn variant(file: &str, figure_or_label: &str) -> WanderConfig {
+        let path = format!("{}/scenarios/wander/{file}.json", env!("CARGO_MANIFEST_DIR"));
+        let p = WanderPreset::from_json(&std::fs::read_to_string(path).unwrap()).unwrap();
+        p.variants
+            .into_iter()
+            .find(|v| v.figure.as_deref() == Some(figure_or_label) || v.label.starts_with(figure_or_label))
+            .unwrap_or_else(|| panic!("{file}: no variant {figure_or_label}"))
+            .config
+    }
+
+    /// Poses `[x, y, θ]` of `steps` steps.
+    fn poses(cfg: &WanderConfig, steps: u32) -> Vec<[f32; 3]> {
+        let mut w = Wanderer::new(cfg.clone()).unwrap();
+        (0..steps)
+            .map(|_| {
+                w.step();
+                w.pose()
+            })
+            .collect()
+    }
+
+    /// Radius of gyration of the positions, world units.
+    fn gyration(p: &[[f32; 3]]) -> f32 {
+        let n = p.len() as f32;
+        let (cx, cy) = (p.iter().map(|q| q[0]).sum::<f32>() / n, p.iter().map(|q| q[1]).sum::<f32>() / n);
+        (p.iter().map(|q| (q[0] - cx).powi(2) + (q[1] - cy).powi(2)).sum::<f32>() / n).sqrt()
+    }
+
+    /// Full turns made within runs of same-signed turning: Σ ⌊|Σ Δθ| / 2π⌋.
+    fn loops(p: &[[f32; 3]]) -> u32 {
+        let (mut total, mut run, mut sign) = (0, 0.0f32, 0.0f32);
+        for w in p.windows(2) {
+            let d = diff(w[1][2], w[0][2]);
+            if d.signum() != sign && d != 0.0 {
+                total += (run.abs() / TAU) as u32;
+                run = 0.0;
+                sign = d.signum();
+            }
+            run += d;
+        }
+        total + (run.abs() / TAU) as u32
+    }
+
+    /// The longest run of same-signed turning, in turns.
+    fn longest_spin(p: &[[f32; 3]]) -> f32 {
+        let (mut best, mut run, mut sign) = (0.0f32, 0.0f32, 0.0f32);
+        for w in p.windows(2) {
+            let d = diff(w[1][2], w[0][2]);
+            if d.signum() != sign && d != 0.0 {
+                run = 0.0;
+                sign = d.signum();
+            }
+            run += d;
+            best = best.max(run.abs());
+        }
+        best / TAU
+    }
+
+    fn with(cfg: &WanderConfig, seed: u64, edit: impl Fn(&mut serde_json::Value)) -> WanderConfig {
+        let mut v = serde_json::to_value(cfg).unwrap();
+        v["seed"] = seed.into();
+        edit(&mut v);
+        serde_json::from_value(v).unwrap()
+    }
+
+    /// Seeds (of 20) whose agent ends trapped: the last 1,000 of 3,000
+    /// steps stay within one field cell (radius of gyration < 60).
+    fn trapped(cfg: &WanderConfig, acc: f32, vel: f32, fields: u32) -> u32 {
+        (1..=20)
+            .filter(|&seed| {
+                let c = with(cfg, seed, |v| {
+                    v["control"]["max_acceleration_deg"] = acc.into();
+                    v["control"]["max_velocity_deg"] = vel.into();
+                    v["source"]["field"]["count"] = fields.into();
+                    v["source"]["field"]["switch_every"] = 100.into();
+                });
+                gyration(&poses(&c, 3000)[2000..]) < 60.0
+            })
+            .count() as u32
+    }
+
+    #[test]
+    fn p004_sec3_a_sink_traps_and_switching_fields_frees_only_sometimes() {
+        // "Random vector field can have sinks from which the agent cannot
+        // escape [...] especially when the acceleration is set from a
+        // vector field. One way of resolving this problem is to switch
+        // between two or even three vector field at regular intervals."
+        let sink = variant("fields", "screenshot124");
+        let p = poses(&sink, 3000);
+        let g = gyration(&p[2000..]);
+        let mut rows = Vec::new();
+        for (acc, vel) in [(2.0, 15.0), (1.0, 5.0)] {
+            let t = [1, 2, 3].map(|n| trapped(&sink, acc, vel, n));
+            println!("004 §3 acceleration from a field, clamps {acc}° / {vel}°: trapped in {} / {} / {} of 20 seeds with 1 / 2 / 3 fields (switching every 100 steps)", t[0], t[1], t[2]);
+            rows.push(t);
+        }
+        println!("004 §3 the sink preset (seed 3): gyration {g:.1} over the last 1,000 steps");
+        assert!(g < 60.0);
+        // A sink traps: every seed at both clamp settings.
+        assert!(rows.iter().all(|t| t[0] == 20), "{rows:?}");
+        // Switching frees nobody at the preset's clamps (2°, 15°: refuted)…
+        assert!(rows[0][1] >= 18 && rows[0][2] >= 18, "{rows:?}");
+        // …and some with three fields at low clamps (1°, 5°).
+        assert!(rows[1][2] <= 15, "{rows:?}");
+    }
+
+    #[test]
+    fn p004_sec1_too_high_an_acceleration_clamp_spins() {
+        // "If the acceleration is not clamped to a suitably low value, the
+        // agent might go off on a spin for a long time" (figure 118).
+        // Velocity clamp 30°; 20 seeds × 1,000 steps per acceleration clamp.
+        let base = variant("control", "screenshot118");
+        let mut at_clamp = Vec::new();
+        let mut spin = Vec::new();
+        for acc in [0.5f32, 1.0, 2.0, 5.0, 10.0] {
+            let (mut spins, mut sat) = (Vec::new(), 0usize);
+            for seed in 1..=20 {
+                let c = with(&base, seed, |v| v["control"]["max_acceleration_deg"] = acc.into());
+                let p = poses(&c, 1000);
+                spins.push(longest_spin(&p));
+                sat += p.windows(2).filter(|w| diff(w[1][2], w[0][2]).abs() > 0.95 * 30f32.to_radians()).count();
+            }
+            spins.sort_by(f32::total_cmp);
+            let share = sat as f32 / 20_000.0;
+            println!("004 §1 velocity clamp 30°, acceleration clamp {acc}°: {:.1} % of steps spinning at the velocity clamp; longest same-way turn median {:.1} turns", 100.0 * share, spins[10]);
+            at_clamp.push(share);
+            spin.push(spins[10]);
+        }
+        assert!(at_clamp.windows(2).all(|w| w[1] > w[0]), "{at_clamp:?}");
+        assert!(at_clamp[0] < 0.001 && at_clamp[4] > 0.1, "{at_clamp:?}");
+        assert!(spin[2] > 2.0 * spin[0], "{spin:?}");
+    }
+
+    #[test]
+    fn p004_sec5_long_hold_intervals_give_loops() {
+        // "The presence of many circular loops indicate long times of
+        // constant velocity [...] when the intervals are too long in
+        // relation to the max angular velocity." Velocity clamp 10°.
+        let base = variant("timed", "screenshot141");
+        let mut counts = Vec::new();
+        for hold in [1u32, 5, 10, 20, 40, 80] {
+            let lp: u32 = (1..=20)
+                .map(|seed| {
+                    let c = with(&base, seed, |v| v["hold"] = serde_json::json!({"kind": "fixed", "every": hold}));
+                    loops(&poses(&c, 1500))
+                })
+                .sum();
+            println!("004 §5 velocity 10°, hold {hold} steps: {lp} loops in 20 × 1,500 steps");
+            counts.push(lp);
+        }
+        assert!(counts.windows(2).all(|w| w[1] > w[0]) || counts[0] == counts[1], "{counts:?}");
+        assert!(counts[0] == 0 && counts[5] > 200, "{counts:?}");
+    }
+}
