@@ -157,8 +157,7 @@ pub fn parse_every(s: &str) -> Result<u32, String> {
 /// # Errors
 /// Anything else.
 pub fn parse_controller(s: &str) -> Result<ControllerKind, String> {
-    ControllerKind::parse(s)
-        .ok_or_else(|| format!("`{s}` is none of standard, relaxed or seek"))
+    ControllerKind::parse(s).ok_or_else(|| format!("`{s}` is none of standard, relaxed or seek"))
 }
 
 /// Parses `--aim`.

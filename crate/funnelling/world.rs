@@ -191,7 +191,9 @@ impl World {
                 ControllerKind::Standard => self.config.plan(table, &p, &a.state, &goal, &mut mem),
                 ControllerKind::Seek => {
                     let g = goal.unoriented();
-                    self.config.plain_seek().plan(table, &p, &a.state, &g, &mut mem)
+                    self.config
+                        .plain_seek()
+                        .plan(table, &p, &a.state, &g, &mut mem)
                 }
                 ControllerKind::Relaxed => self.relaxed.plan(
                     &self.config,
