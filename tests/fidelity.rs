@@ -6,7 +6,7 @@
 //! panel) carry the same sentence. Fast: the whole file runs in seconds in
 //! release; long studies live in `steer`.
 
-use core::f32::consts::{PI, TAU};
+use core::f32::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::Vec2;
 use steering::angle::diff;
@@ -848,6 +848,39 @@ mod wander {
         assert!(spin[2] > 2.0 * spin[0], "{spin:?}");
     }
 
+    /// Mean |Δ²θ| per step, degrees: how abruptly the turn rate changes.
+    fn roughness(p: &[[f32; 3]]) -> f32 {
+        let d: Vec<f32> = p.windows(2).map(|w| diff(w[1][2], w[0][2])).collect();
+        d.windows(2)
+            .map(|w| (w[1] - w[0]).abs().to_degrees())
+            .sum::<f32>()
+            / (d.len() - 1) as f32
+    }
+
+    #[test]
+    fn p004_sec1_velocity_is_smoother_than_displacement_and_acceleration_smoother_still() {
+        // "Changing the velocity results in smoother behaviour. The
+        // smoothness depends on the maximum allowed velocity. [...]
+        // Changing the acceleration is even smoother".
+        let r = |fig: &str| roughness(&poses(&variant("control", fig), 1000));
+        let rows = [
+            ("101 displacement 180°", r("screenshot101")),
+            ("102 displacement 10°", r("screenshot102")),
+            ("106 velocity 10°", r("screenshot106")),
+            ("108 velocity 40°", r("screenshot108")),
+            ("109 velocity 80°", r("screenshot109")),
+            ("111 acceleration 0.5°, velocity 10°", r("screenshot111")),
+        ];
+        for (l, v) in &rows {
+            println!("004 §1 {l}: mean |Δ²θ| {v:.2}° per step");
+        }
+        let v: Vec<f32> = rows.iter().map(|x| x.1).collect();
+        assert!(
+            v[0] > v[1] && v[1] > v[2] && v[2] < v[3] && v[3] < v[4] && v[5] < 0.2 * v[2],
+            "{v:?}"
+        );
+    }
+
     #[test]
     fn p004_sec5_long_hold_intervals_give_loops() {
         // "The presence of many circular loops indicate long times of
@@ -993,4 +1026,40 @@ fn p004_sec6_response_curve_smooths_the_table() {
         assert!((emp - want).abs() < 0.015, "x {x}: {emp} vs {want}");
     }
     assert!(draws.iter().all(|d| (0.0..=r(45.0)).contains(d)));
+}
+
+#[test]
+fn p001_fig3_eta_is_radial_at_low_speed_and_only_in_front_at_normal_speed() {
+    // "In the first case [slow] the final tangential directions appear to
+    // be oriented radially (Fig. 3b) whereas this is only the case for
+    // sampled goals lying in front of the mobile entity for Fig. 3c."
+    // ω = 0; mean |η| over targets 2–4 m away; and the share of targets
+    // within 1.5 m unreachable at the desired speed (darker in Fig. 3c).
+    let t = table();
+    let mut rows = Vec::new();
+    for (label, v) in [("slow 0.3 m/s", 0.3f32), ("normal 1.3 m/s", 1.3)] {
+        let (mut front, mut back, mut near, mut unreach) = (Vec::new(), Vec::new(), 0, 0);
+        for i in 0..72 {
+            let a = -PI + TAU * (i as f32 + 0.5) / 72.0;
+            for d in [2.0f32, 2.5, 3.0, 3.5, 4.0] {
+                let e = t.lookup(d, a, 0.0, v, v).eta.abs().to_degrees();
+                if a.abs() < FRAC_PI_2 {
+                    front.push(e)
+                } else {
+                    back.push(e)
+                }
+            }
+            for d in [0.6f32, 0.9, 1.2, 1.5] {
+                near += 1;
+                unreach += usize::from(!t.lookup(d, a, 0.0, v, v).reachable);
+            }
+        }
+        let u = unreach as f32 / near as f32;
+        println!("001 Fig. 3 {label}: mean |η| {:.1}° in front, {:.1}° behind (2–4 m); {:.0} % of targets within 1.5 m unreachable at that speed", mean(&front), mean(&back), 100.0 * u);
+        rows.push((mean(&front), mean(&back), u));
+    }
+    let (slow, normal) = (rows[0], rows[1]);
+    assert!(normal.1 > 2.0 * slow.1, "{rows:?}");
+    assert!(normal.0 < 0.5 * normal.1, "{rows:?}");
+    assert!(normal.2 > slow.2, "{rows:?}");
 }
