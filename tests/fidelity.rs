@@ -534,7 +534,7 @@ fn p001_fig8_delta_eta_zero_takes_the_smallest_alpha_r() {
     // "The relaxed funnelling minimizes |Δη|, and |α_r| in case Δη is null."
     use Fig7Branch::*;
     let t = table();
-    let s = searched(&t, "p001_fig8_zero_delta_eta");
+    let s = searched(&t, "p001_fig8_zero_delta_eta_relaxed");
     let zero = s
         .iter()
         .filter(|x| {
@@ -562,7 +562,7 @@ fn p001_fig9_no_zero_delta_eta_takes_an_arc_end() {
     // boundary of 𝒜 minimizing |Δη| is retained for α_r."
     use Fig7Branch::*;
     let t = table();
-    let s = searched(&t, "p001_fig9_arc_end");
+    let s = searched(&t, "p001_fig9_arc_end_relaxed");
     let gap = s
         .iter()
         .filter(|x| matches!(x.0, OppositeGap | SameGap))
