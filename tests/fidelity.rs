@@ -10,7 +10,7 @@ use core::f32::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::Vec2;
 use steering::angle::diff;
-use steering::funnel::{Aim, FunnelConfig, Mode, MuBound};
+use steering::funnel::Mode;
 use steering::relaxed::{ControllerKind, Fig7Branch, RelaxedAim};
 use steering::scenario::Scenario;
 use steering::table::EtaTable;
@@ -316,31 +316,6 @@ fn mean_pairwise(p: &[Vec2]) -> f32 {
         }
     }
     mean(&s)
-}
-
-/// Each agent's position every `step` metres of travel (at most `n` samples).
-fn by_distance(t: &EtaTable, sc: &Scenario, step: f32, n: usize) -> Vec<Vec<Vec2>> {
-    let mut out: Vec<Vec<Vec2>> = sc
-        .agents
-        .iter()
-        .map(|a| vec![Vec2::new(a.x, a.y)])
-        .collect();
-    run(t, sc, |w| {
-        for (i, a) in w.agents.iter().enumerate() {
-            if out[i].len() < n && a.metrics.length >= step * out[i].len() as f32 {
-                out[i].push(a.state.pos);
-            }
-        }
-    });
-    out
-}
-
-/// Mean pairwise distance between the agents at each travelled distance.
-fn pairwise_along(p: &[Vec<Vec2>]) -> Vec<f32> {
-    let n = p.iter().map(Vec::len).min().unwrap_or(0);
-    (0..n)
-        .map(|k| mean_pairwise(&p.iter().map(|v| v[k]).collect::<Vec<_>>()))
-        .collect()
 }
 
 /// Every agent's trajectory, every step.
