@@ -55,7 +55,7 @@ export function buildTransport(sim: LabSim): Transport {
       groups.set(label, g);
       presetSel.append(g);
     }
-    addOpt(g, p.name, p.name.replace(/^p\d{3}_fig\d+[a-z]?_/, ""));
+    addOpt(g, p.name, p.name);
   }
   presetSel.value = st.preset;
   const setPreset = async (name: string): Promise<void> => {
