@@ -120,7 +120,8 @@ impl Pieces {
 }
 
 /// The μ bounds compared: the default and the paper's literal one, plain
-/// and scaled (two table interpolations per update).
+/// and scaled (one interpolation more per update than the default bound:
+/// 2–4 blends instead of 1–3).
 fn bounds() -> [(&'static str, FunnelConfig); 4] {
     [
         (
@@ -226,6 +227,32 @@ fn ratio() {
             }
         }
     }
+    // A table at paper 000's own size (43,200 entries, issue 19; counts as
+    // in tests/fidelity.rs), generated here (0.1 s), beside ours.
+    let small = steering::table::generate::TableSpec::with_counts(
+        VehicleParams::default(),
+        [10, 24, 5, 4, 6],
+    )
+    .generate()
+    .unwrap();
+    let small_pieces = Pieces {
+        t: small,
+        ..Pieces::new()
+    };
+    let (mut ours, mut paper) = (f64::INFINITY, f64::INFINITY);
+    let dflt = FunnelConfig::default();
+    let (mut ours_f, mut paper_f) = (f64::INFINITY, f64::INFINITY);
+    for _ in 0..7 {
+        ours = ours.min(time(&mut |k| x.lookup(k)));
+        paper = paper.min(time(&mut |k| small_pieces.lookup(k)));
+        ours_f = ours_f.min(time(&mut |k| x.funnel(&dflt, k & 1 == 0, k)));
+        paper_f = paper_f.min(time(&mut |k| small_pieces.funnel(&dflt, k & 1 == 0, k)));
+    }
+    println!(
+        "same-run ratio: lookup on the 43,200-entry table / ours (362,880): {paper:.1} / {ours:.1} ns = {:.2}; default funnelling update, near and far mixed: {paper_f:.1} / {ours_f:.1} ns = {:.2}",
+        paper / ours,
+        paper_f / ours_f
+    );
     let seek = best[0];
     println!(
         "same-run ratio: seek step {seek:.1} ns, table lookup {:.1} ns, lookup/seek = {:.2}",
@@ -239,6 +266,8 @@ fn ratio() {
             near / seek,
             far / seek
         );
+        // Paper 000 §7: 9.5 µs far (30 units) against 12.5 µs near: 0.76.
+        println!("same-run ratio: funnelling update far / near, {name}: {:.2} (paper 000 §7: 9.5 / 12.5 = 0.76)", far / near);
     }
 }
 

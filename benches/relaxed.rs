@@ -79,8 +79,13 @@ fn update(t: &EtaTable, p: &VehicleParams, c: &Controller, case: &(VehicleState,
 
 const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15.0))];
 
-fn controllers() -> [(&'static str, Controller); 4] {
+/// Ours (defaults, then the paper arc variants), then like for like the
+/// paper's literal standard controller against its literal relaxed one
+/// (issue 19: Table 1's "relaxed about 50 % cheaper" is against that).
+fn controllers() -> [(&'static str, Controller); 6] {
     let f = FunnelConfig::default();
+    let lit = steering::funnelling::envelope::literal_config();
+    let lit_rel = steering::funnelling::envelope::literal_relaxed_config();
     let paper = RelaxedConfig {
         aim: RelaxedAim::PaperArc,
         ..Default::default()
@@ -102,6 +107,8 @@ fn controllers() -> [(&'static str, Controller); 4] {
                 },
             ),
         ),
+        ("standard_literal", Controller::Standard(lit)),
+        ("relaxed_literal", Controller::Relaxed(lit, lit_rel)),
     ]
 }
 
@@ -134,7 +141,7 @@ fn table1() {
     );
     println!("| controller | small tolerances (0.1 m, 1°) | large tolerances (2.5 m, 15°) |");
     println!("|---|---|---|");
-    let mut means = [[0.0f64; 2]; 4];
+    let mut means = [[0.0f64; 2]; 6];
     let mut rows = Vec::new();
     for (ci, (cn, ctl)) in controllers().iter().enumerate() {
         let mut cells = Vec::new();
@@ -169,6 +176,11 @@ fn table1() {
         means[2][1] / means[0][1],
         means[3][0] / means[0][0],
         means[3][1] / means[0][1]
+    );
+    println!(
+        "like for like, the paper's literal controllers: relaxed / standard small {:.2}, large {:.2} (paper: about equal, and about 0.5 for large tolerances)",
+        means[5][0] / means[4][0],
+        means[5][1] / means[4][1]
     );
 }
 

@@ -2,7 +2,7 @@
 //! §8; the lab replays exactly what `steer run` computes).
 //!
 //! The golden values hash the raw f32 bits of every agent's state at every
-//! step of paper presets: standard funnelling with static, successive and
+//! step of paper presets: plain seek (issue 19), standard funnelling with static, successive and
 //! moving goals (each other's pose, Fig. 6) and relaxed funnelling. The
 //! controllers use only IEEE-exact arithmetic and the crate's own trig
 //! (`steering::trig`), never the platform's libm, so the bits must agree on
@@ -20,7 +20,7 @@ use common::{fnv, FNV_OFFSET};
 
 static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
 
-const PRESETS: [(&str, &str, u64); 3] = [
+const PRESETS: [(&str, &str, u64); 4] = [
     (
         "p000_fig7_variety",
         include_str!("../scenarios/p000_fig7_variety.json"),
@@ -35,6 +35,12 @@ const PRESETS: [(&str, &str, u64); 3] = [
         "p001_fig12_successive_relaxed",
         include_str!("../scenarios/p001_fig12_successive_relaxed.json"),
         0x70b0_b733_540d_3c78,
+    ),
+    // Plain seek (issue 19: `"controller": "seek"`), a new golden.
+    (
+        "p000_fig1_seek",
+        include_str!("../scenarios/p000_fig1_seek.json"),
+        0xaf99_6603_8f68_e453,
     ),
 ];
 

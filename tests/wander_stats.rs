@@ -292,6 +292,7 @@ fn markov_transition_frequencies_match_table() {
         table: paper_table(),
         change_probability: None,
         initial_range: 0,
+        response_curve: false,
     };
     let mut m = Markov::new(&cfg).unwrap();
     let mut rng = Rng::new(11);
@@ -331,6 +332,7 @@ fn two_table_markov_changes_with_its_probability() {
         table: paper_table(),
         change_probability: Some(change.clone()),
         initial_range: 1,
+        response_curve: false,
     };
     let mut m = Markov::new(&cfg).unwrap();
     let mut rng = Rng::new(12);

@@ -271,6 +271,8 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
         (MuBound::TurningRadius { factor: 4.0 }, 2.0, 0.25),
         (MuBound::TurningRadius { factor: 6.0 }, 2.0, 0.25),
         (MuBound::TurningRadius { factor: 8.0 }, 2.0, 0.25),
+        // The default with the paper's gain 1 (issue 19: the gain's effect alone).
+        (MuBound::TurningRadius { factor: 8.0 }, 1.0, 0.25),
         (MuBound::Constant, 2.0, 0.25),
     ];
     for (bound, gain, th) in variants {

@@ -599,6 +599,8 @@ impl Lab {
             name: sc.name,
             description: sc.description,
             source: sc.source,
+            claim: sc.claim,
+            measured: sc.measured,
             agents: sc.agents.len(),
             min_x: lo.x - 1.0,
             min_y: lo.y - 1.0,

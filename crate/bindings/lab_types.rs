@@ -168,6 +168,10 @@ export interface ScenarioInfo {
   name: string;
   description: string;
   source: string;
+  /** What the paper claims for this figure, and what we measure (issue 19;
+   *  empty for scenarios that do not say). */
+  claim: string;
+  measured: string;
   /** Non-empty when the scenario's vehicle differs from the table's. */
   warning: string;
   agents: number;
@@ -335,6 +339,8 @@ pub(super) struct ScenarioInfo {
     pub(super) name: String,
     pub(super) description: String,
     pub(super) source: String,
+    pub(super) claim: String,
+    pub(super) measured: String,
     pub(super) agents: usize,
     pub(super) min_x: f32,
     pub(super) min_y: f32,

@@ -67,6 +67,8 @@ export interface WanderMarkov {
   table: number[][];
   change_probability?: number[] | null;
   initial_range?: number;
+  /** Read the table as a smooth 2D response curve (§6). */
+  response_curve?: boolean;
 }
 /** A generated path (§7). */
 export type WanderPath =

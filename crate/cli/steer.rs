@@ -57,7 +57,7 @@ pub struct RunArgs {
     #[arg(long, value_name = "FILE")]
     pub table: Option<PathBuf>,
     /// Override the scenario's controller.
-    #[arg(long, value_name = "standard|relaxed", value_parser = parse_controller)]
+    #[arg(long, value_name = "standard|relaxed|seek", value_parser = parse_controller)]
     pub controller: Option<ControllerKind>,
 }
 
@@ -156,12 +156,12 @@ pub fn parse_every(s: &str) -> Result<u32, String> {
     parse_bounded(s, 1, u64::from(super::trajectory::MAX_EVERY)).map(|v| v as u32)
 }
 
-/// Parses `standard` or `relaxed`.
+/// Parses `standard`, `relaxed` or `seek`.
 ///
 /// # Errors
 /// Anything else.
 pub fn parse_controller(s: &str) -> Result<ControllerKind, String> {
-    ControllerKind::parse(s).ok_or_else(|| format!("`{s}` is neither standard nor relaxed"))
+    ControllerKind::parse(s).ok_or_else(|| format!("`{s}` is none of standard, relaxed or seek"))
 }
 
 /// Parses `--aim`.

@@ -20,13 +20,21 @@ pub enum ControllerKind {
     Standard,
     /// Relaxed funnelling towards the region goal (paper 001 §4).
     Relaxed,
+    /// Plain seek (paper 000 §3 and Fig. 1, paper 001 Fig. 1a): the goal's
+    /// position only, β and ε_tol ignored, the table still lowering the
+    /// desired speed where the target appears unreachable
+    /// ([`FunnelConfig::plain_seek`]). Without it a seek figure had to
+    /// rely on ε_tol 180°, and with the default seek threshold
+    /// (0.25·ε_tol = 45°) a target behind was still funnelled towards β.
+    Seek,
 }
 
 impl ControllerKind {
-    /// Parses `standard` or `relaxed`.
+    /// Parses `standard`, `relaxed` or `seek`.
     #[must_use]
     pub fn parse(s: &str) -> Option<Self> {
         match s {
+            "seek" => Some(Self::Seek),
             "standard" => Some(Self::Standard),
             "relaxed" => Some(Self::Relaxed),
             _ => None,
@@ -39,6 +47,7 @@ impl ControllerKind {
         match self {
             Self::Standard => "standard",
             Self::Relaxed => "relaxed",
+            Self::Seek => "seek",
         }
     }
 }

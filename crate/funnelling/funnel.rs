@@ -9,9 +9,16 @@
 //! has gain 1, see [`FunnelConfig::gain`]) bounded by [`MuBound`]; the
 //! modulated heading γ = θ + α + μ goes to the seek controller with speed
 //! `min(v_dt, A/|ω|)`, through the step that keeps its turn direction near
-//! the ±π seam ([`crate::seek::seek_step_committed`]). At most two table
-//! interpolations (the lookup, plus the literal bounds'), constant cost,
-//! no allocation.
+//! the ±π seam ([`crate::seek::seek_step_committed`]). Constant cost, no
+//! allocation. Table interpolations per update (counted in
+//! [`EtaTable::lookup`]): the lookup blends once when the target is
+//! reachable at the queried speed, twice when it is not (again at the
+//! fallback speed v_dt), three times when no corner is reachable at v_dt
+//! either (the stored fallback η's are blended), once when v_dt is 0; the
+//! default μ bound ([`MuBound::TurningRadius`]) adds none, the literal
+//! bounds one more (16 corners on the ω = 0 plane). So 1–3 per update by
+//! default and 2–4 with the literal bound, against the paper's "in the
+//! worst case two interpolations" (paper 000 §7).
 
 use core::f32::consts::FRAC_PI_2;
 use core::ops::ControlFlow;
@@ -109,6 +116,17 @@ impl Default for Goal {
 }
 
 impl Goal {
+    /// The goal without a prescribed orientation (the seek controller,
+    /// [`crate::relaxed::ControllerKind::Seek`]): any heading is within an
+    /// infinite ε_tol, so the tolerance phase judges the position alone.
+    #[must_use]
+    pub fn unoriented(&self) -> Self {
+        Self {
+            eps_tol: f32::INFINITY,
+            ..*self
+        }
+    }
+
     /// Rejects non-finite or out-of-range goals ([`crate::funnelling::ranges`]),
     /// a desired speed of 0 included (the agent would never move).
     ///
@@ -168,8 +186,9 @@ pub struct Internals {
 
 /// The default: a geometric bound of eight turning radii (each at least
 /// [`FunnelConfig::min_bound_radius`]). It vanishes with distance like
-/// the literal one and needs one table interpolation per update instead of
-/// two, which keeps a funnelling update within 4× a seek step. Six radii
+/// the literal one and needs no table interpolation of its own (the
+/// literal bound adds one to the lookup's one to three), which keeps a
+/// funnelling update near 4× a seek step. Six radii
 /// were chosen on `steer reach`'s single operating point; over the whole
 /// envelope (`steer envelope`, tune seed 1) eight orient better (worst
 /// ε_tol 2° cell at D ≥ 5 m: 83 % → 86 %) at a median path of 1.09×
@@ -204,10 +223,11 @@ pub struct FunnelConfig {
     pub bound: MuBound,
     /// Gain of the modulation, `μ = −gain·Δη` before the bound. Paper 000
     /// Fig. 4 reads `μ = −Δη` (gain 1). Measured (`steer reach`, 10,000
-    /// random scenarios): with gain 1 the predicted error Δη decays over
-    /// about 1.75 m of travel, so targets closer than ~5 m run out of room
-    /// and only about half of all runs enter the tolerance oriented; with
-    /// gain 2 about 96 % do, at the same path length. Default 2.
+    /// random scenarios, seed 1, every other setting the default): with
+    /// gain 1 the predicted error Δη decays over about 1.75 m of travel,
+    /// so targets closer than ~5 m run out of room and 76.3 % of runs
+    /// enter the tolerance oriented; with gain 2, 96.6 % do (length/Dubins
+    /// median 1.12 vs 1.17). Default 2.
     pub gain: f32,
     /// Fraction of `ε_tol` below which |Δη| counts as "no orientation
     /// correction needed" (Position_only). Paper 000 Fig. 5 compares with
@@ -301,6 +321,21 @@ pub fn orbit_free_speed(p: &VehicleParams, d: f32, alpha: f32) -> f32 {
 }
 
 impl FunnelConfig {
+    /// Plain seek with these settings (paper 000 §3, Fig. 1): aim at the
+    /// centre, no terminal pursuit, Position_only whatever Δη (an infinite
+    /// seek threshold). The table lookup stays: it lowers the desired speed
+    /// where the target appears unreachable, which is the paper's seek
+    /// mode. Use it with [`Goal::unoriented`].
+    #[must_use]
+    pub fn plain_seek(&self) -> Self {
+        Self {
+            seek_threshold: f32::INFINITY,
+            aim: Aim::Centre,
+            terminal: None,
+            ..*self
+        }
+    }
+
     /// Rejects non-finite or out-of-range settings.
     ///
     /// # Errors

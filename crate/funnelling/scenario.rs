@@ -12,7 +12,7 @@
 //!   "duration": 40,
 //!   "vehicle": { "vMax": 2.0 },                 // optional, VehicleParams
 //!   "funnel": { "bound": { "kind": "literal" } }, // optional, FunnelConfig
-//!   "controller": "relaxed",                    // optional: standard (default) | relaxed
+//!   "controller": "relaxed",                    // optional: standard (default) | relaxed | seek
 //!   "relaxed": { "diskMargin": 0.8 },           // optional, RelaxedConfig
 //!   "agents": [{
 //!     "x": 0, "y": 0, "thetaDeg": 0, "v": 0, "omega": 0,
@@ -48,6 +48,13 @@ pub struct Scenario {
     /// Which paper figure it reproduces, if any.
     #[serde(default)]
     pub source: String,
+    /// What the paper claims for that figure (issue 19), in a sentence.
+    #[serde(default)]
+    pub claim: String,
+    /// What we measure, with the test that asserts it (`tests/fidelity.rs`)
+    /// or "refuted: …" with the numbers.
+    #[serde(default)]
+    pub measured: String,
     /// Simulated duration, s.
     #[serde(default = "default_duration")]
     pub duration: f32,
@@ -63,7 +70,8 @@ pub struct Scenario {
     /// Funnelling settings.
     #[serde(default)]
     pub funnel: FunnelConfig,
-    /// Which controller (paper 001: region goals with `dTol` the disk
+    /// Which controller: `seek` (plain seek, β and ε_tol ignored: paper
+    /// 000 Fig. 1), `standard` or `relaxed` (paper 001: region goals with `dTol` the disk
     /// radius and `epsTolDeg` the half-width τ of T).
     #[serde(default)]
     pub controller: ControllerKind,

@@ -189,6 +189,12 @@ impl World {
             let mut mem = a.memory;
             a.internals = match self.controller {
                 ControllerKind::Standard => self.config.plan(table, &p, &a.state, &goal, &mut mem),
+                ControllerKind::Seek => {
+                    let g = goal.unoriented();
+                    self.config
+                        .plain_seek()
+                        .plan(table, &p, &a.state, &g, &mut mem)
+                }
                 ControllerKind::Relaxed => self.relaxed.plan(
                     &self.config,
                     table,
@@ -238,6 +244,13 @@ impl World {
                         self.config
                             .step(table, &p, &mut a.state, &goal, &mut a.memory)
                     }
+                    ControllerKind::Seek => self.config.plain_seek().step(
+                        table,
+                        &p,
+                        &mut a.state,
+                        &goal.unoriented(),
+                        &mut a.memory,
+                    ),
                     ControllerKind::Relaxed => self.relaxed.step(
                         &self.config,
                         table,

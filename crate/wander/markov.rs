@@ -37,6 +37,11 @@ pub struct MarkovConfig {
     /// default 0.
     #[serde(default)]
     pub initial_range: u32,
+    /// Read the table as a smooth 2D response curve (§6's smoothing,
+    /// [`crate::wander::response`]) instead of a step function; at most
+    /// 16 ranges. Default false (the paper's recipe).
+    #[serde(default)]
+    pub response_curve: bool,
 }
 
 impl MarkovConfig {
@@ -94,6 +99,13 @@ impl MarkovConfig {
                 in_range("markov.change_probability[]", *p, 0.0, 1.0)?;
             }
         }
+        if self.response_curve && n > super::response::MAX_RANGES {
+            return Err(WanderError::ShapeMismatch {
+                what: "markov.table with response_curve (at most)",
+                expected: super::response::MAX_RANGES,
+                found: n,
+            });
+        }
         in_range_u("markov.initial_range", self.initial_range, 0, n as u32 - 1)
     }
 }
@@ -106,6 +118,7 @@ pub struct Markov {
     change: Option<Vec<f32>>,
     range: usize,
     value: f32,
+    curve: Option<super::response::ResponseCurve>,
 }
 
 impl Markov {
@@ -127,6 +140,9 @@ impl Markov {
             }
         }
         let edges: Vec<f32> = cfg.edges_deg.iter().map(|e| e.to_radians()).collect();
+        let curve = cfg
+            .response_curve
+            .then(|| super::response::ResponseCurve::new(&edges, &cfg.table));
         let range = cfg.initial_range as usize;
         let value = 0.5 * (edges[range] + edges[range + 1]);
         Ok(Self {
@@ -135,6 +151,7 @@ impl Markov {
             change: cfg.change_probability.clone(),
             range,
             value,
+            curve,
         })
     }
 
@@ -157,6 +174,15 @@ impl Markov {
             if rng.next_f32() >= c[self.range] {
                 return self.value;
             }
+        }
+        if let Some(curve) = &self.curve {
+            self.value = curve.sample(self.value, rng);
+            self.range = self
+                .edges
+                .windows(2)
+                .position(|w| self.value < w[1])
+                .unwrap_or(self.edges.len() - 2);
+            return self.value;
         }
         let n = self.ranges();
         let r = rng.next_f32();

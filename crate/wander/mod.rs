@@ -13,6 +13,7 @@
 //! | [`time_fn`] | §4 | sums of sines, noise envelopes and blends |
 //! | [`timed`] | §5 | fixed or random hold intervals |
 //! | [`markov`] | §6 | transition tables, two-table variant |
+//! | [`response`] | §6 | a transition table read as a smooth 2D response curve |
 //! | [`generated_path`] | §7 | fractal and circle-with-sines paths, following |
 //! | [`config`] | all | [`WanderConfig`]: the JSON configuration of a pipeline and its validation |
 //! | [`pipeline`] | all | [`Wanderer`]: the pipeline built from a config, stepped, traced; presets |
@@ -27,6 +28,7 @@ pub mod generated_path;
 pub mod markov;
 pub mod noise;
 pub mod pipeline;
+pub mod response;
 pub mod time_fn;
 pub mod timed;
 

@@ -441,8 +441,30 @@ try {
       await page.waitForTimeout(1500);
       await shot(page, `08-preset-${name}`);
       assert.ok(page.url().includes(`preset=${encodeURIComponent(name)}`) || page.url().includes(`preset=${name}`));
+      // Issue 19: every paper preset states its claim and our measurement.
+      if (/^p\d{3}_fig/.test(name)) {
+        assert.match(await page.locator("#caption .claim").textContent(), /^Paper: ./);
+        assert.match(await page.locator("#caption .measured").textContent(), /^Ours: ./);
+      }
     });
   }
+
+  await check("the preset menu groups presets by paper and figure (issue 19)", async () => {
+    const groups = await page.locator("#preset optgroup").evaluateAll((gs) => gs.map((g) => g.label));
+    assert.ok(groups.includes("Paper 000 · Fig. 1") && groups.includes("Paper 001 · Fig. 11"), groups.join(" | "));
+    const inFig11 = await page.locator('#preset optgroup[label="Paper 001 · Fig. 11"] option').count();
+    assert.equal(inFig11, 8);
+    for (const [w, h, tag] of [[1280, 800, "desktop"], [390, 844, "phone"]]) {
+      await page.setViewportSize({ width: w, height: h });
+      await page.selectOption("#preset", "p001_fig11_tol45_relaxed");
+      await page.waitForFunction(() => window.__lab.state().preset === "p001_fig11_tol45_relaxed" && window.__lab.count() > 0, null, { timeout: 5000 });
+      await page.locator("#caption").scrollIntoViewIfNeeded();
+      await page.locator("#caption").screenshot({ path: `${artifacts}/09-fidelity-caption-${tag}.png` });
+    }
+    await page.setViewportSize({ width: 1280, height: 800 });
+    await page.selectOption("#preset", "");
+    await page.waitForFunction(() => window.__lab.state().preset === "" && window.__lab.count() === 1, null, { timeout: 5000 });
+  });
 
   allProblems.push(...problems);
   await check("no console errors or warnings on any page", async () => {

@@ -62,8 +62,15 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   };
 
   const goalBox = section(panel, "Target (playground)");
-  sim.onScene = (text, playground) => {
+  sim.onScene = (text, playground, claim, measured) => {
     caption.textContent = text;
+    for (const [cls, head, body] of [["claim", "Paper: ", claim], ["measured", "Ours: ", measured]] as const) {
+      if (!body) continue;
+      const p = document.createElement("span");
+      p.className = `fidelity ${cls}`;
+      p.append(Object.assign(document.createElement("b"), { textContent: head }), body);
+      caption.append(p);
+    }
     goalBox.disabled = !playground;
   };
   numeric(goalBox, "vd", { id: "speed", lo: 0, hi: 4, step: 0.01 }, (v) => { st.speed = v; updateGoal(); });

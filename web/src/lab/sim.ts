@@ -60,7 +60,7 @@ export class LabSim {
   /** Smoothed core cost per agent update, µs. */
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
-  onScene: (caption: string, playground: boolean) => void = () => {};
+  onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
   /** The η table's status (HUD, window.__lab.table()). */
   table: TableStatus;
   private acc = 0;
@@ -283,7 +283,8 @@ export class LabSim {
         // The page's vehicle limits apply to presets too (issue 14:
         // `#preset=…&vmax=0.05` runs at 0.05 m/s).
         lab.setParams(this.params());
-        this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false);
+        this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false, info.claim, info.measured);
+        if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
         if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
       } catch (e) {
         showMessage(`Preset ${st.preset} could not be loaded: ${errorText(e)}`, "error");

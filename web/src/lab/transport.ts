@@ -3,7 +3,7 @@
 
 import { button } from "../controls";
 import { $ } from "../page";
-import { PRESETS } from "./presets";
+import { PRESETS, presetGroup } from "./presets";
 import type { LabSim } from "./sim";
 
 export interface Transport {
@@ -36,14 +36,27 @@ export function buildTransport(sim: LabSim): Transport {
   };
 
   const presetSel = $<HTMLSelectElement>("preset");
-  const addOpt = (value: string, label: string): void => {
+  const addOpt = (parent: HTMLElement, value: string, label: string): void => {
     const o = document.createElement("option");
     o.value = value;
     o.textContent = label;
-    presetSel.append(o);
+    parent.append(o);
   };
-  addOpt("", "playground");
-  for (const p of PRESETS) addOpt(p.name, p.name);
+  addOpt(presetSel, "", "playground");
+  // Grouped by paper and figure (issue 19); each preset's claim and our
+  // measurement show in the side panel's caption.
+  const groups = new Map<string, HTMLOptGroupElement>();
+  for (const p of PRESETS) {
+    const label = presetGroup(p.name);
+    let g = groups.get(label);
+    if (!g) {
+      g = document.createElement("optgroup");
+      g.label = label;
+      groups.set(label, g);
+      presetSel.append(g);
+    }
+    addOpt(g, p.name, p.name);
+  }
   presetSel.value = st.preset;
   const setPreset = async (name: string): Promise<void> => {
     st.preset = name;
