@@ -101,7 +101,6 @@ impl Avoider {
         self.grid.rebuild(&self.pos, cfg.reach);
         let r = cfg.radius + cfg.margin;
         let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
-        let keep_right = trig::unit(-cfg.bias_deg.to_radians());
         for i in 0..n {
             let (h_pref, s_pref) = preferred[i];
             let s = &states[i];
@@ -167,8 +166,13 @@ impl Avoider {
                             active: false,
                         }
                     } else {
-                        let v = orca::solve(&lines, p.v_max, v_pref.rotate(keep_right));
-                        unicycle(s, h_pref, v, &lines)
+                        // Keep right, the more the slower the agent goes
+                        // than its funnel asks: none at full speed.
+                        let slow = (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0);
+                        let keep_right = trig::unit(-cfg.bias_deg.to_radians() * slow);
+                        let v_seek = v_pref.rotate(keep_right);
+                        let v = orca::solve(&lines, p.v_max, v_seek);
+                        unicycle(s, h_pref, v_pref, v, &lines, p.v_max)
                     }
                 }
                 AvoidanceMethod::Separation => {
@@ -201,7 +205,7 @@ impl Avoider {
                         }
                     } else {
                         let v = (v_pref + push * cfg.separation_weight).clamp_length_max(p.v_max);
-                        unicycle(s, h_pref, v, &Lines::default())
+                        unicycle(s, h_pref, v, v, &Lines::default(), p.v_max)
                     }
                 }
             };
@@ -210,30 +214,98 @@ impl Avoider {
     }
 }
 
-/// The forward-only unicycle's answer to the velocity `v`: turn towards
-/// `v` (towards the funnel's heading `h_pref` when `v` is nearly zero),
-/// and go along the current heading at the largest speed up to `v`'s
-/// projection on it that every line admits (0 if none).
-#[must_use]
-pub fn unicycle(s: &VehicleState, h_pref: f32, v: Vec2, lines: &Lines) -> Command {
-    let heading = if v.length_squared() > 1e-6 {
-        trig::atan2(v.y, v.x)
-    } else {
-        h_pref
-    };
-    let u = s.forward();
-    let mut hi = v.dot(u).max(0.0);
+/// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
+pub const STUCK_SPEED: f32 = 0.1;
+
+/// Headings sampled each side of the current one by [`unicycle`].
+pub const HEADING_SAMPLES: usize = 12;
+
+/// The largest speed along the unit direction `u`, up to `cap`, that the
+/// upper bounds of every line admit (the lower ones, a
+/// neighbour closing from behind, are that neighbour's to meet).
+#[inline]
+fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
+    let mut hi = cap;
     for l in lines.as_slice() {
-        // v = σ·u admitted ⇔ σ·det(d, u) ≥ det(d, point).
         let a = l.direction.x * u.y - l.direction.y * u.x;
         let b = l.direction.x * l.point.y - l.direction.y * l.point.x;
         if a < -1e-6 {
             hi = hi.min(b / a);
         }
     }
+    hi.max(0.0)
+}
+
+/// The forward-only unicycle's answer (issue 18: "chooses among admissible
+/// headings and speeds"). When ORCA's velocity `v_orca` is at least
+/// [`STUCK_SPEED`], the heading command is its direction and the speed its
+/// projection on the present heading, no more than that ray admits.
+/// Otherwise (a crowd packed at the contact distance leaves ORCA nearly no
+/// velocity) the headings are searched: candidates are the ORCA velocity's direction
+/// (`v_orca`), the current heading and [`HEADING_SAMPLES`] headings every
+/// 15° each side of it; along each, the speed nearest the sought velocity
+/// `v_seek` that every half-plane admits (a 1D linear program). The
+/// candidate nearest `v_seek` wins (ties: the smaller turn). It contains
+/// ORCA's own answer, so it is never worse than ORCA's velocity; it still
+/// finds a way out where ORCA's velocity is nearly zero (a crowd packed at
+/// the contact distance) and a ray away from the packing is free.
+///
+/// The heading command is the winner's; the speed command is the speed the
+/// winner asks for, scaled by the cosine of the turn still to make, and no
+/// more than the current heading's own ray admits: the vehicle moves along
+/// its present heading while it turns.
+#[must_use]
+pub fn unicycle(
+    s: &VehicleState,
+    h_pref: f32,
+    v_seek: Vec2,
+    v_orca: Vec2,
+    lines: &Lines,
+    v_max: f32,
+) -> Command {
+    let along = ray_cap(lines, s.forward(), v_max);
+    if v_orca.length() >= STUCK_SPEED {
+        // ORCA found a way: turn to it, move along the present heading at
+        // its projection, as far as that ray is admissible.
+        return Command {
+            heading: trig::atan2(v_orca.y, v_orca.x),
+            speed: v_orca.dot(s.forward()).max(0.0).min(along),
+            active: true,
+        };
+    }
+    let step = 15f32.to_radians();
+    let mut best = (f32::INFINITY, 0.0f32, s.theta, 0.0f32); // cost, |turn|, heading, speed
+    let mut consider = |h: f32, turn: f32| {
+        let u = trig::unit(h);
+        let cap = ray_cap(lines, u, v_max);
+        let sp = v_seek.dot(u).clamp(0.0, cap);
+        let cost = (u * sp - v_seek).length_squared();
+        if cost < best.0 - 1e-9 || (cost <= best.0 + 1e-9 && turn < best.1) {
+            best = (cost, turn, h, sp);
+        }
+    };
+    if v_orca.length_squared() > 1e-6 {
+        let h = trig::atan2(v_orca.y, v_orca.x);
+        consider(h, crate::angle::diff(h, s.theta).abs());
+    }
+    consider(s.theta, 0.0);
+    for k in 1..=HEADING_SAMPLES {
+        let d = step * k as f32;
+        consider(crate::angle::wrap(s.theta + d), d);
+        consider(crate::angle::wrap(s.theta - d), d);
+    }
+    let (_, turn, heading, sp) = best;
+    if !best.0.is_finite() {
+        // No ray is admissible: brake, turning to the funnel's heading.
+        return Command {
+            heading: h_pref,
+            speed: 0.0,
+            active: true,
+        };
+    }
     Command {
         heading,
-        speed: hi.max(0.0),
+        speed: (sp * turn.cos().max(0.0)).min(along),
         active: true,
     }
 }

@@ -240,7 +240,18 @@ pub fn doorway(seed: u64) -> Scenario {
             let y = -2.0 + row as f32 + rng.range(-0.1, 0.1);
             let gx = 4.0 + c as f32;
             let gy = -2.0 + row as f32;
-            sc.agents.push(agent(x, y, 0.0, goal(gx, gy, 0.0)));
+            // Funnelling plans no path: the doorway is a waypoint, entered
+            // facing through it (switch on the position tolerance).
+            let door = GoalFile {
+                d_tol: 0.5,
+                eps_tol_deg: 20.0,
+                halting: false,
+                switch: SwitchRule::Tolerance,
+                ..goal(0.0, 0.0, 0.0)
+            };
+            let mut a = agent(x, y, 0.0, door);
+            a.goals.push(goal(gx, gy, 0.0));
+            sc.agents.push(a);
         }
     }
     sc

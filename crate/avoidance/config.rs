@@ -93,13 +93,13 @@ impl Default for AvoidanceConfig {
         Self {
             method: AvoidanceMethod::Off,
             radius: 0.3,
-            margin: 0.1,
+            margin: 0.15,
             horizon: 2.0,
             obstacle_horizon: 1.0,
             reach: 3.0,
             max_neighbours: 10,
             separation_weight: 4.0,
-            bias_deg: 20.0,
+            bias_deg: 90.0,
         }
     }
 }

@@ -325,7 +325,11 @@ fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &m
 pub fn solve(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
     let ls = lines.as_slice();
     let (mut result, k) = lp2(ls, max_speed, preferred, false);
-    if k < ls.len() {
+    if k < lines.obstacles {
+        // The obstacles' own half-planes have no common point (an agent
+        // wedged in a corner deeper than its radius): all become soft.
+        lp3(ls, 0, k, max_speed, &mut result);
+    } else if k < ls.len() {
         lp3(ls, lines.obstacles, k, max_speed, &mut result);
     }
     result
