@@ -147,6 +147,14 @@ impl Avoider {
                     for &(_, j) in &near[..k] {
                         let j = j as usize;
                         let tie = if i < j { Vec2::Y } else { -Vec2::Y };
+                        // Reciprocity assumes the neighbour takes half the
+                        // avoidance; a forward-only neighbour at rest cannot
+                        // step back, so an agent closing on it takes all.
+                        let share = if states[j].v < STUCK_SPEED && s.v >= STUCK_SPEED {
+                            1.0
+                        } else {
+                            0.5
+                        };
                         lines.push_agent(orca::agent_line(
                             s.pos,
                             self.vel[i],
@@ -155,7 +163,7 @@ impl Avoider {
                             2.0 * r,
                             cfg.horizon,
                             p.dt,
-                            0.5,
+                            share,
                             tie,
                         ));
                     }
@@ -171,8 +179,14 @@ impl Avoider {
                         let slow = (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0);
                         let keep_right = trig::unit(-cfg.bias_deg.to_radians() * slow);
                         let v_seek = v_pref.rotate(keep_right);
-                        let v = orca::solve(&lines, p.v_max, v_seek);
-                        unicycle(s, h_pref, v_pref, v, &lines, p.v_max)
+                        // Never faster than the funnel asks (at least
+                        // DODGE_SPEED, so an agent at rest can step aside):
+                        // a vehicle that must brake within its
+                        // acceleration limit cannot afford ORCA's habit of
+                        // speeding up to pass in front.
+                        let cap = s_pref.max(DODGE_SPEED).min(p.v_max);
+                        let v = orca::solve(&lines, cap, v_seek);
+                        unicycle(s, h_pref, v_pref, v, &lines, cap)
                     }
                 }
                 AvoidanceMethod::Separation => {
@@ -213,6 +227,10 @@ impl Avoider {
         }
     }
 }
+
+/// Speed up to which an agent whose funnel asks for less (at rest on its
+/// goal) may move to let others pass, m/s.
+pub const DODGE_SPEED: f32 = 0.5;
 
 /// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
 pub const STUCK_SPEED: f32 = 0.1;
