@@ -318,10 +318,12 @@ pub fn run(sc: &Scenario, table: &EtaTable) -> RunReport {
         entries: prox.entries,
         oriented: prox.oriented,
         finish_time: if reached == w.agents.len() {
-            w.agents
-                .iter()
-                .filter_map(|a| a.finished_at)
-                .fold(Some(0.0), |m: Option<f32>, t| m.map(|m| m.max(t)))
+            Some(
+                w.agents
+                    .iter()
+                    .filter_map(|a| a.finished_at)
+                    .fold(0.0f32, f32::max),
+            )
         } else {
             None
         },
