@@ -4,6 +4,8 @@
 //! bits as without avoidance), scenario errors naming the field, the
 //! neighbour search's constant cost per agent, and determinism.
 
+#![cfg(not(target_arch = "wasm32"))]
+
 use steering::avoidance::benchmarks::{run, Bench};
 use steering::avoidance::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use steering::scenario::Scenario;
