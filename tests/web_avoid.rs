@@ -15,8 +15,8 @@ static CIRCLE32: &str = include_str!("../scenarios/avoid_circle32.json");
 fn play(method: &str) -> u32 {
     let mut lab = Lab::new(TABLE).map_err(|_| ()).unwrap();
     lab.load_scenario(CIRCLE32).map_err(|_| ()).unwrap();
-    assert_eq!(lab.avoidance(), "orca");
-    lab.set_avoidance(method).map_err(|_| ()).unwrap();
+    assert_eq!(lab.avoidance_method(), "orca");
+    lab.set_avoidance_method(method).map_err(|_| ()).unwrap();
     let mut worst = 0;
     for _ in 0..900 {
         lab.step(2);
@@ -37,7 +37,7 @@ fn a_bad_method_is_refused_and_changes_nothing() {
     lab.load_scenario(include_str!("../scenarios/avoid_doorway.json"))
         .map_err(|_| ())
         .unwrap();
-    assert!(lab.set_avoidance("rvo").is_err());
-    assert_eq!(lab.avoidance(), "orca");
+    assert!(lab.set_avoidance_method("rvo").is_err());
+    assert_eq!(lab.avoidance_method(), "orca");
     assert_eq!(lab.obstacles().len(), 10);
 }

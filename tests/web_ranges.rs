@@ -213,7 +213,20 @@ fn effective_max(r: &FieldRange) -> f64 {
 
 #[wasm_bindgen_test]
 fn a_value_just_outside_each_range_is_refused_with_the_field_named() {
-    for r in &ALL {
+    check_ends(ALL.iter());
+}
+
+/// Issue 18's ranges alone (scenario files: avoidance settings, obstacles).
+#[wasm_bindgen_test]
+fn the_avoidance_ranges_are_refused_outside_and_accepted_at_both_ends() {
+    check_ends(
+        ALL.iter()
+            .filter(|r| r.key.starts_with("avoidance.") || r.key.starts_with("obstacle.")),
+    );
+}
+
+fn check_ends<'a>(ranges: impl Iterator<Item = &'a FieldRange>) {
+    for r in ranges {
         let max = effective_max(r);
         let min = if r.min < 0.0 && r.at_most.is_some() {
             -max
