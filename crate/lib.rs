@@ -5,6 +5,7 @@
 //!
 //! | folder | paper | what |
 //! |---|---|---|
+//! | [`avoidance`] | 000 §7, 001 §7 | funnelling agents that avoid each other and static obstacles: separation or ORCA, adapted to the unicycle |
 //! | [`funnelling`] | 000, 001 | funnelling and relaxed funnelling towards oriented targets, the η table |
 //! | [`crowd`] | 003 | crowded path following: Reynolds vs Parker seek with separation |
 //! | [`wander`] | 004 | the random steering toolkit, seven components |
@@ -20,6 +21,7 @@
 #![deny(unsafe_code)]
 #![warn(missing_docs, clippy::all)]
 
+pub mod avoidance;
 pub mod base;
 #[cfg(not(target_arch = "wasm32"))]
 pub mod cli;

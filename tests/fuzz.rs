@@ -224,6 +224,12 @@ proptest! {
                         err_has_message(&e);
                     }
                 }
+                Command::Avoid(a) => {
+                    assert!((1..=10_000).contains(&a.seeds));
+                    if let Err(e) = a.benches() {
+                        err_has_message(&e);
+                    }
+                }
                 Command::Envelope(a) => {
                     assert!((5..=steering::cli::steer::MAX_STUDY_N).contains(&a.n));
                     if let Err(e) = a.standard_config() {

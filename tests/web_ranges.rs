@@ -74,7 +74,15 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
     let mut lab = Lab::new(TABLE).map_err(message).unwrap();
     let key = r.key;
     let last = key.rsplit('.').next().unwrap();
-    let text_only = key.starts_with("motion.") || key == "duration";
+    let text_only = key.starts_with("motion.")
+        || key.starts_with("avoidance.")
+        || key.starts_with("obstacle.")
+        || key == "duration";
+    let avoid = |fields: String, obstacles: &str| {
+        format!(
+            r#"{{"name": "r", "avoidance": {{"method": "orca", {fields}}}, "obstacles": [{obstacles}], "agents": [{{"x": 0, "y": 0, "goals": [{{"x": 3, "y": 1}}]}}]}}"#
+        )
+    };
     if text_only && v.is_nan() {
         return None;
     }
@@ -151,6 +159,42 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
             lab.check_room(v)
         }
         "seed" => lab.spawn_random(1.0, v, 10.0, 1.3),
+        // Issue 18: scenario files only (the reach must cover two radii
+        // plus the margin at both ends of those ranges).
+        "avoidance.radius" | "avoidance.margin" => lab
+            .load_scenario(&avoid(format!(r#""{last}": {v}, "reach": 1000"#), ""))
+            .map(|_| ()),
+        "avoidance.reach" => lab
+            .load_scenario(&avoid(
+                format!(r#""radius": 0.01, "margin": 0, "reach": {v}"#),
+                "",
+            ))
+            .map(|_| ()),
+        "avoidance.horizon"
+        | "avoidance.obstacleHorizon"
+        | "avoidance.maxNeighbours"
+        | "avoidance.separationWeight"
+        | "avoidance.biasDeg" => lab
+            .load_scenario(&avoid(format!(r#""{last}": {v}"#), ""))
+            .map(|_| ()),
+        "obstacle.x" => lab
+            .load_scenario(&avoid(
+                "\"radius\": 0.3".into(),
+                &format!(r#"{{"kind": "disc", "x": {v}, "y": 0, "radius": 1}}"#),
+            ))
+            .map(|_| ()),
+        "obstacle.y" => lab
+            .load_scenario(&avoid(
+                "\"radius\": 0.3".into(),
+                &format!(r#"{{"kind": "disc", "x": 0, "y": {v}, "radius": 1}}"#),
+            ))
+            .map(|_| ()),
+        "obstacle.radius" => lab
+            .load_scenario(&avoid(
+                "\"radius\": 0.3".into(),
+                &format!(r#"{{"kind": "disc", "x": 0, "y": 9, "radius": {v}}}"#),
+            ))
+            .map(|_| ()),
         "extent" => lab.spawn_random(1.0, 1.0, v as f32, 1.3),
         other => panic!("no binding takes {other}: add it here"),
     };
@@ -193,7 +237,20 @@ fn effective_max(r: &FieldRange) -> f64 {
 
 #[wasm_bindgen_test]
 fn a_value_just_outside_each_range_is_refused_with_the_field_named() {
-    for r in &ALL {
+    check_ends(ALL.iter());
+}
+
+/// Issue 18's ranges alone (scenario files: avoidance settings, obstacles).
+#[wasm_bindgen_test]
+fn the_avoidance_ranges_are_refused_outside_and_accepted_at_both_ends() {
+    check_ends(
+        ALL.iter()
+            .filter(|r| r.key.starts_with("avoidance.") || r.key.starts_with("obstacle.")),
+    );
+}
+
+fn check_ends<'a>(ranges: impl Iterator<Item = &'a FieldRange>) {
+    for r in ranges {
         let max = effective_max(r);
         let min = if r.min < 0.0 && (r.at_most.is_some() || max < r.max) {
             -max

@@ -31,7 +31,9 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
-use steering::cli::steer::{Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli};
+use steering::cli::steer::{
+    AvoidArgs, Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli,
+};
 use steering::cli::trajectory::{check_out_path, create_out, stream_run};
 use steering::funnel::{FunnelConfig, MuBound};
 use steering::metrics::PathMetrics;
@@ -417,6 +419,73 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     Ok(())
 }
 
+/// `steer avoid`: the avoidance benchmarks, every method on the same
+/// seeds, one table row per benchmark and method; or `--write-presets`.
+fn avoid(args: &AvoidArgs) -> Result<(), String> {
+    use steering::avoidance::benchmarks::{study, Bench};
+    use steering::avoidance::AvoidanceMethod;
+    let benches = args.benches()?;
+    if let Some(dir) = &args.write_presets {
+        for b in &benches {
+            let sc = b.scenario(args.seed, AvoidanceMethod::Orca);
+            let name = format!("avoid_{}", b.name());
+            let mut sc = sc;
+            if !b.seeded() {
+                sc.description = format!("{} With ORCA avoidance (issue 18).", sc.description);
+            }
+            sc.name = name.clone();
+            let text = serde_json::to_string_pretty(&sc).map_err(|e| e.to_string())? + "\n";
+            let path = dir.join(format!("{name}.json"));
+            std::fs::write(&path, text).map_err(|e| format!("{}: {e}", path.display()))?;
+            println!("wrote {}", path.display());
+        }
+        return Ok(());
+    }
+    let table = load_table(&args.table)?;
+    println!(
+        "avoidance benchmarks: {} seeded runs per benchmark and method from seed {} (paper figures once); radius {} m; deadlock = unfinished and < 0.05 m/s for 10 s",
+        args.seeds,
+        args.seed,
+        steering::avoidance::benchmarks::BODY_RADIUS
+    );
+    println!("| benchmark | method | runs | reach | oriented entries | runs finished | median finish s | length / off (median, max) | min distance m | runs with overlap | overlap pair-steps (max at once) | obstacle contacts | deadlocked agents (runs) | violations | NaN |");
+    println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    for b in benches {
+        let t0 = Instant::now();
+        let cells = args
+            .pool
+            .install(|| study(b, args.seeds, args.seed, &table))?;
+        for (m, c) in cells {
+            println!(
+                "| {} | {} | {} | {:.2} % | {:.1} % ({}/{}) | {} | {:.1} | {:.3}, {:.3} | {:.3} | {} | {} ({}) | {} | {} ({}) | {} | {} |",
+                b.name(),
+                m.name(),
+                c.runs,
+                100.0 * c.reached as f64 / c.agents.max(1) as f64,
+                100.0 * c.oriented as f64 / c.entries.max(1) as f64,
+                c.oriented,
+                c.entries,
+                c.finished_runs,
+                c.median_finish,
+                c.median_length_ratio,
+                c.max_length_ratio,
+                c.min_distance,
+                c.runs_with_overlap,
+                c.overlap_pair_steps,
+                c.max_overlapping,
+                c.obstacle_contacts,
+                c.deadlocks,
+                c.runs_with_deadlock,
+                c.violations,
+                c.nan
+            );
+        }
+        let _ = Bench::ALL;
+        eprintln!("{}: {:.1} s", b.name(), t0.elapsed().as_secs_f32());
+    }
+    Ok(())
+}
+
 fn main() -> ExitCode {
     let cli = SteerCli::parse();
     let result = match &cli.command {
@@ -424,6 +493,7 @@ fn main() -> ExitCode {
         Command::Reach(a) => reach(a),
         Command::Envelope(a) => envelope(a),
         Command::Relaxed(a) => relaxed(a),
+        Command::Avoid(a) => avoid(a),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

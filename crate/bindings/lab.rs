@@ -118,7 +118,7 @@ const GHOST_POINTS: usize = 256;
 pub struct Lab {
     /// Shared by the labs [`Lab::fork`] makes (one copy in memory, ~10 MB).
     table: Rc<EtaTable>,
-    world: World,
+    pub(crate) world: World,
     buf: Vec<f32>,
     ghost: Vec<Vec2>,
 }

@@ -12,6 +12,7 @@
 //! | [`boundary`] | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
 //! | [`layout`] | all | `Mode`, `StateField`: the core's numbers by name, checked at compile time |
 
+pub mod avoid;
 mod boundary;
 pub mod crowd;
 pub mod lab;

@@ -29,6 +29,63 @@ pub enum Command {
     Relaxed(RelaxedArgs),
     /// The envelope study (issue 13): tolerances × speed × distance, static, moving and chained goals.
     Envelope(EnvelopeArgs),
+    /// Avoidance benchmarks (issue 18): circle swap, corridor, doorway, Fig. 6 / Fig. 8; off vs separation vs ORCA.
+    Avoid(AvoidArgs),
+}
+
+/// `steer avoid`.
+#[derive(Args, Clone, Debug, PartialEq)]
+pub struct AvoidArgs {
+    /// Seeded runs per benchmark and method (the paper figures run once), 1 to 10,000.
+    #[arg(long, value_name = "N", default_value_t = 100, value_parser = parse_seeds)]
+    pub seeds: usize,
+    /// First seed.
+    #[arg(long, value_name = "S", default_value_t = 1)]
+    pub seed: u64,
+    /// Only these benchmarks (comma-separated: circle8, circle32, circle100, corridor, doorway, fig6, fig8).
+    #[arg(long, value_name = "NAMES")]
+    pub only: Option<String>,
+    /// Write the benchmark presets (seed `--seed`, ORCA) into DIR as `avoid_*.json` and stop.
+    #[arg(long, value_name = "DIR")]
+    pub write_presets: Option<PathBuf>,
+    /// η table.
+    #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
+    pub table: PathBuf,
+    /// Thread pool.
+    #[command(flatten)]
+    pub pool: PoolArgs,
+}
+
+/// Parses `steer avoid --seeds`: 1 to 10,000.
+///
+/// # Errors
+/// See [`parse_bounded`].
+pub fn parse_seeds(s: &str) -> Result<usize, String> {
+    parse_bounded(s, 1, 10_000).map(|v| v as usize)
+}
+
+impl AvoidArgs {
+    /// The benchmarks to run: all, or those named by `--only`.
+    ///
+    /// # Errors
+    /// A name that is not a benchmark.
+    pub fn benches(&self) -> Result<Vec<crate::avoidance::benchmarks::Bench>, String> {
+        let all = crate::avoidance::benchmarks::Bench::ALL.to_vec();
+        let Some(only) = &self.only else {
+            return Ok(all);
+        };
+        let known: Vec<String> = all.iter().map(|b| b.name()).collect();
+        if let Some(bad) = only.split(',').find(|n| !known.iter().any(|k| k == n)) {
+            return Err(format!(
+                "--only: `{bad}` is not a benchmark (known: {})",
+                known.join(", ")
+            ));
+        }
+        Ok(all
+            .into_iter()
+            .filter(|b| only.split(',').any(|n| n == b.name()))
+            .collect())
+    }
 }
 
 /// `steer run`.

@@ -293,12 +293,76 @@ pub const EXTENT: FieldRange = range(
     "half-side of the random agents' square",
 );
 
+// Avoidance between agents and static obstacles (issue 18, `AvoidanceConfig`,
+// `Obstacle`).
+/// Body radius of every agent (overlap = closer than two radii).
+pub const AVOID_RADIUS: FieldRange =
+    range("avoidance.radius", 0.01, 100.0, "m", "agent body radius");
+/// Safety margin added to the radius by the avoidance (not by the overlap count).
+pub const AVOID_MARGIN: FieldRange = range(
+    "avoidance.margin",
+    0.0,
+    10.0,
+    "m",
+    "avoidance safety margin",
+);
+/// ORCA time horizon between agents.
+pub const AVOID_HORIZON: FieldRange = range(
+    "avoidance.horizon",
+    0.1,
+    60.0,
+    "s",
+    "ORCA time horizon (agents)",
+);
+/// ORCA time horizon for static obstacles.
+pub const AVOID_OBSTACLE_HORIZON: FieldRange = range(
+    "avoidance.obstacleHorizon",
+    0.05,
+    60.0,
+    "s",
+    "ORCA time horizon (obstacles)",
+);
+/// Neighbour search distance (the grid's cell).
+pub const AVOID_REACH: FieldRange = range(
+    "avoidance.reach",
+    0.02,
+    1000.0,
+    "m",
+    "neighbour search distance",
+);
+/// Nearest neighbours considered per agent.
+pub const AVOID_NEIGHBOURS: FieldRange = integer(range(
+    "avoidance.maxNeighbours",
+    1.0,
+    16.0,
+    "",
+    "nearest neighbours considered",
+));
+/// Weight of the separation method's push.
+pub const AVOID_SEPARATION_WEIGHT: FieldRange = range(
+    "avoidance.separationWeight",
+    0.0,
+    100.0,
+    "1/s",
+    "separation weight",
+);
+/// ORCA's keep-right turn of the sought velocity, degrees (a file's unit).
+pub const AVOID_BIAS: FieldRange =
+    range("avoidance.biasDeg", 0.0, 90.0, "°", "ORCA keep-right bias");
+/// Centre or end point of a static obstacle.
+pub const OBSTACLE_X: FieldRange = range("obstacle.x", -WORLD, WORLD, "m", "obstacle x");
+/// Centre or end point of a static obstacle.
+pub const OBSTACLE_Y: FieldRange = range("obstacle.y", -WORLD, WORLD, "m", "obstacle y");
+/// Radius of a disc obstacle.
+pub const OBSTACLE_RADIUS: FieldRange =
+    range("obstacle.radius", 0.01, 1e4, "m", "disc obstacle radius");
+
 // Every vehicle has goals: the smallest desired speed fits the slowest
 // vehicle, the largest the fastest (checked when compiling).
 const _: () = assert!(GOAL_SPEED.min <= V_MAX.min && GOAL_SPEED.max >= V_MAX.max);
 
 /// Every range, in the order above (exported to the page as `ranges()`).
-pub const ALL: [FieldRange; 35] = [
+pub const ALL: [FieldRange; 46] = [
     DT,
     V_MAX,
     ACCEL_MAX,
@@ -334,6 +398,17 @@ pub const ALL: [FieldRange; 35] = [
     AGENTS,
     SEED,
     EXTENT,
+    AVOID_RADIUS,
+    AVOID_MARGIN,
+    AVOID_HORIZON,
+    AVOID_OBSTACLE_HORIZON,
+    AVOID_REACH,
+    AVOID_NEIGHBOURS,
+    AVOID_SEPARATION_WEIGHT,
+    AVOID_BIAS,
+    OBSTACLE_X,
+    OBSTACLE_Y,
+    OBSTACLE_RADIUS,
 ];
 
 /// The range named `key`, if any.

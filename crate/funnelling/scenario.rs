@@ -14,6 +14,9 @@
 //!   "funnel": { "bound": { "kind": "literal" } }, // optional, FunnelConfig
 //!   "controller": "relaxed",                    // optional: standard (default) | relaxed | seek
 //!   "relaxed": { "diskMargin": 0.8 },           // optional, RelaxedConfig
+//!   "avoidance": { "method": "orca", "radius": 0.3 }, // optional: off (default) | separation | orca
+//!   "obstacles": [{ "kind": "disc", "x": 0, "y": 2, "radius": 1 },
+//!                 { "kind": "segment", "x1": -5, "y1": 4, "x2": 5, "y2": 4 }],
 //!   "agents": [{
 //!     "x": 0, "y": 0, "thetaDeg": 0, "v": 0, "omega": 0,
 //!     "goals": [{
@@ -30,6 +33,7 @@ use core::fmt;
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
+use crate::avoidance::{AvoidanceConfig, Obstacle};
 use crate::funnel::{FunnelConfig, Goal};
 use crate::funnelling::precision;
 use crate::relaxed::{ControllerKind, RelaxedConfig};
@@ -78,8 +82,22 @@ pub struct Scenario {
     /// Relaxed-controller settings.
     #[serde(default)]
     pub relaxed: RelaxedConfig,
+    /// Avoidance between agents and of the obstacles (issue 18): `method`
+    /// off (default), separation or orca, the body `radius` and settings
+    /// ([`AvoidanceConfig`]).
+    #[serde(default, skip_serializing_if = "is_default_avoidance")]
+    pub avoidance: AvoidanceConfig,
+    /// Static obstacles: `{"kind": "disc", "x", "y", "radius"}` or
+    /// `{"kind": "segment", "x1", "y1", "x2", "y2"}` (avoided when the
+    /// avoidance is on).
+    #[serde(default, skip_serializing_if = "Vec::is_empty")]
+    pub obstacles: Vec<Obstacle>,
     /// The agents.
     pub agents: Vec<AgentSpec>,
+}
+
+fn is_default_avoidance(a: &AvoidanceConfig) -> bool {
+    *a == AvoidanceConfig::default()
 }
 
 fn default_duration() -> f32 {
@@ -276,6 +294,9 @@ impl Scenario {
         self.vehicle.validate()?;
         self.funnel.validate()?;
         self.relaxed.validate()?;
+        self.avoidance.validate()?;
+        crate::avoidance::config::validate_obstacles(&self.obstacles)
+            .map_err(ScenarioError::Invalid)?;
         crate::funnelling::ranges::DURATION
             .check(self.duration)
             .map_err(ParamError::Range)?;
@@ -339,6 +360,8 @@ impl Scenario {
         self.validate()?;
         let mut w = World::new(self.vehicle, self.funnel)?;
         w.set_controller(self.controller, self.relaxed)?;
+        w.set_avoidance(self.avoidance, self.obstacles.clone())
+            .map_err(ScenarioError::Invalid)?;
         for (i, a) in self.agents.iter().enumerate() {
             let st = VehicleState::new(
                 Vec2::new(a.x, a.y),

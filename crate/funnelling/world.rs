@@ -4,6 +4,7 @@
 //! a snapshot of the agents' states for goals that follow other agents, is
 //! sized when agents are added.
 
+use crate::avoidance::{AvoidanceConfig, AvoidanceMethod, Avoider, Obstacle};
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::metrics::PathMetrics;
 use crate::relaxed::{ControllerKind, RelaxedConfig, RelaxedInternals};
@@ -61,7 +62,15 @@ pub struct World {
     pub agents: Vec<Agent>,
     /// Simulated time, s.
     pub time: f32,
-    snapshot: Vec<VehicleState>,
+    /// Avoidance between agents and of the obstacles (issue 18; off by
+    /// default). Set with [`World::set_avoidance`].
+    pub avoidance: AvoidanceConfig,
+    /// Static obstacles (avoided when the avoidance is on).
+    pub obstacles: Vec<Obstacle>,
+    pub(crate) snapshot: Vec<VehicleState>,
+    pub(crate) preferred: Vec<(f32, f32)>,
+    /// The avoidance's buffers and this step's commands.
+    pub avoider: Avoider,
 }
 
 impl World {
@@ -79,7 +88,11 @@ impl World {
             relaxed: RelaxedConfig::default(),
             agents: Vec::new(),
             time: 0.0,
+            avoidance: AvoidanceConfig::default(),
+            obstacles: Vec::new(),
             snapshot: Vec::new(),
+            preferred: Vec::new(),
+            avoider: Avoider::default(),
         })
     }
 
@@ -211,6 +224,10 @@ impl World {
     /// Advances every agent by one time step. Agents see each other's
     /// states from the start of the step, so the order does not matter.
     pub fn step(&mut self, table: &EtaTable) {
+        if self.avoidance.method != AvoidanceMethod::Off {
+            self.step_avoiding(table);
+            return;
+        }
         for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
             *s = a.state;
         }
@@ -261,22 +278,7 @@ impl World {
                         &mut a.relaxed,
                     ),
                 };
-                let switch = match spec.switch {
-                    SwitchRule::EndOfSteering => a.internals.mode == Mode::EndOfSteering,
-                    SwitchRule::Tolerance => a.memory.position_met,
-                };
-                // A goal that follows another agent never completes while
-                // that agent moves on: it completes like any other.
-                if switch {
-                    a.current += 1;
-                    a.memory = a
-                        .goals
-                        .get(a.current)
-                        .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
-                    if a.done() {
-                        a.finished_at = Some(t);
-                    }
-                }
+                advance_queue(a, &spec, t);
             }
             a.metrics.add(&p, &prev, &a.state);
         }
@@ -312,6 +314,27 @@ impl World {
             put(F::GoalBeta, g.beta);
             put(F::GoalDTol, g.d_tol);
             put(F::GoalEpsTol, g.eps_tol);
+        }
+    }
+}
+
+/// After an agent's update on goal `spec` at time `t`: moves on to the next
+/// goal when the switch rule says so (a goal that follows another agent
+/// completes like any other), and records the finishing time.
+#[inline]
+pub(crate) fn advance_queue(a: &mut Agent, spec: &GoalSpec, t: f32) {
+    let switch = match spec.switch {
+        SwitchRule::EndOfSteering => a.internals.mode == Mode::EndOfSteering,
+        SwitchRule::Tolerance => a.memory.position_met,
+    };
+    if switch {
+        a.current += 1;
+        a.memory = a
+            .goals
+            .get(a.current)
+            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
+        if a.done() {
+            a.finished_at = Some(t);
         }
     }
 }

@@ -262,6 +262,8 @@ pub fn arg_value() -> impl Strategy<Value = String> {
             "4096,4096,4096,4096,4096",
             "1,2",
             "5000,2,2,2,2",
+            "circle32,doorway",
+            "circle7",
         ])
         .prop_map(str::to_owned),
         any::<u64>().prop_map(|n| n.to_string()),
@@ -287,12 +289,16 @@ pub fn steer_args() -> impl Strategy<Value = Vec<String>> {
         "--json",
         "--scenarios",
         "--brief",
+        "--seeds",
+        "--write-presets",
         "--help",
         "--version",
         "-h",
     ]);
     (
-        prop::sample::select(vec!["run", "reach", "relaxed", "envelope", "walk", ""]),
+        prop::sample::select(vec![
+            "run", "reach", "relaxed", "envelope", "avoid", "walk", "",
+        ]),
         prop::collection::vec((flag, arg_value(), any::<bool>()), 0..6),
         arg_value(),
     )

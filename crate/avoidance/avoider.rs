@@ -1,0 +1,329 @@
+//! One avoidance pass over a world's agents: neighbours through a grid,
+//! the method's velocity, and that velocity turned into what a
+//! forward-only unicycle can do (issue 18; paper 000 §7 and 001 §7 name
+//! avoidance as the next step).
+//!
+//! **Combined with funnelling.** Every agent's funnel plans first; its
+//! modulated heading γ and desired speed v_dt give the *preferred
+//! velocity* `v_dt·(cos γ, sin γ)`. When that velocity is admissible
+//! (no neighbour or obstacle constrains it) the agent steps with exactly
+//! (γ, v_dt), the same bits as without avoidance: so once the way is clear
+//! it funnels and arrives oriented as it would have.
+//!
+//! **Adapted to the unicycle.** Otherwise the method gives a velocity v*
+//! (ORCA: nearest the preferred one outside every velocity obstacle). A
+//! forward-only vehicle moves along its heading θ, not along v*; so the
+//! heading command is v*'s direction (the PD turns towards it within ω_max
+//! and the angular acceleration), and the speed command is the largest
+//! speed along θ, at most v*'s projection on θ (≥ 0: it slows down while it
+//! turns, and never reverses), that every half-plane admits. If even
+//! braking is not admissible, it brakes (the reciprocal neighbour takes its
+//! share). The commands go through the vehicle model
+//! ([`crate::vehicle::VehicleParams::integrate`]), which clamps them into
+//! the admissible set: no limit is ever broken, whatever the avoidance asks.
+//!
+//! **Neighbours** come from the crowd's hashed uniform grid
+//! ([`crate::crowd::separation::NeighbourGrid`], cell = the search
+//! distance), the `max_neighbours` nearest kept in a fixed array: the cost
+//! per agent is bounded at constant density and nothing is allocated once
+//! the buffers have grown. Obstacles are tested one by one (few by design,
+//! [`crate::avoidance::config::MAX_OBSTACLES`]).
+
+use glam::Vec2;
+
+use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
+use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
+use crate::crowd::separation::NeighbourGrid;
+use crate::trig;
+use crate::vehicle::{VehicleParams, VehicleState};
+
+/// What one agent is told to do this step.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Command {
+    /// Heading for the seek step, rad.
+    pub heading: f32,
+    /// Desired speed, m/s.
+    pub speed: f32,
+    /// True when the avoidance changed the funnel's (γ, v_dt).
+    pub active: bool,
+}
+
+/// The avoidance's buffers (reused every step).
+#[derive(Clone, Debug, Default)]
+pub struct Avoider {
+    grid: NeighbourGrid,
+    pos: Vec<f32>,
+    vel: Vec<Vec2>,
+    /// This step's commands, one per agent.
+    pub commands: Vec<Command>,
+}
+
+/// Scratch buffers carry no state worth comparing: two worlds are equal
+/// whatever their avoiders hold.
+impl PartialEq for Avoider {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl Avoider {
+    /// Candidate pairs the grid examined since the last reset (tests prove
+    /// the search is not quadratic with it).
+    #[must_use]
+    pub fn checks(&self) -> u64 {
+        self.grid.checks()
+    }
+
+    /// Resets [`Avoider::checks`].
+    pub fn reset_checks(&mut self) {
+        self.grid.reset_checks();
+    }
+
+    /// Fills [`Avoider::commands`] for agents in `states` whose funnels
+    /// asked for `preferred[i] = (heading, speed)`.
+    pub fn compute(
+        &mut self,
+        p: &VehicleParams,
+        cfg: &AvoidanceConfig,
+        obstacles: &[Obstacle],
+        states: &[VehicleState],
+        preferred: &[(f32, f32)],
+    ) {
+        let n = states.len();
+        self.pos.clear();
+        self.vel.clear();
+        for s in states {
+            self.pos.push(s.pos.x);
+            self.pos.push(s.pos.y);
+            self.vel.push(s.forward() * s.v);
+        }
+        self.commands.resize(n, Command::default());
+        self.grid.rebuild(&self.pos, cfg.reach);
+        let r = cfg.radius + cfg.margin;
+        let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
+        for i in 0..n {
+            let (h_pref, s_pref) = preferred[i];
+            let s = &states[i];
+            let v_pref = trig::unit(h_pref) * s_pref;
+            // The k nearest neighbours, nearest first (ties: grid order,
+            // deterministic).
+            let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
+            let mut k = 0usize;
+            self.grid
+                .for_each_neighbour(&self.pos, i, cfg.reach, |j, _, d2| {
+                    if k == k_max && d2 >= near[k - 1].0 {
+                        return;
+                    }
+                    let mut at = if k < k_max { k } else { k - 1 };
+                    while at > 0 && near[at - 1].0 > d2 {
+                        near[at] = near[at - 1];
+                        at -= 1;
+                    }
+                    near[at] = (d2, j as u32);
+                    if k < k_max {
+                        k += 1;
+                    }
+                });
+            let cmd = match cfg.method {
+                AvoidanceMethod::Off => Command {
+                    heading: h_pref,
+                    speed: s_pref,
+                    active: false,
+                },
+                AvoidanceMethod::Orca => {
+                    let mut lines = Lines::default();
+                    for o in obstacles {
+                        let (dist, nrm) = o.distance_normal(s.pos);
+                        if dist - r < cfg.reach {
+                            lines.push_obstacle(orca::obstacle_line(
+                                nrm,
+                                dist,
+                                r,
+                                cfg.obstacle_horizon,
+                                p.dt,
+                            ));
+                        }
+                    }
+                    for &(_, j) in &near[..k] {
+                        let j = j as usize;
+                        let tie = if i < j { Vec2::Y } else { -Vec2::Y };
+                        // Reciprocity assumes the neighbour takes half the
+                        // avoidance; a forward-only neighbour at rest cannot
+                        // step back, so an agent closing on it takes all.
+                        let share = if states[j].v < STUCK_SPEED && s.v >= STUCK_SPEED {
+                            1.0
+                        } else {
+                            0.5
+                        };
+                        lines.push_agent(orca::agent_line(
+                            s.pos,
+                            self.vel[i],
+                            states[j].pos,
+                            self.vel[j],
+                            2.0 * r,
+                            cfg.horizon,
+                            p.dt,
+                            share,
+                            tie,
+                        ));
+                    }
+                    if s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
+                        Command {
+                            heading: h_pref,
+                            speed: s_pref,
+                            active: false,
+                        }
+                    } else {
+                        // Keep right, the more the slower the agent goes
+                        // than its funnel asks: none at full speed.
+                        let slow = (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0);
+                        let keep_right = trig::unit(-cfg.bias_deg.to_radians() * slow);
+                        let v_seek = v_pref.rotate(keep_right);
+                        // Never faster than the funnel asks (at least
+                        // DODGE_SPEED, so an agent at rest can step aside):
+                        // a vehicle that must brake within its
+                        // acceleration limit cannot afford ORCA's habit of
+                        // speeding up to pass in front.
+                        let cap = s_pref.max(DODGE_SPEED).min(p.v_max);
+                        let v = orca::solve(&lines, cap, v_seek);
+                        unicycle(s, h_pref, v_pref, v, &lines, cap)
+                    }
+                }
+                AvoidanceMethod::Separation => {
+                    let mut push = Vec2::ZERO;
+                    for &(d2, j) in &near[..k] {
+                        let d = d2.sqrt();
+                        if d < 2.0 * r {
+                            let j = j as usize;
+                            let dir = if d > 1e-9 {
+                                (s.pos - states[j].pos) / d
+                            } else if i < j {
+                                -Vec2::X
+                            } else {
+                                Vec2::X
+                            };
+                            push += dir * (2.0 * r - d);
+                        }
+                    }
+                    for o in obstacles {
+                        let (dist, nrm) = o.distance_normal(s.pos);
+                        if dist < r {
+                            push += nrm * (r - dist);
+                        }
+                    }
+                    if push == Vec2::ZERO {
+                        Command {
+                            heading: h_pref,
+                            speed: s_pref,
+                            active: false,
+                        }
+                    } else {
+                        let v = (v_pref + push * cfg.separation_weight).clamp_length_max(p.v_max);
+                        unicycle(s, h_pref, v, v, &Lines::default(), p.v_max)
+                    }
+                }
+            };
+            self.commands[i] = cmd;
+        }
+    }
+}
+
+/// Speed up to which an agent whose funnel asks for less (at rest on its
+/// goal) may move to let others pass, m/s.
+pub const DODGE_SPEED: f32 = 0.5;
+
+/// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
+pub const STUCK_SPEED: f32 = 0.1;
+
+/// Headings sampled each side of the current one by [`unicycle`].
+pub const HEADING_SAMPLES: usize = 12;
+
+/// The largest speed along the unit direction `u`, up to `cap`, that the
+/// upper bounds of every line admit (the lower ones, a
+/// neighbour closing from behind, are that neighbour's to meet).
+#[inline]
+fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
+    let mut hi = cap;
+    for l in lines.as_slice() {
+        let a = l.direction.x * u.y - l.direction.y * u.x;
+        let b = l.direction.x * l.point.y - l.direction.y * l.point.x;
+        if a < -1e-6 {
+            hi = hi.min(b / a);
+        }
+    }
+    hi.max(0.0)
+}
+
+/// The forward-only unicycle's answer (issue 18: "chooses among admissible
+/// headings and speeds"). When ORCA's velocity `v_orca` is at least
+/// [`STUCK_SPEED`], the heading command is its direction and the speed its
+/// projection on the present heading, no more than that ray admits.
+/// Otherwise (a crowd packed at the contact distance leaves ORCA nearly no
+/// velocity) the headings are searched: candidates are the ORCA velocity's direction
+/// (`v_orca`), the current heading and [`HEADING_SAMPLES`] headings every
+/// 15° each side of it; along each, the speed nearest the sought velocity
+/// `v_seek` that every half-plane admits (a 1D linear program). The
+/// candidate nearest `v_seek` wins (ties: the smaller turn). It contains
+/// ORCA's own answer, so it is never worse than ORCA's velocity; it still
+/// finds a way out where ORCA's velocity is nearly zero (a crowd packed at
+/// the contact distance) and a ray away from the packing is free.
+///
+/// The heading command is the winner's; the speed command is the speed the
+/// winner asks for, scaled by the cosine of the turn still to make, and no
+/// more than the current heading's own ray admits: the vehicle moves along
+/// its present heading while it turns.
+#[must_use]
+pub fn unicycle(
+    s: &VehicleState,
+    h_pref: f32,
+    v_seek: Vec2,
+    v_orca: Vec2,
+    lines: &Lines,
+    v_max: f32,
+) -> Command {
+    let along = ray_cap(lines, s.forward(), v_max);
+    if v_orca.length() >= STUCK_SPEED {
+        // ORCA found a way: turn to it, move along the present heading at
+        // its projection, as far as that ray is admissible.
+        return Command {
+            heading: trig::atan2(v_orca.y, v_orca.x),
+            speed: v_orca.dot(s.forward()).max(0.0).min(along),
+            active: true,
+        };
+    }
+    let step = 15f32.to_radians();
+    let mut best = (f32::INFINITY, 0.0f32, s.theta, 0.0f32); // cost, |turn|, heading, speed
+    let mut consider = |h: f32, turn: f32| {
+        let u = trig::unit(h);
+        let cap = ray_cap(lines, u, v_max);
+        let sp = v_seek.dot(u).clamp(0.0, cap);
+        let cost = (u * sp - v_seek).length_squared();
+        if cost < best.0 - 1e-9 || (cost <= best.0 + 1e-9 && turn < best.1) {
+            best = (cost, turn, h, sp);
+        }
+    };
+    if v_orca.length_squared() > 1e-6 {
+        let h = trig::atan2(v_orca.y, v_orca.x);
+        consider(h, crate::angle::diff(h, s.theta).abs());
+    }
+    consider(s.theta, 0.0);
+    for k in 1..=HEADING_SAMPLES {
+        let d = step * k as f32;
+        consider(crate::angle::wrap(s.theta + d), d);
+        consider(crate::angle::wrap(s.theta - d), d);
+    }
+    let (_, turn, heading, sp) = best;
+    if !best.0.is_finite() {
+        // No ray is admissible: brake, turning to the funnel's heading.
+        return Command {
+            heading: h_pref,
+            speed: 0.0,
+            active: true,
+        };
+    }
+    Command {
+        heading,
+        speed: (sp * turn.cos().max(0.0)).min(along),
+        active: true,
+    }
+}

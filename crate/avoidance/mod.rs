@@ -1,0 +1,22 @@
+//! Avoidance between moving funnelling agents and of static obstacles
+//! (issue 18; paper 000 §7 and 001 §7 name it as the next step): agents
+//! that still arrive at their targets oriented, once the way is clear.
+//!
+//! | module | source | what |
+//! |---|---|---|
+//! | [`config`] | — | the method (off, separation, ORCA), body radius and settings; disc and segment obstacles; their validation |
+//! | [`orca`] | van den Berg et al. 2011 (RVO2) | the agents' and obstacles' half-planes, the 2D and 3D linear programs; why not `dodgy_2d` |
+//! | [`avoider`] | — | one pass: neighbours through the crowd's grid, the method's velocity, turned into an admissible heading and speed of the forward-only unicycle |
+//! | `world_step` | 000 §6 | the world's step with avoidance: plan every funnel, avoid, step |
+//! | [`proximity`] | — | metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |
+//! | [`benchmarks`] | — | the benchmark scenarios (circle swap, corridor, doorway, paper figures with avoidance) and the seeded study behind `steer avoid` |
+
+pub mod avoider;
+pub mod benchmarks;
+pub mod config;
+pub mod orca;
+pub mod proximity;
+mod world_step;
+
+pub use avoider::{Avoider, Command};
+pub use config::{AvoidanceConfig, AvoidanceMethod, Obstacle};

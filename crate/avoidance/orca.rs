@@ -1,0 +1,420 @@
+//! ORCA, optimal reciprocal collision avoidance (van den Berg, Guy, Lin,
+//! Manocha, "Reciprocal n-body collision avoidance", ISRR 2011; the RVO2
+//! library's algorithm): each neighbour contributes a half-plane of
+//! velocities that cannot collide with it within the time horizon (each of
+//! the two taking half the avoidance), each obstacle a half-plane that keeps
+//! the agent off it; the new velocity is the one nearest the preferred
+//! velocity inside all half-planes and the speed disc (a 2D linear program,
+//! randomisation-free incremental form), or, when they have no common point,
+//! the one that least violates the agents' half-planes while keeping the
+//! obstacles' (a 3D linear program).
+//!
+//! Why not the `dodgy_2d` crate (0.5.5, which implements the same paper):
+//! it does not build for `wasm32-unknown-unknown` (it depends on `rand`
+//! 0.9, whose `getrandom` 0.3 refuses that target without a `--cfg
+//! getrandom_backend` flag), it draws an *unseeded* random direction when
+//! two agents coincide (our trajectories must be the same bits on every
+//! run and target), it allocates two `Vec`s per agent per step and wants
+//! its neighbours as a slice of `Cow<Agent>`, and it depends on glam 0.29
+//! (we are on 0.34). Its obstacles are polygons; ours are discs and
+//! segments. This module is ~200 lines: the agents' half-planes and the
+//! linear programs, written after the paper, in fixed-size arrays (no
+//! allocation), with a deterministic choice where RVO2 divides by zero.
+//!
+//! Obstacles: RVO2 builds velocity obstacles for polygon edges. For a disc
+//! or a segment we use the tangent half-plane at the nearest point,
+//! `v·n ≥ −(dist − r)/τ_o` (n the unit normal away from the obstacle, τ_o
+//! the obstacle horizon): exact for a straight wall, conservative round a
+//! disc; it lets the distance shrink at most exponentially, never to zero
+//! in continuous time. Inside (dist < r) it asks to get out within one step.
+//!
+//! Arithmetic: only `+ − × ÷` and `sqrt` (all IEEE-exact), so the result is
+//! the same bits natively and in wasm.
+
+use glam::Vec2;
+
+/// Most agent half-planes per agent ([`crate::avoidance::AvoidanceConfig::max_neighbours`] ≤ this).
+pub const MAX_NEIGHBOURS: usize = 16;
+/// Most obstacle half-planes per agent (the nearest obstacles in reach).
+pub const MAX_OBSTACLE_LINES: usize = 16;
+/// Capacity of a line set.
+pub const MAX_LINES: usize = MAX_NEIGHBOURS + MAX_OBSTACLE_LINES;
+
+const EPS: f32 = 1e-5;
+
+/// A directed line; the admissible half-plane is on its left:
+/// `det(direction, v − point) ≥ 0`.
+#[derive(Clone, Copy, Debug, Default, PartialEq)]
+pub struct Line {
+    /// A point on the line.
+    pub point: Vec2,
+    /// Unit direction.
+    pub direction: Vec2,
+}
+
+impl Line {
+    /// True when `v` is on the admissible side (within `slack`).
+    #[inline]
+    #[must_use]
+    pub fn admits(&self, v: Vec2, slack: f32) -> bool {
+        det(self.direction, self.point - v) <= slack
+    }
+}
+
+/// A fixed-capacity set of half-planes: obstacles first, then agents.
+#[derive(Clone, Copy, Debug)]
+pub struct Lines {
+    lines: [Line; MAX_LINES],
+    len: usize,
+    obstacles: usize,
+}
+
+impl Default for Lines {
+    fn default() -> Self {
+        Self {
+            lines: [Line::default(); MAX_LINES],
+            len: 0,
+            obstacles: 0,
+        }
+    }
+}
+
+impl Lines {
+    /// Empties the set.
+    #[inline]
+    pub fn clear(&mut self) {
+        self.len = 0;
+        self.obstacles = 0;
+    }
+
+    /// Adds an obstacle half-plane (call before any agent's); ignored when
+    /// [`MAX_OBSTACLE_LINES`] are already in.
+    #[inline]
+    pub fn push_obstacle(&mut self, l: Line) {
+        debug_assert_eq!(self.len, self.obstacles, "obstacles first");
+        if self.obstacles < MAX_OBSTACLE_LINES {
+            self.lines[self.len] = l;
+            self.len += 1;
+            self.obstacles += 1;
+        }
+    }
+
+    /// Adds an agent half-plane; ignored when full.
+    #[inline]
+    pub fn push_agent(&mut self, l: Line) {
+        if self.len < MAX_LINES {
+            self.lines[self.len] = l;
+            self.len += 1;
+        }
+    }
+
+    /// The lines.
+    #[inline]
+    #[must_use]
+    pub fn as_slice(&self) -> &[Line] {
+        &self.lines[..self.len]
+    }
+
+    /// True when `v` satisfies every line (within `slack`).
+    #[must_use]
+    pub fn admits(&self, v: Vec2, slack: f32) -> bool {
+        self.as_slice().iter().all(|l| l.admits(v, slack))
+    }
+}
+
+#[inline]
+fn det(a: Vec2, b: Vec2) -> f32 {
+    a.x * b.y - a.y * b.x
+}
+
+/// The half-plane that `me` (position `p`, velocity `v`) must keep to so as
+/// not to collide with a neighbour (`pn`, `vn`) within `horizon` (sum of
+/// radii `r`), taking `share` of the avoidance (½ reciprocal). `dt` is the
+/// step, used when already overlapping; `tie` is a deterministic unit
+/// direction used where RVO2 would divide by zero (coincident agents).
+#[allow(clippy::too_many_arguments)]
+#[inline]
+#[must_use]
+pub fn agent_line(
+    p: Vec2,
+    v: Vec2,
+    pn: Vec2,
+    vn: Vec2,
+    r: f32,
+    horizon: f32,
+    dt: f32,
+    share: f32,
+    tie: Vec2,
+) -> Line {
+    let rel_pos = pn - p;
+    let rel_vel = v - vn;
+    let dist_sq = rel_pos.length_squared();
+    let r_sq = r * r;
+    let direction;
+    let u;
+    if dist_sq > r_sq {
+        let inv_h = 1.0 / horizon;
+        // Vector from the cut-off circle's centre to the relative velocity.
+        let w = rel_vel - rel_pos * inv_h;
+        let w_len_sq = w.length_squared();
+        let dot1 = w.dot(rel_pos);
+        if dot1 < 0.0 && dot1 * dot1 > r_sq * w_len_sq {
+            // Project on the cut-off circle.
+            let w_len = w_len_sq.sqrt();
+            let unit_w = if w_len > 0.0 { w / w_len } else { tie };
+            direction = Vec2::new(unit_w.y, -unit_w.x);
+            u = unit_w * (r * inv_h - w_len);
+        } else {
+            // Project on a leg of the cone.
+            let leg = (dist_sq - r_sq).sqrt();
+            direction = if det(rel_pos, w) > 0.0 {
+                Vec2::new(
+                    rel_pos.x * leg - rel_pos.y * r,
+                    rel_pos.x * r + rel_pos.y * leg,
+                ) / dist_sq
+            } else {
+                -Vec2::new(
+                    rel_pos.x * leg + rel_pos.y * r,
+                    -rel_pos.x * r + rel_pos.y * leg,
+                ) / dist_sq
+            };
+            u = direction * rel_vel.dot(direction) - rel_vel;
+        }
+    } else {
+        // Already overlapping: leave within one step.
+        let inv_dt = 1.0 / dt;
+        let w = rel_vel - rel_pos * inv_dt;
+        let w_len = w.length();
+        let unit_w = if w_len > 1e-9 { w / w_len } else { tie };
+        direction = Vec2::new(unit_w.y, -unit_w.x);
+        u = unit_w * (r * inv_dt - w_len);
+    }
+    Line {
+        point: v + u * share,
+        direction,
+    }
+}
+
+/// The half-plane that keeps an agent at signed distance `dist` from an
+/// obstacle's surface (unit normal `n` from the obstacle to the agent) at
+/// least `r` from it, a wall's tangent: `v·n ≥ −(dist − r)/τ`; inside
+/// (`dist < r`), `v·n ≥ (r − dist)/dt`, out within one step.
+#[inline]
+#[must_use]
+pub fn obstacle_line(n: Vec2, dist: f32, r: f32, horizon: f32, dt: f32) -> Line {
+    let c = if dist >= r {
+        -(dist - r) / horizon
+    } else {
+        (r - dist) / dt
+    };
+    Line {
+        point: n * c,
+        direction: Vec2::new(n.y, -n.x),
+    }
+}
+
+/// Linear program on line `i`: the point of line `i` admitted by lines
+/// `0..i` and the disc of radius `radius` that is nearest `opt` (or
+/// farthest along `opt` when `direction_opt`). `None` if there is none.
+fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
+    let li = lines[i];
+    let dot = li.point.dot(li.direction);
+    let disc = dot * dot + radius * radius - li.point.length_squared();
+    if disc < 0.0 {
+        return None;
+    }
+    let sq = disc.sqrt();
+    let mut t_left = -dot - sq;
+    let mut t_right = -dot + sq;
+    for lj in &lines[..i] {
+        let denom = det(li.direction, lj.direction);
+        let numer = det(lj.direction, li.point - lj.point);
+        if denom.abs() <= EPS {
+            if numer < 0.0 {
+                return None;
+            }
+            continue;
+        }
+        let t = numer / denom;
+        if denom >= 0.0 {
+            t_right = t_right.min(t);
+        } else {
+            t_left = t_left.max(t);
+        }
+        if t_left > t_right {
+            return None;
+        }
+    }
+    let t = if direction_opt {
+        if opt.dot(li.direction) > 0.0 {
+            t_right
+        } else {
+            t_left
+        }
+    } else {
+        li.direction.dot(opt - li.point).clamp(t_left, t_right)
+    };
+    Some(li.point + li.direction * t)
+}
+
+/// Linear program in 2D: the velocity in the disc nearest `opt` that every
+/// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
+/// the index of the first line that could not be met (`result` then meets
+/// lines `0..n`).
+fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
+    let mut result = if direction_opt {
+        opt * radius
+    } else if opt.length_squared() > radius * radius {
+        opt.normalize_or_zero() * radius
+    } else {
+        opt
+    };
+    for i in 0..lines.len() {
+        if det(lines[i].direction, lines[i].point - result) > 0.0 {
+            match lp1(lines, i, radius, opt, direction_opt) {
+                Some(r) => result = r,
+                None => return (result, i),
+            }
+        }
+    }
+    (result, lines.len())
+}
+
+/// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
+/// lines (the first `n_obstacles`) and minimises the largest violation of
+/// the others, from line `begin` on.
+fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
+    let mut distance = 0.0f32;
+    let mut proj = [Line::default(); MAX_LINES];
+    for i in begin..lines.len() {
+        let li = lines[i];
+        if det(li.direction, li.point - *result) > distance {
+            proj[..n_obstacles].copy_from_slice(&lines[..n_obstacles]);
+            let mut n = n_obstacles;
+            for lj in &lines[n_obstacles..i] {
+                let d = det(li.direction, lj.direction);
+                let point = if d.abs() <= EPS {
+                    if li.direction.dot(lj.direction) > 0.0 {
+                        continue; // parallel, same direction
+                    }
+                    (li.point + lj.point) * 0.5
+                } else {
+                    li.point + li.direction * (det(lj.direction, li.point - lj.point) / d)
+                };
+                let direction = (lj.direction - li.direction).normalize_or_zero();
+                proj[n] = Line { point, direction };
+                n += 1;
+            }
+            let temp = *result;
+            let (r, k) = lp2(
+                &proj[..n],
+                radius,
+                Vec2::new(-li.direction.y, li.direction.x),
+                true,
+            );
+            *result = if k < n { temp } else { r };
+            distance = det(li.direction, li.point - *result);
+        }
+    }
+}
+
+/// The ORCA velocity: nearest `preferred` within speed `max_speed` that
+/// every line of `lines` admits; if none does, the obstacle lines are kept
+/// and the largest violation of the agents' is minimised.
+#[must_use]
+pub fn solve(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
+    let ls = lines.as_slice();
+    let (mut result, k) = lp2(ls, max_speed, preferred, false);
+    if k < lines.obstacles {
+        // The obstacles' own half-planes have no common point (an agent
+        // wedged in a corner deeper than its radius): all become soft.
+        lp3(ls, 0, k, max_speed, &mut result);
+    } else if k < ls.len() {
+        lp3(ls, lines.obstacles, k, max_speed, &mut result);
+    }
+    result
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn no_lines_gives_the_preferred_velocity_within_the_disc() {
+        let l = Lines::default();
+        assert_eq!(solve(&l, 2.0, Vec2::new(1.0, 0.5)), Vec2::new(1.0, 0.5));
+        let v = solve(&l, 1.0, Vec2::new(3.0, 4.0));
+        assert!((v - Vec2::new(0.6, 0.8)).length() < 1e-6);
+    }
+
+    #[test]
+    fn head_on_agents_turn_aside_and_their_choices_do_not_collide() {
+        // Two agents 4 m apart, face to face at 1 m/s: each keeps out of
+        // the other's velocity obstacle with half the avoidance.
+        let (pa, pb) = (Vec2::ZERO, Vec2::new(4.0, 0.01));
+        let (va, vb) = (Vec2::X, -Vec2::X);
+        let mut la = Lines::default();
+        la.push_agent(agent_line(pa, va, pb, vb, 0.6, 5.0, 0.1, 0.5, Vec2::Y));
+        let mut lb = Lines::default();
+        lb.push_agent(agent_line(pb, vb, pa, va, 0.6, 5.0, 0.1, 0.5, -Vec2::Y));
+        let na = solve(&la, 2.0, va);
+        let nb = solve(&lb, 2.0, vb);
+        assert!(na.y.abs() > 0.01 && nb.y.abs() > 0.01, "{na} {nb}");
+        // Relative motion over the horizon stays clear of the 0.6 m disc.
+        let rel_p = pb - pa;
+        let rel_v = nb - na;
+        let mut min = f32::MAX;
+        for k in 0..=500 {
+            let t = k as f32 * 0.01;
+            min = min.min((rel_p + rel_v * t).length());
+        }
+        assert!(min >= 0.6 - 1e-3, "closest {min}");
+    }
+
+    #[test]
+    fn a_wall_line_stops_the_approach_but_allows_sliding() {
+        // Wall along y = 0, agent at y = 0.5, radius 0.3, horizon 1 s.
+        let p = Vec2::new(0.0, 0.5);
+        let l = obstacle_line(Vec2::Y, p.y, 0.3, 1.0, 0.1);
+        let mut ls = Lines::default();
+        ls.push_obstacle(l);
+        let v = solve(&ls, 2.0, Vec2::new(1.0, -1.0));
+        assert!(
+            (v.y - (-0.2)).abs() < 1e-5 && (v.x - 1.0).abs() < 1e-5,
+            "{v}"
+        );
+    }
+
+    #[test]
+    fn infeasible_agents_keep_the_obstacles() {
+        let p = Vec2::ZERO;
+        let mut ls = Lines::default();
+        ls.push_obstacle(obstacle_line(Vec2::Y, 0.4, 0.3, 1.0, 0.1));
+        // Neighbours overlapping from both sides along x.
+        ls.push_agent(agent_line(
+            p,
+            Vec2::ZERO,
+            Vec2::new(0.3, 0.0),
+            Vec2::ZERO,
+            0.6,
+            2.0,
+            0.1,
+            0.5,
+            Vec2::Y,
+        ));
+        ls.push_agent(agent_line(
+            p,
+            Vec2::ZERO,
+            Vec2::new(-0.3, 0.0),
+            Vec2::ZERO,
+            0.6,
+            2.0,
+            0.1,
+            0.5,
+            Vec2::Y,
+        ));
+        let v = solve(&ls, 2.0, Vec2::X);
+        assert!(v.is_finite());
+        assert!(ls.as_slice()[0].admits(v, 1e-4), "{v}");
+    }
+}

@@ -1,0 +1,99 @@
+//! The world's step with avoidance on (issue 18): every funnel plans, the
+//! avoidance adjusts the plans together, then every agent steps. With
+//! avoidance off [`World::step`] keeps its own loop (same bits as before).
+
+use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
+use crate::funnel::{Internals, Mode};
+use crate::relaxed::{ControllerKind, RelaxedInternals};
+use crate::seek::seek_step_committed;
+use crate::table::EtaTable;
+use crate::vehicle::ParamError;
+use crate::world::World;
+
+impl World {
+    /// Sets the avoidance method, settings and static obstacles.
+    ///
+    /// # Errors
+    /// An invalid setting or obstacle (the world is unchanged).
+    pub fn set_avoidance(
+        &mut self,
+        cfg: AvoidanceConfig,
+        obstacles: Vec<Obstacle>,
+    ) -> Result<(), String> {
+        cfg.validate().map_err(|e: ParamError| e.to_string())?;
+        validate_obstacles(&obstacles)?;
+        self.avoidance = cfg;
+        self.obstacles = obstacles;
+        Ok(())
+    }
+
+    /// [`World::step`] with avoidance on.
+    pub(crate) fn step_avoiding(&mut self, table: &EtaTable) {
+        debug_assert_ne!(self.avoidance.method, AvoidanceMethod::Off);
+        for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
+            *s = a.state;
+        }
+        let p = self.params;
+        let t = self.time;
+        // 1. Every funnel plans (mode memory advances as in a plain step).
+        self.preferred.clear();
+        for a in &mut self.agents {
+            if a.done() {
+                let halt = a.goals.last().is_none_or(|g| g.goal.halting);
+                let speed = if halt {
+                    0.0
+                } else {
+                    a.goals.last().map_or(0.0, |g| g.goal.speed)
+                };
+                a.relaxed = RelaxedInternals::default();
+                a.internals = Internals {
+                    mode: Mode::EndOfSteering,
+                    v_dt: speed,
+                    gamma: a.state.theta,
+                    ..Default::default()
+                };
+                self.preferred.push((a.state.theta, speed));
+            } else {
+                let spec = a.goals[a.current];
+                let goal = spec.at(t, &self.snapshot);
+                a.goal_now = goal;
+                a.internals = match self.controller {
+                    ControllerKind::Standard => {
+                        self.config.plan(table, &p, &a.state, &goal, &mut a.memory)
+                    }
+                    ControllerKind::Relaxed => self.relaxed.plan(
+                        &self.config,
+                        table,
+                        &p,
+                        &a.state,
+                        &goal,
+                        &mut a.memory,
+                        &mut a.relaxed,
+                    ),
+                };
+                self.preferred.push((a.internals.gamma, a.internals.v_dt));
+            }
+        }
+        // 2. The avoidance, on the states at the start of the step.
+        self.avoider.compute(
+            &p,
+            &self.avoidance,
+            &self.obstacles,
+            &self.snapshot,
+            &self.preferred,
+        );
+        // 3. Every agent steps with its command; goals switch as usual.
+        for (a, c) in self.agents.iter_mut().zip(&self.avoider.commands) {
+            let prev = a.state;
+            seek_step_committed(&p, &mut a.state, c.heading, c.speed);
+            if !a.done() {
+                let spec = a.goals[a.current];
+                crate::world::advance_queue(a, &spec, t);
+            } else {
+                a.internals.gamma = a.state.theta;
+            }
+            a.metrics.add(&p, &prev, &a.state);
+        }
+        self.time += p.dt;
+    }
+}

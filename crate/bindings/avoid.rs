@@ -1,0 +1,68 @@
+//! The avoidance (issue 18) through the lab's binding: the method of the
+//! world in force (presets carry theirs, `scenarios/avoid_*.json`), the
+//! obstacles as a flat array for drawing, and the overlap count the e2e
+//! test reads. Thin: the core does the work.
+
+use wasm_bindgen::prelude::*;
+
+use super::boundary::js_err;
+use super::lab::Lab;
+use crate::avoidance::{AvoidanceMethod, Obstacle};
+
+#[wasm_bindgen]
+impl Lab {
+    /// The avoidance method in force: `off`, `separation` or `orca`.
+    #[wasm_bindgen(js_name = avoidance)]
+    pub fn avoidance_method(&self) -> String {
+        self.world.avoidance.method.name().into()
+    }
+
+    /// Switches the avoidance method (`off`, `separation`, `orca`), keeping
+    /// the world's other avoidance settings and obstacles; anything else is
+    /// an error and changes nothing.
+    #[wasm_bindgen(js_name = setAvoidance)]
+    pub fn set_avoidance_method(&mut self, method: &str) -> Result<(), JsError> {
+        let m = AvoidanceMethod::parse(method).ok_or_else(|| {
+            js_err(
+                "avoidance",
+                format!("`{method}` is not off, separation or orca"),
+            )
+        })?;
+        let mut cfg = self.world.avoidance;
+        cfg.method = m;
+        let obstacles = self.world.obstacles.clone();
+        self.world
+            .set_avoidance(cfg, obstacles)
+            .map_err(|e| js_err("avoidance", e))
+    }
+
+    /// Pairs of agents whose bodies (radius `avoidance.radius`) overlap now.
+    pub fn overlaps(&self) -> u32 {
+        let r2 = 4.0 * self.world.avoidance.radius * self.world.avoidance.radius;
+        let a = &self.world.agents;
+        let mut n = 0u32;
+        // Lab worlds are small enough for the pairwise count; the metric
+        // of the studies goes through the grid (avoidance::proximity).
+        for i in 0..a.len() {
+            for b in &a[i + 1..] {
+                if (a[i].state.pos - b.state.pos).length_squared() < r2 {
+                    n += 1;
+                }
+            }
+        }
+        n
+    }
+
+    /// The obstacles, 5 floats each: kind (0 disc, 1 segment), then
+    /// `x, y, radius, 0` for a disc or `x1, y1, x2, y2` for a segment.
+    pub fn obstacles(&self) -> Vec<f32> {
+        let mut out = Vec::with_capacity(5 * self.world.obstacles.len());
+        for o in &self.world.obstacles {
+            match *o {
+                Obstacle::Disc { x, y, radius } => out.extend([0.0, x, y, radius, 0.0]),
+                Obstacle::Segment { x1, y1, x2, y2 } => out.extend([1.0, x1, y1, x2, y2]),
+            }
+        }
+        out
+    }
+}
