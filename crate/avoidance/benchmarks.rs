@@ -109,6 +109,9 @@ fn empty(name: String, description: &str, duration: f32) -> Scenario {
         avoidance: AvoidanceConfig::default(),
         obstacles: Vec::new(),
         agents: Vec::new(),
+        claim: String::new(),
+        measured: String::new(),
+        table: None,
     }
 }
 

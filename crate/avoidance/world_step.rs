@@ -61,6 +61,13 @@ impl World {
                     ControllerKind::Standard => {
                         self.config.plan(table, &p, &a.state, &goal, &mut a.memory)
                     }
+                    ControllerKind::Seek => self.config.plain_seek().plan(
+                        table,
+                        &p,
+                        &a.state,
+                        &goal.unoriented(),
+                        &mut a.memory,
+                    ),
                     ControllerKind::Relaxed => self.relaxed.plan(
                         &self.config,
                         table,
