@@ -4,7 +4,7 @@
 
 use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::funnel::{Internals, Mode};
-use crate::relaxed::{ControllerKind, RelaxedInternals};
+use crate::relaxed::RelaxedInternals;
 use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::ParamError;
@@ -57,27 +57,16 @@ impl World {
                 let spec = a.goals[a.current];
                 let goal = spec.at(t, &self.snapshot);
                 a.goal_now = goal;
-                a.internals = match self.controller {
-                    ControllerKind::Standard => {
-                        self.config.plan(table, &p, &a.state, &goal, &mut a.memory)
-                    }
-                    ControllerKind::Seek => self.config.plain_seek().plan(
-                        table,
-                        &p,
-                        &a.state,
-                        &goal.unoriented(),
-                        &mut a.memory,
-                    ),
-                    ControllerKind::Relaxed => self.relaxed.plan(
-                        &self.config,
-                        table,
-                        &p,
-                        &a.state,
-                        &goal,
-                        &mut a.memory,
-                        &mut a.relaxed,
-                    ),
-                };
+                a.internals = self.controller.plan(
+                    &self.config,
+                    &self.relaxed,
+                    table,
+                    &p,
+                    &a.state,
+                    &goal,
+                    &mut a.memory,
+                    &mut a.relaxed,
+                );
                 self.preferred.push((a.internals.gamma, a.internals.v_dt));
             }
         }

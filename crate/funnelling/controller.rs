@@ -41,13 +41,58 @@ impl ControllerKind {
         }
     }
 
-    /// `standard` or `relaxed`.
+    /// `standard`, `relaxed` or `seek`.
     #[must_use]
     pub fn name(self) -> &'static str {
         match self {
             Self::Standard => "standard",
             Self::Relaxed => "relaxed",
             Self::Seek => "seek",
+        }
+    }
+
+    /// One update's plan with this controller (no move): what a world
+    /// without avoidance and one with it both ask each agent. `ri` is
+    /// written by the relaxed controller only.
+    #[allow(clippy::too_many_arguments)] // the two configs and the agent's parts
+    #[inline]
+    pub fn plan(
+        self,
+        funnel: &FunnelConfig,
+        relaxed: &RelaxedConfig,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        match self {
+            Self::Standard => funnel.plan(table, p, s, g, mem),
+            Self::Seek => funnel.plain_seek().plan(table, p, s, &g.unoriented(), mem),
+            Self::Relaxed => relaxed.plan(funnel, table, p, s, g, mem, ri),
+        }
+    }
+
+    /// One update with this controller: [`ControllerKind::plan`] and the
+    /// move.
+    #[allow(clippy::too_many_arguments)] // as `plan`
+    #[inline]
+    pub fn step(
+        self,
+        funnel: &FunnelConfig,
+        relaxed: &RelaxedConfig,
+        table: &EtaTable,
+        p: &VehicleParams,
+        s: &mut VehicleState,
+        g: &Goal,
+        mem: &mut FunnelMemory,
+        ri: &mut RelaxedInternals,
+    ) -> Internals {
+        match self {
+            Self::Standard => funnel.step(table, p, s, g, mem),
+            Self::Seek => funnel.plain_seek().step(table, p, s, &g.unoriented(), mem),
+            Self::Relaxed => relaxed.step(funnel, table, p, s, g, mem, ri),
         }
     }
 }

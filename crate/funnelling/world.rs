@@ -200,24 +200,16 @@ impl World {
             let goal = spec.at(t, &self.snapshot);
             a.goal_now = goal;
             let mut mem = a.memory;
-            a.internals = match self.controller {
-                ControllerKind::Standard => self.config.plan(table, &p, &a.state, &goal, &mut mem),
-                ControllerKind::Seek => {
-                    let g = goal.unoriented();
-                    self.config
-                        .plain_seek()
-                        .plan(table, &p, &a.state, &g, &mut mem)
-                }
-                ControllerKind::Relaxed => self.relaxed.plan(
-                    &self.config,
-                    table,
-                    &p,
-                    &a.state,
-                    &goal,
-                    &mut mem,
-                    &mut a.relaxed,
-                ),
-            };
+            a.internals = self.controller.plan(
+                &self.config,
+                &self.relaxed,
+                table,
+                &p,
+                &a.state,
+                &goal,
+                &mut mem,
+                &mut a.relaxed,
+            );
         }
     }
 
@@ -256,28 +248,16 @@ impl World {
                 let spec = a.goals[a.current];
                 let goal = spec.at(t, &self.snapshot);
                 a.goal_now = goal;
-                a.internals = match self.controller {
-                    ControllerKind::Standard => {
-                        self.config
-                            .step(table, &p, &mut a.state, &goal, &mut a.memory)
-                    }
-                    ControllerKind::Seek => self.config.plain_seek().step(
-                        table,
-                        &p,
-                        &mut a.state,
-                        &goal.unoriented(),
-                        &mut a.memory,
-                    ),
-                    ControllerKind::Relaxed => self.relaxed.step(
-                        &self.config,
-                        table,
-                        &p,
-                        &mut a.state,
-                        &goal,
-                        &mut a.memory,
-                        &mut a.relaxed,
-                    ),
-                };
+                a.internals = self.controller.step(
+                    &self.config,
+                    &self.relaxed,
+                    table,
+                    &p,
+                    &mut a.state,
+                    &goal,
+                    &mut a.memory,
+                    &mut a.relaxed,
+                );
                 advance_queue(a, &spec, t);
             }
             a.metrics.add(&p, &prev, &a.state);
