@@ -3,8 +3,6 @@
 //! avoidance off [`World::step`] keeps its own loop (same bits as before).
 
 use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
-use crate::funnel::{Internals, Mode};
-use crate::relaxed::RelaxedInternals;
 use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::ParamError;
@@ -39,19 +37,8 @@ impl World {
         self.preferred.clear();
         for a in &mut self.agents {
             if a.done() {
-                let halt = a.goals.last().is_none_or(|g| g.goal.halting);
-                let speed = if halt {
-                    0.0
-                } else {
-                    a.goals.last().map_or(0.0, |g| g.goal.speed)
-                };
-                a.relaxed = RelaxedInternals::default();
-                a.internals = Internals {
-                    mode: Mode::EndOfSteering,
-                    v_dt: speed,
-                    gamma: a.state.theta,
-                    ..Default::default()
-                };
+                let speed = a.cruise_speed();
+                a.hold(speed);
                 self.preferred.push((a.state.theta, speed));
             } else {
                 let spec = a.goals[a.current];

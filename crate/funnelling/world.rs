@@ -45,6 +45,28 @@ impl Agent {
     pub fn done(&self) -> bool {
         self.current >= self.goals.len()
     }
+
+    /// The speed of an agent past its last goal: rest if that goal halts
+    /// (or there was none), else cruise on at its speed.
+    #[must_use]
+    pub fn cruise_speed(&self) -> f32 {
+        self.goals
+            .last()
+            .filter(|g| !g.goal.halting)
+            .map_or(0.0, |g| g.goal.speed)
+    }
+
+    /// Records that the agent, past its last goal, holds its heading at
+    /// `speed` (End_of_Steering; no relaxed search).
+    pub(crate) fn hold(&mut self, speed: f32) {
+        self.relaxed = RelaxedInternals::default();
+        self.internals = Internals {
+            mode: Mode::EndOfSteering,
+            v_dt: speed,
+            gamma: self.state.theta,
+            ..Default::default()
+        };
+    }
 }
 
 /// The world.
@@ -186,14 +208,7 @@ impl World {
         let t = self.time;
         for a in &mut self.agents {
             if a.done() {
-                let last = a.goals.last().map(|g| g.goal);
-                a.relaxed = RelaxedInternals::default();
-                a.internals = Internals {
-                    mode: Mode::EndOfSteering,
-                    v_dt: last.filter(|g| !g.halting).map_or(0.0, |g| g.speed),
-                    gamma: a.state.theta,
-                    ..Default::default()
-                };
+                a.hold(a.cruise_speed());
                 continue;
             }
             let spec = a.goals[a.current];
@@ -229,21 +244,10 @@ impl World {
             let prev = a.state;
             if a.done() {
                 // All goals done: rest if the last goal halts, else cruise on.
-                let halt = a.goals.last().is_none_or(|g| g.goal.halting);
-                let speed = if halt {
-                    0.0
-                } else {
-                    a.goals.last().map_or(0.0, |g| g.goal.speed)
-                };
+                let speed = a.cruise_speed();
                 let hold = a.state.theta;
                 seek_step(&p, &mut a.state, hold, speed);
-                a.relaxed = RelaxedInternals::default();
-                a.internals = Internals {
-                    mode: Mode::EndOfSteering,
-                    v_dt: speed,
-                    gamma: a.state.theta,
-                    ..Default::default()
-                };
+                a.hold(speed);
             } else {
                 let spec = a.goals[a.current];
                 let goal = spec.at(t, &self.snapshot);
