@@ -886,58 +886,17 @@ mod wander {
 // ------------------------------------------------ the table at the paper's size
 
 mod paper_size_table {
-    use glam::Vec2;
-    use steering::angle::diff;
     use steering::funnel::FunnelConfig;
-    use steering::rng::Rng;
-    use steering::seek::{simulate_reach, ReachLimits, ReachOutcome};
+    use steering::funnelling::vehicle_study::accuracy;
     use steering::study::{summarise, ReachStudy};
-    use steering::table::generate::TableSpec;
-    use steering::table::EtaTable;
-    use steering::vehicle::{VehicleParams, VehicleState};
+    use steering::table::generate::{turn_radius, TableSpec};
+    use steering::vehicle::VehicleParams;
 
     /// Axis counts of a 43,200-entry table (paper 000 §3's size): 10
     /// distances, 36 radial angles (nominal 24: 15° in front, finer
     /// behind), 5 ω fractions, 4 current and 6 desired speeds. Also
     /// `eta-table --counts 10,24,5,4,6 --out FILE` (0.1 s; not committed).
     pub const PAPER_COUNTS: [usize; 5] = [10, 24, 5, 4, 6];
-
-    /// (median, p95) error in degrees over `n` uniform reachable off-grid
-    /// queries, and the reachability agreement.
-    fn accuracy(t: &EtaTable, n: usize, seed: u64) -> (f32, f32, f32) {
-        let p = VehicleParams::default();
-        let bp = t.params();
-        let lim = ReachLimits {
-            reach_radius: bp.reach_radius,
-            orbit_turns: bp.orbit_turns,
-            max_time: bp.max_time,
-        };
-        let (dmin, dmax) = (t.distances()[0], *t.distances().last().unwrap());
-        let mut rng = Rng::new(seed);
-        let (mut e, mut q, mut agree) = (Vec::new(), 0usize, 0usize);
-        while e.len() < n {
-            q += 1;
-            let d = rng.range(dmin, dmax);
-            let a = rng.range(-core::f32::consts::PI, core::f32::consts::PI);
-            let v = rng.range(0.0, p.v_max);
-            let w = rng.range(-1.0, 1.0) * p.omega_limit(v);
-            let vd = rng.range(0.25, p.v_max);
-            let out = simulate_reach(
-                &p,
-                VehicleState::new(Vec2::ZERO, 0.0, v, w),
-                steering::trig::unit(a) * d,
-                vd,
-                &lim,
-            );
-            let lk = t.lookup(d, a, w, v, vd);
-            agree += usize::from(matches!(out, ReachOutcome::Reached { .. }) == lk.reachable);
-            if let (ReachOutcome::Reached { eta, .. }, true) = (out, lk.reachable) {
-                e.push(diff(lk.eta, eta).abs().to_degrees());
-            }
-        }
-        e.sort_by(f32::total_cmp);
-        (e[n / 2], e[n * 95 / 100], agree as f32 / q as f32)
-    }
 
     #[test]
     fn a_table_of_the_papers_size_beside_ours() {
@@ -953,8 +912,11 @@ mod paper_size_table {
             ..ReachStudy::default()
         };
         let mut rows = Vec::new();
+        // The same queries for both: uniform from our table's first ring.
+        let d_min_radii = ours.distances()[0] / turn_radius(&p);
         for (name, t) in [("ours (362,880)", &ours), ("paper size (43,200)", &small)] {
-            let (med, p95, agree) = accuracy(t, 2000, 19);
+            let a = accuracy(t, &p, 2000, 19, d_min_radii);
+            let (med, p95, agree) = (a.median_deg, a.p95_deg, a.agreement);
             let s = summarise(&study.run_all(t, &p, &FunnelConfig::default()));
             println!(
                 "η table {name}: {:.1} MB in memory cells; η error median {med:.2}°, p95 {p95:.2}° (2,000 uniform queries, seed 19), reachability agreement {:.1} %; reach study (1,000 runs, seed 19): reach {:.1} %, oriented on entry {:.1} %, entry error median {:.1}°",
