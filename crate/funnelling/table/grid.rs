@@ -7,9 +7,12 @@
 //! was, measured under callgrind, a quarter of a funnelling update. Instead
 //! each axis keeps a uniform grid of buckets over its range, at most half
 //! as wide as its narrowest interval, so a bucket holds at most one
-//! sample. Per bucket it stores how many samples lie in earlier buckets and
-//! the one sample inside it (if any): the interval of `x` is then one
-//! bucket read and one comparison away, with no loop and no branch. The
+//! sample. Per bucket it stores the one sample inside it (if any) and the
+//! two intervals either side of it, resolved (indices, lower sample,
+//! reciprocal width): the interval of `x` is then one bucket read and one
+//! comparison away, with no loop, no branch and no second table read
+//! (storing a count of earlier samples instead, and the intervals apart,
+//! cost 10 instructions more per axis under callgrind). The
 //! bucket of a sample is computed at load time with the very arithmetic a
 //! query uses, so rounding can never put a query on the wrong side of a
 //! sample. An axis too uneven for the bucket cap falls back to a binary
@@ -36,26 +39,45 @@ pub struct AxisPos {
     pub t: f32,
 }
 
+/// One interval of an axis, resolved: what a query in it returns, minus
+/// its weight.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Segment {
+    i0: u32,
+    i1: u32,
+    /// Lower sample.
+    x0: f32,
+    /// `1 / (x[i0 + 1] - x[i0])` (a multiply, not a divide, per query).
+    inv_dx: f32,
+}
+
+/// A bucket: the interval holding its start, and the one sample inside it
+/// (`+∞` when none) with the interval that begins there. A query reads its
+/// bucket and compares once: no second table read, no index arithmetic.
+#[derive(Clone, Copy, Debug, PartialEq)]
+struct Bucket {
+    split: f32,
+    below: Segment,
+    above: Segment,
+}
+
 /// A sampled axis with its bucket index. Samples must be finite and
 /// strictly increasing (the table loader checks this first).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Axis {
-    /// Samples in the file (without the periodic copy).
-    n: usize,
     periodic: bool,
     /// Covered range `[lo, hi]`.
     lo: f32,
     hi: f32,
-    /// Index of the last interval.
-    last: usize,
     inv_width: f32,
-    /// Per bucket: samples in earlier buckets, and the sample inside the
-    /// bucket (`+∞` when none). Empty when some bucket holds two samples.
-    buckets: Vec<(u32, f32)>,
-    /// Per interval: its lower sample and `1 / (x[i + 1] - x[i])` (a
-    /// multiply, not a divide, per query). A periodic axis has one more
-    /// interval, from its last sample to its first + 2π.
-    segments: Vec<(f32, f32)>,
+    /// Index of the last bucket.
+    last_bucket: usize,
+    /// Per bucket, see [`Bucket`]. Empty when some bucket holds two
+    /// samples (then [`Axis::locate`] searches `segments`).
+    buckets: Vec<Bucket>,
+    /// Per interval. A periodic axis has one more interval, from its last
+    /// sample to its first + 2π.
+    segments: Vec<Segment>,
 }
 
 impl Axis {
@@ -76,35 +98,57 @@ impl Axis {
             .map(|w| w[1] - w[0])
             .fold(f32::INFINITY, f32::min);
         let count = ((2.0 * span / narrowest).ceil() as usize).clamp(1, MAX_BUCKETS);
+        let segments: Vec<Segment> = x
+            .windows(2)
+            .enumerate()
+            .map(|(i, w)| Segment {
+                i0: i as u32,
+                // The upper sample, or the first across the periodic seam.
+                i1: if i + 1 == n { 0 } else { i as u32 + 1 },
+                x0: w[0],
+                inv_dx: 1.0 / (w[1] - w[0]),
+            })
+            .collect();
         let mut axis = Self {
-            segments: x.windows(2).map(|w| (w[0], 1.0 / (w[1] - w[0]))).collect(),
-            n,
             periodic,
             lo,
             hi,
-            last: intervals - 1,
             inv_width: count as f32 / span,
-            buckets: vec![(0, f32::INFINITY); count],
+            last_bucket: count - 1,
+            buckets: Vec::new(),
+            segments,
         };
+        // Per bucket: samples in earlier buckets, and the sample inside.
+        let mut index = vec![(0u32, f32::INFINITY); count];
         let mut below = 0u32;
         let mut prev = usize::MAX;
         for &sample in &x {
             let b = axis.bucket(sample);
             if b == prev {
                 // Two samples in one bucket: binary search instead.
-                axis.buckets.clear();
                 return axis;
             }
-            for slot in &mut axis.buckets[prev.wrapping_add(1).min(b)..b] {
+            for slot in &mut index[prev.wrapping_add(1).min(b)..b] {
                 slot.0 = below;
             }
-            axis.buckets[b] = (below, sample);
+            index[b] = (below, sample);
             below += 1;
             prev = b;
         }
-        for slot in &mut axis.buckets[prev + 1..] {
+        for slot in &mut index[prev + 1..] {
             slot.0 = below;
         }
+        // The interval of `c` is (samples ≤ c) − 1, and `hi` itself lies in
+        // the last interval.
+        let interval = |samples_le: u32| (samples_le.saturating_sub(1) as usize).min(intervals - 1);
+        axis.buckets = index
+            .iter()
+            .map(|&(below, inside)| Bucket {
+                split: inside,
+                below: axis.segments[interval(below)],
+                above: axis.segments[interval(below + 1)],
+            })
+            .collect();
         axis
     }
 
@@ -113,7 +157,7 @@ impl Axis {
     #[inline]
     fn bucket(&self, c: f32) -> usize {
         let f = (c - self.lo) * self.inv_width + MAGIC;
-        ((f.to_bits() & 0x007F_FFFF) as usize).min(self.buckets.len() - 1)
+        ((f.to_bits() & 0x007F_FFFF) as usize).min(self.last_bucket)
     }
 
     /// Where `v` falls. Outside a non-periodic axis (or for NaN) the
@@ -137,27 +181,30 @@ impl Axis {
             lo
         };
         *clamped |= c != v;
-        let i = if self.buckets.is_empty() {
-            self.segments[1..=self.last].partition_point(|s| s.0 <= c)
-        } else {
-            let (below, inside) = self.buckets[self.bucket(c)];
-            // Samples ≤ c, minus one; `hi` itself lies in the last interval.
-            ((below + u32::from(inside <= c)) as usize)
-                .saturating_sub(1)
-                .min(self.last)
+        let seg = match self.buckets.get(self.bucket(c)) {
+            Some(b) => {
+                if b.split <= c {
+                    b.above
+                } else {
+                    b.below
+                }
+            }
+            None => {
+                let last = self.segments.len() - 1;
+                let i = self.segments[1..=last].partition_point(|s| s.x0 <= c);
+                self.segments[i]
+            }
         };
-        let (x0, inv_dx) = self.segments[i];
         // Exactly 1 at the upper end (a clamped query uses that sample
         // alone), whatever the rounding of the reciprocal.
         let t = if c >= hi {
             1.0
         } else {
-            ((c - x0) * inv_dx).min(1.0)
+            ((c - seg.x0) * seg.inv_dx).min(1.0)
         };
-        let i1 = if i + 1 == self.n { 0 } else { i + 1 };
         AxisPos {
-            i0: i as u32,
-            i1: i1 as u32,
+            i0: seg.i0,
+            i1: seg.i1,
             t,
         }
     }
