@@ -249,6 +249,84 @@ fn p000_fig8_traces_show_three_sections() {
 
 // ---------------------------------------------------------------- paper 001
 
+/// Mean |curvature| (rad/m) over the last `l` metres of each agent's path
+/// before it first meets its position tolerance.
+fn curvature_near_the_end(t: &EtaTable, sc: &Scenario, l: f32) -> Vec<f32> {
+    let n = sc.agents.len();
+    let mut paths: Vec<Vec<(Vec2, f32)>> = vec![Vec::new(); n];
+    let mut met = vec![false; n];
+    run(t, sc, |w| {
+        for (i, a) in w.agents.iter().enumerate() {
+            if !met[i] {
+                paths[i].push((a.state.pos, a.state.theta));
+                met[i] = a.memory.position_met || a.done();
+            }
+        }
+    });
+    assert!(met.iter().all(|&m| m), "every walker meets its disk");
+    paths
+        .iter()
+        .map(|p| {
+            let (mut s, mut turn) = (0.0f32, 0.0f32);
+            for k in (1..p.len()).rev() {
+                let ds = (p[k].0 - p[k - 1].0).length();
+                if s + ds > l {
+                    break;
+                }
+                s += ds;
+                turn += diff(p[k].1, p[k - 1].1).abs();
+            }
+            turn / s.max(1e-3)
+        })
+        .collect()
+}
+
+/// Paper 001 Fig. 5 and §1: funnelling resembles measured human gait
+/// [ALHB06] (not measurable here: no recordings), and "their local
+/// curvature near the destination appears to be independent of the
+/// distance for distances over 4 meters" [B05b]. Measured on the preset
+/// (one start pose, bearings ±20° and ±45°, targets 4, 8, 12 m away) at
+/// the preset's β (north) and at β 45° and 0°: the paper's literal reading
+/// keeps the curvature of the last 1.5 m within 2× across 4–12 m in every
+/// cell (agrees); ours lines up early and arrives nearly straight from
+/// afar (refuted for ours: at 12 m under a quarter of its 4 m value).
+#[test]
+fn p001_fig5_curvature_near_the_destination_by_distance() {
+    let t = table();
+    let base = preset("p001_fig5_gait");
+    for beta in [90.0f32, 45.0, 0.0] {
+        let mut sc = base.clone();
+        for a in &mut sc.agents {
+            a.goals[0].beta_deg = beta;
+        }
+        let mut lit = sc.clone();
+        lit.funnel = steering::funnelling::envelope::literal_config();
+        let (ours, paper) = (
+            curvature_near_the_end(&t, &sc, 1.5),
+            curvature_near_the_end(&t, &lit, 1.5),
+        );
+        // Agents come in threes: one bearing, distances 4, 8, 12 m.
+        for (cell, bearing) in [-45, -20, 20, 45].into_iter().enumerate() {
+            let o = &ours[3 * cell..3 * cell + 3];
+            let p = &paper[3 * cell..3 * cell + 3];
+            println!(
+                "fig5 β {beta}° bearing {bearing}°: mean |κ| over the last 1.5 m at 4 / 8 / 12 m: literal {:.3} / {:.3} / {:.3}, ours {:.3} / {:.3} / {:.3} rad/m",
+                p[0], p[1], p[2], o[0], o[1], o[2]
+            );
+            let (lo, hi) = p
+                .iter()
+                .fold((f32::INFINITY, 0.0f32), |(l, h), &x| (l.min(x), h.max(x)));
+            assert!(
+                hi <= 2.0 * lo || hi - lo < 0.05,
+                "literal β {beta} bearing {bearing}: {p:?}"
+            );
+            if o[0] > 0.05 {
+                assert!(o[2] < 0.25 * o[0], "ours β {beta} bearing {bearing}: {o:?}");
+            }
+        }
+    }
+}
+
 /// (length, ∫|κ|) per agent over the whole run.
 fn path_metrics(t: &EtaTable, sc: &Scenario) -> Vec<(f32, f32)> {
     run(t, sc, |_| {})
