@@ -75,12 +75,17 @@ export function loadCore(): Promise<string> {
 /** Fetches the committed η table and hands its bytes to the core.
  *  Throws an Error whose message is fit to show on the page. */
 export async function createLab(tableUrl: string): Promise<Lab> {
+  // The fetch runs while the core instantiates (issue 17: first frame).
+  const fetching = (async (): Promise<Uint8Array> => {
+    const res = await fetch(tableUrl);
+    if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
+    return new Uint8Array(await res.arrayBuffer());
+  })();
+  fetching.catch(() => undefined);
   await loadCore();
   let bytes: Uint8Array;
   try {
-    const res = await fetch(tableUrl);
-    if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
-    bytes = new Uint8Array(await res.arrayBuffer());
+    bytes = await fetching;
   } catch (e) {
     throw new Error(`could not fetch the η table ${tableUrl}: ${errorText(e)}`);
   }
