@@ -101,7 +101,8 @@ test-e2e-vehicle: setup-browser web-build
 	node web/test/e2e-vehicle.mjs
 
 # Issue 17's browser checks: the SIMD core where the engine has SIMD, the
-# baseline where it has not.
+# baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
+# ?draw=gl: headless WebGL is software, where the pages keep 2D sprites).
 test-e2e-perf: setup-browser web-build
 	node web/test/e2e-perf.mjs
 
