@@ -3,8 +3,8 @@
 // extent √N·1.5 m, 1.3 m/s, 16 goals each), warmed up, then rounds of
 // STEPS steps — natively (`examples/world_bench.rs`, release) and in Node on
 // the release wasm package: both its builds (web/pkg/steering_bg.wasm and
-// the SIMD one, steering_simd_bg.wasm), or each `--pkg DIR` given (e.g. a
-// baseline package built from another commit). Native and wasm rounds alternate, ROUNDS times, so a busy
+// the SIMD one, steering_simd_bg.wasm), or those of each `--pkg DIR` given
+// (e.g. web/pkg and a package built from another commit). Native and wasm rounds alternate, ROUNDS times, so a busy
 // machine slows both alike; the figure per side is its fastest round, in
 // wall time and in process CPU time (not counting time preempted). The
 // states' hash after the run must be equal on both sides (same work, same
@@ -27,12 +27,10 @@ for (let k = 0; k < args.length; k++) {
   else if (args[k] === "--native") native = resolve(args[++k]);
   else pos.push(args[k]);
 }
-const builds = pkgs.map((dir) => ({ dir, wasm: resolve(dir, "steering_bg.wasm") }));
-if (!builds.length) {
-  const dir = resolve(here, "../pkg");
-  builds.push({ dir, wasm: resolve(dir, "steering_bg.wasm") });
-  if (existsSync(resolve(dir, "steering_simd_bg.wasm"))) builds.push({ dir, wasm: resolve(dir, "steering_simd_bg.wasm") });
-}
+if (!pkgs.length) pkgs.push(resolve(here, "../pkg"));
+const builds = pkgs.flatMap((dir) =>
+  ["steering_bg.wasm", "steering_simd_bg.wasm"].filter((f) => existsSync(resolve(dir, f))).map((f) => ({ dir, wasm: resolve(dir, f) })),
+);
 const N = Number(pos[0] ?? 10000);
 const STEPS = 20;
 const ROUNDS = 5;
