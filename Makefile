@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle
+	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf
 
 setup: setup-rust setup-browser setup-web
 
@@ -40,17 +40,33 @@ test-native:
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).
+#
+# Issue 17: a second build with WebAssembly SIMD (`+simd128`, its own target
+# directory so the two builds do not invalidate each other) ships beside it
+# as web/pkg/steering_simd_bg.wasm; web/src/wasm.ts loads it where
+# WebAssembly.validate accepts a SIMD instruction, else the baseline. The
+# two builds' JavaScript glue must be byte-identical (checked here).
+SIMD_FLAGS := -C target-feature=+simd128
 wasm: setup-rust
 	wasm-pack build --target web --release --out-dir web/pkg --no-pack
+	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
+	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack
+	cmp web/pkg/steering.js target/wasm-simd/pkg/steering.js
+	cp target/wasm-simd/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm
 	@ls -l web/pkg/steering_bg.wasm | awk '{print "wasm size: " $$5 " bytes"}'
 	@gzip -9 -c web/pkg/steering_bg.wasm | wc -c | awk '{print "wasm gzipped: " $$1 " bytes"}'
+	@ls -l web/pkg/steering_simd_bg.wasm | awk '{print "wasm (simd128) size: " $$5 " bytes"}'
 
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 
 # The bindings in headless Chromium (webdriver.json carries the flags).
+# Then the golden-hash suites again in the SIMD build (issue 17): the shipped
+# simd128 module must give the same bits.
 test-wasm: setup-rust setup-browser
 	wasm-pack test --headless --chrome --release
+	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
+	  wasm-pack test --headless --chrome --release --test funnel_determinism --test wander_determinism --test web_gallery --test web_tables
 
 # Loads the *release* package in Node with initSync: catches broken post-processing.
 test-smoke: setup-web wasm
@@ -84,11 +100,26 @@ test-e2e-learn: setup-browser web-build
 test-e2e-vehicle: setup-browser web-build
 	node web/test/e2e-vehicle.mjs
 
-# Frame time with 1,000 and 10,000 funnelling agents in headless Chromium.
-bench-web: setup-browser web-build
+# Issue 17's browser checks: the SIMD core where the engine has SIMD, the
+# baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
+# ?draw=gl: headless WebGL is software, where the pages keep 2D sprites).
+test-e2e-perf: setup-browser web-build
+	node web/test/e2e-perf.mjs
+
+# Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
+# then wasm / native per funnelling agent update (issue 17).
+bench-web: setup-browser web-build bench-wasm-native
 	node web/test/perf.mjs
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle
+# Issue 17: the same funnelling world natively (examples/world_bench.rs) and
+# in Node on the release wasm package, alternating rounds, one run; prints
+# the ratio and checks both sides end in the same states.
+bench-wasm-native: setup-web wasm
+	cargo build --release --example world_bench
+	node web/test/wasmnative.mjs 10000
+	node web/test/wasmnative.mjs 100000
+
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf
 	@echo "make test: all suites passed"
 
 demo: setup web-build

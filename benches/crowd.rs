@@ -11,7 +11,11 @@
 //! * `crowd_step_cpu` — the same step timed with this thread's CPU clock
 //!   (Linux `CLOCK_THREAD_CPUTIME_ID`), so time spent preempted on a busy
 //!   shared machine is not counted; falls back to wall time elsewhere;
-//! * `crowd_step_cpu_no_metrics` — CPU time with metrics off.
+//! * `crowd_step_cpu_no_metrics` — CPU time with metrics off;
+//! * `crowd_overlaps_no_sep` — issue 17's anomaly: the overlap metric on
+//!   30,000 boids of Test IV's pathway run without separation (twice as
+//!   dense), counted from both sides of each pair (`both_sides`, the old
+//!   way) and from one side (`one_sided`, the step's), same positions.
 //!
 //! Run with `cargo bench --bench crowd -- --warm-up-time 1 --measurement-time 2`.
 
@@ -21,6 +25,7 @@ use std::time::{Duration, Instant};
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{CrowdConfig, PaperTest};
+use steering::crowd::separation::{count_overlaps, count_overlaps_both_sides, NeighbourGrid};
 use steering::crowd::Crowd;
 
 #[cfg(target_os = "linux")]
@@ -106,6 +111,22 @@ fn bench(c: &mut Criterion) {
         }
         g.finish();
     }
+    let mut cfg = CrowdConfig::paper(PaperTest::IV, Seek::Parker { fraction: 0.1 });
+    cfg.boids = 30_000;
+    cfg.separation = false;
+    let mut w = Crowd::new(&cfg).expect("valid preset");
+    w.run(20);
+    let pos = w.positions().to_vec();
+    let mut grid = NeighbourGrid::new();
+    let mut g = c.benchmark_group("crowd_overlaps_no_sep");
+    g.throughput(Throughput::Elements(cfg.boids as u64));
+    g.bench_function("both_sides", |b| {
+        b.iter(|| black_box(count_overlaps_both_sides(&mut grid, &pos, cfg.boid_radius)));
+    });
+    g.bench_function("one_sided", |b| {
+        b.iter(|| black_box(count_overlaps(&mut grid, &pos, cfg.boid_radius)));
+    });
+    g.finish();
 }
 
 criterion_group!(benches, bench);

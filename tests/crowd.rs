@@ -9,7 +9,9 @@ use steering::crowd::config::{seek_tag, CrowdConfig, PaperTest};
 use steering::crowd::error::CrowdError;
 use steering::crowd::path::Path;
 use steering::crowd::path_follow::PathFollow;
-use steering::crowd::separation::{separate, NeighbourGrid};
+use steering::crowd::separation::{
+    count_overlaps, count_overlaps_both_sides, separate, NeighbourGrid,
+};
 use steering::crowd::Crowd;
 use steering::range::RangeError;
 use steering::rng::Rng;
@@ -312,6 +314,100 @@ fn grid_separation_equals_the_papers_all_pairs_loop() {
             "n={n}: the sample must exercise overlaps: {pairs}"
         );
     }
+}
+
+fn brute_overlaps(pos: &[f32], radius: f32) -> u64 {
+    let n = pos.len() / 2;
+    let mut pairs = 0;
+    for i in 0..n {
+        for j in i + 1..n {
+            let d = Vec2::new(pos[2 * i] - pos[2 * j], pos[2 * i + 1] - pos[2 * j + 1]);
+            pairs += u64::from(d.length_squared() < 4.0 * radius * radius);
+        }
+    }
+    pairs
+}
+
+#[test]
+fn one_sided_overlap_count_equals_all_pairs_and_examines_half() {
+    let radius = 8.0;
+    // Dense, sparse, tiny (64 buckets: many cells share one), negative
+    // coordinates, stacked boids, and a line of boids across cell borders.
+    let mut cases: Vec<Vec<f32>> = [
+        (600usize, 300.0f32, 4u64),
+        (50, 40.0, 5),
+        (5, 10.0, 6),
+        (3_000, 1_500.0, 7),
+    ]
+    .iter()
+    .map(|&(n, side, seed)| random_positions(n, side, seed))
+    .collect();
+    cases.push(
+        random_positions(400, 200.0, 8)
+            .iter()
+            .map(|v| v - 100.0)
+            .collect(),
+    );
+    cases.push([3.0f32, 4.0].repeat(20));
+    cases.push(
+        (0..300)
+            .flat_map(|i| [i as f32 * 5.3 - 700.0, 16.0])
+            .collect(),
+    );
+    cases.push(random_positions(2_000, 5_000_000.0, 9));
+    for (c, pos) in cases.iter().enumerate() {
+        let mut grid = NeighbourGrid::new();
+        let brute = brute_overlaps(pos, radius);
+        assert_eq!(count_overlaps(&mut grid, pos, radius), brute, "case {c}");
+        let one_sided = grid.checks();
+        grid.reset_checks();
+        assert_eq!(
+            count_overlaps_both_sides(&mut grid, pos, radius),
+            brute,
+            "case {c}"
+        );
+        let both = grid.checks();
+        assert!(
+            one_sided as f64 <= 0.6 * both as f64 + pos.len() as f64,
+            "case {c}: {one_sided} candidates one-sided, {both} both sides"
+        );
+    }
+}
+
+/// Issue 17's crowd anomaly, in candidate pairs rather than time: on Test
+/// IV's pathway with 30,000 boids, switching separation off packs the boids
+/// about twice as densely (nothing spreads them), so the overlap metric's
+/// neighbour search meets about twice the candidates per boid that the
+/// separation pass meets; examined from one side, it meets fewer.
+#[test]
+fn without_separation_the_crowd_is_denser_and_the_overlap_count_examines_each_pair_once() {
+    let n = 30_000;
+    let mut per_boid = Vec::new();
+    let mut both_sides = Vec::new();
+    for sep in [true, false] {
+        let mut cfg = CrowdConfig::paper(PaperTest::IV, Seek::Parker { fraction: 0.1 });
+        cfg.boids = n;
+        cfg.separation = sep;
+        let mut crowd = Crowd::new(&cfg).unwrap();
+        crowd.run(20);
+        let before = crowd.positions().to_vec();
+        crowd.reset_neighbour_checks();
+        crowd.step(); // overlaps are counted on the positions at the start
+        per_boid.push(crowd.neighbour_checks() as f64 / n as f64);
+        let mut grid = NeighbourGrid::new();
+        let pairs = count_overlaps_both_sides(&mut grid, &before, cfg.boid_radius);
+        assert_eq!(pairs, crowd.last_overlaps(), "separation {sep}");
+        both_sides.push(grid.checks() as f64 / n as f64);
+    }
+    // Nine-cell candidates per boid: separation on vs off (measured 306 / 593).
+    assert!(both_sides[1] > 1.6 * both_sides[0], "{both_sides:?}");
+    // The step with separation off examines each pair once (measured 296
+    // per boid), below the separation pass (306) and half its both-sided search.
+    assert!(per_boid[1] < per_boid[0], "{per_boid:?} {both_sides:?}");
+    assert!(
+        per_boid[1] < 0.55 * both_sides[1],
+        "{per_boid:?} {both_sides:?}"
+    );
 }
 
 #[test]

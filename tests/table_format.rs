@@ -281,8 +281,22 @@ fn every_truncation_of_the_real_file_is_an_error_not_a_panic() {
     }
 }
 
+#[test]
+fn crc32_is_the_textbook_crc() {
+    // Issue 17: crc32fast replaced the byte-at-a-time loop; same checksum.
+    use steering::table::codec::crc32_bytewise;
+    assert_eq!(crc32(b"123456789"), 0xCBF4_3926, "the CRC-32 check value");
+    let t = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap();
+    assert_eq!(crc32(&t), crc32_bytewise(&t));
+}
+
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(2000))]
+
+    #[test]
+    fn crc32_equals_the_bytewise_reference(bytes in proptest::collection::vec(any::<u8>(), 0..300)) {
+        prop_assert_eq!(crc32(&bytes), steering::table::codec::crc32_bytewise(&bytes));
+    }
 
     #[test]
     fn arbitrary_bytes_never_panic(bytes in proptest::collection::vec(any::<u8>(), 0..512)) {

@@ -1,6 +1,8 @@
 // Files the pages hand to the browser's download: any blob, and the canvas
 // as PNG.
 
+import { withGlLayer } from "./glsprites";
+
 export function download(name: string, blob: Blob): void {
   const url = URL.createObjectURL(blob);
   const a = document.createElement("a");
@@ -13,7 +15,8 @@ export function download(name: string, blob: Blob): void {
 }
 
 export function downloadPng(canvas: HTMLCanvasElement): void {
-  canvas.toBlob((b) => {
+  // With the WebGL agent layer over it (issue 17), the picture is both layers.
+  withGlLayer(canvas).toBlob((b) => {
     if (b) download("steering-lab.png", b);
   }, "image/png");
 }

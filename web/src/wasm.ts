@@ -47,21 +47,45 @@ export const FIELD_STRIDE = 4;
 
 let ready: Promise<string> | null = null;
 
+/** The smallest module using a SIMD instruction (`i32x4.splat` in a
+ *  function returning v128): WebAssembly.validate accepts it exactly where
+ *  the engine runs WebAssembly SIMD. */
+const SIMD_PROBE = new Uint8Array([
+  0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11,
+]);
+
+/** Which build of the core runs: "simd128" (issue 17: the core compiled
+ *  with WebAssembly SIMD, same bits) where the engine has SIMD, else
+ *  "baseline". Set by loadCore. */
+export let coreBuild: "simd128" | "baseline" | null = null;
+
 /** Instantiates the wasm module once (every page calls this first); resolves to the core's version. */
 export function loadCore(): Promise<string> {
-  ready ??= init().then(() => version());
+  ready ??= (() => {
+    const simd = typeof WebAssembly.validate === "function" && WebAssembly.validate(SIMD_PROBE);
+    coreBuild = simd ? "simd128" : "baseline";
+    // Both builds share the glue (pkg/steering.js; `make wasm` checks it is
+    // byte-identical); the baseline module is init()'s default.
+    const module_or_path = simd ? new URL("../pkg/steering_simd_bg.wasm", import.meta.url) : undefined;
+    return init(module_or_path ? { module_or_path } : undefined).then(() => version());
+  })();
   return ready;
 }
 
 /** Fetches the committed η table and hands its bytes to the core.
  *  Throws an Error whose message is fit to show on the page. */
 export async function createLab(tableUrl: string): Promise<Lab> {
+  // The fetch runs while the core instantiates (issue 17: first frame).
+  const fetching = (async (): Promise<Uint8Array> => {
+    const res = await fetch(tableUrl);
+    if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
+    return new Uint8Array(await res.arrayBuffer());
+  })();
+  fetching.catch(() => undefined);
   await loadCore();
   let bytes: Uint8Array;
   try {
-    const res = await fetch(tableUrl);
-    if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
-    bytes = new Uint8Array(await res.arrayBuffer());
+    bytes = await fetching;
   } catch (e) {
     throw new Error(`could not fetch the η table ${tableUrl}: ${errorText(e)}`);
   }

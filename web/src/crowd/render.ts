@@ -4,6 +4,7 @@
 // both cases one path and one fill for all boids (10,000 boids draw in ~1 ms).
 
 import { beginFrame, type Surface } from "../canvas";
+import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
 import { abgr, PixelSprites, triangle } from "../sprites";
 import type { View } from "../view";
 
@@ -23,6 +24,7 @@ export const COLOURS = {
 export const TRIANGLE_LIMIT = 400;
 
 const sprites = new PixelSprites();
+const glSprites = new GlSprites();
 
 /** Each boid a (2k+1)² block of backing-store pixels plus a two-pixel nose along its velocity. */
 function drawSprites(s: Surface, view: View, pos: Float32Array, vel: Float32Array): void {
@@ -101,7 +103,12 @@ export function drawCrowd(s: Surface, view: View, sc: CrowdScene): void {
   const pos = sc.positions;
   const vel = sc.velocities;
   const n = pos.length >> 1;
-  if (n <= TRIANGLE_LIMIT) {
+  if (n > GL_THRESHOLD && !FORCE_2D && glSprites.draw(s, view, pos, vel, n, { stride: 2, x: 0, y: 1, theta: null, colour: null }, [COLOURS.boid], 3)) {
+    // Issue 17: one WebGL2 instanced draw, headings from the velocities.
+    markPath(s.canvas, "webgl2");
+  } else if (n <= TRIANGLE_LIMIT) {
+    glSprites.hide();
+    markPath(s.canvas, "triangles");
     ctx.beginPath();
     const r = Math.max(2.5, sc.boidRadius * view.scale);
     for (let i = 0; i < n; i++) {
@@ -115,6 +122,8 @@ export function drawCrowd(s: Surface, view: View, sc: CrowdScene): void {
     ctx.fillStyle = COLOURS.boid;
     ctx.fill();
   } else {
+    glSprites.hide();
+    markPath(s.canvas, "sprites");
     drawSprites(s, view, pos, vel);
   }
 

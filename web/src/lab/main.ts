@@ -22,13 +22,18 @@ const TABLE_URL = "tables/eta.bin";
 const hook = installHook();
 
 async function start(): Promise<void> {
+  // Issue 17: the table's fetch starts with the core's instantiation, not after it.
+  const labLoading = createLab(TABLE_URL);
+  labLoading.catch(() => undefined);
   const version = await loadCore();
+  performance.mark("lab:core");
   hook.version = version;
   showVersion(version);
 
   let lab: Lab;
   try {
-    lab = await createLab(TABLE_URL);
+    lab = await labLoading;
+    performance.mark("lab:table");
   } catch (e) {
     const msg = `The lab cannot start: ${errorText(e)}`;
     hook.error = msg;

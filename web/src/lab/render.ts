@@ -3,6 +3,7 @@
 // the η field, the relaxed arc 𝒜 and α_r). No state, no simulation.
 
 import type { Surface } from "../canvas";
+import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
 import { abgr, PixelSprites, triangle } from "../sprites";
 import type { View } from "../view";
 import { FIELD_STRIDE, Mode, StateField } from "../wasm";
@@ -269,8 +270,20 @@ function modeColour(mode: number): string {
 export const CROWD_THRESHOLD = 400;
 
 const sprites = new PixelSprites();
+const glSprites = new GlSprites();
 
 function drawCrowd(s: Surface, v: View, sc: Scene): void {
+  // Issue 17: above GL_THRESHOLD one WebGL2 instanced draw straight from the state records.
+  if (sc.count > GL_THRESHOLD && !FORCE_2D) {
+    const { X, Y, Theta, Mode: M } = StateField;
+    const palette = [COLOURS.end, COLOURS.orientation, COLOURS.vehicle, COLOURS.vehicle];
+    if (glSprites.draw(s, v, sc.state, null, sc.count, { stride: sc.stride, x: X, y: Y, theta: Theta, colour: M }, palette, 3.5)) {
+      markPath(s.canvas, "webgl2");
+      return;
+    }
+  }
+  glSprites.hide();
+  markPath(s.canvas, "sprites");
   if (!sprites.begin(s)) return;
   const W = s.canvas.width;
   const H = s.canvas.height;
@@ -294,6 +307,8 @@ function drawCrowd(s: Surface, v: View, sc: Scene): void {
 }
 
 function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
+  glSprites.hide();
+  markPath(ctx.canvas, "triangles");
   const size = Math.max(5, Math.min(14, 0.45 * v.scale));
   const { X, Y, Theta } = StateField;
   // One path per mode colour: cheap enough for 10⁴ agents.

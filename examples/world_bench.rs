@@ -1,0 +1,85 @@
+//! The funnelling world's cost per agent update, natively, on exactly the
+//! workload `web/test/wasmnative.mjs` runs in the release wasm package
+//! (issue 17: wasm / native in one run): the lab's performance world
+//! (`spawn_random`: N agents, seed, extent √N·1.5 m, 1.3 m/s, 16 goals
+//! each), warmed up, then timed over rounds of `steps` steps.
+//!
+//! `cargo run --release --example world_bench -- N STEPS ROUNDS` prints one
+//! line per round, `ns_per_update <wall> cpu <process CPU time>` (CPU time:
+//! Linux `CLOCK_PROCESS_CPUTIME_ID`, the clock of Node's
+//! `process.cpuUsage`, so time preempted on a busy machine is not counted),
+//! then `hash <hex>`: FNV-1a of the states' bits after the last round, so
+//! the caller can check both sides did the same work.
+use std::time::Instant;
+
+use steering::funnel::FunnelConfig;
+use steering::table::EtaTable;
+use steering::world::World;
+
+/// This process's CPU time in ns (0 where the clock is missing).
+fn cpu_ns() -> u128 {
+    #[cfg(target_os = "linux")]
+    {
+        #[repr(C)]
+        struct Timespec {
+            tv_sec: i64,
+            tv_nsec: i64,
+        }
+        extern "C" {
+            fn clock_gettime(clock: i32, ts: *mut Timespec) -> i32;
+        }
+        let mut ts = Timespec {
+            tv_sec: 0,
+            tv_nsec: 0,
+        };
+        // SAFETY: `ts` is a valid, writable timespec; clock 2 is
+        // CLOCK_PROCESS_CPUTIME_ID.
+        #[allow(unsafe_code)]
+        let rc = unsafe { clock_gettime(2, &mut ts) };
+        if rc == 0 {
+            return ts.tv_sec as u128 * 1_000_000_000 + ts.tv_nsec as u128;
+        }
+    }
+    0
+}
+
+fn main() {
+    let arg = |k: usize, d: usize| {
+        std::env::args()
+            .nth(k)
+            .and_then(|s| s.parse().ok())
+            .unwrap_or(d)
+    };
+    let (n, steps, rounds) = (arg(1, 10_000), arg(2, 30), arg(3, 5));
+    let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin"))
+        .expect("tables/eta.bin");
+    let table = EtaTable::from_bytes(&bytes).expect("a valid table");
+    let mut w = World::new(table.params().vehicle, FunnelConfig::default()).expect("defaults");
+    // As the page computes it (f64, then f32 at the binding).
+    let extent = 10f64.max((n as f64).sqrt() * 1.5) as f32;
+    w.spawn_random(n, 1, extent, 1.3).expect("room");
+    for _ in 0..steps {
+        w.step(&table);
+    }
+    for _ in 0..rounds {
+        let (t0, c0) = (Instant::now(), cpu_ns());
+        for _ in 0..steps {
+            w.step(&table);
+        }
+        let per = (steps * n) as f64;
+        let ns = t0.elapsed().as_nanos() as f64 / per;
+        let cpu = (cpu_ns() - c0) as f64 / per;
+        println!("ns_per_update {ns:.2} cpu {cpu:.2}");
+    }
+    let mut out = Vec::new();
+    w.write_state(&mut out);
+    let mut h: u32 = 0x811c_9dc5;
+    for f in out.chunks_exact(steering::world::STATE_STRIDE) {
+        for v in &f[..5] {
+            for b in v.to_bits().to_le_bytes() {
+                h = (h ^ u32::from(b)).wrapping_mul(0x0100_0193);
+            }
+        }
+    }
+    println!("hash {h:08x}");
+}

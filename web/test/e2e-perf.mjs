@@ -1,0 +1,127 @@
+// Issue 17's browser checks (`make test-e2e-perf`), against web/dist in
+// Debian's headless Chromium: the SIMD build of the core loads where the
+// engine has WebAssembly SIMD and the baseline build where it has not (SIMD
+// hidden from WebAssembly.validate), and both run the lab, the crowd and the
+// learn page without console errors; above 2,000 agents the funnelling and
+// crowd pages draw their agents through WebGL2 (the canvas's data-agents
+// says which path drew; the agents' pixels are there). Headless Chromium's
+// WebGL is software (SwiftShader): there the pages keep the 2D sprites (a
+// WebGL layer would be read back every frame), so the GL checks force it
+// with `?draw=gl` and allow the one "GPU stall due to ReadPixels" warning
+// that software compositing then prints; `?draw=2d` forces the sprites. Screenshots at 1280 and 390 px in artifacts/perf-gl-*.
+// Prints "e2e-perf: N passed, M failed".
+import { serve, launch, openPage, checks, waitReady, shot, settle } from "./harness.mjs";
+import assert from "node:assert/strict";
+
+const { check, finish } = checks("e2e-perf");
+
+/** The core's wasm files the page fetched (Vite adds a hash to the name). */
+const wasmFetched = (page) =>
+  page.evaluate(() => performance.getEntriesByType("resource").map((e) => e.name.split("/").pop()).filter((n) => n.endsWith(".wasm")));
+
+/** Makes WebAssembly.validate refuse modules using SIMD (opcode prefix 0xfd), as an engine without SIMD does. */
+const NO_SIMD = () => {
+  const validate = WebAssembly.validate.bind(WebAssembly);
+  WebAssembly.validate = (bytes) => {
+    const b = new Uint8Array(bytes instanceof ArrayBuffer ? bytes : bytes.buffer);
+    return b.length < 64 && b.includes(0xfd) ? false : validate(bytes);
+  };
+};
+
+const { server, url } = await serve();
+const browser = await launch();
+try {
+  for (const simd of [true, false]) {
+    const name = simd ? "simd128" : "baseline";
+    await check(`${name} core: the lab and the crowd page load it and run`, async () => {
+      const { page, problems, context } = await openPage(browser);
+      if (!simd) await context.addInitScript(NO_SIMD);
+      await page.goto(`${url}#n=2000&ov=`);
+      assert.equal(await waitReady(page, 60000), null);
+      const files = await wasmFetched(page);
+      assert.equal(files.length, 1, files.join(", "));
+      assert.match(files[0], simd ? /^steering_simd_bg/ : /^steering_bg/);
+      const t0 = await page.evaluate(() => window.__lab.frames);
+      await page.waitForFunction((f) => window.__lab.frames > f + 5, t0);
+      await page.goto(url.replace(/\/?$/, "/crowd.html"));
+      await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 30000 });
+      assert.equal(await page.evaluate(() => window.__crowd.error), null);
+      assert.match((await wasmFetched(page))[0], simd ? /^steering_simd_bg/ : /^steering_bg/);
+      assert.deepEqual(problems, []);
+      await context.close();
+    });
+  }
+
+  /** Pixels of what the page shows over `sel`'s box (both canvas layers, as
+   *  composited: a screenshot, decoded in the page) within `tol` of [r, g, b]. */
+  const colourPixels = async (page, sel, rgb, tol = 40) => {
+    const png = await page.screenshot({ clip: await page.locator(sel).boundingBox() });
+    return page.evaluate(async ({ b64, rgb, tol }) => {
+      const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
+      const img = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
+      const c = document.createElement("canvas");
+      c.width = img.width;
+      c.height = img.height;
+      const ctx = c.getContext("2d", { willReadFrequently: true });
+      ctx.drawImage(img, 0, 0);
+      const d = ctx.getImageData(0, 0, c.width, c.height).data;
+      let n = 0;
+      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - rgb[0]) + Math.abs(d[i + 1] - rgb[1]) + Math.abs(d[i + 2] - rgb[2]) < tol) n++;
+      return n;
+    }, { b64: png.toString("base64"), rgb, tol });
+  };
+
+  /** Problems other than software compositing's ReadPixels notice (forced GL only). */
+  const real = (problems) => problems.filter((p) => !/GL Driver Message \(OpenGL, Performance, .*\): GPU stall due to ReadPixels/.test(p));
+
+  await check("software WebGL (headless): 20,000 agents drawn as 2D sprites, no GL warnings", async () => {
+    const { page, problems, context } = await openPage(browser);
+    await page.goto(`${url}#n=20000&ov=`);
+    assert.equal(await waitReady(page, 60000), null);
+    await settle(page);
+    assert.equal(await page.$eval("#lab", (c) => c.dataset.agents), "sprites");
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  for (const [w, h] of [[1280, 800], [390, 800]]) {
+    await check(`funnelling page, 20,000 agents at ${w} px: drawn through WebGL2, agents on the canvas; ?draw=2d draws sprites`, async () => {
+      const { page, problems, context } = await openPage(browser, { width: w, height: h }, w < 500 ? 2 : 1);
+      await page.goto(`${url.replace(/\/?$/, "/")}?draw=gl#n=20000&ov=`);
+      assert.equal(await waitReady(page, 60000), null);
+      await settle(page);
+      assert.equal(await page.$eval("#lab", (c) => c.dataset.agents), "webgl2");
+      // The agents' dark grey (#2b2b2b) and the mode colours: thousands of pixels.
+      const dark = await colourPixels(page, "#lab", [0x2b, 0x2b, 0x2b]);
+      assert.ok(dark > 2000, `only ${dark} agent-coloured pixels`);
+      await shot(page, `perf-gl-lab-${w}`);
+      await page.goto(`${url.replace(/\/?$/, "/")}?draw=2d#n=20000&ov=`);
+      assert.equal(await waitReady(page, 60000), null);
+      await settle(page);
+      assert.equal(await page.$eval("#lab", (c) => c.dataset.agents), "sprites");
+      assert.deepEqual(real(problems), []);
+      await context.close();
+    });
+  }
+  await check("crowd page, 20,000 boids: drawn through WebGL2, boids on the canvas; 300 boids as triangles", async () => {
+    const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
+    await page.goto(url.replace(/\/?$/, "/crowd.html?draw=gl"));
+    await page.waitForFunction(() => window.__crowd && window.__crowd.frames > 2, null, { timeout: 30000 });
+    assert.equal(await page.$eval("#crowd", (c) => c.dataset.agents), "triangles");
+    await page.fill("#boids", "20000");
+    await page.press("#boids", "Enter");
+    await page.click("#boids-confirm"); // above 15,000 the page asks first
+    await page.waitForFunction(() => window.__crowd.count() === 20000, null, { timeout: 20000 });
+    await settle(page);
+    assert.equal(await page.$eval("#crowd", (c) => c.dataset.agents), "webgl2");
+    const boid = await colourPixels(page, "#crowd", [0x2b, 0x4a, 0x7a]);
+    assert.ok(boid > 2000, `only ${boid} boid-coloured pixels`);
+    await shot(page, "perf-gl-crowd-1280");
+    assert.deepEqual(real(problems), []);
+    await context.close();
+  });
+} finally {
+  await browser.close();
+  await server.close();
+}
+finish();
