@@ -56,6 +56,16 @@ pub struct Avoider {
     vel: Vec<Vec2>,
     /// This step's commands, one per agent.
     pub commands: Vec<Command>,
+    /// Per agent, its rank for right of way (smaller goes first: the
+    /// distance left to its current goal; ∞ once finished), filled by the
+    /// world before [`Avoider::compute`]; empty: nobody has priority.
+    pub priority: Vec<f32>,
+    /// Per agent, the position of its current goal, filled with
+    /// [`Avoider::priority`]: when a wall blocks the funnel's way, the
+    /// velocity sought points at it (the funnel's heading γ depends on the
+    /// agent's own heading, and turning on the spot against a wall the two
+    /// chased each other for ever); empty: the funnel's heading.
+    pub goals: Vec<Vec2>,
 }
 
 /// Scratch buffers carry no state worth comparing: two worlds are equal
@@ -144,8 +154,12 @@ impl Avoider {
                             ));
                         }
                     }
+                    let u_pref = trig::unit(h_pref);
+                    let mut oncoming = false;
                     for &(_, j) in &near[..k] {
                         let j = j as usize;
+                        let opposed = states[j].forward().dot(u_pref) < ONCOMING_COS;
+                        oncoming |= opposed && (states[j].pos - s.pos).dot(u_pref) > 0.0;
                         let tie = if i < j { Vec2::Y } else { -Vec2::Y };
                         // Reciprocity assumes the neighbour takes half the
                         // avoidance; a forward-only neighbour at rest cannot
@@ -155,19 +169,60 @@ impl Avoider {
                         } else {
                             0.5
                         };
+                        // Right of way: the agent clearly nearer its goal
+                        // keeps only the bodies' distance (plus a sliver)
+                        // from the other, which keeps the whole margin;
+                        // the pair still never overlaps, and where the
+                        // margins left no room (a doorway, a jam) the one
+                        // ahead gets through instead of both waiting.
+                        let ahead = match (self.priority.get(i), self.priority.get(j)) {
+                            // Within the gap (two agents level at a doorway,
+                            // both waiting for the other) the lower index
+                            // goes first.
+                            (Some(&a), Some(&b)) => {
+                                a + PRIORITY_GAP < b || (i < j && a <= b + PRIORITY_GAP)
+                            }
+                            _ => false,
+                        };
+                        let reach_ij = if ahead {
+                            2.0 * cfg.radius + PRIORITY_MARGIN.min(2.0 * cfg.margin)
+                        } else {
+                            2.0 * r
+                        };
                         lines.push_agent(orca::agent_line(
                             s.pos,
                             self.vel[i],
                             states[j].pos,
                             self.vel[j],
-                            2.0 * r,
+                            reach_ij,
                             cfg.horizon,
                             p.dt,
                             share,
                             tie,
                         ));
                     }
-                    if s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
+                    // An unfinished agent whose funnel turns it in place
+                    // (v_dt ≈ 0) towards a blocked way is blocked too: the
+                    // funnel's heading is tested at a walking speed, or
+                    // the funnel and the avoidance take turns for ever at
+                    // a wall's corner.
+                    let unfinished = self.priority.get(i).is_some_and(|q| q.is_finite());
+                    let v_test = if unfinished && s_pref < DODGE_SPEED {
+                        u_pref * DODGE_SPEED
+                    } else {
+                        v_pref
+                    };
+                    let v_pref = match self.goals.get(i) {
+                        Some(&g)
+                            if unfinished
+                                && !lines.obstacles_admit(v_test, 0.0)
+                                && (g - s.pos).length_squared() > 1e-6 =>
+                        {
+                            (g - s.pos).normalize() * s_pref.max(DODGE_SPEED)
+                        }
+                        _ => v_pref,
+                    };
+                    if s_pref <= p.v_max && lines.admits(v_test, 0.0) {
                         Command {
                             heading: h_pref,
                             speed: s_pref,
@@ -176,7 +231,11 @@ impl Avoider {
                     } else {
                         // Keep right, the more the slower the agent goes
                         // than its funnel asks: none at full speed.
-                        let slow = (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0);
+                        let slow = if oncoming {
+                            (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0)
+                        } else {
+                            0.0
+                        };
                         let keep_right = trig::unit(-cfg.bias_deg.to_radians() * slow);
                         let v_seek = v_pref.rotate(keep_right);
                         // Never faster than the funnel asks (at least
@@ -231,6 +290,20 @@ impl Avoider {
 /// Speed up to which an agent whose funnel asks for less (at rest on its
 /// goal) may move to let others pass, m/s.
 pub const DODGE_SPEED: f32 = 0.5;
+
+/// A neighbour ahead whose heading makes a cosine below this with the
+/// funnel's heading is oncoming: only oncoming neighbours call for keeping
+/// right (a neighbour going the same way is followed, not overtaken on a
+/// side).
+pub const ONCOMING_COS: f32 = -0.3;
+
+/// How much nearer its goal an agent must be than a neighbour, m, to have
+/// the right of way over it.
+pub const PRIORITY_GAP: f32 = 0.25;
+
+/// The clearance, m, beyond the two bodies that an agent with the right of
+/// way keeps from the neighbour yielding to it.
+pub const PRIORITY_MARGIN: f32 = 0.1;
 
 /// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
 pub const STUCK_SPEED: f32 = 0.1;

@@ -115,6 +115,14 @@ impl Lines {
         &self.lines[..self.len]
     }
 
+    /// True when `v` satisfies every obstacle line (within `slack`).
+    #[must_use]
+    pub fn obstacles_admit(&self, v: Vec2, slack: f32) -> bool {
+        self.lines[..self.obstacles]
+            .iter()
+            .all(|l| l.admits(v, slack))
+    }
+
     /// True when `v` satisfies every line (within `slack`).
     #[must_use]
     pub fn admits(&self, v: Vec2, slack: f32) -> bool {
