@@ -202,27 +202,22 @@ impl Avoider {
                         ));
                     }
                     // An unfinished agent whose funnel turns it in place
-                    // (v_dt ≈ 0) towards a blocked way is blocked too: the
-                    // funnel's heading is tested at a walking speed, or
-                    // the funnel and the avoidance take turns for ever at
-                    // a wall's corner.
+                    // (v_dt ≈ 0) towards a wall is blocked too: the
+                    // funnel's heading is tested against the walls at a
+                    // walking speed, or the funnel and the avoidance take
+                    // turns for ever at a wall's corner. Blocked by a wall,
+                    // it seeks its goal's direction (the funnel's γ turns
+                    // with the agent's own heading).
                     let unfinished = self.priority.get(i).is_some_and(|q| q.is_finite());
-                    let v_test = if unfinished && s_pref < DODGE_SPEED {
-                        u_pref * DODGE_SPEED
-                    } else {
-                        v_pref
-                    };
+                    let walled =
+                        unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
                     let v_pref = match self.goals.get(i) {
-                        Some(&g)
-                            if unfinished
-                                && !lines.obstacles_admit(v_test, 0.0)
-                                && (g - s.pos).length_squared() > 1e-6 =>
-                        {
+                        Some(&g) if walled && (g - s.pos).length_squared() > 1e-6 => {
                             (g - s.pos).normalize() * s_pref.max(DODGE_SPEED)
                         }
                         _ => v_pref,
                     };
-                    if s_pref <= p.v_max && lines.admits(v_test, 0.0) {
+                    if !walled && s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
                         Command {
                             heading: h_pref,
                             speed: s_pref,
@@ -361,6 +356,15 @@ pub fn unicycle(
         return Command {
             heading: trig::atan2(v_orca.y, v_orca.x),
             speed: v_orca.dot(s.forward()).max(0.0).min(along),
+            active: true,
+        };
+    }
+    if v_seek.length_squared() < 1e-6 {
+        // Nothing sought (the funnel turns the agent in place, or it rests):
+        // turning on the spot is always admissible.
+        return Command {
+            heading: h_pref,
+            speed: 0.0,
             active: true,
         };
     }
