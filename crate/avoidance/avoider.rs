@@ -54,6 +54,7 @@ pub struct Avoider {
     grid: NeighbourGrid,
     pos: Vec<f32>,
     vel: Vec<Vec2>,
+    fwd: Vec<Vec2>,
     /// This step's commands, one per agent.
     pub commands: Vec<Command>,
     /// Per agent, its rank for right of way (smaller goes first: the
@@ -102,19 +103,27 @@ impl Avoider {
         let n = states.len();
         self.pos.clear();
         self.vel.clear();
+        self.fwd.clear();
         for s in states {
             self.pos.push(s.pos.x);
             self.pos.push(s.pos.y);
-            self.vel.push(s.forward() * s.v);
+            let f = s.forward();
+            self.fwd.push(f);
+            self.vel.push(f * s.v);
         }
         self.commands.resize(n, Command::default());
         self.grid.rebuild(&self.pos, cfg.reach);
         let r = cfg.radius + cfg.margin;
         let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
-        for i in 0..n {
+        // Agents in the grid's bucket order: consecutive neighbour queries
+        // hit the same, already cached buckets (each agent's answer does
+        // not depend on the order).
+        for k_order in 0..n {
+            let i = self.grid.boid_in_bucket_order(k_order);
             let (h_pref, s_pref) = preferred[i];
             let s = &states[i];
-            let v_pref = trig::unit(h_pref) * s_pref;
+            let u_pref = trig::unit(h_pref);
+            let v_pref = u_pref * s_pref;
             // The k nearest neighbours, nearest first (ties: grid order,
             // deterministic).
             let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
@@ -154,11 +163,10 @@ impl Avoider {
                             ));
                         }
                     }
-                    let u_pref = trig::unit(h_pref);
                     let mut oncoming = false;
                     for &(_, j) in &near[..k] {
                         let j = j as usize;
-                        let opposed = states[j].forward().dot(u_pref) < ONCOMING_COS;
+                        let opposed = self.fwd[j].dot(u_pref) < ONCOMING_COS;
                         oncoming |= opposed && (states[j].pos - s.pos).dot(u_pref) > 0.0;
                         let tie = if i < j { Vec2::Y } else { -Vec2::Y };
                         // Reciprocity assumes the neighbour takes half the
@@ -231,8 +239,11 @@ impl Avoider {
                         } else {
                             0.0
                         };
-                        let keep_right = trig::unit(-cfg.bias_deg.to_radians() * slow);
-                        let v_seek = v_pref.rotate(keep_right);
+                        let v_seek = if slow > 0.0 {
+                            v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow))
+                        } else {
+                            v_pref
+                        };
                         // Never faster than the funnel asks (at least
                         // DODGE_SPEED, so an agent at rest can step aside):
                         // a vehicle that must brake within its
@@ -240,7 +251,7 @@ impl Avoider {
                         // speeding up to pass in front.
                         let cap = s_pref.max(DODGE_SPEED).min(p.v_max);
                         let v = orca::solve(&lines, cap, v_seek);
-                        unicycle(s, h_pref, v_pref, v, &lines, cap)
+                        unicycle(s, self.fwd[i], h_pref, v_pref, v, &lines, cap)
                     }
                 }
                 AvoidanceMethod::Separation => {
@@ -273,7 +284,7 @@ impl Avoider {
                         }
                     } else {
                         let v = (v_pref + push * cfg.separation_weight).clamp_length_max(p.v_max);
-                        unicycle(s, h_pref, v, v, &Lines::default(), p.v_max)
+                        unicycle(s, self.fwd[i], h_pref, v, v, &Lines::default(), p.v_max)
                     }
                 }
             };
@@ -343,19 +354,20 @@ fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
 #[must_use]
 pub fn unicycle(
     s: &VehicleState,
+    forward: Vec2,
     h_pref: f32,
     v_seek: Vec2,
     v_orca: Vec2,
     lines: &Lines,
     v_max: f32,
 ) -> Command {
-    let along = ray_cap(lines, s.forward(), v_max);
+    let along = ray_cap(lines, forward, v_max);
     if v_orca.length() >= STUCK_SPEED {
         // ORCA found a way: turn to it, move along the present heading at
         // its projection, as far as that ray is admissible.
         return Command {
             heading: trig::atan2(v_orca.y, v_orca.x),
-            speed: v_orca.dot(s.forward()).max(0.0).min(along),
+            speed: v_orca.dot(forward).max(0.0).min(along),
             active: true,
         };
     }
@@ -369,9 +381,9 @@ pub fn unicycle(
         };
     }
     let step = 15f32.to_radians();
+    let turn_step = trig::unit(step);
     let mut best = (f32::INFINITY, 0.0f32, s.theta, 0.0f32); // cost, |turn|, heading, speed
-    let mut consider = |h: f32, turn: f32| {
-        let u = trig::unit(h);
+    let mut consider = |h: f32, u: Vec2, turn: f32| {
         let cap = ray_cap(lines, u, v_max);
         let sp = v_seek.dot(u).clamp(0.0, cap);
         let cost = (u * sp - v_seek).length_squared();
@@ -381,13 +393,18 @@ pub fn unicycle(
     };
     if v_orca.length_squared() > 1e-6 {
         let h = trig::atan2(v_orca.y, v_orca.x);
-        consider(h, crate::angle::diff(h, s.theta).abs());
+        consider(h, v_orca.normalize(), crate::angle::diff(h, s.theta).abs());
     }
-    consider(s.theta, 0.0);
+    consider(s.theta, forward, 0.0);
+    // The samples by successive rotations of the present heading (no
+    // sine or cosine per sample).
+    let (mut left, mut right) = (forward, forward);
     for k in 1..=HEADING_SAMPLES {
         let d = step * k as f32;
-        consider(crate::angle::wrap(s.theta + d), d);
-        consider(crate::angle::wrap(s.theta - d), d);
+        left = turn_step.rotate(left);
+        right = Vec2::new(turn_step.x, -turn_step.y).rotate(right);
+        consider(crate::angle::wrap(s.theta + d), left, d);
+        consider(crate::angle::wrap(s.theta - d), right, d);
     }
     let (_, turn, heading, sp) = best;
     if !best.0.is_finite() {
