@@ -22,6 +22,22 @@
 //! ([`crate::vehicle::VehicleParams::integrate`]), which clamps them into
 //! the admissible set: no limit is ever broken, whatever the avoidance asks.
 //!
+//! **Who gives way** (the corridor and the doorway jammed for good
+//! without it: two forward-only agents face to face, or level at a door,
+//! each waiting for the other). *Right of way by progress*: of a pair, the
+//! agent clearly nearer its current goal ([`PRIORITY_GAP`]; within it, the
+//! lower index) keeps only the bodies' clearance plus [`PRIORITY_MARGIN`]
+//! from the other, which keeps the whole margin: the pair never overlaps,
+//! and where the margins leave no room one of them goes. *Keep right*
+//! only against an oncoming neighbour ahead (heading cosine below
+//! [`ONCOMING_COS`]): a neighbour going the same way is followed. *Walls*:
+//! when the funnel's heading runs into a wall (tested at a walking speed,
+//! so that a funnel turning on the spot is caught too), the velocity
+//! sought points at the goal, not along γ, which turns with the agent's own
+//! heading (funnel and avoidance otherwise took turns for ever at a
+//! corner). Finished agents rank last and step aside at up to
+//! [`DODGE_SPEED`].
+//!
 //! **Neighbours** come from the crowd's hashed uniform grid
 //! ([`crate::crowd::separation::NeighbourGrid`], cell = the search
 //! distance), the `max_neighbours` nearest kept in a fixed array: the cost
@@ -168,6 +184,7 @@ impl Avoider {
                         let j = j as usize;
                         let opposed = self.fwd[j].dot(u_pref) < ONCOMING_COS;
                         oncoming |= opposed && (states[j].pos - s.pos).dot(u_pref) > 0.0;
+                        let opposed = self.fwd[j].dot(self.fwd[i]) < ONCOMING_COS;
                         let tie = if i < j { Vec2::Y } else { -Vec2::Y };
                         // Reciprocity assumes the neighbour takes half the
                         // avoidance; a forward-only neighbour at rest cannot
@@ -207,6 +224,9 @@ impl Avoider {
                             p.dt,
                             share,
                             tie,
+                            opposed
+                                && (states[j].pos - s.pos).dot(self.fwd[i]) > 0.0
+                                && (s.pos - states[j].pos).dot(self.fwd[j]) > 0.0,
                         ));
                     }
                     // An unfinished agent whose funnel turns it in place
@@ -225,7 +245,10 @@ impl Avoider {
                         }
                         _ => v_pref,
                     };
-                    if !walled && s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
+                    // An oncoming neighbour ahead: keep right at once (at
+                    // least LANE_BIAS of the bias), before the pair is
+                    // blocked, so that lanes form before a jam does.
+                    if !walled && !oncoming && s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
                         Command {
                             heading: h_pref,
                             speed: s_pref,
@@ -235,7 +258,7 @@ impl Avoider {
                         // Keep right, the more the slower the agent goes
                         // than its funnel asks: none at full speed.
                         let slow = if oncoming {
-                            (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0)
+                            (1.0 - s.v / s_pref.max(0.1)).clamp(LANE_BIAS, 1.0)
                         } else {
                             0.0
                         };
@@ -309,7 +332,12 @@ pub const PRIORITY_GAP: f32 = 0.25;
 
 /// The clearance, m, beyond the two bodies that an agent with the right of
 /// way keeps from the neighbour yielding to it.
-pub const PRIORITY_MARGIN: f32 = 0.1;
+pub const PRIORITY_MARGIN: f32 = 0.15;
+
+/// The share of [`AvoidanceConfig::bias_deg`] an agent keeps right by, at
+/// least, while an oncoming neighbour is ahead (the full bias once it has
+/// slowed to a stop).
+pub const LANE_BIAS: f32 = 0.2;
 
 /// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
 pub const STUCK_SPEED: f32 = 0.1;
