@@ -22,6 +22,22 @@
 //! ([`crate::vehicle::VehicleParams::integrate`]), which clamps them into
 //! the admissible set: no limit is ever broken, whatever the avoidance asks.
 //!
+//! **Who gives way** (the corridor and the doorway jammed for good
+//! without it: two forward-only agents face to face, or level at a door,
+//! each waiting for the other). *Right of way by progress*: of a pair, the
+//! agent clearly nearer its current goal ([`PRIORITY_GAP`]; within it, the
+//! lower index) keeps only the bodies' clearance plus [`PRIORITY_MARGIN`]
+//! from the other, which keeps the whole margin: the pair never overlaps,
+//! and where the margins leave no room one of them goes. *Keep right*
+//! only against an oncoming neighbour ahead (heading cosine below
+//! [`ONCOMING_COS`]): a neighbour going the same way is followed. *Walls*:
+//! when the funnel's heading runs into a wall (tested at a walking speed,
+//! so that a funnel turning on the spot is caught too), the velocity
+//! sought points at the goal, not along γ, which turns with the agent's own
+//! heading (funnel and avoidance otherwise took turns for ever at a
+//! corner). Finished agents rank last and step aside at up to
+//! [`DODGE_SPEED`].
+//!
 //! **Neighbours** come from the crowd's hashed uniform grid
 //! ([`crate::crowd::separation::NeighbourGrid`], cell = the search
 //! distance), the `max_neighbours` nearest kept in a fixed array: the cost
@@ -54,8 +70,19 @@ pub struct Avoider {
     grid: NeighbourGrid,
     pos: Vec<f32>,
     vel: Vec<Vec2>,
+    fwd: Vec<Vec2>,
     /// This step's commands, one per agent.
     pub commands: Vec<Command>,
+    /// Per agent, its rank for right of way (smaller goes first: the
+    /// distance left to its current goal; ∞ once finished), filled by the
+    /// world before [`Avoider::compute`]; empty: nobody has priority.
+    pub priority: Vec<f32>,
+    /// Per agent, the position of its current goal, filled with
+    /// [`Avoider::priority`]: when a wall blocks the funnel's way, the
+    /// velocity sought points at it (the funnel's heading γ depends on the
+    /// agent's own heading, and turning on the spot against a wall the two
+    /// chased each other for ever); empty: the funnel's heading.
+    pub goals: Vec<Vec2>,
 }
 
 /// Scratch buffers carry no state worth comparing: two worlds are equal
@@ -92,19 +119,27 @@ impl Avoider {
         let n = states.len();
         self.pos.clear();
         self.vel.clear();
+        self.fwd.clear();
         for s in states {
             self.pos.push(s.pos.x);
             self.pos.push(s.pos.y);
-            self.vel.push(s.forward() * s.v);
+            let f = s.forward();
+            self.fwd.push(f);
+            self.vel.push(f * s.v);
         }
         self.commands.resize(n, Command::default());
         self.grid.rebuild(&self.pos, cfg.reach);
         let r = cfg.radius + cfg.margin;
         let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
-        for i in 0..n {
+        // Agents in the grid's bucket order: consecutive neighbour queries
+        // hit the same, already cached buckets (each agent's answer does
+        // not depend on the order).
+        for k_order in 0..n {
+            let i = self.grid.boid_in_bucket_order(k_order);
             let (h_pref, s_pref) = preferred[i];
             let s = &states[i];
-            let v_pref = trig::unit(h_pref) * s_pref;
+            let u_pref = trig::unit(h_pref);
+            let v_pref = u_pref * s_pref;
             // The k nearest neighbours, nearest first (ties: grid order,
             // deterministic).
             let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
@@ -144,8 +179,12 @@ impl Avoider {
                             ));
                         }
                     }
+                    let mut oncoming = false;
                     for &(_, j) in &near[..k] {
                         let j = j as usize;
+                        let opposed = self.fwd[j].dot(u_pref) < ONCOMING_COS;
+                        oncoming |= opposed && (states[j].pos - s.pos).dot(u_pref) > 0.0;
+                        let opposed = self.fwd[j].dot(self.fwd[i]) < ONCOMING_COS;
                         let tie = if i < j { Vec2::Y } else { -Vec2::Y };
                         // Reciprocity assumes the neighbour takes half the
                         // avoidance; a forward-only neighbour at rest cannot
@@ -155,19 +194,61 @@ impl Avoider {
                         } else {
                             0.5
                         };
+                        // Right of way: the agent clearly nearer its goal
+                        // keeps only the bodies' distance (plus a sliver)
+                        // from the other, which keeps the whole margin;
+                        // the pair still never overlaps, and where the
+                        // margins left no room (a doorway, a jam) the one
+                        // ahead gets through instead of both waiting.
+                        let ahead = match (self.priority.get(i), self.priority.get(j)) {
+                            // Within the gap (two agents level at a doorway,
+                            // both waiting for the other) the lower index
+                            // goes first.
+                            (Some(&a), Some(&b)) => {
+                                a + PRIORITY_GAP < b || (i < j && a <= b + PRIORITY_GAP)
+                            }
+                            _ => false,
+                        };
+                        let reach_ij = if ahead {
+                            2.0 * cfg.radius + PRIORITY_MARGIN.min(2.0 * cfg.margin)
+                        } else {
+                            2.0 * r
+                        };
                         lines.push_agent(orca::agent_line(
                             s.pos,
                             self.vel[i],
                             states[j].pos,
                             self.vel[j],
-                            2.0 * r,
+                            reach_ij,
                             cfg.horizon,
                             p.dt,
                             share,
                             tie,
+                            opposed
+                                && (states[j].pos - s.pos).dot(self.fwd[i]) > 0.0
+                                && (s.pos - states[j].pos).dot(self.fwd[j]) > 0.0,
                         ));
                     }
-                    if s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
+                    // An unfinished agent whose funnel turns it in place
+                    // (v_dt ≈ 0) towards a wall is blocked too: the
+                    // funnel's heading is tested against the walls at a
+                    // walking speed, or the funnel and the avoidance take
+                    // turns for ever at a wall's corner. Blocked by a wall,
+                    // it seeks its goal's direction (the funnel's γ turns
+                    // with the agent's own heading).
+                    let unfinished = self.priority.get(i).is_some_and(|q| q.is_finite());
+                    let walled =
+                        unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
+                    let v_pref = match self.goals.get(i) {
+                        Some(&g) if walled && (g - s.pos).length_squared() > 1e-6 => {
+                            (g - s.pos).normalize() * s_pref.max(DODGE_SPEED)
+                        }
+                        _ => v_pref,
+                    };
+                    // An oncoming neighbour ahead: keep right at once (at
+                    // least LANE_BIAS of the bias), before the pair is
+                    // blocked, so that lanes form before a jam does.
+                    if !walled && !oncoming && s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
                         Command {
                             heading: h_pref,
                             speed: s_pref,
@@ -176,9 +257,16 @@ impl Avoider {
                     } else {
                         // Keep right, the more the slower the agent goes
                         // than its funnel asks: none at full speed.
-                        let slow = (1.0 - s.v / s_pref.max(0.1)).clamp(0.0, 1.0);
-                        let keep_right = trig::unit(-cfg.bias_deg.to_radians() * slow);
-                        let v_seek = v_pref.rotate(keep_right);
+                        let slow = if oncoming {
+                            (1.0 - s.v / s_pref.max(0.1)).clamp(LANE_BIAS, 1.0)
+                        } else {
+                            0.0
+                        };
+                        let v_seek = if slow > 0.0 {
+                            v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow))
+                        } else {
+                            v_pref
+                        };
                         // Never faster than the funnel asks (at least
                         // DODGE_SPEED, so an agent at rest can step aside):
                         // a vehicle that must brake within its
@@ -186,7 +274,7 @@ impl Avoider {
                         // speeding up to pass in front.
                         let cap = s_pref.max(DODGE_SPEED).min(p.v_max);
                         let v = orca::solve(&lines, cap, v_seek);
-                        unicycle(s, h_pref, v_pref, v, &lines, cap)
+                        unicycle(s, self.fwd[i], h_pref, v_pref, v, &lines, cap)
                     }
                 }
                 AvoidanceMethod::Separation => {
@@ -219,7 +307,7 @@ impl Avoider {
                         }
                     } else {
                         let v = (v_pref + push * cfg.separation_weight).clamp_length_max(p.v_max);
-                        unicycle(s, h_pref, v, v, &Lines::default(), p.v_max)
+                        unicycle(s, self.fwd[i], h_pref, v, v, &Lines::default(), p.v_max)
                     }
                 }
             };
@@ -231,6 +319,25 @@ impl Avoider {
 /// Speed up to which an agent whose funnel asks for less (at rest on its
 /// goal) may move to let others pass, m/s.
 pub const DODGE_SPEED: f32 = 0.5;
+
+/// A neighbour ahead whose heading makes a cosine below this with the
+/// funnel's heading is oncoming: only oncoming neighbours call for keeping
+/// right (a neighbour going the same way is followed, not overtaken on a
+/// side).
+pub const ONCOMING_COS: f32 = -0.3;
+
+/// How much nearer its goal an agent must be than a neighbour, m, to have
+/// the right of way over it.
+pub const PRIORITY_GAP: f32 = 0.25;
+
+/// The clearance, m, beyond the two bodies that an agent with the right of
+/// way keeps from the neighbour yielding to it.
+pub const PRIORITY_MARGIN: f32 = 0.15;
+
+/// The share of [`AvoidanceConfig::bias_deg`] an agent keeps right by, at
+/// least, while an oncoming neighbour is ahead (the full bias once it has
+/// slowed to a stop).
+pub const LANE_BIAS: f32 = 0.2;
 
 /// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
 pub const STUCK_SPEED: f32 = 0.1;
@@ -275,26 +382,36 @@ fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
 #[must_use]
 pub fn unicycle(
     s: &VehicleState,
+    forward: Vec2,
     h_pref: f32,
     v_seek: Vec2,
     v_orca: Vec2,
     lines: &Lines,
     v_max: f32,
 ) -> Command {
-    let along = ray_cap(lines, s.forward(), v_max);
+    let along = ray_cap(lines, forward, v_max);
     if v_orca.length() >= STUCK_SPEED {
         // ORCA found a way: turn to it, move along the present heading at
         // its projection, as far as that ray is admissible.
         return Command {
             heading: trig::atan2(v_orca.y, v_orca.x),
-            speed: v_orca.dot(s.forward()).max(0.0).min(along),
+            speed: v_orca.dot(forward).max(0.0).min(along),
+            active: true,
+        };
+    }
+    if v_seek.length_squared() < 1e-6 {
+        // Nothing sought (the funnel turns the agent in place, or it rests):
+        // turning on the spot is always admissible.
+        return Command {
+            heading: h_pref,
+            speed: 0.0,
             active: true,
         };
     }
     let step = 15f32.to_radians();
+    let turn_step = trig::unit(step);
     let mut best = (f32::INFINITY, 0.0f32, s.theta, 0.0f32); // cost, |turn|, heading, speed
-    let mut consider = |h: f32, turn: f32| {
-        let u = trig::unit(h);
+    let mut consider = |h: f32, u: Vec2, turn: f32| {
         let cap = ray_cap(lines, u, v_max);
         let sp = v_seek.dot(u).clamp(0.0, cap);
         let cost = (u * sp - v_seek).length_squared();
@@ -304,13 +421,18 @@ pub fn unicycle(
     };
     if v_orca.length_squared() > 1e-6 {
         let h = trig::atan2(v_orca.y, v_orca.x);
-        consider(h, crate::angle::diff(h, s.theta).abs());
+        consider(h, v_orca.normalize(), crate::angle::diff(h, s.theta).abs());
     }
-    consider(s.theta, 0.0);
+    consider(s.theta, forward, 0.0);
+    // The samples by successive rotations of the present heading (no
+    // sine or cosine per sample).
+    let (mut left, mut right) = (forward, forward);
     for k in 1..=HEADING_SAMPLES {
         let d = step * k as f32;
-        consider(crate::angle::wrap(s.theta + d), d);
-        consider(crate::angle::wrap(s.theta - d), d);
+        left = turn_step.rotate(left);
+        right = Vec2::new(turn_step.x, -turn_step.y).rotate(right);
+        consider(crate::angle::wrap(s.theta + d), left, d);
+        consider(crate::angle::wrap(s.theta - d), right, d);
     }
     let (_, turn, heading, sp) = best;
     if !best.0.is_finite() {

@@ -171,9 +171,14 @@ pub fn circle_swap(n: usize, seed: u64) -> Scenario {
     sc
 }
 
-/// Two groups of 12 (3 × 4 on a jittered 1 m lattice) crossing in a
-/// corridor 4 m wide and 24 m long, each to the other's end, arriving
-/// facing along the corridor.
+/// Two groups of 12 (3 × 4 on a jittered 1 m lattice) crossing each
+/// other in a corridor 4 m wide and 12 m long, from an open space at one end to
+/// one at the other, arriving facing along the corridor. Each group keeps
+/// its formation translated (its front column goes deepest) on a 2 m
+/// lattice of targets: with targets 1 m apart (the first layout) the first
+/// arrivals halted in a wall across the corridor that the rest of their
+/// own group could not pass, a blockage of the layout for any controller
+/// without a path planner, not an avoidance deadlock.
 #[must_use]
 pub fn corridor(seed: u64) -> Scenario {
     let mut rng = Rng::with_stream(seed, 19);
@@ -184,15 +189,15 @@ pub fn corridor(seed: u64) -> Scenario {
     );
     sc.obstacles = vec![
         Obstacle::Segment {
-            x1: -12.0,
+            x1: -6.0,
             y1: 2.0,
-            x2: 12.0,
+            x2: 6.0,
             y2: 2.0,
         },
         Obstacle::Segment {
-            x1: -12.0,
+            x1: -6.0,
             y1: -2.0,
-            x2: 12.0,
+            x2: 6.0,
             y2: -2.0,
         },
     ];
@@ -202,8 +207,8 @@ pub fn corridor(seed: u64) -> Scenario {
                 let x = side * (7.0 + c as f32) + rng.range(-0.1, 0.1);
                 let y = -1.5 + row as f32 + rng.range(-0.1, 0.1);
                 let heading = if side < 0.0 { 0.0 } else { PI };
-                let gx = -side * (7.0 + c as f32);
-                let gy = -1.5 + row as f32;
+                let gx = -side * (8.0 + 2.0 * (2 - c) as f32);
+                let gy = -3.0 + 2.0 * row as f32;
                 sc.agents.push(agent(x, y, heading, goal(gx, gy, heading)));
             }
         }
@@ -212,8 +217,8 @@ pub fn corridor(seed: u64) -> Scenario {
 }
 
 /// Ten agents (2 × 5 on a jittered 1 m lattice) behind a wall at x = 0
-/// with a gap of two body diameters, to a line of targets beyond it,
-/// arriving facing +x.
+/// with a gap of two body diameters, to a 2 × 5 lattice of targets 2 m
+/// apart beyond it, arriving facing +x.
 #[must_use]
 pub fn doorway(seed: u64) -> Scenario {
     let mut rng = Rng::with_stream(seed, 20);
@@ -241,8 +246,10 @@ pub fn doorway(seed: u64) -> Scenario {
         for row in 0..5 {
             let x = -4.0 - c as f32 + rng.range(-0.1, 0.1);
             let y = -2.0 + row as f32 + rng.range(-0.1, 0.1);
-            let gx = 4.0 + c as f32;
-            let gy = -2.0 + row as f32;
+            // Targets on a 2 m lattice (an agent passes between two that
+            // have halted), the front column deepest.
+            let gx = 4.0 + 2.0 * (1 - c) as f32;
+            let gy = -4.0 + 2.0 * row as f32;
             // Funnelling plans no path: the doorway is a waypoint, entered
             // facing through it (switch on the position tolerance).
             let door = GoalFile {
@@ -250,7 +257,7 @@ pub fn doorway(seed: u64) -> Scenario {
                 eps_tol_deg: 20.0,
                 halting: false,
                 switch: SwitchRule::Tolerance,
-                ..goal(0.0, 0.0, 0.0)
+                ..goal(1.0, 0.0, 0.0)
             };
             let mut a = agent(x, y, 0.0, door);
             a.goals.push(goal(gx, gy, 0.0));

@@ -115,6 +115,14 @@ impl Lines {
         &self.lines[..self.len]
     }
 
+    /// True when `v` satisfies every obstacle line (within `slack`).
+    #[must_use]
+    pub fn obstacles_admit(&self, v: Vec2, slack: f32) -> bool {
+        self.lines[..self.obstacles]
+            .iter()
+            .all(|l| l.admits(v, slack))
+    }
+
     /// True when `v` satisfies every line (within `slack`).
     #[must_use]
     pub fn admits(&self, v: Vec2, slack: f32) -> bool {
@@ -145,6 +153,7 @@ pub fn agent_line(
     dt: f32,
     share: f32,
     tie: Vec2,
+    keep_right: bool,
 ) -> Line {
     let rel_pos = pn - p;
     let rel_vel = v - vn;
@@ -167,7 +176,10 @@ pub fn agent_line(
         } else {
             // Project on a leg of the cone.
             let leg = (dist_sq - r_sq).sqrt();
-            direction = if det(rel_pos, w) > 0.0 {
+            // Left leg: pass with the neighbour on one's right; a pair
+            // meeting head-on both keep right instead (the same choice seen
+            // from either side: det is symmetric under the swap).
+            direction = if det(rel_pos, w) > 0.0 && !keep_right {
                 Vec2::new(
                     rel_pos.x * leg - rel_pos.y * r,
                     rel_pos.x * r + rel_pos.y * leg,
@@ -354,9 +366,31 @@ mod tests {
         let (pa, pb) = (Vec2::ZERO, Vec2::new(4.0, 0.01));
         let (va, vb) = (Vec2::X, -Vec2::X);
         let mut la = Lines::default();
-        la.push_agent(agent_line(pa, va, pb, vb, 0.6, 5.0, 0.1, 0.5, Vec2::Y));
+        la.push_agent(agent_line(
+            pa,
+            va,
+            pb,
+            vb,
+            0.6,
+            5.0,
+            0.1,
+            0.5,
+            Vec2::Y,
+            false,
+        ));
         let mut lb = Lines::default();
-        lb.push_agent(agent_line(pb, vb, pa, va, 0.6, 5.0, 0.1, 0.5, -Vec2::Y));
+        lb.push_agent(agent_line(
+            pb,
+            vb,
+            pa,
+            va,
+            0.6,
+            5.0,
+            0.1,
+            0.5,
+            -Vec2::Y,
+            false,
+        ));
         let na = solve(&la, 2.0, va);
         let nb = solve(&lb, 2.0, vb);
         assert!(na.y.abs() > 0.01 && nb.y.abs() > 0.01, "{na} {nb}");
@@ -401,6 +435,7 @@ mod tests {
             0.1,
             0.5,
             Vec2::Y,
+            false,
         ));
         ls.push_agent(agent_line(
             p,
@@ -412,6 +447,7 @@ mod tests {
             0.1,
             0.5,
             Vec2::Y,
+            false,
         ));
         let v = solve(&ls, 2.0, Vec2::X);
         assert!(v.is_finite());

@@ -57,6 +57,19 @@ impl World {
                 self.preferred.push((a.internals.gamma, a.internals.v_dt));
             }
         }
+        // Right of way: nearer the current goal first, finished agents last.
+        self.avoider.priority.clear();
+        self.avoider.priority.extend(self.agents.iter().map(|a| {
+            if a.done() {
+                f32::INFINITY
+            } else {
+                (a.goal_now.pos - a.state.pos).length()
+            }
+        }));
+        self.avoider.goals.clear();
+        self.avoider
+            .goals
+            .extend(self.agents.iter().map(|a| a.goal_now.pos));
         // 2. The avoidance, on the states at the start of the step.
         self.avoider.compute(
             &p,
