@@ -84,6 +84,11 @@ test-e2e-learn: setup-browser web-build
 test-e2e-vehicle: setup-browser web-build
 	node web/test/e2e-vehicle.mjs
 
+# Issue 14: η table build in Chromium's Web Workers and the cached reload,
+# per reference vehicle, REPS fresh contexts each (median, max, host load).
+bench-tables: setup-browser web-build
+	node web/test/bench-tables.mjs
+
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium.
 bench-web: setup-browser web-build
 	node web/test/perf.mjs

@@ -42,6 +42,10 @@ use crate::seek::{simulate_reach, ReachLimits, ReachOutcome};
 use crate::table::{BuildParams, EtaTable, TableError, AXES, FLAG_ETA_VALID, FLAG_REACHABLE};
 use crate::vehicle::{VehicleParams, VehicleState};
 
+/// Entries per parallel task of [`TableSpec::generate`] (a few hundred
+/// tasks for the default table, so the threads balance).
+pub const GENERATE_CHUNK: usize = 1024;
+
 /// One generated entry: (η, desired-or-fallback speed, flags).
 pub type Entry = (f32, f32, u8);
 
@@ -343,9 +347,11 @@ impl TableSpec {
     /// Computes entries `range` on the calling thread; entries that
     /// [`TableSpec::is_mirrored`] are left as `None` (filled by
     /// [`TableSpec::fill_mirrors`]).
+    /// Several simulations run interleaved ([`super::batch`]); the result
+    /// equals `range.map(|i| self.unless_mirrored(i))`.
     #[must_use]
     pub fn entries(&self, range: core::ops::Range<usize>) -> Vec<Option<Entry>> {
-        range.map(|i| self.unless_mirrored(i)).collect()
+        super::batch::entries(self, range)
     }
 
     /// Entry `i`, or `None` when it [`TableSpec::is_mirrored`].
@@ -376,7 +382,12 @@ impl TableSpec {
     /// # Errors
     /// If the spec itself is invalid.
     pub fn generate(&self) -> Result<EtaTable, TableError> {
-        let partial = crate::parallel::map_indices(self.len(), |i| self.unless_mirrored(i));
+        let n = self.len();
+        let chunks = n.div_ceil(GENERATE_CHUNK);
+        let parts = crate::parallel::map_indices(chunks, |c| {
+            self.entries(c * GENERATE_CHUNK..((c + 1) * GENERATE_CHUNK).min(n))
+        });
+        let partial: Vec<Option<Entry>> = parts.into_iter().flatten().collect();
         self.assemble(self.fill_mirrors(&partial))
     }
 
