@@ -56,7 +56,8 @@ try {
         failed = true;
         console.log(`${name}: console problems: ${problems.join("; ")}`);
       }
-      console.log(`${name} run ${r + 1}: build ${t.ms.toFixed(0)} ms (${t.workers} workers), cached reload ${c.ms.toFixed(1)} ms, load ${loadavg()[0].toFixed(2)}`);
+      const ph = (x) => Object.entries(x.phases ?? {}).map(([k, v]) => `${k} ${v.toFixed(1)}`).join(", ");
+      console.log(`${name} run ${r + 1}: build ${t.ms.toFixed(0)} ms (${t.workers} workers; ${ph(t)}), cached reload ${c.ms.toFixed(1)} ms (${ph(c)}), load ${loadavg()[0].toFixed(2)}`);
       await context.close();
     }
     rows.push({ name, build, cached });

@@ -15,13 +15,16 @@ import { HANDLE_PX, SceneBuilder } from "./scene";
 import { LabSim } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
-import { cacheKeys } from "../workers/tablecache";
+import { cacheKeys, openTableCache } from "../workers/tablecache";
 
 const TABLE_URL = "tables/eta.bin";
 
 const hook = installHook();
 
 async function start(): Promise<void> {
+  // The table cache opens beside the core's loading (a reload with other
+  // limits reads its table from there as soon as the lab starts).
+  openTableCache();
   const version = await loadCore();
   hook.version = version;
   showVersion(version);
