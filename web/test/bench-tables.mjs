@@ -12,7 +12,7 @@ const REPS = Number(process.env.REPS ?? 5);
 const VEHICLES = {
   "pedestrian (vmax 1.2)": "vmax=1.2",
   car: "vmax=15&amax=3&wmax=0.8&awmax=2&anmax=4",
-  robot: "vmax=0.5&wmax=4&awmax=64&kp=192&kd=24",
+  robot: "vmax=0.5&wmax=4&awmax=16&kp=108&kd=18",
 };
 
 const waitExact = (page, timeout = 120000) =>
