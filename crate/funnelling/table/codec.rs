@@ -16,10 +16,15 @@ use super::lookup::EtaTable;
 use crate::vehicle::{Integrator, VehicleParams};
 
 /// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320).
+///
+/// Slicing-by-8 (eight 256-entry tables, eight bytes per step): the same
+/// value as the bytewise loop, several times faster; the check of a 3.3 MB
+/// table was a third of loading it, and a cached table's reload in the
+/// browser is all loading (issue 14).
 #[must_use]
 pub fn crc32(bytes: &[u8]) -> u32 {
-    const fn make() -> [u32; 256] {
-        let mut t = [0u32; 256];
+    const fn make() -> [[u32; 256]; 8] {
+        let mut t = [[0u32; 256]; 8];
         let mut i = 0;
         while i < 256 {
             let mut c = i as u32;
@@ -32,15 +37,38 @@ pub fn crc32(bytes: &[u8]) -> u32 {
                 };
                 k += 1;
             }
-            t[i] = c;
+            t[0][i] = c;
             i += 1;
+        }
+        let mut s = 1;
+        while s < 8 {
+            let mut i = 0;
+            while i < 256 {
+                let prev = t[s - 1][i];
+                t[s][i] = (prev >> 8) ^ t[0][(prev & 0xFF) as usize];
+                i += 1;
+            }
+            s += 1;
         }
         t
     }
-    const TABLE: [u32; 256] = make();
+    const T: [[u32; 256]; 8] = make();
     let mut c = !0u32;
-    for &b in bytes {
-        c = TABLE[((c ^ u32::from(b)) & 0xFF) as usize] ^ (c >> 8);
+    let mut chunks = bytes.chunks_exact(8);
+    for b in &mut chunks {
+        let lo = c ^ u32::from_le_bytes([b[0], b[1], b[2], b[3]]);
+        let hi = u32::from_le_bytes([b[4], b[5], b[6], b[7]]);
+        c = T[7][(lo & 0xFF) as usize]
+            ^ T[6][((lo >> 8) & 0xFF) as usize]
+            ^ T[5][((lo >> 16) & 0xFF) as usize]
+            ^ T[4][(lo >> 24) as usize]
+            ^ T[3][(hi & 0xFF) as usize]
+            ^ T[2][((hi >> 8) & 0xFF) as usize]
+            ^ T[1][((hi >> 16) & 0xFF) as usize]
+            ^ T[0][(hi >> 24) as usize];
+    }
+    for &b in chunks.remainder() {
+        c = T[0][((c ^ u32::from(b)) & 0xFF) as usize] ^ (c >> 8);
     }
     !c
 }
@@ -359,5 +387,37 @@ impl Reader<'_> {
         s.chunks_exact(4)
             .map(|c| f32::from_le_bytes([c[0], c[1], c[2], c[3]]))
             .collect()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::crc32;
+
+    /// The bytewise CRC-32 the slicing one replaces.
+    fn bytewise(bytes: &[u8]) -> u32 {
+        let mut c = !0u32;
+        for &b in bytes {
+            c ^= u32::from(b);
+            for _ in 0..8 {
+                c = if c & 1 != 0 {
+                    0xEDB8_8320 ^ (c >> 1)
+                } else {
+                    c >> 1
+                };
+            }
+        }
+        !c
+    }
+
+    #[test]
+    fn crc32_is_the_standard_one_at_every_length() {
+        assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
+        assert_eq!(crc32(b""), 0);
+        let mut r = crate::rng::Rng::new(3);
+        let data: Vec<u8> = (0..3000).map(|_| (r.next_u32() & 0xFF) as u8).collect();
+        for n in (0..64).chain([255, 1000, 2999, 3000]) {
+            assert_eq!(crc32(&data[..n]), bytewise(&data[..n]), "length {n}");
+        }
     }
 }
