@@ -188,6 +188,8 @@ const ROUNDS_PER_CALL: u32 = 2048;
 /// The simulations in flight over a range of entries.
 struct Batch<'a> {
     spec: &'a TableSpec,
+    /// The simulated vehicle ([`TableSpec::sim_vehicle`]).
+    p: VehicleParams,
     sim: Sim,
     lanes: [Lane; LANES],
     /// Lanes in use: `lanes[..n]`.
@@ -201,15 +203,17 @@ struct Batch<'a> {
 impl<'a> Batch<'a> {
     fn new(spec: &'a TableSpec, range: core::ops::Range<usize>) -> Self {
         let lim = &spec.params;
+        let p = spec.sim_vehicle();
         let sim = Sim {
             rr: lim.reach_radius,
             r2: lim.reach_radius * lim.reach_radius,
             rr4: 4.0 * lim.reach_radius,
-            max_steps: (lim.max_time / lim.vehicle.dt) as u32,
+            max_steps: (lim.max_time / p.dt) as u32,
             orbit: lim.orbit_turns * core::f32::consts::TAU,
         };
         let mut b = Self {
             spec,
+            p,
             sim,
             lanes: [Lane::idle(); LANES],
             n: 0,
@@ -245,8 +249,8 @@ impl<'a> Batch<'a> {
     /// Up to `max` rounds of one step per lane; false once every entry is done.
     #[inline(never)]
     fn rounds(&mut self, max: u32) -> bool {
-        let spec = self.spec;
-        let p = &spec.params.vehicle;
+        let p = self.p;
+        let p = &p;
         let sim = self.sim;
         let sim = &sim;
         let mut steer = [(0.0f32, 0.0f32); LANES];
