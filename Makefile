@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf
+	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables
 
 setup: setup-rust setup-browser setup-web
 
@@ -110,6 +110,11 @@ test-e2e-perf: setup-browser web-build
 # then wasm / native per funnelling agent update (issue 17).
 bench-web: setup-browser web-build bench-wasm-native
 	node web/test/perf.mjs
+
+# Issue 14: η table build in Chromium's Web Workers and the cached reload,
+# per reference vehicle, REPS fresh contexts each (median, max, host load).
+bench-tables: setup-browser web-build
+	node web/test/bench-tables.mjs
 
 # Issue 17: the same funnelling world natively (examples/world_bench.rs) and
 # in Node on the release wasm package, alternating rounds, one run; prints

@@ -170,13 +170,26 @@ impl Lab {
     }
 
     /// Replaces the η table (the bytes of a table file, e.g. one built
-    /// by the workers for the limits in force); the agents keep their
-    /// state. Returns the table's key. A corrupt file is an error and
-    /// changes nothing.
+    /// by the workers for the limits in force, or read from the browser's
+    /// cache); the agents keep their state. Returns the table's key. A
+    /// corrupt file, or one whose key is not `expected_key` when given,
+    /// is an error and changes nothing (the cache's bytes are checked
+    /// here, loaded once).
     #[wasm_bindgen(js_name = setTable)]
-    pub fn set_table(&mut self, bytes: &[u8]) -> Result<String, JsError> {
+    pub fn set_table(
+        &mut self,
+        bytes: &[u8],
+        expected_key: Option<String>,
+    ) -> Result<String, JsError> {
         let t = EtaTable::from_bytes(bytes).map_err(|e| js_err("η table", e))?;
         let key = t.key();
+        if let Some(want) = expected_key {
+            if key != want {
+                return Err(JsError::new(&format!(
+                    "η table: built for other limits (key {key}, expected {want})"
+                )));
+            }
+        }
         self.table = Rc::new(t);
         Ok(key)
     }

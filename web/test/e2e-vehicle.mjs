@@ -69,7 +69,8 @@ try {
     assert.match(page.url(), /vmax=1\.2/);
     assert.ok((await page.evaluate(() => window.__lab.count())) >= 1, "the playground has its agent");
     assert.ok(Math.abs((await page.evaluate(() => window.__lab.params())).vMax - 1.2) < 1e-6);
-    assert.ok((await page.evaluate(() => window.__lab.cachedTables())).includes(t.key));
+    // The table is stored in the background once in force.
+    await page.waitForFunction((k) => window.__lab.cachedTables().then((ks) => ks.includes(k)), t.key, { timeout: 10000, polling: 50 });
     await shot(page, "vehicle-built");
   });
 

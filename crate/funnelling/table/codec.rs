@@ -372,3 +372,19 @@ impl Reader<'_> {
             .collect()
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::{crc32, crc32_bytewise as bytewise};
+
+    #[test]
+    fn crc32_is_the_standard_one_at_every_length() {
+        assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
+        assert_eq!(crc32(b""), 0);
+        let mut r = crate::rng::Rng::new(3);
+        let data: Vec<u8> = (0..3000).map(|_| (r.next_u32() & 0xFF) as u8).collect();
+        for n in (0..64).chain([255, 1000, 2999, 3000]) {
+            assert_eq!(crc32(&data[..n]), bytewise(&data[..n]), "length {n}");
+        }
+    }
+}

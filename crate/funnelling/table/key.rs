@@ -1,6 +1,7 @@
 //! The η table's parameter key (issue 14): one 64-bit FNV-1a hash of
 //! everything a table's bytes depend on (format version, integrator, the
-//! 11 build parameters and every axis value), written as 16 hex digits.
+//! 11 build parameters, every axis value and the generator's time step
+//! when it is not the vehicle's), written as 16 hex digits.
 //!
 //! Why: tables are now built on demand for any vehicle, and cached
 //! (natively in a directory, in the browser in IndexedDB). A cache keyed
@@ -9,7 +10,7 @@
 //! is used, so a renamed or stale file is rebuilt, never used silently.
 //! The same function runs natively and in wasm, so both caches agree.
 
-use super::generate::TableSpec;
+use super::generate::{generator_dt, TableSpec};
 use super::{BuildParams, EtaTable, AXES, FORMAT_VERSION};
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
@@ -30,6 +31,13 @@ pub fn key_of(params: &BuildParams, axes: [&[f32]; AXES]) -> String {
     mix(&mut h, params.vehicle.integrator.code());
     for x in params.to_array() {
         mix(&mut h, x.to_bits());
+    }
+    // The generator's step, when not the vehicle's own (so the keys of
+    // tables whose step never changed stay as they were).
+    let step = generator_dt(&params.vehicle);
+    if step.to_bits() != params.vehicle.dt.to_bits() {
+        mix(&mut h, 0x5354_4550);
+        mix(&mut h, step.to_bits());
     }
     for a in axes {
         mix(&mut h, a.len() as u32);

@@ -11,7 +11,9 @@
 //! | [`grid`] | — | where a query falls on a sampled axis, in constant time |
 //! | [`key`] | — | the parameter key (hash of build parameters and axes) that table caches are keyed by |
 //! | [`generate`] | 000 §3 | the generator: the same seek code, anisotropic axes, mirror symmetry |
+//! | [`batch`] | 000 §3 | the generator's reach simulations interleaved several at a time, the same bits |
 
+pub mod batch;
 pub mod codec;
 pub mod format;
 pub mod generate;

@@ -15,7 +15,7 @@ import { HANDLE_PX, SceneBuilder } from "./scene";
 import { LabSim } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
-import { cacheKeys } from "../workers/tablecache";
+import { cacheKeys, openTableCache } from "../workers/tablecache";
 
 const TABLE_URL = "tables/eta.bin";
 
@@ -25,6 +25,9 @@ async function start(): Promise<void> {
   // Issue 17: the table's fetch starts with the core's instantiation, not after it.
   const labLoading = createLab(TABLE_URL);
   labLoading.catch(() => undefined);
+  // The table cache opens beside the core's loading (a reload with other
+  // limits reads its table from there as soon as the lab starts).
+  openTableCache();
   const version = await loadCore();
   performance.mark("lab:core");
   hook.version = version;

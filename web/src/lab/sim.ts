@@ -31,6 +31,8 @@ export interface TableStatus {
   ms: number;
   cached: boolean;
   workers: number;
+  /** The last build's phases, ms (tables.ts `BuiltTable.phases`). */
+  phases?: Record<string, number>;
   message: string;
 }
 
@@ -113,20 +115,23 @@ export class LabSim {
     this.table = { ...this.table, state: "building", progress: 0 };
     this.dirty = true;
     const params = this.params();
-    buildTable(params, (f) => {
-      if (gen === this.tableGen) {
-        this.table.progress = f;
-        this.dirty = true;
-      }
-    }).then(
+    buildTable(
+      params,
+      (f) => {
+        if (gen === this.tableGen) {
+          this.table.progress = f;
+          this.dirty = true;
+        }
+      },
+      (bytes, key) => {
+        // A newer request superseded this one: keep the lab's table.
+        if (gen !== this.tableGen) throw new Cancelled();
+        this.lab.setTable(bytes, key);
+      },
+    ).then(
       (t) => {
         if (gen !== this.tableGen) return;
-        try {
-          const key = this.lab.setTable(t.bytes);
-          this.table = { ...this.table, state: "exact", progress: 1, key, ms: t.ms, cached: t.cached, workers: t.workers };
-        } catch (e) {
-          this.table = { ...this.table, state: "error", message: errorText(e) };
-        }
+        this.table = { ...this.table, state: "exact", progress: 1, key: t.key, ms: t.ms, cached: t.cached, workers: t.workers, phases: t.phases };
         this.dirty = true;
       },
       (e: unknown) => {

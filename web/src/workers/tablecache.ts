@@ -8,15 +8,40 @@
 const DB = "steering-lab";
 const STORE = "tables";
 
+let connection: Promise<IDBDatabase> | null = null;
+
+/** The database, opened once per page and kept open: opening took most of
+ *  a cached reload (tens of ms, more on a busy host), so the page starts
+ *  it early (`openTableCache`), beside loading the core. */
 function open(): Promise<IDBDatabase> {
-  return new Promise((resolve, reject) => {
+  connection ??= new Promise<IDBDatabase>((resolve, reject) => {
     const req = indexedDB.open(DB, 1);
     req.onupgradeneeded = () => {
       if (!req.result.objectStoreNames.contains(STORE)) req.result.createObjectStore(STORE);
     };
-    req.onsuccess = () => resolve(req.result);
-    req.onerror = () => reject(req.error ?? new Error("indexedDB.open failed"));
+    req.onsuccess = () => {
+      const db = req.result;
+      // Another tab upgrading or deleting the database: let it, reopen next time.
+      db.onversionchange = () => {
+        db.close();
+        connection = null;
+      };
+      db.onclose = () => {
+        connection = null;
+      };
+      resolve(db);
+    };
+    req.onerror = () => {
+      connection = null;
+      reject(req.error ?? new Error("indexedDB.open failed"));
+    };
   });
+  return connection;
+}
+
+/** Starts opening the cache (failures show later as misses). */
+export function openTableCache(): void {
+  open().catch(() => {});
 }
 
 function request<T>(mode: IDBTransactionMode, f: (s: IDBObjectStore) => IDBRequest): Promise<T | undefined> {
@@ -26,16 +51,11 @@ function request<T>(mode: IDBTransactionMode, f: (s: IDBObjectStore) => IDBReque
         try {
           const tx = db.transaction(STORE, mode);
           const req = f(tx.objectStore(STORE));
-          tx.oncomplete = () => {
-            db.close();
-            resolve(req.result as T | undefined);
-          };
-          tx.onerror = tx.onabort = () => {
-            db.close();
-            resolve(undefined);
-          };
+          // A read resolves with its request, a write once committed.
+          if (mode === "readonly") req.onsuccess = () => resolve(req.result as T | undefined);
+          tx.oncomplete = () => resolve(req.result as T | undefined);
+          tx.onerror = tx.onabort = () => resolve(undefined);
         } catch {
-          db.close();
           resolve(undefined);
         }
       }),
