@@ -28,37 +28,8 @@ use steering::crowd::config::{CrowdConfig, PaperTest};
 use steering::crowd::separation::{count_overlaps, count_overlaps_both_sides, NeighbourGrid};
 use steering::crowd::Crowd;
 
-#[cfg(target_os = "linux")]
-mod cpu_clock {
-    #[repr(C)]
-    struct Timespec {
-        tv_sec: i64,
-        tv_nsec: i64,
-    }
-    extern "C" {
-        fn clock_gettime(clock: i32, ts: *mut Timespec) -> i32;
-    }
-    const CLOCK_THREAD_CPUTIME_ID: i32 = 3;
-
-    /// This thread's CPU time in ns, if the clock is available.
-    pub fn now_ns() -> Option<u128> {
-        let mut ts = Timespec {
-            tv_sec: 0,
-            tv_nsec: 0,
-        };
-        // SAFETY: `ts` is a valid, writable timespec for the call.
-        #[allow(unsafe_code)]
-        let rc = unsafe { clock_gettime(CLOCK_THREAD_CPUTIME_ID, &mut ts) };
-        (rc == 0).then(|| ts.tv_sec as u128 * 1_000_000_000 + ts.tv_nsec as u128)
-    }
-}
-
-#[cfg(not(target_os = "linux"))]
-mod cpu_clock {
-    pub fn now_ns() -> Option<u128> {
-        None
-    }
-}
+#[path = "cpu_clock.rs"]
+mod cpu_clock;
 
 fn crowd(n: usize, metrics: bool) -> Crowd {
     let scale = n as f32 / 300.0;
@@ -77,12 +48,12 @@ fn crowd(n: usize, metrics: bool) -> Crowd {
 
 /// Runs `iters` steps and returns their CPU time (wall time if no CPU clock).
 fn cpu_timed(w: &mut Crowd, iters: u64) -> Duration {
-    let (t0, w0) = (cpu_clock::now_ns(), Instant::now());
+    let (t0, w0) = (cpu_clock::thread_ns(), Instant::now());
     for _ in 0..iters {
         w.step();
         black_box(w.positions()[0]);
     }
-    match (t0, cpu_clock::now_ns()) {
+    match (t0, cpu_clock::thread_ns()) {
         (Some(a), Some(b)) => Duration::from_nanos((b - a) as u64),
         _ => w0.elapsed(),
     }

@@ -16,31 +16,12 @@ use steering::funnel::FunnelConfig;
 use steering::table::EtaTable;
 use steering::world::World;
 
+#[path = "../benches/cpu_clock.rs"]
+mod cpu_clock;
+
 /// This process's CPU time in ns (0 where the clock is missing).
 fn cpu_ns() -> u128 {
-    #[cfg(target_os = "linux")]
-    {
-        #[repr(C)]
-        struct Timespec {
-            tv_sec: i64,
-            tv_nsec: i64,
-        }
-        extern "C" {
-            fn clock_gettime(clock: i32, ts: *mut Timespec) -> i32;
-        }
-        let mut ts = Timespec {
-            tv_sec: 0,
-            tv_nsec: 0,
-        };
-        // SAFETY: `ts` is a valid, writable timespec; clock 2 is
-        // CLOCK_PROCESS_CPUTIME_ID.
-        #[allow(unsafe_code)]
-        let rc = unsafe { clock_gettime(2, &mut ts) };
-        if rc == 0 {
-            return ts.tv_sec as u128 * 1_000_000_000 + ts.tv_nsec as u128;
-        }
-    }
-    0
+    cpu_clock::process_ns().unwrap_or(0)
 }
 
 fn main() {
