@@ -6,7 +6,7 @@ use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMet
 use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::ParamError;
-use crate::world::World;
+use crate::world::{Planner, World};
 
 impl World {
     /// Sets the avoidance method, settings and static obstacles.
@@ -33,6 +33,15 @@ impl World {
         }
         let p = self.params;
         let t = self.time;
+        let planner = Planner {
+            kind: self.controller,
+            funnel: &self.config,
+            relaxed: &self.relaxed,
+            table,
+            p: &p,
+            t,
+            snapshot: &self.snapshot,
+        };
         // 1. Every funnel plans (mode memory advances as in a plain step).
         self.preferred.clear();
         for a in &mut self.agents {
@@ -41,19 +50,7 @@ impl World {
                 a.hold(speed);
                 self.preferred.push((a.state.theta, speed));
             } else {
-                let spec = a.goals[a.current];
-                let goal = spec.at(t, &self.snapshot);
-                a.goal_now = goal;
-                a.internals = self.controller.plan(
-                    &self.config,
-                    &self.relaxed,
-                    table,
-                    &p,
-                    &a.state,
-                    &goal,
-                    &mut a.memory,
-                    &mut a.relaxed,
-                );
+                planner.plan(a, true);
                 self.preferred.push((a.internals.gamma, a.internals.v_dt));
             }
         }

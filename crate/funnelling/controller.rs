@@ -8,6 +8,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals};
 use crate::relaxed::{RelaxedConfig, RelaxedInternals};
+use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::{VehicleParams, VehicleState};
 
@@ -75,7 +76,7 @@ impl ControllerKind {
     }
 
     /// One update with this controller: [`ControllerKind::plan`] and the
-    /// move.
+    /// move (the committed seek step every controller ends with).
     #[allow(clippy::too_many_arguments)] // as `plan`
     #[inline]
     pub fn step(
@@ -89,11 +90,9 @@ impl ControllerKind {
         mem: &mut FunnelMemory,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        match self {
-            Self::Standard => funnel.step(table, p, s, g, mem),
-            Self::Seek => funnel.plain_seek().step(table, p, s, &g.unoriented(), mem),
-            Self::Relaxed => relaxed.step(funnel, table, p, s, g, mem, ri),
-        }
+        let out = self.plan(funnel, relaxed, table, p, s, g, mem, ri);
+        seek_step_committed(p, s, out.gamma, out.v_dt);
+        out
     }
 }
 
@@ -107,6 +106,15 @@ pub enum Controller {
 }
 
 impl Controller {
+    /// The kind and the settings, for [`ControllerKind`]'s dispatch.
+    #[inline]
+    fn parts(&self) -> (ControllerKind, &FunnelConfig, RelaxedConfig) {
+        match self {
+            Self::Standard(f) => (ControllerKind::Standard, f, RelaxedConfig::default()),
+            Self::Relaxed(f, r) => (ControllerKind::Relaxed, f, *r),
+        }
+    }
+
     /// One update with whichever controller; `ri` is reset for the
     /// standard one.
     #[inline]
@@ -119,13 +127,11 @@ impl Controller {
         mem: &mut FunnelMemory,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        match self {
-            Self::Standard(f) => {
-                *ri = RelaxedInternals::default();
-                f.step(table, p, s, g, mem)
-            }
-            Self::Relaxed(f, r) => r.step(f, table, p, s, g, mem, ri),
+        if let Self::Standard(_) = self {
+            *ri = RelaxedInternals::default();
         }
+        let (kind, f, r) = self.parts();
+        kind.step(f, &r, table, p, s, g, mem, ri)
     }
 
     /// One plan (no motion), for the benches.
@@ -140,9 +146,7 @@ impl Controller {
         mem: &mut FunnelMemory,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        match self {
-            Self::Standard(f) => f.plan(table, p, s, g, mem),
-            Self::Relaxed(f, r) => r.plan(f, table, p, s, g, mem, ri),
-        }
+        let (kind, f, r) = self.parts();
+        kind.plan(f, &r, table, p, s, g, mem, ri)
     }
 }

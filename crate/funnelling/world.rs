@@ -8,7 +8,7 @@ use crate::avoidance::{AvoidanceConfig, AvoidanceMethod, Avoider, Obstacle};
 use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
 use crate::metrics::PathMetrics;
 use crate::relaxed::{ControllerKind, RelaxedConfig, RelaxedInternals};
-use crate::seek::seek_step;
+use crate::seek::{seek_step, seek_step_committed};
 use crate::table::EtaTable;
 use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 
@@ -204,27 +204,21 @@ impl World {
         for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
             *s = a.state;
         }
-        let p = self.params;
-        let t = self.time;
+        let planner = Planner {
+            kind: self.controller,
+            funnel: &self.config,
+            relaxed: &self.relaxed,
+            table,
+            p: &self.params,
+            t: self.time,
+            snapshot: &self.snapshot,
+        };
         for a in &mut self.agents {
             if a.done() {
                 a.hold(a.cruise_speed());
-                continue;
+            } else {
+                planner.plan(a, false);
             }
-            let spec = a.goals[a.current];
-            let goal = spec.at(t, &self.snapshot);
-            a.goal_now = goal;
-            let mut mem = a.memory;
-            a.internals = self.controller.plan(
-                &self.config,
-                &self.relaxed,
-                table,
-                &p,
-                &a.state,
-                &goal,
-                &mut mem,
-                &mut a.relaxed,
-            );
         }
     }
 
@@ -240,6 +234,15 @@ impl World {
         }
         let p = self.params;
         let t = self.time;
+        let planner = Planner {
+            kind: self.controller,
+            funnel: &self.config,
+            relaxed: &self.relaxed,
+            table,
+            p: &p,
+            t,
+            snapshot: &self.snapshot,
+        };
         for a in &mut self.agents {
             let prev = a.state;
             if a.done() {
@@ -249,19 +252,8 @@ impl World {
                 seek_step(&p, &mut a.state, hold, speed);
                 a.hold(speed);
             } else {
-                let spec = a.goals[a.current];
-                let goal = spec.at(t, &self.snapshot);
-                a.goal_now = goal;
-                a.internals = self.controller.step(
-                    &self.config,
-                    &self.relaxed,
-                    table,
-                    &p,
-                    &mut a.state,
-                    &goal,
-                    &mut a.memory,
-                    &mut a.relaxed,
-                );
+                let spec = planner.plan(a, true);
+                seek_step_committed(&p, &mut a.state, a.internals.gamma, a.internals.v_dt);
                 advance_queue(a, &spec, t);
             }
             a.metrics.add(&p, &prev, &a.state);
@@ -299,6 +291,47 @@ impl World {
             put(F::GoalDTol, g.d_tol);
             put(F::GoalEpsTol, g.eps_tol);
         }
+    }
+}
+
+/// What planning an agent needs from its world: the controller, its
+/// settings and the time and states the goals are read at. One piece for
+/// the three per-agent loops ([`World::plan`], [`World::step`], the
+/// avoidance step), which differ only in what they do with the plan.
+pub(crate) struct Planner<'a> {
+    pub(crate) kind: ControllerKind,
+    pub(crate) funnel: &'a FunnelConfig,
+    pub(crate) relaxed: &'a RelaxedConfig,
+    pub(crate) table: &'a EtaTable,
+    pub(crate) p: &'a VehicleParams,
+    pub(crate) t: f32,
+    pub(crate) snapshot: &'a [VehicleState],
+}
+
+impl Planner<'_> {
+    /// Plans agent `a` (not done) towards its current goal at `t`: the goal
+    /// goes to `goal_now`, the plan to `internals`. `advance` lets the plan
+    /// update the agent's mode memory (a step); without it the memory is
+    /// left as it was ([`World::plan`]). Returns the goal's spec, for
+    /// [`advance_queue`].
+    #[inline]
+    pub(crate) fn plan(&self, a: &mut Agent, advance: bool) -> GoalSpec {
+        let spec = a.goals[a.current];
+        let goal = spec.at(self.t, self.snapshot);
+        a.goal_now = goal;
+        let mut kept = a.memory;
+        let mem = if advance { &mut a.memory } else { &mut kept };
+        a.internals = self.kind.plan(
+            self.funnel,
+            self.relaxed,
+            self.table,
+            self.p,
+            &a.state,
+            &goal,
+            mem,
+            &mut a.relaxed,
+        );
+        spec
     }
 }
 
