@@ -260,7 +260,7 @@ impl EtaTable {
         omega / self.params.vehicle.omega_limit(v.max(0.0))
     }
 
-    #[inline]
+    #[inline(always)]
     fn positions(
         &self,
         d: f32,
@@ -271,13 +271,15 @@ impl EtaTable {
         clamped: &mut bool,
     ) -> [AxisPos; AXES] {
         let g = &self.grid;
-        [
-            g[0].locate(d, clamped),
-            g[1].locate(wrap(alpha), clamped),
-            g[2].locate(self.omega_fraction(omega, v_c), clamped),
-            g[3].locate(v_c, clamped),
-            g[4].locate(v_d, clamped),
-        ]
+        // Only the α axis is periodic (`from_parts`).
+        let (pd, c0) = g[0].locate_linear(d);
+        let mut ca = false;
+        let pa = g[1].locate(wrap(alpha), &mut ca);
+        let (pw, c2) = g[2].locate_linear(self.omega_fraction(omega, v_c));
+        let (pv, c3) = g[3].locate_linear(v_c);
+        let (pvd, c4) = g[4].locate_linear(v_d);
+        *clamped |= c0 | ca | c2 | c3 | c4;
+        [pd, pa, pw, pv, pvd]
     }
 
     /// Multilinear blend of `cells` at `pos` over `K` axes (5, or 4 for
