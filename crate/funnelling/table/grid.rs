@@ -166,7 +166,11 @@ impl Axis {
     #[inline(always)]
     #[must_use]
     pub fn locate(&self, v: f32, clamped: &mut bool) -> AxisPos {
-        let v = if self.periodic && v < self.lo { v + TAU } else { v };
+        let v = if self.periodic && v < self.lo {
+            v + TAU
+        } else {
+            v
+        };
         let (p, outside) = self.locate_linear(v);
         *clamped |= outside;
         p
