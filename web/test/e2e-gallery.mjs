@@ -146,6 +146,22 @@ try {
       assert.deepEqual(tproblems, []);
       await context.close();
     });
+    await check("crowd and gallery at 390 px: no horizontal scrolling (the one-line HUD wraps)", async () => {
+      const context = await browser.newContext({ viewport: { width: 390, height: 844 }, deviceScaleFactor: 2, hasTouch: true, isMobile: true });
+      const t = await context.newPage();
+      for (const name of ["crowd.html", "wander.html"]) {
+        await t.goto(new URL(name, url).href);
+        if (name === "crowd.html") {
+          assert.equal(await waitCrowd(t), null);
+          await t.waitForFunction(() => document.getElementById("hud")?.textContent?.includes("fps"));
+        } else {
+          await t.waitForTimeout(500);
+        }
+        const w = await t.evaluate(() => document.documentElement.scrollWidth);
+        assert.ok(w <= 390, `${name}: page ${w} px wide at a 390 px viewport`);
+      }
+      await context.close();
+    });
     await check("crowd: double-click a segment adds a point; Delete removes the selected one", async () => {
       const before = await page.evaluate(() => window.__crowd.pathPoints());
       // Midpoint of the segment from point 1 to point 2.
