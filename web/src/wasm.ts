@@ -66,8 +66,15 @@ export function loadCore(): Promise<string> {
     coreBuild = simd ? "simd128" : "baseline";
     // Both builds share the glue (pkg/steering.js; `make wasm` checks it is
     // byte-identical); the baseline module is init()'s default.
-    const module_or_path = simd ? new URL("../pkg/steering_simd_bg.wasm", import.meta.url) : undefined;
-    return init(module_or_path ? { module_or_path } : undefined).then(() => version());
+    if (!simd) return init().then(() => version());
+    // A SIMD module that does not load (missing from a partial deploy,
+    // refused by the engine) falls back to the baseline one: same bits.
+    return init({ module_or_path: new URL("../pkg/steering_simd_bg.wasm", import.meta.url) })
+      .catch(() => {
+        coreBuild = "baseline";
+        return init();
+      })
+      .then(() => version());
   })();
   return ready;
 }

@@ -162,6 +162,16 @@ try {
       }
       await context.close();
     });
+    await check("crowd: a SIMD core that does not load falls back to the baseline build", async () => {
+      const context = await browser.newContext({ viewport: { width: 900, height: 700 } });
+      const t = await context.newPage();
+      await t.route(/steering_simd_bg.*\.wasm/, (route) => route.abort());
+      await t.goto(new URL("crowd.html", url).href);
+      assert.equal(await waitCrowd(t), null);
+      const t0 = await t.evaluate(() => window.__crowd.time());
+      await t.waitForFunction((t0) => window.__crowd.time() > t0, t0);
+      await context.close();
+    });
     await check("crowd: double-click a segment adds a point; Delete removes the selected one", async () => {
       const before = await page.evaluate(() => window.__crowd.pathPoints());
       // Midpoint of the segment from point 1 to point 2.
