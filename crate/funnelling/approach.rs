@@ -286,6 +286,7 @@ impl<'a> Approach<'a> {
     /// final internals when the phase settles the update; `Continue` the
     /// approach and the internals filled so far (`d`, `alpha`, `gamma` =
     /// bearing, `v_dt` = `v_d`, reachable).
+    #[inline(always)]
     pub fn begin(
         table: &'a EtaTable,
         p: &'a VehicleParams,

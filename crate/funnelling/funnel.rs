@@ -395,6 +395,7 @@ impl FunnelConfig {
     /// the vehicle. Returns the internals; `gamma` and `v_dt` are the
     /// heading and desired speed to feed the seek controller.
     #[must_use]
+    #[inline(always)]
     pub fn plan(
         &self,
         table: &EtaTable,
@@ -414,6 +415,7 @@ impl FunnelConfig {
     /// aim point's table lookup, Δη, and Position_only or the bounded
     /// modulation. Shared with the relaxed controller's entry-point aim.
     #[must_use]
+    #[inline(always)]
     pub fn aim_and_funnel(&self, a: &Approach<'_>, g: &Goal, mut out: Internals) -> Internals {
         if let Some(t) = &self.terminal {
             if a.terminal(t, g, &mut out) {
