@@ -2,6 +2,7 @@
 // drive, and the frame-time record behind perfStats().
 
 import type { FunnelConfig, Internals, VehicleParams } from "../wasm";
+import type { SteppingInfo } from "../workers/stepping";
 import type { TableStatus } from "./sim";
 import type { Handles } from "./handles";
 import { presetNames } from "./presets";
@@ -46,6 +47,14 @@ export interface LabHook {
   params(): VehicleParams | null;
   /** Keys in the browser's table cache. */
   cachedTables(): Promise<string[]>;
+  /** Issue 17: how the world is stepped (this thread or N workers). */
+  workers(): SteppingInfo | null;
+  /** FNV-1a (hex) of the bits of every agent's state as drawn. */
+  stateHash(): string;
+  /** Runs k steps (paused) and resolves once they are drawn. */
+  stepN(k: number): Promise<void>;
+  /** Rebuilds the world at t = 0 (workers included) without unpausing. */
+  restart(): Promise<void>;
 }
 
 declare global {
@@ -68,6 +77,10 @@ export function installHook(): LabHook {
     table: () => null,
     params: () => null,
     cachedTables: () => Promise.resolve([]),
+    workers: () => null,
+    stateHash: () => "",
+    stepN: async () => {},
+    restart: async () => {},
     internals: () => null,
     funnel: () => null,
     state: () => defaultState(),
@@ -133,4 +146,18 @@ export class Perf {
       agents,
     };
   }
+}
+
+/** FNV-1a, 32 bits, over the bit patterns of `a` (the worker/one-core check). */
+export function fnvHex(a: Float32Array): string {
+  const u = new Uint32Array(a.buffer, a.byteOffset, a.length);
+  let h = 0x811c9dc5;
+  for (let i = 0; i < u.length; i++) {
+    const w = u[i] ?? 0;
+    for (let b = 0; b < 32; b += 8) {
+      h ^= (w >>> b) & 0xff;
+      h = Math.imul(h, 0x01000193) >>> 0;
+    }
+  }
+  return h.toString(16).padStart(8, "0");
 }
