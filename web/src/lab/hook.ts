@@ -17,6 +17,12 @@ export interface PerfStats {
   meanDrawMs: number;
   usPerUpdate: number;
   agents: number;
+  /** Agent updates finished in the sampled frames, and those frames' wall
+   *  time (issue 17: agents stepped per 16.7 ms = updates / (spanMs / 16.7)). */
+  updates: number;
+  spanMs: number;
+  /** Frames that drew a newly stepped state. */
+  steppedFrames: number;
 }
 
 /** What the end-to-end tests and the perf harness read (window.__lab). */
@@ -103,11 +109,13 @@ export class Perf {
   private draw: number[] = [];
   private updates = 0;
   private updateMs = 0;
+  private steppedFrames = 0;
 
   /** `updates` agent updates took `ms` in the core. */
   stepped(updates: number, ms: number): void {
     this.updates += updates;
     this.updateMs += ms;
+    this.steppedFrames++;
   }
 
   frame(interval: number, work: number, step: number, draw: number): void {
@@ -130,6 +138,7 @@ export class Perf {
     this.draw = [];
     this.updates = 0;
     this.updateMs = 0;
+    this.steppedFrames = 0;
   }
 
   stats(agents: number): PerfStats {
@@ -144,6 +153,9 @@ export class Perf {
       meanDrawMs: mean(this.draw),
       usPerUpdate: this.updates ? (this.updateMs * 1000) / this.updates : 0,
       agents,
+      updates: this.updates,
+      spanMs: this.intervals.reduce((x, y) => x + y, 0),
+      steppedFrames: this.steppedFrames,
     };
   }
 }

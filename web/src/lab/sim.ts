@@ -385,7 +385,13 @@ export class LabSim {
     this.workersWanted = wanted.n;
     if (wanted.problem) showMessage(wanted.problem, "warn");
     if (wanted.n === 0 || !this.recipe || this.count === 0 || this.lab.avoidance() !== "off") return;
-    this.stepper ??= new WorldStepper(wanted.n, this.stride);
+    if (!this.stepper) {
+      this.stepper = new WorldStepper(wanted.n, this.stride);
+      this.stepper.onSwap = (state) => {
+        this.state = state;
+        this.dirty = true;
+      };
+    }
     const gen = this.generation;
     this.stepper.start(this.recipe, this.lab, this.state, this.shown).then(
       () => {

@@ -78,7 +78,9 @@ async function run(task: StepTask): Promise<StepReply> {
         break;
     }
   }
+  const t0 = performance.now();
   if (task.steps > 0) lab.step(task.steps);
+  const stepMs = performance.now() - t0;
   const st = lab.state();
   const local = task.shown - range.start;
   let internals: Internals | null = null;
@@ -86,9 +88,9 @@ async function run(task: StepTask): Promise<StepReply> {
   if (shared) {
     const buf = shared[task.buffer] as SharedArrayBuffer;
     new Float32Array(buf, range.start * stride * 4, st.length).set(st);
-    return { time: lab.time(), internals, state: null };
+    return { time: lab.time(), internals, state: null, stepMs };
   }
-  return { time: lab.time(), internals, state: st };
+  return { time: lab.time(), internals, state: st, stepMs };
 }
 
 self.onmessage = async (ev: MessageEvent<TaskMessage<StepTask>>) => {

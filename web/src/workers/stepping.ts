@@ -66,6 +66,8 @@ export interface StepReply {
   internals: Internals | null;
   /** The slice's states when there is no shared memory. */
   state: Float32Array | null;
+  /** Wall ms of the worker's `step` calls. */
+  stepMs: number;
 }
 
 /** Steps one job runs at most (a frame's worth when the workers keep up). */
@@ -97,6 +99,9 @@ export interface SteppingInfo {
   ranges: Array<[number, number]>;
   crossOriginIsolated: boolean;
   cores: number;
+  /** The slowest worker's stepping time per agent update of the whole
+   *  world, µs (0 before the first step). */
+  usPerUpdate: number;
   /** Workers asked for (URL or default). */
   wanted: number;
   starting: boolean;
@@ -127,6 +132,14 @@ export class WorldStepper {
   private edits: Edit[] = [];
   private gen = 0;
   private done = { steps: 0, ms: 0 };
+  private shown = 0;
+  /** Called with the new front state when the buffers swap (the page
+   *  must not keep drawing the buffer the next job writes into). */
+  onSwap: (state: Float32Array) => void = () => {};
+  /** Sum over jobs of the slowest worker's stepping ms, and agent updates
+   *  (the workers' own cost per update, beside the jobs' wall time). */
+  workerMs = 0;
+  workerUpdates = 0;
 
   constructor(
     readonly workers: number,
@@ -180,6 +193,7 @@ export class WorldStepper {
 
   /** Starts a job if none is in flight and something is owed; never waits. */
   pump(shown: number): void {
+    this.shown = shown;
     if (!this.ready || this.pending > 0 || (this.owed === 0 && this.edits.length === 0)) return;
     const steps = this.owed;
     this.owed = 0;
@@ -236,12 +250,17 @@ export class WorldStepper {
       this.frontIndex = buffer;
       this.internals = replies.find((r) => r.internals !== null)?.internals ?? null;
       this.done.steps += steps;
+      this.workerMs += Math.max(...replies.map((r) => r.stepMs));
+      this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
       this.done.ms += performance.now() - t0;
       this.fresh = true;
+      this.onSwap(front);
     });
     this.pending++;
     this.queue = next.finally(() => {
       this.pending--;
+      // The next job starts at once if steps are owed (not at the next frame).
+      this.pump(this.shown);
     });
     return next;
   }
@@ -253,6 +272,7 @@ export class WorldStepper {
       ranges: this.ranges,
       crossOriginIsolated: globalThis.crossOriginIsolated === true,
       cores: navigator.hardwareConcurrency || 0,
+      usPerUpdate: this.workerUpdates > 0 ? (this.workerMs * 1000) / this.workerUpdates : 0,
       wanted,
       starting: this.active && !this.ready,
       error: this.error,
