@@ -464,7 +464,9 @@ export class LabSim {
     if (done.steps > 0 && this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
     const updates = done.steps * this.count;
     if (updates > 0) {
-      const us = (done.ms * 1000) / updates;
+      // The HUD's cost per update: the slowest worker's stepping time (the
+      // jobs' wall time also holds the hand-over and the wait for a frame).
+      const us = (done.workerMs * 1000) / updates;
       this.usPerUpdate = this.usPerUpdate === 0 ? us : 0.9 * this.usPerUpdate + 0.1 * us;
     }
     return { updates, ms: done.ms };

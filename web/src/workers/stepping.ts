@@ -131,7 +131,7 @@ export class WorldStepper {
   private owed = 0;
   private edits: Edit[] = [];
   private gen = 0;
-  private done = { steps: 0, ms: 0 };
+  private done = { steps: 0, ms: 0, workerMs: 0 };
   private shown = 0;
   /** Called with the new front state when the buffers swap (the page
    *  must not keep drawing the buffer the next job writes into). */
@@ -212,10 +212,11 @@ export class WorldStepper {
     return this.job(this.gen, (buffer) => this.ranges.map(() => ({ init: null, edits, steps, buffer, shown })), steps);
   }
 
-  /** Steps completed since the last call, and the wall ms their jobs took. */
-  takeCompleted(): { steps: number; ms: number } {
+  /** Steps completed since the last call, the wall ms their jobs took and
+   *  the slowest worker's stepping ms in them. */
+  takeCompleted(): { steps: number; ms: number; workerMs: number } {
     const d = this.done;
-    this.done = { steps: 0, ms: 0 };
+    this.done = { steps: 0, ms: 0, workerMs: 0 };
     return d;
   }
 
@@ -250,7 +251,9 @@ export class WorldStepper {
       this.frontIndex = buffer;
       this.internals = replies.find((r) => r.internals !== null)?.internals ?? null;
       this.done.steps += steps;
-      this.workerMs += Math.max(...replies.map((r) => r.stepMs));
+      const slowest = Math.max(...replies.map((r) => r.stepMs));
+      this.workerMs += slowest;
+      this.done.workerMs += slowest;
       this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
       this.done.ms += performance.now() - t0;
       this.fresh = true;
