@@ -87,7 +87,7 @@ try {
           `workers n=${n} ${w === "N" ? `N=${cores}` : w} (${info ? `${info.mode}, ${info.workers} slices` : "page's thread"}): ` +
             `${Math.round(perFrame)} agents stepped per 16.7 ms, ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
             `${((s.steppedFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
-            (info ? `slowest worker ${info.usPerUpdate.toFixed(3)} µs per agent update of the world` : `core ${s.usPerUpdate.toFixed(3)} µs per agent update`),
+            (info ? `slowest worker ${info.usPerUpdate.toFixed(3)} µs per agent update of the world, workers started in ${info.startMs.toFixed(0)} ms` : `core ${s.usPerUpdate.toFixed(3)} µs per agent update`),
         );
         if (problems.length) { bad++; console.log(problems.join("\n")); }
         await context.close();

@@ -102,6 +102,8 @@ export interface SteppingInfo {
   /** The slowest worker's stepping time per agent update of the whole
    *  world, µs (0 before the first step). */
   usPerUpdate: number;
+  /** Wall ms the last start took (each worker rebuilds the world, keeps its slice). */
+  startMs: number;
   /** Workers asked for (URL or default). */
   wanted: number;
   starting: boolean;
@@ -140,6 +142,8 @@ export class WorldStepper {
    *  (the workers' own cost per update, beside the jobs' wall time). */
   workerMs = 0;
   workerUpdates = 0;
+  /** Wall ms from `start` until the workers owned the world. */
+  startMs = 0;
 
   constructor(
     readonly workers: number,
@@ -174,10 +178,14 @@ export class WorldStepper {
     }
     this.state.set(initial);
     const sab = this.sab;
+    const t0 = performance.now();
     return this.job(gen, (buffer) =>
       ranges.map(([start, end]) => ({ init: { recipe, start, end, shared: sab }, edits: [], steps: 0, buffer, shown })),
     ).then(() => {
-      if (gen === this.gen && this.error === null) this.ready = true;
+      if (gen === this.gen && this.error === null) {
+        this.ready = true;
+        this.startMs = performance.now() - t0;
+      }
     });
   }
 
@@ -276,6 +284,7 @@ export class WorldStepper {
       crossOriginIsolated: globalThis.crossOriginIsolated === true,
       cores: navigator.hardwareConcurrency || 0,
       usPerUpdate: this.workerUpdates > 0 ? (this.workerMs * 1000) / this.workerUpdates : 0,
+      startMs: this.startMs,
       wanted,
       starting: this.active && !this.ready,
       error: this.error,
