@@ -220,6 +220,24 @@ try {
     assert.ok(Number.isFinite(one.moved.x));
   });
 
+  await check("workers on a table built for other limits (vmax=1.5): the workers get its bytes, same state as one core", async () => {
+    const run = async (query) => {
+      const { page, problems, context } = await openLab(query, "#n=20000&ov=&vmax=1.5");
+      await page.waitForFunction(() => window.__lab.table()?.state === "exact", null, { timeout: 120000 });
+      const r = await stepped(page, 60);
+      const info = await page.evaluate(() => window.__lab.workers());
+      assert.deepEqual(problems, []);
+      await context.close();
+      return { r, info };
+    };
+    const one = await run("?workers=0");
+    const two = await run("?workers=2");
+    assert.equal(one.info, null);
+    assert.equal(two.info.workers, 2);
+    assert.equal(two.info.error, null);
+    assert.deepEqual(two.r, one.r);
+  });
+
   await check("workers by default from 20,000 agents (navigator.hardwareConcurrency of them), none below; a bad ?workers= is reported", async () => {
     let { page, problems, context } = await openLab("", "#n=20000&ov=");
     const info = await page.evaluate(() => window.__lab.workers());
