@@ -73,6 +73,24 @@ fn random_crowd_in_two_three_and_seven_slices_equals_one_world() {
 }
 
 #[test]
+fn a_slice_of_the_random_crowd_is_spawned_alone_bit_for_bit() {
+    let t = table();
+    let mut whole = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    whole.spawn_random(500, 11, 30.0, 1.3).unwrap();
+    let mut kept = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    kept.spawn_random_kept(500, 11, 30.0, 1.3, 200..350)
+        .unwrap();
+    let mut retained = whole.clone();
+    retained.retain_range(200..350).unwrap();
+    assert_eq!(kept, retained);
+    for _ in 0..120 {
+        kept.step(&t);
+        retained.step(&t);
+    }
+    assert_eq!(states(&kept), states(&retained));
+}
+
+#[test]
 fn facing_agents_stay_in_one_slice_and_step_as_in_one_world() {
     let t = table();
     // Fig. 6: pairs (0,1), (2,3), (4,5) … face each other.

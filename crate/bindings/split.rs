@@ -4,7 +4,7 @@
 
 use wasm_bindgen::prelude::*;
 
-use super::lab::Lab;
+use super::lab::{whole, Lab};
 use crate::bindings::boundary::js_err;
 
 #[wasm_bindgen]
@@ -30,5 +30,31 @@ impl Lab {
         self.world
             .retain_range(start as usize..end as usize)
             .map_err(|e| js_err("agents", e))
+    }
+
+    /// `spawnRandom(n, seed, extent, speed)`'s agents `start..end` only
+    /// (a worker's slice of the playground's crowd: the same agents, bit for
+    /// bit, without building the others). Checked as `spawnRandom`.
+    #[wasm_bindgen(js_name = spawnRandomRange)]
+    pub fn spawn_random_range(
+        &mut self,
+        n: f64,
+        seed: f64,
+        extent: f32,
+        speed: f32,
+        start: u32,
+        end: u32,
+    ) -> Result<(), JsError> {
+        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
+        let seed = whole(&crate::funnelling::ranges::SEED, seed)?;
+        self.world
+            .spawn_random_kept(
+                n as usize,
+                seed,
+                extent,
+                speed,
+                start as usize..end as usize,
+            )
+            .map_err(|e| js_err("random agents", e))
     }
 }

@@ -1,7 +1,8 @@
 // One stepping worker (issue 17, point 2): owns agents start..end of the
-// lab's world. It rebuilds the whole world from the page's recipe (the same
-// calls the page made, so the same bits), keeps its range (`retainRange`:
-// facing links never cut, see crate/funnelling/world_split.rs), and on each
+// lab's world. It rebuilds the world from the page's recipe (the same calls
+// the page made, so the same bits): a scenario whole, then keeps its range
+// (`retainRange`: facing links never cut, crate/funnelling/world_split.rs);
+// the playground's random crowd only its range (`spawnRandomRange`). On each
 // task applies the page's edits, steps k times and writes its states at its
 // offset of the shared back buffer, or hands them back (no isolation).
 // Driven by `WorldStepper` (stepping.ts) through `WorkerPool.each`.
@@ -38,17 +39,24 @@ async function run(task: StepTask): Promise<StepReply> {
     const r = task.init.recipe;
     const l = await tableLab(r.table);
     l.setParams(r.params);
+    const { start, end } = task.init;
     if (r.build.kind === "scenario") {
       l.loadScenario(r.build.text);
       l.setParams(r.params);
     } else {
-      if (r.build.agent) l.addAgent(r.build.agent);
+      // The playground: agent 0, then the random crowd; only this slice is
+      // built (`spawnRandomRange`: the same agents without the others).
+      const first = r.build.agent ? 1 : 0;
+      if (r.build.agent && start === 0) l.addAgent(r.build.agent);
       const s = r.build.spawn;
-      if (s) l.spawnRandom(s.n, s.seed, s.extent, s.speed);
+      const a = Math.max(0, start - first);
+      const b = Math.max(0, end - first);
+      if (s && b > a) l.spawnRandomRange(s.n, s.seed, s.extent, s.speed, a, b);
     }
     l.setFunnel(r.funnel);
     l.setRelaxed(r.relaxed);
-    l.retainRange(task.init.start, task.init.end);
+    // A scenario is built whole and keeps its slice (facing links renumbered).
+    if (r.build.kind === "scenario") l.retainRange(start, end);
     lab?.free();
     lab = l;
     range = { start: task.init.start, end: task.init.end };

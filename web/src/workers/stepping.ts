@@ -8,9 +8,11 @@
 //   those links, from the step's start, so each slice steps to the same
 //   bits as the whole world. No per-step exchange between workers is needed.
 //   Avoidance (issue 18) couples every agent: one slice, then.
-// - Each worker rebuilds the whole world from the page's recipe (the calls
-//   the page made: limits, scenario or playground, controller settings) and
-//   keeps its range; edits (drags, settings) follow in the next task.
+// - Each worker rebuilds its slice from the page's recipe (the calls the
+//   page made: limits, scenario or playground, controller settings): a
+//   scenario whole, then `retainRange`; the playground's random crowd only
+//   its range (`spawnRandomRange`). Edits (drags, settings, a new table)
+//   follow in the next task.
 // - Double buffer: workers write into the back buffer while the page draws
 //   the front one (the last complete state); when every worker has
 //   answered, the two swap. The page never waits for a worker: a frame
