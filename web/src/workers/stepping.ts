@@ -75,9 +75,13 @@ export interface StepReply {
 /** Steps one job runs at most (a frame's worth when the workers keep up). */
 const MAX_STEPS_PER_JOB = 4;
 
-/** Agents from which the page steps in workers by default: measured with
- *  `make bench-web` (web/test/perf.mjs, README figures): below it one core
- *  keeps 60 fps and the workers' start and hand-over only add latency. */
+/** Agents from which the page steps in workers by default, measured with
+ *  `make bench-web` (web/test/perf.mjs, README figures) on the 2-core host:
+ *  at 10,000 the page's thread steps and draws at 40–60 fps and the workers
+ *  only add their start (0.3–0.6 s) and a frame of latency; from 20,000 it
+ *  fell to 14–58 fps (12–63 ms of work per frame) while with workers the
+ *  page kept 36–60 fps at 1.5–4 ms per frame. Agents stepped per second
+ *  were not higher with workers on that loaded host (README). */
 export const AUTO_WORKERS_FROM = 20_000;
 
 /** `?workers=N` (0 = off) or, unset, the default for `count` agents:
