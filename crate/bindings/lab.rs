@@ -67,7 +67,7 @@ pub fn precision() -> Result<JsValue, JsError> {
 
 /// A JavaScript number that must be a whole number in `r` (compared in
 /// f64: f32 cannot tell 2³² from 2³² − 1).
-fn whole(r: &crate::funnelling::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
+pub(crate) fn whole(r: &crate::funnelling::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
     if v.is_finite() && v.fract() == 0.0 && v >= r.min && v <= r.max {
         Ok(v as u64)
     } else {

@@ -9,6 +9,7 @@
 //! | [`tables`] | `index.html` workers | η tables built in the browser: `tableJob` (key, entries), `tableSlice` (a worker's share), `assembleTable` (the file's bytes), `tableKeyOf`, `referenceVehicles` |
 //! | [`crowd`] | `crowd.html` | `CrowdLab`: crowded path following (paper 003) |
 //! | [`wander`] | `wander.html` | `WanderLab`: the random steering toolkit (paper 004) |
+//! | `split` | `index.html` workers | issue 17: `Lab.splitRanges` / `retainRange`, a world's slices for the stepping workers |
 //! | [`boundary`] | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
 //! | [`layout`] | all | `Mode`, `StateField`: the core's numbers by name, checked at compile time |
 
@@ -18,5 +19,6 @@ pub mod crowd;
 pub mod lab;
 mod lab_types;
 pub mod layout;
+mod split;
 pub mod tables;
 pub mod wander;

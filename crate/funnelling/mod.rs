@@ -14,6 +14,7 @@
 //! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
 //! | [`world`] | 000 §6 | many agents with goal queues, moving and successive targets |
 //! | [`world_edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`world_split`] | 000 §6, Fig. 6 | issue 17: a world split into contiguous slices that step alone (facing links kept inside one), for the lab's stepping workers |
 //! | [`vehicle_file`] | — | vehicle JSON files (`--vehicle`, the reference pedestrian, car and robot): parsed, fields named, ranges and the generator's ratios checked |
 //! | [`vehicle_study`] | 000 §3, §5 | per-vehicle measures in the vehicle's units: η interpolation error at D ≥ 4 turning radii, reachability agreement, reach and oriented entries at D ≥ 5 turning radii |
 //! | [`ranges`] | — | one table of validation ranges (key, min, max, unit, integer, cross-field bound) that the checks below and the page use |
@@ -42,3 +43,4 @@ pub mod vehicle_file;
 pub mod vehicle_study;
 pub mod world;
 pub mod world_edit;
+pub mod world_split;

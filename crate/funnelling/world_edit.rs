@@ -201,6 +201,23 @@ impl World {
         extent: f32,
         speed: f32,
     ) -> Result<(), EditError> {
+        self.spawn_random_kept(n, seed, extent, speed, 0..n)
+    }
+
+    /// [`World::spawn_random`]'s agents `keep` only (issue 17: a stepping
+    /// worker's slice): the same agents, bit for bit, without building the
+    /// others (their random draws are made and dropped).
+    ///
+    /// # Errors
+    /// As [`World::spawn_random`]; nothing is added then.
+    pub fn spawn_random_kept(
+        &mut self,
+        n: usize,
+        seed: u64,
+        extent: f32,
+        speed: f32,
+        keep: core::ops::Range<usize>,
+    ) -> Result<(), EditError> {
         use core::f32::consts::PI;
         crate::funnelling::ranges::EXTENT
             .check(extent)
@@ -214,7 +231,7 @@ impl World {
         let point = |rng: &mut crate::rng::Rng| {
             Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
         };
-        for _ in 0..n {
+        for k in 0..n {
             let pos = point(&mut rng);
             let state = VehicleState::new(pos, rng.range(-PI, PI), 0.0, 0.0);
             let goals = (0..RANDOM_GOALS)
@@ -232,7 +249,9 @@ impl World {
                     switch: SwitchRule::Tolerance,
                 })
                 .collect();
-            self.add_agent(state, goals)?;
+            if keep.contains(&k) {
+                self.add_agent(state, goals)?;
+            }
         }
         Ok(())
     }

@@ -120,6 +120,139 @@ try {
     assert.deepEqual(real(problems), []);
     await context.close();
   });
+  // Issue 17, point 2: the world stepped in Web Workers (?workers=N).
+  const base = url.replace(/\/?$/, "/");
+  /** Strips COOP/COEP from every response: the page is not cross-origin isolated (no SharedArrayBuffer). */
+  const unisolated = (context) =>
+    context.route("**/*", async (route) => {
+      const res = await route.fetch();
+      const headers = { ...res.headers() };
+      delete headers["cross-origin-opener-policy"];
+      delete headers["cross-origin-embedder-policy"];
+      await route.fulfill({ response: res, headers });
+    });
+  /** Opens the lab at `query` + `hash`; waits for the workers (if any) to own the world. */
+  const openLab = async (query, hash, isolated = true) => {
+    const o = await openPage(browser);
+    if (!isolated) await unisolated(o.context);
+    await o.page.goto(`${base}${query}${hash}`);
+    assert.equal(await waitReady(o.page, 120000), null);
+    await o.page.waitForFunction(() => !window.__lab.workers()?.starting, null, { timeout: 120000 });
+    return o;
+  };
+  /** Paused, rebuilt at t = 0, `k` steps: the state's hash before and after, and the time. */
+  const stepped = (page, k) =>
+    page.evaluate(async (k) => {
+      const l = window.__lab;
+      l.setPaused(true);
+      await l.restart();
+      const h0 = l.stateHash();
+      await l.stepN(k);
+      return { h0, h: l.stateHash(), count: l.count() };
+    }, k);
+  const K = 120;
+  const oneCore = new Map();
+  for (const hash of ["#n=20000&ov=", "#preset=p000_fig6_face_to_face"]) {
+    const { page, context } = await openLab("?workers=0", hash);
+    assert.equal(await page.evaluate(() => window.__lab.workers()), null);
+    oneCore.set(hash, await stepped(page, K));
+    await context.close();
+  }
+
+  for (const [name, query, hash, isolated, mode, slices] of [
+    ["2 workers, shared memory, 20,001 agents", "?workers=2", "#n=20000&ov=", true, "shared", 2],
+    ["2 workers, no cross-origin isolation: states by message, 20,001 agents", "?workers=2", "#n=20000&ov=", false, "messages", 2],
+    ["3 workers, paper 000 Fig. 6 (agents facing each other stay on one worker)", "?workers=3", "#preset=p000_fig6_face_to_face", true, "shared", 3],
+  ]) {
+    await check(`${name}: runs, draws, and after ${K} steps equals one core bit for bit`, async () => {
+      const { page, problems, context } = await openLab(query, hash, isolated);
+      const info = await page.evaluate(() => window.__lab.workers());
+      assert.equal(info.mode, mode);
+      assert.equal(info.crossOriginIsolated, isolated);
+      assert.equal(info.workers, slices, JSON.stringify(info.ranges));
+      assert.equal(info.error, null);
+      // Running: states arrive and are drawn.
+      const f0 = await page.evaluate(() => window.__lab.frames);
+      await page.evaluate(() => window.__lab.perfReset());
+      await page.waitForFunction((f) => window.__lab.frames > f + 3 && window.__lab.perfStats().updates > 0, f0, { timeout: 30000 });
+      if (hash.startsWith("#preset=p000_fig6")) {
+        // Fig. 6's pairs (0, 1), (2, 3), …: no worker boundary between a pair.
+        for (const [start] of info.ranges) assert.equal(start % 2, 0, JSON.stringify(info.ranges));
+      }
+      assert.match(await page.$eval("#hud", (e) => e.textContent), new RegExp(`step\\s+${slices} workers, ${mode === "shared" ? "shared memory" : "messages"}`));
+      const r = await stepped(page, K);
+      assert.notEqual(r.h, r.h0, "the agents moved");
+      assert.deepEqual(r, oneCore.get(hash));
+      await shot(page, `perf-workers-${mode}-${slices}`);
+      assert.deepEqual(problems, []);
+      await context.close();
+    });
+  }
+
+  await check("workers: a drag while paused reaches the worker that owns the agent (same state as one core after it)", async () => {
+    const run = async (query) => {
+      const { page, problems, context } = await openLab(query, "#n=20000&ov=");
+      await page.evaluate(async () => {
+        window.__lab.setPaused(true);
+        await window.__lab.restart();
+      });
+      await settle(page);
+      const h = await page.evaluate(() => window.__lab.handles());
+      const box = await page.locator("#lab").boundingBox();
+      await page.mouse.move(box.x + h.vehicle.x, box.y + h.vehicle.y);
+      await page.mouse.down();
+      await page.mouse.move(box.x + h.vehicle.x - 40, box.y + h.vehicle.y + 30, { steps: 6 });
+      await page.mouse.up();
+      // The edit goes out with the next job; wait until the drawn state has it.
+      await page.waitForFunction((x) => Math.abs(window.__lab.handles().vehicle.x - x) < 2, h.vehicle.x - 40, { timeout: 20000 });
+      const moved = await page.evaluate(() => window.__lab.handles().vehicle);
+      const out = await page.evaluate(async () => {
+        await window.__lab.stepN(60);
+        return window.__lab.stateHash();
+      });
+      assert.deepEqual(problems, []);
+      await context.close();
+      return { moved, out };
+    };
+    const one = await run("?workers=0");
+    const two = await run("?workers=2");
+    assert.deepEqual(two, one);
+    assert.ok(Number.isFinite(one.moved.x));
+  });
+
+  await check("workers on a table built for other limits (vmax=1.5): the workers get its bytes, same state as one core", async () => {
+    const run = async (query) => {
+      const { page, problems, context } = await openLab(query, "#n=20000&ov=&vmax=1.5");
+      await page.waitForFunction(() => window.__lab.table()?.state === "exact", null, { timeout: 120000 });
+      const r = await stepped(page, 60);
+      const info = await page.evaluate(() => window.__lab.workers());
+      assert.deepEqual(problems, []);
+      await context.close();
+      return { r, info };
+    };
+    const one = await run("?workers=0");
+    const two = await run("?workers=2");
+    assert.equal(one.info, null);
+    assert.equal(two.info.workers, 2);
+    assert.equal(two.info.error, null);
+    assert.deepEqual(two.r, one.r);
+  });
+
+  await check("workers by default from 20,000 agents (navigator.hardwareConcurrency of them), none below; a bad ?workers= is reported", async () => {
+    let { page, problems, context } = await openLab("", "#n=20000&ov=");
+    const info = await page.evaluate(() => window.__lab.workers());
+    const cores = await page.evaluate(() => navigator.hardwareConcurrency);
+    assert.equal(info.wanted, Math.min(8, cores));
+    assert.notEqual(info.mode, "main");
+    assert.deepEqual(problems, []);
+    await context.close();
+    ({ page, problems, context } = await openLab("", "#n=5000&ov="));
+    assert.equal(await page.evaluate(() => window.__lab.workers()), null);
+    await context.close();
+    ({ page, problems, context } = await openLab("?workers=x", "#n=100&ov="));
+    assert.match(await page.$eval("#message", (e) => e.textContent), /workers = x is not a whole number/);
+    await context.close();
+  });
 } finally {
   await browser.close();
   await server.close();

@@ -5,14 +5,15 @@
 import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 
-const sizes = (process.argv[2] ?? "1000,10000").split(",").map(Number);
+const sizes = (process.argv[2] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const onlyWorkers = process.env.ONLY_WORKERS === "1";
 const { server, url } = await serve();
 const browser = await launch();
 let bad = 0;
 try {
   const firsts = [];
   const marks = { "lab:core": [], "lab:table": [] };
-  for (let k = 0; k < 5; k++) {
+  for (let k = 0; k < (onlyWorkers ? 0 : 5); k++) {
     const { page, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
     await page.goto(url);
     const err = await waitReady(page, 60000);
@@ -21,15 +22,17 @@ try {
     for (const m of await page.evaluate(() => performance.getEntriesByType("mark").map((e) => [e.name, e.startTime]))) marks[m[0]]?.push(m[1]);
     await context.close();
   }
+  if (!onlyWorkers) {
   firsts.sort((a, b) => a - b);
   const median = (a) => a.sort((x, y) => x - y)[a.length >> 1]?.toFixed(0) ?? "?";
   console.log(
     `first drawn frame after navigation start: median ${firsts[2].toFixed(0)} ms (min ${firsts[0].toFixed(0)}, max ${firsts[4].toFixed(0)}) over 5 loads; ` +
       `core instantiated at ${median(marks["lab:core"])} ms, table loaded at ${median(marks["lab:table"])} ms (medians)`,
   );
+  }
   // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl, issue 17:
   // headless WebGL is software, so the page's own choice is the 2D sprites).
-  const runs = sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
+  const runs = onlyWorkers ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
   for (const [n, draw] of runs) {
     const { page, problems: all, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
     await page.goto(`${url.replace(/\/?$/, "/")}${draw ? `?draw=${draw}` : ""}#n=${n}&ov=`);
@@ -50,6 +53,56 @@ try {
     const problems = all.filter((p) => !(draw === "gl" && /GPU stall due to ReadPixels/.test(p)));
     if (problems.length) { bad++; console.log(problems.join("\n")); }
     await context.close();
+  }
+  // Issue 17, point 2: funnelling agents stepped per 16.7 ms frame with the
+  // world on the page's thread (workers=0), in one worker and in as many as
+  // the browser reports cores, same run, alternating by size; ratios to the
+  // page's thread and to one worker. Agents stepped per frame = agent
+  // updates finished / (sampled wall time / 16.7 ms); every frame draws the
+  // last complete state (fps), "states" = frames that drew a new one.
+  const wsizes = (process.env.WORKER_SIZES ?? "10000,30000,100000").split(",").map(Number);
+  const rounds = Number(process.env.WORKER_ROUNDS ?? 1);
+  let cores = 0;
+  const rows = new Map();
+  for (let round = 0; round < rounds; round++) {
+    for (const n of wsizes) {
+      // Alternating order by round, so a drift in the host's load does not favour one mode.
+      for (const w of round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]) {
+        const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
+        // "N": as many workers as navigator.hardwareConcurrency (read on the first load).
+        const nq = `?workers=${w === "N" ? cores || 2 : w}`;
+        await page.goto(`${url.replace(/\/?$/, "/")}${nq}#n=${n}&ov=`);
+        const err = await waitReady(page, 120000);
+        if (err) throw new Error(err);
+        cores = await page.evaluate(() => navigator.hardwareConcurrency);
+        await page.waitForFunction(() => !(window.__lab.workers()?.starting), null, { timeout: 120000 });
+        await page.waitForTimeout(700);
+        await page.evaluate(() => window.__lab.perfReset());
+        await page.waitForTimeout(3000);
+        const s = await page.evaluate(() => window.__lab.perfStats());
+        const info = await page.evaluate(() => window.__lab.workers());
+        const perFrame = s.updates / (s.spanMs / (1000 / 60));
+        const key = `${n}|${w}`;
+        rows.set(key, [...(rows.get(key) ?? []), perFrame]);
+        console.log(
+          `workers n=${n} ${w === "N" ? `N=${cores}` : w} (${info ? `${info.mode}, ${info.workers} slices` : "page's thread"}): ` +
+            `${Math.round(perFrame)} agents stepped per 16.7 ms, ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
+            `${((s.steppedFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
+            (info ? `slowest worker ${info.usPerUpdate.toFixed(3)} µs per agent update of the world, workers started in ${info.startMs.toFixed(0)} ms` : `core ${s.usPerUpdate.toFixed(3)} µs per agent update`),
+        );
+        if (problems.length) { bad++; console.log(problems.join("\n")); }
+        await context.close();
+      }
+    }
+  }
+  console.log(`workers: navigator.hardwareConcurrency = ${cores}; agents stepped per 16.7 ms frame (median of ${rounds} round(s)), ratios in the same run:`);
+  const med = (a) => [...a].sort((x, y) => x - y)[a.length >> 1];
+  for (const n of wsizes) {
+    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(rows.get(`${n}|${w}`)));
+    console.log(
+      `workers summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ` +
+        `${cores} workers / 1 worker ${(mn / m1).toFixed(2)}×, / page's thread ${(mn / m0).toFixed(2)}×`,
+    );
   }
 } finally {
   await browser.close();

@@ -2,6 +2,7 @@
 // drive, and the frame-time record behind perfStats().
 
 import type { FunnelConfig, Internals, VehicleParams } from "../wasm";
+import type { SteppingInfo } from "../workers/stepping";
 import type { TableStatus } from "./sim";
 import type { Handles } from "./handles";
 import { presetNames } from "./presets";
@@ -16,6 +17,12 @@ export interface PerfStats {
   meanDrawMs: number;
   usPerUpdate: number;
   agents: number;
+  /** Agent updates finished in the sampled frames, and those frames' wall
+   *  time (issue 17: agents stepped per 16.7 ms = updates / (spanMs / 16.7)). */
+  updates: number;
+  spanMs: number;
+  /** Frames that drew a newly stepped state. */
+  steppedFrames: number;
 }
 
 /** What the end-to-end tests and the perf harness read (window.__lab). */
@@ -46,6 +53,14 @@ export interface LabHook {
   params(): VehicleParams | null;
   /** Keys in the browser's table cache. */
   cachedTables(): Promise<string[]>;
+  /** Issue 17: how the world is stepped (this thread or N workers). */
+  workers(): SteppingInfo | null;
+  /** FNV-1a (hex) of the bits of every agent's state as drawn. */
+  stateHash(): string;
+  /** Runs k steps (paused) and resolves once they are drawn. */
+  stepN(k: number): Promise<void>;
+  /** Rebuilds the world at t = 0 (workers included) without unpausing. */
+  restart(): Promise<void>;
 }
 
 declare global {
@@ -68,6 +83,10 @@ export function installHook(): LabHook {
     table: () => null,
     params: () => null,
     cachedTables: () => Promise.resolve([]),
+    workers: () => null,
+    stateHash: () => "",
+    stepN: async () => {},
+    restart: async () => {},
     internals: () => null,
     funnel: () => null,
     state: () => defaultState(),
@@ -90,11 +109,13 @@ export class Perf {
   private draw: number[] = [];
   private updates = 0;
   private updateMs = 0;
+  private steppedFrames = 0;
 
   /** `updates` agent updates took `ms` in the core. */
   stepped(updates: number, ms: number): void {
     this.updates += updates;
     this.updateMs += ms;
+    this.steppedFrames++;
   }
 
   frame(interval: number, work: number, step: number, draw: number): void {
@@ -117,6 +138,7 @@ export class Perf {
     this.draw = [];
     this.updates = 0;
     this.updateMs = 0;
+    this.steppedFrames = 0;
   }
 
   stats(agents: number): PerfStats {
@@ -131,6 +153,23 @@ export class Perf {
       meanDrawMs: mean(this.draw),
       usPerUpdate: this.updates ? (this.updateMs * 1000) / this.updates : 0,
       agents,
+      updates: this.updates,
+      spanMs: this.intervals.reduce((x, y) => x + y, 0),
+      steppedFrames: this.steppedFrames,
     };
   }
+}
+
+/** FNV-1a, 32 bits, over the bit patterns of `a` (the worker/one-core check). */
+export function fnvHex(a: Float32Array): string {
+  const u = new Uint32Array(a.buffer, a.byteOffset, a.length);
+  let h = 0x811c9dc5;
+  for (let i = 0; i < u.length; i++) {
+    const w = u[i] ?? 0;
+    for (let b = 0; b < 32; b += 8) {
+      h ^= (w >>> b) & 0xff;
+      h = Math.imul(h, 0x01000193) >>> 0;
+    }
+  }
+  return h.toString(16).padStart(8, "0");
 }

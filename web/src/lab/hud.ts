@@ -18,6 +18,8 @@ export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" 
   /** The η table's status line (issue 14: exact, or approximate while the
    *  table of the limits in force is built). */
   table: string;
+  /** Issue 17: where the world is stepped ("this thread", "2 workers, shared memory"). */
+  stepping?: string | undefined;
 };
 
 const DEG = 180 / Math.PI;
@@ -40,6 +42,7 @@ export function renderHud(el: HTMLElement, h: HudData): void {
     `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,
     `table  ${h.table}`,
+    ...(h.stepping ? [`step   ${h.stepping}`] : []),
     `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`,
   ];
   el.textContent = lines.join("\n");

@@ -21,7 +21,9 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
     const stepped = sim.advance(interval);
     if (stepped.updates > 0) perf.stepped(stepped.updates, stepped.ms);
     let drawMs = 0;
-    if (sim.dirty || !sim.paused) {
+    // With the workers stepping (issue 17), a frame draws only a new state or
+    // an edit: redrawing the same state would take their cores.
+    if (sim.dirty || (!sim.paused && !sim.stepping())) {
       beginFrame(surface, COLOURS.background);
       const inter = sim.internals(sim.shown);
       const scene = scenes.scene(inter);

@@ -7,7 +7,7 @@ import { View } from "../view";
 import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
 import { RangeTable } from "./fields";
 import { attachDrags, handlePositions, type Handles } from "./handles";
-import { installHook, Perf } from "./hook";
+import { fnvHex, installHook, Perf } from "./hook";
 import { runLoop } from "./loop";
 import { buildPanel } from "./panel";
 import { presetNames } from "./presets";
@@ -89,6 +89,10 @@ async function start(): Promise<void> {
   hook.table = () => ({ ...sim.table });
   hook.params = () => lab.params();
   hook.cachedTables = cacheKeys;
+  hook.workers = () => sim.stepper?.info(sim.workersWanted) ?? null;
+  hook.stateHash = () => fnvHex(sim.state);
+  hook.stepN = (k) => sim.stepN(k);
+  hook.restart = () => sim.rebuild(false);
 
   const since = performance.now();
   await sim.rebuild(true);

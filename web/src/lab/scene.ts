@@ -50,7 +50,8 @@ export class SceneBuilder {
       };
     }
     let ring: FieldDraw | null = null;
-    if (st.overlays.ring && count > 0) {
+    // The ring and the ghost read the page's core, which does not step while workers do (issue 17).
+    if (st.overlays.ring && count > 0 && !sim.stepping()) {
       ring = { samples: count > who ? lab.etaRing(who) : new Float32Array(0), originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
     }
     let field: FieldDraw | null = null;
@@ -63,7 +64,7 @@ export class SceneBuilder {
       ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: inter?.mode ?? Mode.Funnelling }
       : null;
     let ghost: GhostDraw | null = null;
-    if (st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD) {
+    if (st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD && !sim.stepping()) {
       try {
         const g = lab.ghost(who);
         ghost = { points: g.points, reached: g.reached, finalDir: g.finalDir, slowed: g.slowed };
@@ -99,6 +100,7 @@ export class SceneBuilder {
       reachable: done || (inter?.reachable ?? true),
       usPerUpdate: sim.usPerUpdate, frameMs, agents: sim.count, time: sim.time, paused: sim.paused, slow: sim.st.slow,
       table: sim.tableLine(),
+      stepping: sim.steppingLine(),
     };
   }
 }

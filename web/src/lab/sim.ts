@@ -14,6 +14,7 @@ import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { Cancelled } from "../workers/pool";
 import { buildTable, cancelBuild, tableKeyFor } from "../workers/tables";
+import { type Edit, type Recipe, workersWanted, WorldStepper } from "../workers/stepping";
 
 /** The η table in force against the limits in force (issue 14). */
 export interface TableStatus {
@@ -35,6 +36,9 @@ export interface TableStatus {
   phases?: Record<string, number>;
   message: string;
 }
+
+/** The committed η table (the workers fetch it themselves). */
+const TABLE_URL = "tables/eta.bin";
 
 const PLAYGROUND_HELP =
   "Playground: drag the vehicle (body: position, white knob: heading), the target (centre), its β knob, " +
@@ -65,6 +69,14 @@ export class LabSim {
   onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
   /** The η table's status (HUD, window.__lab.table()). */
   table: TableStatus;
+  /** Issue 17: the world stepped in Web Workers (null: on this thread). */
+  stepper: WorldStepper | null = null;
+  /** Workers asked for by `?workers=N` or the default for the agent count. */
+  workersWanted = 0;
+  private recipe: Recipe | null = null;
+  private readonly defaultTableKey: string;
+  /** The bytes of a table built for other limits (workers load them too). */
+  private tableBytes: { key: string; bytes: Uint8Array } | null = null;
   private acc = 0;
   private generation = 0;
   private tableGen = 0;
@@ -77,6 +89,7 @@ export class LabSim {
     this.sharedView = st.view;
     this.url = new UrlSync(st, view, ranges, this.defaults);
     const key = lab.tableKey();
+    this.defaultTableKey = key;
     this.table = { state: "exact", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
   }
 
@@ -127,6 +140,8 @@ export class LabSim {
         // A newer request superseded this one: keep the lab's table.
         if (gen !== this.tableGen) throw new Cancelled();
         this.lab.setTable(bytes, key);
+        this.tableBytes = { key, bytes };
+        this.toWorkers({ kind: "table", bytes, key });
       },
     ).then(
       (t) => {
@@ -164,8 +179,28 @@ export class LabSim {
   /** Reads the agents' state back from the core. */
   pull(): void {
     this.count = this.lab.count();
-    this.state = this.lab.state();
+    this.state = this.stepping() ? (this.stepper as WorldStepper).state : this.lab.state();
     this.dirty = true;
+  }
+
+  /** True when the workers step the world (the page's core only checks edits). */
+  stepping(): boolean {
+    return this.stepper?.active === true;
+  }
+
+  /** The HUD's stepping line (issue 17); null when no workers were asked for. */
+  steppingLine(): string | undefined {
+    const s = this.stepper;
+    if (!s || this.workersWanted === 0) return undefined;
+    const i = s.info(this.workersWanted);
+    if (i.mode === "main") return i.error ? "this thread (workers failed)" : "this thread";
+    const how = i.mode === "shared" ? "shared memory" : "messages";
+    return `${i.workers} worker${i.workers === 1 ? "" : "s"}, ${how}${i.starting ? " (starting)" : ""}`;
+  }
+
+  /** An edit for the workers too, if they step the world. */
+  private toWorkers(e: Edit): void {
+    if (this.stepping()) (this.stepper as WorldStepper).edit(e);
   }
 
   /** Agent i's pose as last read. */
@@ -191,6 +226,7 @@ export class LabSim {
   /** Internals of agent i, or null (no such agent: the world is being rebuilt). */
   internals(i: number): Internals | null {
     if (i < 0 || i >= this.count) return null;
+    if (this.stepping()) return i === this.shown ? (this.stepper as WorldStepper).internals : null;
     try {
       return this.lab.internals(i);
     } catch {
@@ -211,6 +247,7 @@ export class LabSim {
       // A mismatched table is labelled approximate in the HUD while the
       // matching one is built (syncTable), not warned about.
       this.lab.setParams(this.params());
+      this.toWorkers({ kind: "params", params: this.params() });
     } catch (e) {
       showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
       for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = before[f.limit];
@@ -228,6 +265,7 @@ export class LabSim {
     try {
       this.lab.setFunnel(funnelConfig(this.st.funnel));
       this.lab.setRelaxed(relaxedConfig(this.st.funnel));
+      this.toWorkers({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel) });
     } catch (e) {
       showMessage(`Controller settings rejected: ${errorText(e)}`, "warn");
     }
@@ -239,6 +277,7 @@ export class LabSim {
     if (this.focus < 0) return;
     try {
       this.lab.setGoal(this.focus, this.goal());
+      this.toWorkers({ kind: "goal", i: this.focus, goal: this.goal() });
     } catch (e) {
       showMessage(`Goal rejected: ${errorText(e)}`, "warn");
     }
@@ -252,6 +291,7 @@ export class LabSim {
     const v = this.st.vehicle;
     try {
       this.lab.setPose(this.focus, v.x, v.y, v.theta);
+      this.toWorkers({ kind: "pose", i: this.focus, x: v.x, y: v.y, theta: v.theta });
     } catch (e) {
       showMessage(`Pose rejected: ${errorText(e)}`, "warn");
     }
@@ -271,6 +311,8 @@ export class LabSim {
       this.sharedView = null;
     }
     const gen = ++this.generation;
+    this.stepper?.stop();
+    this.recipe = null;
     lab.clear();
     this.pull();
     this.applyParams();
@@ -285,6 +327,7 @@ export class LabSim {
         const text = await p.load();
         if (gen !== this.generation) return;
         const info = lab.loadScenario(text);
+        this.recipe = this.recipeFor({ kind: "scenario", text });
         // The page's vehicle limits apply to presets too (issue 14:
         // `#preset=…&vmax=0.05` runs at 0.05 m/s).
         lab.setParams(this.params());
@@ -298,9 +341,12 @@ export class LabSim {
       this.onScene(PLAYGROUND_HELP, true);
       const extent = Math.max(10, Math.sqrt(st.agents) * 1.5);
       try {
-        lab.addAgent({ x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [this.goal()] });
+        const agent = { x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [this.goal()] };
+        lab.addAgent(agent);
         this.focus = 0;
-        if (st.agents > 0) lab.spawnRandom(st.agents, st.seed, extent, st.speed);
+        const spawn = st.agents > 0 ? { n: st.agents, seed: st.seed, extent, speed: st.speed } : null;
+        if (spawn) lab.spawnRandom(spawn.n, spawn.seed, spawn.extent, spawn.speed);
+        this.recipe = this.recipeFor({ kind: "playground", agent, spawn });
       } catch (e) {
         showMessage(`The playground could not be set up: ${errorText(e)}`, "error");
       }
@@ -319,10 +365,54 @@ export class LabSim {
     this.dt = lab.params().dt;
     this.pull();
     this.trails.record(0, this.state, this.stride, this.count);
+    this.startWorkers();
+  }
+
+  /** What the workers replay to build this world (null: they cannot). */
+  private recipeFor(build: Recipe["build"]): Recipe | null {
+    const key = this.lab.tableKey();
+    const bytes = this.tableBytes?.key === key ? this.tableBytes.bytes : null;
+    if (key !== this.defaultTableKey && !bytes) return null;
+    const url = new URL(TABLE_URL, location.href).href;
+    return { table: { key, url, bytes }, params: this.params(), funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel), build };
+  }
+
+  /** Issue 17: hands the world just built to the stepping workers when
+   *  `?workers=N` or the agent count asks for them. The page's core keeps
+   *  its copy for the edits' checks; the workers' states are drawn. */
+  private startWorkers(): void {
+    const wanted = workersWanted(this.count);
+    this.workersWanted = wanted.n;
+    if (wanted.problem) showMessage(wanted.problem, "warn");
+    if (wanted.n === 0 || !this.recipe || this.count === 0 || this.lab.avoidance() !== "off") return;
+    if (!this.stepper) {
+      this.stepper = new WorldStepper(wanted.n, this.stride);
+      this.stepper.onSwap = (state) => {
+        this.state = state;
+        this.dirty = true;
+      };
+    }
+    const gen = this.generation;
+    this.stepper.start(this.recipe, this.lab, this.state, this.shown).then(
+      () => {
+        if (gen !== this.generation) return;
+        const s = this.stepper as WorldStepper;
+        if (s.error) {
+          // The page's core steps on from its copy of the world.
+          showMessage(`Stepping in workers failed, stepping here: ${s.error}`, "warn");
+        }
+        this.pull();
+      },
+      () => undefined,
+    );
   }
 
   /** One step, paused afterwards (the caller shows the pause). */
   stepOnce(): void {
+    if (this.stepping()) {
+      void this.stepN(1);
+      return;
+    }
     this.lab.step(1);
     this.time += this.dt;
     this.pull();
@@ -332,13 +422,16 @@ export class LabSim {
   /** Runs the steps that `intervalMs` of wall time is worth (none when
    *  paused); returns the agent updates done and the ms they took. */
   advance(intervalMs: number): { updates: number; ms: number } {
-    if (this.paused || this.count === 0) return { updates: 0, ms: 0 };
+    if (this.count === 0) return { updates: 0, ms: 0 };
+    // Paused, the workers still take the edits (drags) and single steps.
+    if (this.paused) return this.stepping() ? this.advanceInWorkers(0) : { updates: 0, ms: 0 };
     this.acc += Math.min(0.1, intervalMs / 1000) * (this.st.slow ? 0.25 : 1);
     let k = Math.floor(this.acc / this.dt);
     if (k > MAX_STEPS_PER_FRAME) {
       k = MAX_STEPS_PER_FRAME;
       this.acc = 0;
     } else this.acc -= k * this.dt;
+    if (this.stepping()) return this.advanceInWorkers(k);
     if (k <= 0) return { updates: 0, ms: 0 };
     const s0 = performance.now();
     this.lab.step(k);
@@ -350,5 +443,47 @@ export class LabSim {
     this.pull();
     if (this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
     return { updates, ms };
+  }
+
+  /** Issue 17: asks the workers for `k` steps and takes what they finished
+   *  since the last frame; never waits (the last complete state is drawn). */
+  private advanceInWorkers(k: number): { updates: number; ms: number } {
+    const s = this.stepper as WorldStepper;
+    if (k > 0) s.request(k);
+    s.pump(this.shown);
+    return this.takeFromWorkers();
+  }
+
+  private takeFromWorkers(): { updates: number; ms: number } {
+    const s = this.stepper as WorldStepper;
+    if (!s.fresh) return { updates: 0, ms: 0 };
+    s.fresh = false;
+    const done = s.takeCompleted();
+    this.time += done.steps * this.dt;
+    this.pull();
+    if (done.steps > 0 && this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
+    const updates = done.steps * this.count;
+    if (updates > 0) {
+      // The HUD's cost per update: the slowest worker's stepping time (the
+      // jobs' wall time also holds the hand-over and the wait for a frame).
+      const us = (done.workerMs * 1000) / updates;
+      this.usPerUpdate = this.usPerUpdate === 0 ? us : 0.9 * this.usPerUpdate + 0.1 * us;
+    }
+    return { updates, ms: done.ms };
+  }
+
+  /** Runs `k` steps now (paused single steps, tests); resolves once the
+   *  state drawn is theirs, on this thread or in the workers. */
+  async stepN(k: number): Promise<void> {
+    if (!this.stepping()) {
+      this.lab.step(k);
+      this.time += k * this.dt;
+      this.pull();
+      this.trails.record(this.time, this.state, this.stride, this.count);
+      return;
+    }
+    const s = this.stepper as WorldStepper;
+    await s.run(k, this.shown);
+    this.takeFromWorkers();
   }
 }

@@ -5,6 +5,9 @@
 // out one at a time to whichever worker is free, so a slow task does not
 // hold the others back; results come back in task order. `cancel()` ends
 // the job in flight (its workers are terminated, its promise rejects).
+// `each()` (issue 17, the lab's stepping workers) is the other way to use
+// it: task i to worker i, every worker at once, for workers that keep state
+// between calls (each owns a slice of the world).
 
 /** What a pool worker receives. */
 export interface TaskMessage<T> {
@@ -77,6 +80,51 @@ export class WorkerPool<T, R> {
         };
         feed(w);
       }
+      if (tasks.length === 0) resolve(results);
+    });
+  }
+
+  /** Sends task i to worker i (created if needed; at most `size`), all at
+   *  once, and resolves with their answers in order: for stateful workers
+   *  (issue 17: each steps its own slice of agents) that must see every
+   *  call. `transfer(task)` lists what to move instead of copy. One job at a
+   *  time, like `run`. */
+  each(tasks: readonly T[], transfer: (task: T) => Transferable[] = () => []): Promise<R[]> {
+    if (tasks.length > this.size) return Promise.reject(new Error(`${tasks.length} tasks for ${this.size} workers`));
+    const job = ++this.job;
+    while (this.workers.length < tasks.length) this.workers.push(this.make());
+    const results: R[] = new Array<R>(tasks.length);
+    let done = 0;
+    return new Promise<R[]>((resolve, reject) => {
+      const fail = (e: Error): void => {
+        this.abort = null;
+        reject(e);
+      };
+      this.abort = () => fail(new Cancelled());
+      tasks.forEach((task, id) => {
+        const w = this.workers[id] as Worker;
+        w.onmessage = (ev: MessageEvent<ResultMessage<R>>) => {
+          if (job !== this.job) return;
+          const m = ev.data;
+          if (!m.ok) {
+            this.job++;
+            fail(new Error(m.error));
+            return;
+          }
+          results[id] = m.result;
+          if (++done === tasks.length) {
+            this.abort = null;
+            resolve(results);
+          }
+        };
+        w.onerror = (ev: ErrorEvent) => {
+          if (job !== this.job) return;
+          this.job++;
+          fail(new Error(`worker failed: ${ev.message}`));
+        };
+        const msg: TaskMessage<T> = { id, task };
+        w.postMessage(msg, transfer(task));
+      });
       if (tasks.length === 0) resolve(results);
     });
   }

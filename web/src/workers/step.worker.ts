@@ -1,0 +1,116 @@
+// One stepping worker (issue 17, point 2): owns agents start..end of the
+// lab's world. It rebuilds the world from the page's recipe (the same calls
+// the page made, so the same bits): a scenario whole, then keeps its range
+// (`retainRange`: facing links never cut, crate/funnelling/world_split.rs);
+// the playground's random crowd only its range (`spawnRandomRange`). On each
+// task applies the page's edits, steps k times and writes its states at its
+// offset of the shared back buffer, or hands them back (no isolation).
+// Driven by `WorldStepper` (stepping.ts) through `WorkerPool.each`.
+
+import { errorText, Lab, loadCore, type Internals } from "../wasm";
+import type { ResultMessage, TaskMessage } from "./pool";
+import type { StepReply, StepTask, TableSource } from "./stepping";
+
+let lab: Lab | null = null;
+let range = { start: 0, end: 0 };
+let shared: SharedArrayBuffer[] | null = null;
+let stride = 0;
+/** The last table loaded, by key: a new world on it is a `fork` (no reload). */
+let base: { key: string; lab: Lab } | null = null;
+
+async function tableLab(src: TableSource): Promise<Lab> {
+  if (base && base.key === src.key) return base.lab.fork();
+  let bytes: Uint8Array;
+  if (src.bytes) bytes = src.bytes;
+  else {
+    const res = await fetch(src.url);
+    if (!res.ok) throw new Error(`could not fetch the η table ${src.url}: HTTP ${res.status}`);
+    bytes = new Uint8Array(await res.arrayBuffer());
+  }
+  const l = new Lab(bytes);
+  base?.lab.free();
+  base = { key: src.key, lab: l };
+  return l.fork();
+}
+
+async function run(task: StepTask): Promise<StepReply> {
+  await loadCore();
+  if (task.init) {
+    const r = task.init.recipe;
+    const l = await tableLab(r.table);
+    l.setParams(r.params);
+    const { start, end } = task.init;
+    if (r.build.kind === "scenario") {
+      l.loadScenario(r.build.text);
+      l.setParams(r.params);
+    } else {
+      // The playground: agent 0, then the random crowd; only this slice is
+      // built (`spawnRandomRange`: the same agents without the others).
+      const first = r.build.agent ? 1 : 0;
+      if (r.build.agent && start === 0) l.addAgent(r.build.agent);
+      const s = r.build.spawn;
+      const a = Math.max(0, start - first);
+      const b = Math.max(0, end - first);
+      if (s && b > a) l.spawnRandomRange(s.n, s.seed, s.extent, s.speed, a, b);
+    }
+    l.setFunnel(r.funnel);
+    l.setRelaxed(r.relaxed);
+    // A scenario is built whole and keeps its slice (facing links renumbered).
+    if (r.build.kind === "scenario") l.retainRange(start, end);
+    lab?.free();
+    lab = l;
+    range = { start: task.init.start, end: task.init.end };
+    shared = task.init.shared;
+    stride = Lab.stateStride();
+  }
+  if (!lab) throw new Error("stepping worker used before its world was built");
+  for (const e of task.edits) {
+    const i = e.kind === "goal" || e.kind === "pose" ? e.i - range.start : -1;
+    if (i >= range.end - range.start) continue;
+    switch (e.kind) {
+      case "goal":
+        if (i >= 0) lab.setGoal(i, e.goal);
+        break;
+      case "pose":
+        if (i >= 0) lab.setPose(i, e.x, e.y, e.theta);
+        break;
+      case "funnel":
+        lab.setFunnel(e.funnel);
+        lab.setRelaxed(e.relaxed);
+        break;
+      case "params":
+        lab.setParams(e.params);
+        break;
+      case "table":
+        lab.setTable(e.bytes, e.key);
+        break;
+    }
+  }
+  const t0 = performance.now();
+  if (task.steps > 0) lab.step(task.steps);
+  const stepMs = performance.now() - t0;
+  const st = lab.state();
+  const local = task.shown - range.start;
+  let internals: Internals | null = null;
+  if (local >= 0 && local < range.end - range.start) internals = lab.internals(local);
+  if (shared) {
+    const buf = shared[task.buffer] as SharedArrayBuffer;
+    new Float32Array(buf, range.start * stride * 4, st.length).set(st);
+    return { time: lab.time(), internals, state: null, stepMs };
+  }
+  return { time: lab.time(), internals, state: st, stepMs };
+}
+
+self.onmessage = async (ev: MessageEvent<TaskMessage<StepTask>>) => {
+  const { id, task } = ev.data;
+  let reply: ResultMessage<StepReply>;
+  try {
+    const result = await run(task);
+    reply = { id, ok: true, result };
+    self.postMessage(reply, { transfer: result.state ? [result.state.buffer] : [] });
+    return;
+  } catch (e) {
+    reply = { id, ok: false, error: errorText(e) };
+  }
+  self.postMessage(reply);
+};

@@ -1,0 +1,314 @@
+// The lab's world stepped across cores (issue 17, point 2): N stepping
+// workers (step.worker.ts) on the one worker layer (pool.ts, `each`: task i
+// to worker i), each owning a contiguous slice of agents.
+//
+// - Slices: `Lab.splitRanges(N)` (crate/funnelling/world_split.rs) about
+//   equal ranges whose cuts never separate an agent from the agent its goal
+//   faces (paper 000 Fig. 6): the world reads other agents only through
+//   those links, from the step's start, so each slice steps to the same
+//   bits as the whole world. No per-step exchange between workers is needed.
+//   Avoidance (issue 18) couples every agent: one slice, then.
+// - Each worker rebuilds its slice from the page's recipe (the calls the
+//   page made: limits, scenario or playground, controller settings): a
+//   scenario whole, then `retainRange`; the playground's random crowd only
+//   its range (`spawnRandomRange`). Edits (drags, settings, a new table)
+//   follow in the next task.
+// - Double buffer: workers write into the back buffer while the page draws
+//   the front one (the last complete state); when every worker has
+//   answered, the two swap. The page never waits for a worker: a frame
+//   with a job in flight draws the last complete state again.
+// - Shared memory where the page is cross-origin isolated (COOP/COEP, see
+//   vite.config.ts): the two buffers are SharedArrayBuffers each worker
+//   writes its slice into. Elsewhere the states come back by message
+//   (transferred, no copy) and the page copies them into the back buffer.
+
+import type { AgentConfig, FunnelConfig, GoalConfig, Internals, Lab, RelaxedConfig, VehicleParams } from "../wasm";
+import { WorkerPool } from "./pool";
+
+/** Where a worker finds the η table in force: its bytes (a table built for
+ *  other limits, issue 14) or the committed table's URL. */
+export interface TableSource {
+  key: string;
+  url: string;
+  bytes: Uint8Array | null;
+}
+
+/** The calls that built the page's world, replayed by every worker. */
+export interface Recipe {
+  table: TableSource;
+  params: VehicleParams;
+  funnel: FunnelConfig;
+  relaxed: RelaxedConfig;
+  build:
+    | { kind: "scenario"; text: string }
+    | { kind: "playground"; agent: AgentConfig | null; spawn: { n: number; seed: number; extent: number; speed: number } | null };
+}
+
+/** An edit of the running world (`i`: the agent's index in the whole world). */
+export type Edit =
+  | { kind: "goal"; i: number; goal: GoalConfig }
+  | { kind: "pose"; i: number; x: number; y: number; theta: number }
+  | { kind: "funnel"; funnel: FunnelConfig; relaxed: RelaxedConfig }
+  | { kind: "params"; params: VehicleParams }
+  | { kind: "table"; bytes: Uint8Array; key: string };
+
+/** One task: (re)build the slice if `init`, apply `edits`, step `steps`
+ *  times, write the states into buffer `buffer`; `shown`: the agent whose
+ *  internals the HUD shows. */
+export interface StepTask {
+  init: { recipe: Recipe; start: number; end: number; shared: SharedArrayBuffer[] | null } | null;
+  edits: Edit[];
+  steps: number;
+  buffer: number;
+  shown: number;
+}
+
+export interface StepReply {
+  time: number;
+  internals: Internals | null;
+  /** The slice's states when there is no shared memory. */
+  state: Float32Array | null;
+  /** Wall ms of the worker's `step` calls. */
+  stepMs: number;
+}
+
+/** Steps one job runs at most (a frame's worth when the workers keep up). */
+const MAX_STEPS_PER_JOB = 4;
+
+/** Agents from which the page steps in workers by default, measured with
+ *  `make bench-web` (web/test/perf.mjs, README figures) on the 2-core host:
+ *  at 10,000 the page's thread steps and draws at 40–60 fps and the workers
+ *  only add their start (0.3–0.6 s) and a frame of latency; from 20,000 it
+ *  fell to 14–58 fps (12–63 ms of work per frame) while with workers the
+ *  page kept 36–60 fps at 1.5–4 ms per frame. Agents stepped per second
+ *  were not higher with workers on that loaded host (README). */
+export const AUTO_WORKERS_FROM = 20_000;
+
+/** `?workers=N` (0 = off) or, unset, the default for `count` agents:
+ *  `navigator.hardwareConcurrency` workers from AUTO_WORKERS_FROM agents.
+ *  A bad value is reported by `problem` and the default kept. */
+export function workersWanted(count: number, search = location.search): { n: number; problem: string | null } {
+  const auto = count >= AUTO_WORKERS_FROM ? Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2)) : 0;
+  const raw = new URLSearchParams(search).get("workers");
+  if (raw === null) return { n: auto, problem: null };
+  const n = /^\d{1,2}$/.test(raw) ? Number(raw) : NaN;
+  if (!(n >= 0 && n <= 16)) return { n: auto, problem: `workers = ${raw} is not a whole number of workers in [0, 16]; using ${auto}` };
+  return { n, problem: null };
+}
+
+/** How the world is stepped (HUD, window.__lab.workers()). */
+export interface SteppingInfo {
+  /** `main`: on the page's thread; `shared` / `messages`: in workers. */
+  mode: "main" | "shared" | "messages";
+  workers: number;
+  /** Each worker's agents, [start, end). */
+  ranges: Array<[number, number]>;
+  crossOriginIsolated: boolean;
+  cores: number;
+  /** The slowest worker's stepping time per agent update of the whole
+   *  world, µs (0 before the first step). */
+  usPerUpdate: number;
+  /** Wall ms the last start took (each worker rebuilds the world, keeps its slice). */
+  startMs: number;
+  /** Workers asked for (URL or default). */
+  wanted: number;
+  starting: boolean;
+  error: string | null;
+}
+
+export class WorldStepper {
+  private readonly pool: WorkerPool<StepTask, StepReply>;
+  readonly shared: boolean;
+  ranges: Array<[number, number]> = [];
+  /** The last complete state (what the page draws). */
+  state: Float32Array = new Float32Array(0);
+  /** Internals of the shown agent in that state. */
+  internals: Internals | null = null;
+  ready = false;
+  /** Started and neither stopped nor failed: the workers own the world
+   *  (while `!ready` they are still building it). */
+  active = false;
+  error: string | null = null;
+  /** A newer complete state arrived since the page last looked. */
+  fresh = false;
+  private back: Float32Array = new Float32Array(0);
+  private sab: SharedArrayBuffer[] | null = null;
+  private frontIndex = 0;
+  private queue: Promise<void> = Promise.resolve();
+  private pending = 0;
+  private owed = 0;
+  private edits: Edit[] = [];
+  private gen = 0;
+  private done = { steps: 0, ms: 0, workerMs: 0 };
+  private shown = 0;
+  /** Called with the new front state when the buffers swap (the page
+   *  must not keep drawing the buffer the next job writes into). */
+  onSwap: (state: Float32Array) => void = () => {};
+  /** Sum over jobs of the slowest worker's stepping ms, and agent updates
+   *  (the workers' own cost per update, beside the jobs' wall time). */
+  workerMs = 0;
+  workerUpdates = 0;
+  /** Wall ms from `start` until the workers owned the world. */
+  startMs = 0;
+
+  constructor(
+    readonly workers: number,
+    private readonly stride: number,
+  ) {
+    this.pool = new WorkerPool<StepTask, StepReply>(() => new Worker(new URL("./step.worker.ts", import.meta.url), { type: "module" }), workers);
+    this.shared = typeof SharedArrayBuffer === "function" && globalThis.crossOriginIsolated === true;
+  }
+
+  /** Splits `lab`'s world (just built by `recipe`, at t = 0) across the
+   *  workers; `initial` (its state) is drawn until they are ready. */
+  start(recipe: Recipe, lab: Lab, initial: Float32Array, shown: number): Promise<void> {
+    const gen = ++this.gen;
+    this.ready = false;
+    this.active = true;
+    this.error = null;
+    this.owed = 0;
+    this.edits = [];
+    const flat = lab.splitRanges(this.workers);
+    const ranges: Array<[number, number]> = [];
+    for (let k = 0; k + 1 < flat.length; k += 2) ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
+    this.ranges = ranges;
+    const bytes = initial.length * 4;
+    this.sab = this.shared ? [new SharedArrayBuffer(bytes), new SharedArrayBuffer(bytes)] : null;
+    this.frontIndex = 0;
+    if (this.sab) {
+      this.state = new Float32Array(this.sab[0] as SharedArrayBuffer);
+      this.back = new Float32Array(this.sab[1] as SharedArrayBuffer);
+    } else {
+      this.state = new Float32Array(initial.length);
+      this.back = new Float32Array(initial.length);
+    }
+    this.state.set(initial);
+    const sab = this.sab;
+    const t0 = performance.now();
+    return this.job(gen, (buffer) =>
+      ranges.map(([start, end]) => ({ init: { recipe, start, end, shared: sab }, edits: [], steps: 0, buffer, shown })),
+    ).then(() => {
+      if (gen === this.gen && this.error === null) {
+        this.ready = true;
+        this.startMs = performance.now() - t0;
+      }
+    });
+  }
+
+  /** `steps` more steps are owed (at most a job's worth wait: a slow host drops the rest). */
+  request(steps: number): void {
+    this.owed = Math.min(MAX_STEPS_PER_JOB, this.owed + steps);
+  }
+
+  /** An edit for the next job. */
+  edit(e: Edit): void {
+    this.edits.push(e);
+  }
+
+  /** Starts a job if none is in flight and something is owed; never waits. */
+  pump(shown: number): void {
+    this.shown = shown;
+    if (!this.ready || this.pending > 0 || (this.owed === 0 && this.edits.length === 0)) return;
+    const steps = this.owed;
+    this.owed = 0;
+    void this.dispatch(steps, shown);
+  }
+
+  /** Runs exactly `steps` steps (and the pending edits) as one job; resolves
+   *  when its state is the front one (tests, single steps). */
+  run(steps: number, shown: number): Promise<void> {
+    return this.dispatch(steps, shown);
+  }
+
+  private dispatch(steps: number, shown: number): Promise<void> {
+    const edits = this.edits;
+    this.edits = [];
+    return this.job(this.gen, (buffer) => this.ranges.map(() => ({ init: null, edits, steps, buffer, shown })), steps);
+  }
+
+  /** Steps completed since the last call, the wall ms their jobs took and
+   *  the slowest worker's stepping ms in them. */
+  takeCompleted(): { steps: number; ms: number; workerMs: number } {
+    const d = this.done;
+    this.done = { steps: 0, ms: 0, workerMs: 0 };
+    return d;
+  }
+
+  /** One job on every worker, after the one in flight (a worker answers in
+   *  order, and `each` hands each answer to the job in force). */
+  private job(gen: number, tasks: (buffer: number) => StepTask[], steps = 0): Promise<void> {
+    const next = this.queue.then(async () => {
+      if (gen !== this.gen) return;
+      const buffer = 1 - this.frontIndex;
+      const t0 = performance.now();
+      let replies: StepReply[];
+      try {
+        replies = await this.pool.each(tasks(buffer));
+      } catch (e) {
+        if (gen === this.gen) {
+          this.error = e instanceof Error ? e.message : String(e);
+          this.ready = false;
+          this.active = false;
+        }
+        return;
+      }
+      if (gen !== this.gen) return;
+      if (!this.sab) {
+        replies.forEach((r, k) => {
+          const start = this.ranges[k]?.[0] ?? 0;
+          if (r.state) this.back.set(r.state, start * this.stride);
+        });
+      }
+      const front = this.back;
+      this.back = this.state;
+      this.state = front;
+      this.frontIndex = buffer;
+      this.internals = replies.find((r) => r.internals !== null)?.internals ?? null;
+      this.done.steps += steps;
+      const slowest = Math.max(...replies.map((r) => r.stepMs));
+      this.workerMs += slowest;
+      this.done.workerMs += slowest;
+      this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
+      this.done.ms += performance.now() - t0;
+      this.fresh = true;
+      this.onSwap(front);
+    });
+    this.pending++;
+    this.queue = next.finally(() => {
+      this.pending--;
+      // The next job starts at once if steps are owed (not at the next frame).
+      this.pump(this.shown);
+    });
+    return next;
+  }
+
+  info(wanted: number): SteppingInfo {
+    return {
+      mode: this.active ? (this.sab ? "shared" : "messages") : "main",
+      workers: this.ranges.length,
+      ranges: this.ranges,
+      crossOriginIsolated: globalThis.crossOriginIsolated === true,
+      cores: navigator.hardwareConcurrency || 0,
+      usPerUpdate: this.workerUpdates > 0 ? (this.workerMs * 1000) / this.workerUpdates : 0,
+      startMs: this.startMs,
+      wanted,
+      starting: this.active && !this.ready,
+      error: this.error,
+    };
+  }
+
+  /** Stops stepping (a newer world, or back to the page's thread); the
+   *  workers are kept for the next start. */
+  stop(): void {
+    this.gen++;
+    this.ready = false;
+    this.active = false;
+    this.owed = 0;
+    this.edits = [];
+  }
+
+  terminate(): void {
+    this.stop();
+    this.pool.terminate();
+  }
+}
