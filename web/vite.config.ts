@@ -8,14 +8,34 @@ import type { IncomingMessage, ServerResponse } from "node:http";
 
 const TABLES = resolve(import.meta.dirname, "../tables");
 
-/** Gzipped tables by file, compressed once (issue 17: 3.2 MB → 1.2 MB on the wire). */
+/** Gzipped tables by file, compressed once (issue 17: 3.2 MB → 1.2 MB on
+ *  the wire; 0.54 MB as byte planes, `NAME.planes`). */
 const gzipped = new Map<string, { mtimeMs: number; body: Buffer }>();
+
+/** The byte planes of `b`: src/tableplanes.ts's `toPlanes` (the page's
+ *  `fromPlanes` rejoins them; the e2e suite loads the table this way). */
+function toPlanes(b: Uint8Array): Uint8Array {
+  const m = b.length >>> 2;
+  const out = new Uint8Array(b.length);
+  for (let i = 0; i < m; i++) for (let j = 0; j < 4; j++) out[j * m + i] = b[4 * i + j]!;
+  out.set(b.subarray(4 * m), 4 * m);
+  return out;
+}
+
+/** A table file's bytes as served: `NAME.planes` is `NAME.bin` in byte
+ *  planes (issue 17, src/tableplanes.ts: same bytes once rejoined, 2.2×
+ *  smaller gzipped). */
+function tableBytes(file: string, planes: boolean): Buffer {
+  const b = readFileSync(file);
+  return planes ? Buffer.from(toPlanes(b)) : b;
+}
 
 function serveTables(req: IncomingMessage, res: ServerResponse, next: () => void): void {
   const url = req.url ?? "";
   const m = /^\/tables\/([A-Za-z0-9_.-]+)(\?.*)?$/.exec(url);
   if (!m || m[1] === undefined) return next();
-  const file = resolve(TABLES, basename(m[1]));
+  const planes = m[1].endsWith(".planes");
+  const file = resolve(TABLES, basename(planes ? m[1].replace(/\.planes$/, ".bin") : m[1]));
   if (!existsSync(file)) {
     res.statusCode = 404;
     res.end("not found");
@@ -25,16 +45,17 @@ function serveTables(req: IncomingMessage, res: ServerResponse, next: () => void
   res.setHeader("Vary", "Accept-Encoding");
   if (/\bgzip\b/.test(String(req.headers["accept-encoding"] ?? ""))) {
     const mtimeMs = statSync(file).mtimeMs;
-    let z = gzipped.get(file);
+    const k = `${file}${planes ? "#planes" : ""}`;
+    let z = gzipped.get(k);
     if (!z || z.mtimeMs !== mtimeMs) {
-      z = { mtimeMs, body: gzipSync(readFileSync(file), { level: 6 }) };
-      gzipped.set(file, z);
+      z = { mtimeMs, body: gzipSync(tableBytes(file, planes), { level: 6 }) };
+      gzipped.set(k, z);
     }
     res.setHeader("Content-Encoding", "gzip");
     res.end(z.body);
     return;
   }
-  res.end(readFileSync(file));
+  res.end(tableBytes(file, planes));
 }
 
 function tables(): Plugin {
@@ -50,7 +71,9 @@ function tables(): Plugin {
       if (!existsSync(TABLES)) return;
       for (const f of readdirSync(TABLES)) {
         if (!f.endsWith(".bin")) continue;
-        this.emitFile({ type: "asset", fileName: `tables/${f}`, source: readFileSync(resolve(TABLES, f)) });
+        const bytes = readFileSync(resolve(TABLES, f));
+        this.emitFile({ type: "asset", fileName: `tables/${f}`, source: bytes });
+        this.emitFile({ type: "asset", fileName: `tables/${f.replace(/\.bin$/, ".planes")}`, source: toPlanes(bytes) });
       }
     },
   };

@@ -2,6 +2,7 @@
 // Everything else imports the core through this module's names and types.
 
 import init, { Lab, version } from "../pkg/steering.js";
+import { fromPlanes } from "./tableplanes";
 
 export {
   CrowdLab,
@@ -66,7 +67,12 @@ export function loadCore(): Promise<string> {
     coreBuild = simd ? "simd128" : "baseline";
     // Both builds share the glue (pkg/steering.js; `make wasm` checks it is
     // byte-identical); the baseline module is init()'s default.
-    const module_or_path = simd ? new URL("../pkg/steering_simd_bg.wasm", import.meta.url) : undefined;
+    const url = new URL("../pkg/steering_simd_bg.wasm", import.meta.url);
+    // Issue 17: the lab page starts compiling the SIMD build from its HTML,
+    // while the scripts load (index.html); taken here, else fetched now.
+    const early = simd ? (window as { __coreCompile?: Promise<WebAssembly.Module> }).__coreCompile : undefined;
+    if (early) return init({ module_or_path: early.catch(() => url) }).then(() => version());
+    const module_or_path = simd ? url : undefined;
     return init(module_or_path ? { module_or_path } : undefined).then(() => version());
   })();
   return ready;
@@ -91,6 +97,36 @@ export async function createLab(tableUrl: string): Promise<Lab> {
   }
   try {
     return new Lab(bytes);
+  } catch (e) {
+    throw new Error(`the η table ${tableUrl} was rejected: ${errorText(e)}`);
+  }
+}
+
+/** Starts fetching the η table (issue 17: the lab's first frame does not
+ *  wait for it, see `Lab.withoutTable`); a `.planes` URL is the file in
+ *  byte planes (tableplanes.ts), rejoined here. Rejects with a message fit
+ *  to show. */
+export function fetchTable(tableUrl: string): Promise<Uint8Array> {
+  const p = (async (): Promise<Uint8Array> => {
+    let res: Response;
+    try {
+      res = await fetch(tableUrl);
+      if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
+      const bytes = new Uint8Array(await res.arrayBuffer());
+      return tableUrl.endsWith(".planes") ? fromPlanes(bytes) : bytes;
+    } catch (e) {
+      throw new Error(`could not fetch the η table ${tableUrl}: ${errorText(e)}`);
+    }
+  })();
+  p.catch(() => undefined);
+  return p;
+}
+
+/** Puts the fetched table `bytes` in force in `lab` (`Lab.setTable`);
+ *  throws an Error fit to show when the core refuses them. */
+export function installTable(lab: Lab, bytes: Uint8Array, tableUrl: string): void {
+  try {
+    lab.setTable(bytes);
   } catch (e) {
     throw new Error(`the η table ${tableUrl} was rejected: ${errorText(e)}`);
   }
