@@ -79,13 +79,32 @@ function tables(): Plugin {
   };
 }
 
+/** Issue 17: the lab's HTML starts compiling the core's SIMD build before
+ *  its scripts run (index.html); this puts the built asset's URL (hashed,
+ *  the one src/wasm.ts would fetch) in place of `%CORE_SIMD_WASM%`, or the
+ *  package's own file in the dev server. */
+function coreWasmUrl(): Plugin {
+  return {
+    name: "steering-core-wasm-url",
+    transformIndexHtml: {
+      order: "post",
+      handler(html, ctx) {
+        if (!html.includes("%CORE_SIMD_WASM%")) return html;
+        const asset = Object.keys(ctx.bundle ?? {}).find((f) => /(^|\/)steering_simd_bg-[^/]*\.wasm$/.test(f));
+        if (ctx.bundle && !asset) throw new Error("the core's SIMD build is not in the bundle");
+        return html.replace("%CORE_SIMD_WASM%", asset ? `./${asset}` : "./pkg/steering_simd_bg.wasm");
+      },
+    },
+  };
+}
+
 // Cross-origin isolation gives performance.now() 5 µs resolution (instead
 // of 100 µs), which the HUD's µs-per-update figure needs.
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
 
 export default defineConfig({
   base: "./",
-  plugins: [tables()],
+  plugins: [tables(), coreWasmUrl()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
   // The η-table workers (issue 14) import the wasm module: ES workers.

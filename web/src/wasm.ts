@@ -69,8 +69,9 @@ export function loadCore(): Promise<string> {
     // byte-identical); the baseline module is init()'s default.
     const url = new URL("../pkg/steering_simd_bg.wasm", import.meta.url);
     // Issue 17: the lab page starts compiling the SIMD build from its HTML,
-    // while the scripts load (index.html); taken here, else fetched now.
-    const early = simd ? (window as { __coreCompile?: Promise<WebAssembly.Module> }).__coreCompile : undefined;
+    // while the scripts load (index.html); taken here, else fetched now
+    // (globalThis: workers load the core too).
+    const early = simd ? (globalThis as { __coreCompile?: Promise<WebAssembly.Module> }).__coreCompile : undefined;
     if (early) return init({ module_or_path: early.catch(() => url) }).then(() => version());
     const module_or_path = simd ? url : undefined;
     return init(module_or_path ? { module_or_path } : undefined).then(() => version());
