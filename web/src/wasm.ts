@@ -79,23 +79,15 @@ export function loadCore(): Promise<string> {
   return ready;
 }
 
-/** Fetches the committed η table and hands its bytes to the core.
- *  Throws an Error whose message is fit to show on the page. */
+/** Fetches the committed η table (`fetchTable`: a `.planes` URL is
+ *  rejoined) and hands its bytes to the core (the learn page; the lab
+ *  draws before its table, `Lab.withoutTable`). Throws an Error whose
+ *  message is fit to show on the page. */
 export async function createLab(tableUrl: string): Promise<Lab> {
-  // The fetch runs while the core instantiates (issue 17: first frame).
-  const fetching = (async (): Promise<Uint8Array> => {
-    const res = await fetch(tableUrl);
-    if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
-    return new Uint8Array(await res.arrayBuffer());
-  })();
-  fetching.catch(() => undefined);
+  // The fetch runs while the core instantiates (issue 17).
+  const fetching = fetchTable(tableUrl);
   await loadCore();
-  let bytes: Uint8Array;
-  try {
-    bytes = await fetching;
-  } catch (e) {
-    throw new Error(`could not fetch the η table ${tableUrl}: ${errorText(e)}`);
-  }
+  const bytes = await fetching;
   try {
     return new Lab(bytes);
   } catch (e) {
