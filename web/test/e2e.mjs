@@ -362,6 +362,9 @@ try {
     assert.ok(e && /η table/.test(e), String(e));
     const text = await p4.page.locator("#message").textContent();
     assert.match(text, /η table .* rejected/);
+    // Issue 17: the scene drawn before the table stays, held at t = 0.
+    await p4.page.waitForFunction(() => /table\s+none/.test(document.getElementById("hud").textContent));
+    assert.equal(await p4.page.evaluate(() => window.__lab.live()), false);
     await shot(p4.page, "07-corrupt-table-message");
     allProblems.push(...p4.problems);
     await p4.context.close();

@@ -110,6 +110,7 @@ async function start(): Promise<void> {
     if (!lab.hasTable()) {
       const msg = `The lab cannot run: ${errorText(e)}`;
       hook.error = msg;
+      sim.tableFailed(msg);
       badge.fail("no η table");
       showMessage(msg, "error");
       return;

@@ -88,6 +88,13 @@ export class LabSim {
     return this.lab.hasTable();
   }
 
+  /** The page's table could not be fetched or was refused, and no other
+   *  is in force: the scene stays at t = 0 (the HUD says so). */
+  tableFailed(message: string): void {
+    this.table = { ...this.table, state: "error", message };
+    this.dirty = true;
+  }
+
   /** The page's fetched table arrived (`install` puts it in the core).
    *  Ignored when a table is already in force (one built or cached for
    *  the link's limits came first); else the agents are planned with it
@@ -108,7 +115,7 @@ export class LabSim {
   tableLine(): string {
     const t = this.table;
     if (t.state === "building") return `approximate — building ${Math.round(100 * t.progress)} %`;
-    if (t.state === "error") return "approximate — no table for these limits";
+    if (t.state === "error") return this.live ? "approximate — no table for these limits" : "none (could not be loaded; t held at 0)";
     if (t.state === "loading") return "loading… (seek view)";
     const how = t.ms === 0 ? "" : t.cached ? ` (cache, ${t.ms.toFixed(0)} ms)` : ` (built, ${(t.ms / 1000).toFixed(1)} s)`;
     return `exact for these limits${how}`;
