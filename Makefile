@@ -111,8 +111,12 @@ test-e2e-perf: setup-browser web-build
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
 # then wasm / native per funnelling agent update (issue 17), and agents
 # stepped per 16.7 ms frame at 10k / 30k / 100k with 0, 1 and N workers.
+# First the time to the first frame, 9 fresh loads (median, p90, where the
+# time went); BENCH_WEB_ARGS="--base DIR" alternates them with another
+# build's dist, e.g. main's built into /tmp (README, figures).
+BENCH_WEB_ARGS ?=
 bench-web: setup-browser web-build bench-wasm-native
-	node web/test/perf.mjs
+	node web/test/perf.mjs 1000,10000 $(BENCH_WEB_ARGS)
 
 # Issue 14: η table build in Chromium's Web Workers and the cached reload,
 # per reference vehicle, REPS fresh contexts each (median, max, host load).

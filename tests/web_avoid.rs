@@ -19,7 +19,7 @@ fn play(method: &str) -> u32 {
     lab.set_avoidance_method(method).map_err(|_| ()).unwrap();
     let mut worst = 0;
     for _ in 0..900 {
-        lab.step(2);
+        lab.step(2).map_err(|_| ()).unwrap();
         worst = worst.max(lab.overlaps());
     }
     worst

@@ -122,7 +122,7 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
         "far target: Position_only or Funnelling, got {mode}"
     );
     assert!(get(&inter, "d").as_f64().unwrap() > 8.0);
-    lab.step(120);
+    lab.step(120).map_err(message).unwrap();
     let s1 = lab.state();
     assert!(s1[3] > 0.5, "moving after 2 s: v = {}", s1[3]);
     assert!((s1[0] - s0[0]).abs() > 0.5);
@@ -142,7 +142,7 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
     assert_eq!(m, 2.0, "braking towards the centre first");
     assert_eq!(get(&inter, "vDt").as_f64().unwrap(), 0.0);
     let settled = (0..120).any(|_| {
-        lab.step(10);
+        lab.step(10).map_err(message).unwrap();
         let m = get(&lab.internals(0).map_err(message).unwrap(), "mode")
             .as_f64()
             .unwrap();
@@ -154,7 +154,7 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
         .map_err(message)
         .unwrap();
     assert_eq!(lab.count(), 501);
-    lab.step(10);
+    lab.step(10).map_err(message).unwrap();
     assert_eq!(lab.state().len(), 501 * stride);
 }
 
@@ -189,7 +189,7 @@ fn the_presets_load() {
     ] {
         let info = lab.load_scenario(json).map_err(message).unwrap();
         assert!(get(&info, "agents").as_f64().unwrap() >= 1.0);
-        lab.step(60);
+        lab.step(60).map_err(message).unwrap();
         assert!(lab.state().iter().all(|x| x.is_finite()));
     }
 }
@@ -204,7 +204,7 @@ fn relaxed_goals_expose_the_arc_and_reach_the_region() {
     lab.add_agent(agent(0.0, 0.0, 0.0, &[g]))
         .map_err(message)
         .unwrap();
-    lab.step(30);
+    lab.step(30).map_err(message).unwrap();
     let arc = get(&lab.internals(0).map_err(message).unwrap(), "arc");
     assert!(arc.is_object(), "relaxed internals carry the arc 𝒜");
     let (a0, a1, ar) = (
@@ -216,7 +216,7 @@ fn relaxed_goals_expose_the_arc_and_reach_the_region() {
         a0 <= ar + 1e-6 && ar <= a1 + 1e-6,
         "α_r in 𝒜: {a0} {ar} {a1}"
     );
-    lab.step(1800);
+    lab.step(1800).map_err(message).unwrap();
     let s = lab.state();
     let d = ((s[0] - 10.0).powi(2) + (s[1] - 3.0).powi(2)).sqrt();
     assert!(d < 1.5 + 0.3, "ends in the disk: {d}");
@@ -284,7 +284,7 @@ fn funnel_settings_round_trip_and_change_the_bound() {
     lab.add_agent(agent(0.0, 0.0, 0.0, &[goal(6.0, 0.0, 1.57)]))
         .map_err(message)
         .unwrap();
-    lab.step(30);
+    lab.step(30).map_err(message).unwrap();
     let mu_max = |lab: &Lab| {
         let i = lab.internals(0).map_err(message).unwrap();
         assert_eq!(get(&i, "mode").as_f64(), Some(3.0), "Funnelling");
@@ -305,7 +305,7 @@ fn funnel_settings_round_trip_and_change_the_bound() {
     assert!((mu_max(&lab) - core::f64::consts::FRAC_PI_2).abs() < 1e-6);
     // The agents keep running under the new settings.
     assert_eq!(lab.count(), 1);
-    lab.step(30);
+    lab.step(30).map_err(message).unwrap();
     assert!(lab.state().iter().all(|x| x.is_finite()));
 }
 
@@ -459,7 +459,7 @@ fn the_exported_layout_matches_the_state_buffer() {
     }
     // One update from this state: the record holds what internals() computes for it.
     let before = lab.internals(0).map_err(message).unwrap();
-    lab.step(1);
+    lab.step(1).map_err(message).unwrap();
     let s = lab.state();
     let mode = get(&before, "mode").as_f64().unwrap();
     assert_eq!(at(&s, F::Mode), mode);
@@ -536,4 +536,81 @@ fn the_ghost_is_the_seek_the_update_asked_about_and_forks_share_the_table() {
     let fork = lab.fork().map_err(message).unwrap();
     assert_eq!(fork.count(), 0);
     assert!(!fork.eta_field(1.0, 0.0, 1.3).is_empty());
+}
+
+/// Issue 17 (first frame without the table): a lab made without its table
+/// shows the scene at t = 0 (provisional internals: γ the bearing, seek
+/// ghost, no field), refuses to step, and once the table arrives runs the
+/// very trajectory a lab made with the table runs, bit for bit: the
+/// playground's agent with random ones, and a preset loaded before the
+/// table.
+#[wasm_bindgen_test]
+fn a_lab_without_its_table_draws_then_runs_the_same_bits() {
+    let build = |lab: &mut Lab, preset: Option<&str>| match preset {
+        Some(json) => {
+            lab.load_scenario(json).map_err(message).unwrap();
+        }
+        None => {
+            lab.add_agent(agent(-4.0, 1.0, 0.3, &[goal(6.0, 2.0, 1.57)]))
+                .map_err(message)
+                .unwrap();
+            lab.spawn_random(40.0, 5.0, 12.0, 1.3)
+                .map_err(message)
+                .unwrap();
+        }
+    };
+    for preset in [
+        None,
+        Some(include_str!("../scenarios/p000_fig8_eighty.json")),
+        Some(include_str!(
+            "../scenarios/p001_fig12_successive_relaxed.json"
+        )),
+    ] {
+        let mut with = Lab::new(TABLE).map_err(message).unwrap();
+        build(&mut with, preset);
+        let mut pending = Lab::without_table().map_err(message).unwrap();
+        assert!(!pending.has_table());
+        assert_eq!(
+            pending.table_key(),
+            with.table_key(),
+            "the key it waits for"
+        );
+        build(&mut pending, preset);
+        // Before the table: the scene at t = 0, seek steering, no η.
+        assert_eq!(pending.count(), with.count());
+        let inter = pending.internals(0).map_err(message).unwrap();
+        let d = get(&inter, "d").as_f64().unwrap();
+        assert!(d > 0.0 && d.is_finite());
+        let ghost = pending.ghost(0).map_err(message).unwrap();
+        assert!(js_sys::Float32Array::from(get(&ghost, "points")).length() >= 4);
+        assert!(pending.eta_field(1.0, 0.0, 1.3).is_empty());
+        let m = message(pending.step(1).err().expect("no step without a table"));
+        assert!(m.contains("η table"), "{m}");
+        assert!(message(pending.table_info().err().unwrap()).contains("not loaded"));
+        // The table arrives: same plan, same trajectory.
+        pending.set_table(TABLE, None).map_err(message).unwrap();
+        assert!(pending.has_table());
+        // Poses at t = 0 (random agents added after the playground's are
+        // planned now, where `new` left them provisional until the first
+        // step: only their internals differ, not what the step does).
+        let (a, b) = (pending.state(), with.state());
+        assert_eq!(a.len(), b.len());
+        let stride = Lab::state_stride() as usize;
+        assert!(
+            a.chunks(stride).zip(b.chunks(stride)).all(|(x, y)| x[..5]
+                .iter()
+                .zip(&y[..5])
+                .all(|(p, q)| p.to_bits() == q.to_bits())),
+            "poses at t = 0 differ"
+        );
+        for _ in 0..20 {
+            pending.step(30).map_err(message).unwrap();
+            with.step(30).map_err(message).unwrap();
+        }
+        let (a, b) = (pending.state(), with.state());
+        assert!(
+            a.iter().zip(&b).all(|(x, y)| x.to_bits() == y.to_bits()),
+            "trajectories differ after 10 s"
+        );
+    }
 }

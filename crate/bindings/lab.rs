@@ -25,9 +25,11 @@ use crate::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
 use crate::relaxed::{ControllerKind, RelaxedConfig};
 use crate::rng::Rng;
 use crate::scenario::Scenario;
+use crate::seek::ReachLimits;
+use crate::table::generate::TableSpec;
 use crate::table::EtaTable;
 use crate::vehicle::{VehicleParams, VehicleState};
-use crate::world::{World, STATE_STRIDE};
+use crate::world::{provisional_plan, World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
 #[wasm_bindgen]
@@ -113,14 +115,55 @@ fn field_samples(
 /// Points a ghost path keeps at most ([`crate::ghost`]).
 const GHOST_POINTS: usize = 256;
 
+/// What a lab knows of the table it waits for ([`Lab::without_table`]):
+/// the committed table's key and reach limits, from its spec (no entries).
+#[derive(Clone)]
+struct Expected {
+    key: String,
+    limits: ReachLimits,
+}
+
 /// The lab: the η table, the vehicle parameters and the agents.
 #[wasm_bindgen]
 pub struct Lab {
     /// Shared by the labs [`Lab::fork`] makes (one copy in memory, ~10 MB).
-    table: Rc<EtaTable>,
+    /// `None` until the table has arrived (issue 17: the first frame is
+    /// drawn without it; see [`Lab::without_table`]).
+    table: Option<Rc<EtaTable>>,
+    /// The table a lab without one waits for.
+    expected: Expected,
     pub(crate) world: World,
     buf: Vec<f32>,
     ghost: Vec<Vec2>,
+}
+
+impl Lab {
+    /// The table, or the error every table-bound call gives before it arrives.
+    fn table(&self) -> Result<&EtaTable, JsError> {
+        self.table
+            .as_deref()
+            .ok_or_else(|| JsError::new("η table: not loaded yet"))
+    }
+
+    /// What a table-less lab expects: the default vehicle's committed table.
+    fn expected_default() -> Expected {
+        let spec = TableSpec::default_for(VehicleParams::default());
+        Expected {
+            key: spec.key(),
+            limits: ReachLimits {
+                reach_radius: spec.params.reach_radius,
+                orbit_turns: spec.params.orbit_turns,
+                max_time: spec.params.max_time,
+            },
+        }
+    }
+
+    fn expected_of(t: &EtaTable) -> Expected {
+        Expected {
+            key: t.key(),
+            limits: table_limits(t),
+        }
+    }
 }
 
 #[wasm_bindgen]
@@ -134,20 +177,56 @@ impl Lab {
         let world = World::new(params, FunnelConfig::default())
             .map_err(|e| js_err("η table parameters", e))?;
         Ok(Lab {
-            table: Rc::new(table),
+            expected: Self::expected_of(&table),
+            table: Some(Rc::new(table)),
             world,
             buf: Vec::new(),
             ghost: Vec::new(),
         })
     }
 
+    /// A lab for the default vehicle whose η table has not arrived yet
+    /// (issue 17: the page draws its first frame while the table loads).
+    /// Agents, goals, presets, edits and settings work as usual; until
+    /// [`Lab::set_table`] the internals are the provisional plan (the goal
+    /// measured from the vehicle, γ its bearing: seek steering; the mode
+    /// settled inside the tolerance, else Funnelling), the ghost is the
+    /// plain seek path towards the goal, the η field and ring are empty,
+    /// and `step` is refused: the clock holds at t = 0, so the run after
+    /// the table arrives is the one `new Lab(bytes)` gives, bit for bit
+    /// (`tests/web_bindings.rs`).
+    #[wasm_bindgen(js_name = withoutTable)]
+    pub fn without_table() -> Result<Lab, JsError> {
+        let world = World::new(VehicleParams::default(), FunnelConfig::default())
+            .map_err(|e| js_err("vehicle parameters", e))?;
+        Ok(Lab {
+            table: None,
+            expected: Self::expected_default(),
+            world,
+            buf: Vec::new(),
+            ghost: Vec::new(),
+        })
+    }
+
+    /// Whether the η table is in (see [`Lab::without_table`]).
+    #[wasm_bindgen(js_name = hasTable)]
+    #[must_use]
+    pub fn has_table(&self) -> bool {
+        self.table.is_some()
+    }
+
     /// A new lab on the same η table (shared, not copied) with an empty
     /// world and default settings: one per live figure of the learn page.
     pub fn fork(&self) -> Result<Lab, JsError> {
-        let world = World::new(self.table.params().vehicle, FunnelConfig::default())
+        let params = self
+            .table
+            .as_ref()
+            .map_or_else(VehicleParams::default, |t| t.params().vehicle);
+        let world = World::new(params, FunnelConfig::default())
             .map_err(|e| js_err("η table parameters", e))?;
         Ok(Lab {
-            table: Rc::clone(&self.table),
+            table: self.table.clone(),
+            expected: self.expected.clone(),
             world,
             buf: Vec::new(),
             ghost: Vec::new(),
@@ -157,15 +236,16 @@ impl Lab {
     /// The table's axes and build parameters.
     #[wasm_bindgen(js_name = tableInfo, unchecked_return_type = "TableInfo")]
     pub fn table_info(&self) -> Result<JsValue, JsError> {
+        let t = self.table()?;
         to_js(&TableInfo {
-            entries: self.table.len(),
-            distances: self.table.axis(0),
-            alphas: self.table.axis(1),
-            omega_fractions: self.table.axis(2),
-            speeds: self.table.axis(3),
-            desired_speeds: self.table.axis(4),
-            d_eta: self.table.d_eta(),
-            params: self.table.params().vehicle,
+            entries: t.len(),
+            distances: t.axis(0),
+            alphas: t.axis(1),
+            omega_fractions: t.axis(2),
+            speeds: t.axis(3),
+            desired_speeds: t.axis(4),
+            d_eta: t.d_eta(),
+            params: t.params().vehicle,
         })
     }
 
@@ -174,7 +254,9 @@ impl Lab {
     /// cache); the agents keep their state. Returns the table's key. A
     /// corrupt file, or one whose key is not `expected_key` when given,
     /// is an error and changes nothing (the cache's bytes are checked
-    /// here, loaded once).
+    /// here, loaded once). The first table of a lab made
+    /// [`Lab::without_table`] also plans every agent, as adding them to a
+    /// lab with a table would have (its clock has not run).
     #[wasm_bindgen(js_name = setTable)]
     pub fn set_table(
         &mut self,
@@ -190,15 +272,26 @@ impl Lab {
                 )));
             }
         }
-        self.table = Rc::new(t);
+        let first = self.table.is_none();
+        self.expected = Self::expected_of(&t);
+        self.table = Some(Rc::new(t));
+        if first {
+            if let Some(t) = &self.table {
+                self.world.plan(t);
+            }
+        }
         Ok(key)
     }
 
-    /// The key of the table in force (its cache key).
+    /// The key of the table in force (its cache key); before the table of
+    /// a lab [`Lab::without_table`] has arrived, the key of the table it
+    /// waits for (the default vehicle's).
     #[wasm_bindgen(js_name = tableKey)]
     #[must_use]
     pub fn table_key(&self) -> String {
-        self.table.key()
+        self.table
+            .as_ref()
+            .map_or_else(|| self.expected.key.clone(), |t| t.key())
     }
 
     /// The vehicle parameters in force.
@@ -218,9 +311,9 @@ impl Lab {
         let p: VehicleParams = from_js("vehicle parameters", params)?;
         p.validate().map_err(|e| js_err("vehicle parameters", e))?;
         self.world.params = p;
-        Ok(match self.table.check_params(&p) {
-            Ok(()) => String::new(),
-            Err(e) => format!("{e} (η predictions are approximate until then)"),
+        Ok(match self.table.as_ref().map(|t| t.check_params(&p)) {
+            None | Some(Ok(())) => String::new(),
+            Some(Err(e)) => format!("{e} (η predictions are approximate until then)"),
         })
     }
 
@@ -269,15 +362,11 @@ impl Lab {
     #[must_use]
     pub fn eta_field(&self, v_c: f32, omega_c: f32, v_d: f32) -> Vec<f32> {
         let mut out = Vec::new();
+        let Some(table) = self.table.as_deref() else {
+            return out;
+        };
         if v_c.is_finite() && omega_c.is_finite() && v_d.is_finite() {
-            field_samples(
-                &self.table,
-                self.table.distances(),
-                omega_c,
-                v_c,
-                v_d,
-                &mut out,
-            );
+            field_samples(table, table.distances(), omega_c, v_c, v_d, &mut out);
         }
         out
     }
@@ -288,17 +377,19 @@ impl Lab {
     #[must_use]
     pub fn eta_ring_at(&self, d: f32, v_c: f32, omega_c: f32, v_d: f32) -> Vec<f32> {
         let mut out = Vec::new();
+        let Some(table) = self.table.as_deref() else {
+            return out;
+        };
         if !(d.is_finite() && v_c.is_finite() && omega_c.is_finite() && v_d.is_finite()) {
             return out;
         }
-        let ring = self
-            .table
+        let ring = table
             .distances()
             .iter()
             .copied()
             .min_by(|a, b| (a - d).abs().total_cmp(&(b - d).abs()));
         if let Some(r) = ring {
-            field_samples(&self.table, &[r], omega_c, v_c, v_d, &mut out);
+            field_samples(table, &[r], omega_c, v_c, v_d, &mut out);
         }
         out
     }
@@ -344,8 +435,11 @@ impl Lab {
         if a.goals.iter().any(|g| g.relaxed) {
             self.use_controller(true)?;
         }
-        // The mode shown before the first step is the one chosen at t = 0.
-        self.world.plan(&self.table);
+        // The mode shown before the first step is the one chosen at t = 0
+        // (without a table: when it arrives, `set_table`).
+        if let Some(t) = &self.table {
+            self.world.plan(t);
+        }
         Ok(i as u32)
     }
 
@@ -418,11 +512,22 @@ impl Lab {
             .map_err(|e| js_err("random agents", e))
     }
 
-    /// Advances the world by `n` steps of `dt`.
-    pub fn step(&mut self, n: u32) {
+    /// Advances the world by `n` steps of `dt`; refused before the η table
+    /// has arrived ([`Lab::without_table`]: the clock holds at t = 0).
+    pub fn step(&mut self, n: u32) -> Result<(), JsError> {
+        let Some(t) = &self.table else {
+            return if n == 0 {
+                Ok(())
+            } else {
+                Err(JsError::new(
+                    "η table: not loaded yet, the clock holds at t = 0",
+                ))
+            };
+        };
         for _ in 0..n.min(MAX_STEPS_PER_CALL) {
-            self.world.step(&self.table);
+            self.world.step(t);
         }
+        Ok(())
     }
 
     /// Every agent's state, [`STATE_STRIDE`] floats each: x, y, θ, v, ω,
@@ -451,7 +556,7 @@ impl Lab {
             .agent(i as usize)
             .map_err(|e| js_err("agent", e))?;
         let mut out = InternalsOut::from(self.plan_of(i)?);
-        if self.world.controller == ControllerKind::Relaxed && !a.done() {
+        if self.world.controller == ControllerKind::Relaxed && !a.done() && self.table.is_some() {
             let r = &a.relaxed;
             out.arc = Some(ArcOut {
                 alpha_min: r.arc_min,
@@ -480,8 +585,22 @@ impl Lab {
             .world
             .agent(i as usize)
             .map_err(|e| js_err("agent", e))?;
+        let Some(table) = self.table.as_deref() else {
+            // Before the table: the plain seek towards the goal centre.
+            self.ghost.clear();
+            let g = seek_ghost(
+                &self.world.params,
+                a.state,
+                a.goal_now.pos,
+                a.goal_now.speed,
+                &self.expected.limits,
+                GHOST_POINTS,
+                &mut self.ghost,
+            );
+            return self.ghost_out(&g);
+        };
         let g = update_ghost(
-            &self.table,
+            table,
             &self.world.params,
             &a.state,
             &inter,
@@ -521,7 +640,10 @@ impl Lab {
             s,
             Vec2::new(tx, ty),
             v_d,
-            &table_limits(&self.table),
+            &self
+                .table
+                .as_deref()
+                .map_or(self.expected.limits, table_limits),
             GHOST_POINTS,
             &mut self.ghost,
         );
@@ -553,6 +675,15 @@ impl Lab {
                 gamma: a.state.theta,
                 ..Default::default()
             }
+        } else if self.table.is_none() {
+            // Before the table: what the core can say without one; no η.
+            Internals {
+                eta: f32::NAN,
+                delta_eta: f32::NAN,
+                mu: f32::NAN,
+                mu_max: f32::NAN,
+                ..provisional_plan(&self.world.params, &a.state, &a.goal_now)
+            }
         } else if self.world.controller == ControllerKind::Relaxed {
             // Relaxed funnelling plans towards the relaxed point: show what
             // its last update did.
@@ -560,7 +691,7 @@ impl Lab {
         } else {
             let mut mem = a.memory;
             self.world.config.plan(
-                &self.table,
+                self.table()?,
                 &self.world.params,
                 &a.state,
                 &a.goal_now,
@@ -590,7 +721,9 @@ impl Lab {
     pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;
         let mut world = sc.world().map_err(|e| js_err("scenario", e))?;
-        world.plan(&self.table);
+        if let Some(t) = &self.table {
+            world.plan(t);
+        }
         let (mut lo, mut hi) = (Vec2::splat(f32::INFINITY), Vec2::splat(f32::NEG_INFINITY));
         for a in &sc.agents {
             for p in core::iter::once(Vec2::new(a.x, a.y))
@@ -603,9 +736,9 @@ impl Lab {
         if !lo.is_finite() || !hi.is_finite() {
             (lo, hi) = (Vec2::splat(-5.0), Vec2::splat(5.0));
         }
-        let warning = match self.table.check_params(&world.params) {
-            Ok(()) => String::new(),
-            Err(e) => e.to_string(),
+        let warning = match self.table.as_ref().map(|t| t.check_params(&world.params)) {
+            None | Some(Ok(())) => String::new(),
+            Some(Err(e)) => e.to_string(),
         };
         self.world = world;
         to_js(&ScenarioInfo {

@@ -359,8 +359,10 @@ pub(crate) fn advance_queue(a: &mut Agent, spec: &GoalSpec, t: f32) {
 /// The part of the first plan that needs no η table (see [`World::plan`]):
 /// the goal measured from the vehicle, and the position-tolerance phase of
 /// paper 000 Fig. 5, which settles the mode inside the tolerance; outside,
-/// Funnelling towards the centre until the table is consulted.
-fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Internals {
+/// Funnelling towards the centre until the table is consulted. Also what
+/// the lab shows before its table has arrived (issue 17: first frame).
+#[must_use]
+pub fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Internals {
     let rel = g.pos - s.pos;
     let d = rel.length();
     let bearing = if d > 1e-6 {

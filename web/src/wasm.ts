@@ -2,6 +2,7 @@
 // Everything else imports the core through this module's names and types.
 
 import init, { Lab, version } from "../pkg/steering.js";
+import { fromPlanes } from "./tableplanes";
 
 export {
   CrowdLab,
@@ -67,9 +68,14 @@ export function loadCore(): Promise<string> {
     // Both builds share the glue (pkg/steering.js; `make wasm` checks it is
     // byte-identical); the baseline module is init()'s default.
     if (!simd) return init().then(() => version());
+    const url = new URL("../pkg/steering_simd_bg.wasm", import.meta.url);
+    // Issue 17: the lab page starts compiling the SIMD build from its HTML,
+    // while the scripts load (index.html); taken here, else fetched now
+    // (globalThis: workers load the core too).
+    const early = (globalThis as { __coreCompile?: Promise<WebAssembly.Module> }).__coreCompile;
     // A SIMD module that does not load (missing from a partial deploy,
     // refused by the engine) falls back to the baseline one: same bits.
-    return init({ module_or_path: new URL("../pkg/steering_simd_bg.wasm", import.meta.url) })
+    return init({ module_or_path: early ? early.catch(() => url) : url })
       .catch(() => {
         coreBuild = "baseline";
         return init();
@@ -79,25 +85,47 @@ export function loadCore(): Promise<string> {
   return ready;
 }
 
-/** Fetches the committed η table and hands its bytes to the core.
- *  Throws an Error whose message is fit to show on the page. */
+/** Fetches the committed η table (`fetchTable`: a `.planes` URL is
+ *  rejoined) and hands its bytes to the core (the learn page; the lab
+ *  draws before its table, `Lab.withoutTable`). Throws an Error whose
+ *  message is fit to show on the page. */
 export async function createLab(tableUrl: string): Promise<Lab> {
-  // The fetch runs while the core instantiates (issue 17: first frame).
-  const fetching = (async (): Promise<Uint8Array> => {
-    const res = await fetch(tableUrl);
-    if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
-    return new Uint8Array(await res.arrayBuffer());
-  })();
-  fetching.catch(() => undefined);
+  // The fetch runs while the core instantiates (issue 17).
+  const fetching = fetchTable(tableUrl);
   await loadCore();
-  let bytes: Uint8Array;
-  try {
-    bytes = await fetching;
-  } catch (e) {
-    throw new Error(`could not fetch the η table ${tableUrl}: ${errorText(e)}`);
-  }
+  const bytes = await fetching;
   try {
     return new Lab(bytes);
+  } catch (e) {
+    throw new Error(`the η table ${tableUrl} was rejected: ${errorText(e)}`);
+  }
+}
+
+/** Starts fetching the η table (issue 17: the lab's first frame does not
+ *  wait for it, see `Lab.withoutTable`); a `.planes` URL is the file in
+ *  byte planes (tableplanes.ts), rejoined here. Rejects with a message fit
+ *  to show. */
+export function fetchTable(tableUrl: string): Promise<Uint8Array> {
+  const p = (async (): Promise<Uint8Array> => {
+    let res: Response;
+    try {
+      res = await fetch(tableUrl);
+      if (!res.ok) throw new Error(`HTTP ${res.status} ${res.statusText}`.trim());
+      const bytes = new Uint8Array(await res.arrayBuffer());
+      return tableUrl.endsWith(".planes") ? fromPlanes(bytes) : bytes;
+    } catch (e) {
+      throw new Error(`could not fetch the η table ${tableUrl}: ${errorText(e)}`);
+    }
+  })();
+  p.catch(() => undefined);
+  return p;
+}
+
+/** Puts the fetched table `bytes` in force in `lab` (`Lab.setTable`);
+ *  throws an Error fit to show when the core refuses them. */
+export function installTable(lab: Lab, bytes: Uint8Array, tableUrl: string): void {
+  try {
+    lab.setTable(bytes);
   } catch (e) {
     throw new Error(`the η table ${tableUrl} was rejected: ${errorText(e)}`);
   }

@@ -301,14 +301,70 @@ try {
     await p5.context.close();
   });
 
+  // Issue 17: the first frame does not wait for the η table. The table's
+  // response is held back: the scene at t = 0 is drawn (seek steering, the
+  // "loading" badge), a drag made meanwhile is kept, and when the table is
+  // let through the same scene funnels from t = 0 with the link's state.
+  for (const [w, h, name] of [[1280, 800, "desktop"], [390, 844, "phone"]]) {
+    await check(`first frame before the η table (${name} ${w} px): seek view, then funnelling, nothing lost`, async () => {
+      const pl = await openPage(browser, { width: w, height: h }, 2);
+      let release;
+      const held = new Promise((r) => { release = r; });
+      await pl.page.route("**/tables/eta.planes", async (r) => { await held; await r.continue(); });
+      const frag = "#tx=6&ty=2&tb=90&vx=-4&vy=-1&vth=10&dtol=0.5&etol=8&n=12&seed=4";
+      await pl.page.goto(`${url}${frag}`);
+      await pl.page.waitForFunction(() => Number.isFinite(window.__lab.firstFrameMs) && window.__lab.frames > 1, null, { timeout: 20000 });
+      const before = await pl.page.evaluate(() => ({ live: window.__lab.live(), ready: window.__lab.ready, count: window.__lab.count(), mode: window.__lab.mode(), hud: document.getElementById("hud").textContent, badge: document.querySelector(".table-badge")?.textContent ?? null }));
+      assert.equal(before.live, false);
+      assert.equal(before.ready, false);
+      assert.equal(before.count, 13);
+      // The core's provisional plan (Funnelling towards the centre, no η) is
+      // shown as seek steering until the table is in.
+      assert.equal(before.mode, 3, "the provisional plan");
+      assert.match(before.hud, /mode\s+Position_only/);
+      assert.match(before.hud, /η\s+—/);
+      assert.match(before.badge ?? "", /loading η table/);
+      assert.match(before.hud, /table\s+loading/);
+      assert.match(before.hud, /t 0\.00 s/);
+      const hs = await pl.page.evaluate(() => window.__lab.handles());
+      const reds = await colours(pl.page, hs.target, 40);
+      assert.ok(reds.red > 30, `the target drawn in seek red: ${JSON.stringify(reds)}`);
+      await shot(pl.page, `14-first-frame-loading-${name}`);
+      // A drag while loading: the vehicle moves, and stays moved.
+      await drag(pl.page, hs.vehicle, { x: hs.vehicle.x - 30, y: hs.vehicle.y + 20 });
+      const st0 = await pl.page.evaluate(() => window.__lab.state());
+      assert.ok(Math.abs(st0.vehicle.x - -4) > 0.05, `dragged: ${JSON.stringify(st0.vehicle)}`);
+      await pl.page.waitForTimeout(300);
+      assert.equal(await pl.page.evaluate(() => window.__lab.live()), false, "still held");
+      release();
+      await waitReady(pl.page);
+      const after = await pl.page.evaluate(() => ({ live: window.__lab.live(), st: window.__lab.state(), mode: window.__lab.mode(), table: window.__lab.table(), hash: location.hash }));
+      assert.equal(after.live, true);
+      assert.deepEqual(after.st.vehicle, st0.vehicle, "the drag survived the table's arrival");
+      assert.deepEqual(after.st.target, st0.target);
+      assert.equal(after.table.state, "exact");
+      assert.match(await pl.page.locator("#hud").textContent(), /mode\s+Funnelling/);
+      assert.match(after.hash, /n=12/);
+      assert.match(after.hash, /seed=4/);
+      await pl.page.waitForTimeout(900);
+      assert.equal(await pl.page.locator(".table-badge").count(), 0, "the badge is gone");
+      await shot(pl.page, `15-after-table-funnelling-${name}`);
+      allProblems.push(...pl.problems);
+      await pl.context.close();
+    });
+  }
+
   await check("a corrupt table shows a readable message on the page", async () => {
     const p4 = await openPage(browser);
-    await p4.page.route("**/tables/eta.bin", (r) => r.fulfill({ status: 200, contentType: "application/octet-stream", body: Buffer.from("this is not an eta table at all") }));
+    await p4.page.route("**/tables/eta.planes", (r) => r.fulfill({ status: 200, contentType: "application/octet-stream", body: Buffer.from("this is not an eta table at all") }));
     await p4.page.goto(url);
     const e = await waitReady(p4.page);
     assert.ok(e && /η table/.test(e), String(e));
     const text = await p4.page.locator("#message").textContent();
     assert.match(text, /η table .* rejected/);
+    // Issue 17: the scene drawn before the table stays, held at t = 0.
+    await p4.page.waitForFunction(() => /table\s+none/.test(document.getElementById("hud").textContent));
+    assert.equal(await p4.page.evaluate(() => window.__lab.live()), false);
     await shot(p4.page, "07-corrupt-table-message");
     allProblems.push(...p4.problems);
     await p4.context.close();

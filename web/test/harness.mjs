@@ -22,12 +22,14 @@ export const CHROMIUM_ARGS = [
   "--no-first-run",
 ];
 
-export async function serve() {
+/** Serves web/dist, or `outDir` (another build's dist, e.g. a baseline). */
+export async function serve(outDir) {
   const server = await preview({
     root: webDir,
     configFile: resolve(webDir, "vite.config.ts"),
     logLevel: "warn",
     preview: { host: "127.0.0.1", port: 0, strictPort: false },
+    ...(outDir ? { build: { outDir: resolve(outDir) } } : {}),
   });
   const url = server.resolvedUrls?.local?.[0];
   if (!url) throw new Error("vite preview gave no URL");

@@ -1,35 +1,80 @@
-// Frame-time harness: the built page with N extra funnelling agents
+// Time to the first frame (`--loads N` fresh loads, 9 by default; with
+// `--base DIR` alternating with a previous build's dist, median and p90,
+// and where the time went). Then the frame-time harness: the built page with N extra funnelling agents
 // (URL flag n=N, no trails or overlays) in headless Chromium. For each N,
 // waits 0.5 s, then samples ~2 s with performance.now(): mean rAF interval,
 // mean and p95 work per frame (core step + drawing) and core step time.
 import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 
-const sizes = (process.argv[2] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const args = process.argv.slice(2);
+// `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
+// into /tmp) is served beside this one and the first-frame loads
+// alternate between them, in rotating order.
+const baseDirs = [];
+for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) baseDirs.push(args.splice(at, 2)[1]);
+const loadsAt = args.indexOf("--loads");
+const LOADS = loadsAt >= 0 ? Number(args.splice(loadsAt, 2)[1]) : 9;
+const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
 const { server, url } = await serve();
+const bases = [];
+for (const d of baseDirs) bases.push({ dir: d, ...(await serve(d)) });
 const browser = await launch();
 let bad = 0;
+
+/** One fresh load of `at`: the first frame, the table in force, and where
+ *  the time went (resource timing, marks), ms after navigation start. */
+async function startLoad(at) {
+  const { page, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
+  await page.goto(at);
+  const err = await waitReady(page, 60000);
+  if (err) throw new Error(err);
+  const r = await page.evaluate(() => {
+    const nav = performance.getEntriesByType("navigation")[0];
+    const res = performance.getEntriesByType("resource");
+    const pick = (re, f) => res.filter((e) => re.test(e.name)).map(f);
+    const end = (re) => { const a = pick(re, (e) => e.responseEnd); return a.length ? Math.max(...a) : NaN; };
+    const start = (re) => { const a = pick(re, (e) => e.startTime); return a.length ? Math.min(...a) : NaN; };
+    const mark = (n) => performance.getEntriesByName(n)[0]?.startTime ?? NaN;
+    const l = window.__lab;
+    return {
+      "html": nav.responseEnd,
+      "scripts in": end(/\.js(\?|$)/),
+      "main module runs": mark("lab:main"),
+      "DOMContentLoaded": nav.domContentLoadedEventStart,
+      "wasm requested": start(/\.wasm(\?|$)/),
+      "wasm in": end(/\.wasm(\?|$)/),
+      "core instantiated": mark("lab:core"),
+      "scene built (first rAF next)": mark("lab:scene"),
+      "first frame": l.firstFrameMs,
+      "table in": end(/eta\.(bin|planes)/),
+      "table loaded (clock runs)": Number.isFinite(l.tableMs) ? l.tableMs : mark("lab:table"),
+    };
+  });
+  await context.close();
+  return r;
+}
+
 try {
-  const firsts = [];
-  const marks = { "lab:core": [], "lab:table": [] };
-  for (let k = 0; k < (onlyWorkers ? 0 : 5); k++) {
-    const { page, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
-    await page.goto(url);
-    const err = await waitReady(page, 60000);
-    if (err) throw new Error(err);
-    firsts.push(await page.evaluate(() => window.__lab.firstFrameMs));
-    for (const m of await page.evaluate(() => performance.getEntriesByType("mark").map((e) => [e.name, e.startTime]))) marks[m[0]]?.push(m[1]);
-    await context.close();
-  }
   if (!onlyWorkers) {
-  firsts.sort((a, b) => a - b);
-  const median = (a) => a.sort((x, y) => x - y)[a.length >> 1]?.toFixed(0) ?? "?";
-  console.log(
-    `first drawn frame after navigation start: median ${firsts[2].toFixed(0)} ms (min ${firsts[0].toFixed(0)}, max ${firsts[4].toFixed(0)}) over 5 loads; ` +
-      `core instantiated at ${median(marks["lab:core"])} ms, table loaded at ${median(marks["lab:table"])} ms (medians)`,
-  );
+  const sides = [...bases.map((b) => [b.dir, b.url]), ["this", url]];
+  const rows = Object.fromEntries(sides.map(([n]) => [n, []]));
+  for (let k = 0; k < LOADS; k++) for (let j = 0; j < sides.length; j++) { const [n, at] = sides[(j + k) % sides.length]; rows[n].push(await startLoad(at)); }
+  const q = (a, p) => { const s = a.filter(Number.isFinite).sort((x, y) => x - y); return s.length ? s[Math.min(s.length - 1, Math.floor(p * s.length))] : NaN; };
+  const f = (x) => (Number.isFinite(x) ? x.toFixed(0) : "—");
+  for (const [n] of sides) {
+    const firsts = rows[n].map((r) => r["first frame"]);
+    console.log(
+      `first drawn frame after navigation start (${n}): median ${f(q(firsts, 0.5))} ms, ` +
+        `p90 ${f(q(firsts, 0.9))} ms (min ${f(q(firsts, 0))}, max ${f(q(firsts, 1))}) over ${firsts.length} loads`,
+    );
   }
+  const keys = Object.keys(rows[sides[0][0]][0]);
+  console.log(`start-up breakdown, medians (ms after navigation start): ${sides.map(([n]) => n).join(" / ")}`);
+  for (const key of keys) console.log(`  ${key.padEnd(28)} ${sides.map(([n]) => f(q(rows[n].map((r) => r[key]), 0.5)).padStart(6)).join(" / ")}`);
+  }
+
   // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl, issue 17:
   // headless WebGL is software, so the page's own choice is the 2D sprites).
   const runs = onlyWorkers ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
@@ -107,5 +152,6 @@ try {
 } finally {
   await browser.close();
   await server.close();
+  for (const b of bases) await b.server.close();
 }
 process.exit(bad ? 1 : 0);

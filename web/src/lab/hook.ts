@@ -31,8 +31,13 @@ export interface LabHook {
   error: string | null;
   problems: string[];
   version: string;
-  /** performance.now() when the first frame with agents was drawn. */
+  /** performance.now() when the first frame with agents was drawn (issue
+   *  17: before the η table has arrived, the scene at t = 0). */
   firstFrameMs: number;
+  /** performance.now() when the η table was in force and the clock free. */
+  tableMs: number;
+  /** Whether the η table is in (the clock runs). */
+  live(): boolean;
   frames: number;
   count(): number;
   mode(): number | null;
@@ -77,6 +82,8 @@ export function installHook(): LabHook {
     problems: [],
     version: "",
     firstFrameMs: NaN,
+    tableMs: NaN,
+    live: () => false,
     frames: 0,
     count: () => 0,
     mode: () => null,

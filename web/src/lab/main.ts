@@ -4,7 +4,7 @@
 import { setupCanvas } from "../canvas";
 import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
-import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
+import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges } from "../wasm";
 import { RangeTable } from "./fields";
 import { attachDrags, handlePositions, type Handles } from "./handles";
 import { fnvHex, installHook, Perf } from "./hook";
@@ -16,15 +16,20 @@ import { LabSim } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
 import { cacheKeys, openTableCache } from "../workers/tablecache";
+import { tableBadge } from "./loading";
 
-const TABLE_URL = "tables/eta.bin";
+/** The committed table in byte planes (issue 17: 0.54 MB gzipped, not
+ *  1.2; the same bytes once rejoined, src/tableplanes.ts). */
+const TABLE_URL = "tables/eta.planes";
 
 const hook = installHook();
+performance.mark("lab:main");
 
 async function start(): Promise<void> {
-  // Issue 17: the table's fetch starts with the core's instantiation, not after it.
-  const labLoading = createLab(TABLE_URL);
-  labLoading.catch(() => undefined);
+  // Issue 17: the table's fetch starts with the core's instantiation, and
+  // the first frame does not wait for it (Lab.withoutTable: the scene at
+  // t = 0 with seek steering, the clock held until the table is in).
+  const tableBytes = fetchTable(TABLE_URL);
   // The table cache opens beside the core's loading (a reload with other
   // limits reads its table from there as soon as the lab starts).
   openTableCache();
@@ -32,17 +37,7 @@ async function start(): Promise<void> {
   performance.mark("lab:core");
   hook.version = version;
   showVersion(version);
-
-  let lab: Lab;
-  try {
-    lab = await labLoading;
-    performance.mark("lab:table");
-  } catch (e) {
-    const msg = `The lab cannot start: ${errorText(e)}`;
-    hook.error = msg;
-    showMessage(msg, "error");
-    return;
-  }
+  const lab = Lab.withoutTable();
 
   // The link is read against the core's ranges and default limits.
   const table = new RangeTable(ranges(), precision());
@@ -94,8 +89,10 @@ async function start(): Promise<void> {
   hook.stepN = (k) => sim.stepN(k);
   hook.restart = () => sim.rebuild(false);
 
+  hook.live = () => sim.live;
   const since = performance.now();
   await sim.rebuild(true);
+  performance.mark("lab:scene");
   // A refused value does not stick in the address bar: it now holds the state in force.
   if (decoded.problems.length > 0) {
     // The build may have warned too (a vehicle limit the table was not built for): both stay.
@@ -104,8 +101,30 @@ async function start(): Promise<void> {
     sim.url.writeNow();
   }
   transport.setPaused(false);
-  hook.ready = true;
+  const badge = tableBadge(canvas.parentElement ?? document.body);
   runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), hook, perf, since);
+
+  // The table: the agents are planned with it and the clock starts.
+  const t0 = performance.now();
+  try {
+    const bytes = await tableBytes;
+    sim.tableArrived(() => installTable(lab, bytes, TABLE_URL), performance.now() - t0);
+  } catch (e) {
+    // A table built or cached for the link's limits may have come first.
+    if (!lab.hasTable()) {
+      const msg = `The lab cannot run: ${errorText(e)}`;
+      hook.error = msg;
+      sim.tableFailed(msg);
+      badge.fail("no η table");
+      showMessage(msg, "error");
+      return;
+    }
+  }
+  performance.mark("lab:table");
+  hook.tableMs = performance.now();
+  badge.done();
+  sim.dirty = true;
+  hook.ready = true;
 }
 
 start().catch((e: unknown) => {

@@ -11,6 +11,13 @@ import type { LabSim } from "./sim";
 /** Screen length of the orientation/heading handles, CSS px. */
 export const HANDLE_PX = 56;
 
+/** Before the η table has arrived (issue 17) the agents show seek steering:
+ *  the provisional plan's Funnelling (towards the centre, no η yet) is drawn
+ *  as Position_only, and turns into Funnelling when the table is in. */
+function seekView(mode: number, live: boolean): number {
+  return !live && mode === Mode.Funnelling ? Mode.PositionOnly : mode;
+}
+
 export class SceneBuilder {
   private fieldCache: { key: string; samples: Float32Array } | null = null;
 
@@ -22,12 +29,13 @@ export class SceneBuilder {
     const out: TargetDraw[] = [];
     if (sim.count > CROWD_THRESHOLD) return out;
     const s = sim.state;
+    const live = sim.live;
     for (let i = 0; i < sim.count; i++) {
       if (i === sim.focus) continue;
       const o = i * sim.stride;
       out.push({
         x: s[o + StateField.GoalX]!, y: s[o + StateField.GoalY]!, beta: s[o + StateField.GoalBeta]!,
-        dTol: s[o + StateField.GoalDTol]!, epsTol: s[o + StateField.GoalEpsTol]!, mode: s[o + StateField.Mode]!,
+        dTol: s[o + StateField.GoalDTol]!, epsTol: s[o + StateField.GoalEpsTol]!, mode: seekView(s[o + StateField.Mode]!, live),
       });
     }
     return out;
@@ -57,11 +65,15 @@ export class SceneBuilder {
     let field: FieldDraw | null = null;
     if (st.overlays.field && count > 0) {
       const key = `${st.field.vC}|${st.field.omegaC}|${st.field.vD}`;
-      if (!this.fieldCache || this.fieldCache.key !== key) this.fieldCache = { key, samples: lab.etaField(st.field.vC, st.field.omegaC, st.field.vD) };
-      field = { samples: this.fieldCache.samples, originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.field, dark: COLOURS.fieldDark };
+      if (!this.fieldCache || this.fieldCache.key !== key) {
+        const samples = lab.etaField(st.field.vC, st.field.omegaC, st.field.vD);
+        // Empty before the table has arrived: not kept, asked again.
+        this.fieldCache = samples.length > 0 ? { key, samples } : null;
+      }
+      if (this.fieldCache) field = { samples: this.fieldCache.samples, originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.field, dark: COLOURS.fieldDark };
     }
     const focusTarget: TargetDraw | null = sim.focus >= 0
-      ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: inter?.mode ?? Mode.Funnelling }
+      ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: seekView(inter?.mode ?? Mode.Funnelling, sim.live) }
       : null;
     let ghost: GhostDraw | null = null;
     if (st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD && !sim.stepping()) {
@@ -92,7 +104,7 @@ export class SceneBuilder {
     const dx = (sim.field(i, StateField.GoalX) ?? NaN) - (sim.field(i, StateField.X) ?? NaN);
     const dy = (sim.field(i, StateField.GoalY) ?? NaN) - (sim.field(i, StateField.Y) ?? NaN);
     return {
-      mode: inter?.mode ?? null,
+      mode: inter ? seekView(inter.mode, sim.live) : null,
       d: done ? Math.hypot(dx, dy) : (inter?.d ?? NaN),
       alpha: done ? NaN : (inter?.alpha ?? NaN), eta: done ? NaN : (inter?.eta ?? NaN),
       deltaEta: done ? NaN : (inter?.deltaEta ?? NaN), mu: done ? NaN : (inter?.mu ?? NaN), muMax: inter?.muMax ?? NaN,

@@ -20,8 +20,10 @@ import { type Edit, type Recipe, workersWanted, WorldStepper } from "../workers/
 export interface TableStatus {
   /** `exact`: built for these limits; `building`: the old one, approximate,
    *  while workers build the new one; `error`: no table can be built for
-   *  these limits (the old one stays, approximate). */
-  state: "exact" | "building" | "error";
+   *  these limits (the old one stays, approximate); `loading`: the page's
+   *  first table is still on its way (issue 17: the scene is drawn, the
+   *  clock holds at t = 0). */
+  state: "exact" | "building" | "error" | "loading";
   /** Build progress, 0..1. */
   progress: number;
   /** Key of the table in force. */
@@ -90,14 +92,44 @@ export class LabSim {
     this.url = new UrlSync(st, view, ranges, this.defaults);
     const key = lab.tableKey();
     this.defaultTableKey = key;
-    this.table = { state: "exact", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
+    this.table = { state: lab.hasTable() ? "exact" : "loading", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
+  }
+
+  /** Whether the clock can run: the lab has an η table (issue 17: until
+   *  the first one arrives the scene is drawn at t = 0, seek steering). */
+  get live(): boolean {
+    return this.lab.hasTable();
+  }
+
+  /** The page's table could not be fetched or was refused, and no other
+   *  is in force: the scene stays at t = 0 (the HUD says so). */
+  tableFailed(message: string): void {
+    this.table = { ...this.table, state: "error", message };
+    this.dirty = true;
+  }
+
+  /** The page's fetched table arrived (`install` puts it in the core).
+   *  Ignored when a table is already in force (one built or cached for
+   *  the link's limits came first); else the agents are planned with it
+   *  and the clock starts from t = 0: the run is the one a lab made with
+   *  the table runs. Returns whether it was installed. */
+  tableArrived(install: () => void, ms: number): boolean {
+    if (this.lab.hasTable()) return false;
+    install();
+    if (this.table.state === "loading") {
+      const key = this.lab.tableKey();
+      this.table = { ...this.table, state: "exact", key, wanted: key, ms, cached: false };
+    }
+    this.pull();
+    return true;
   }
 
   /** The HUD's table line. */
   tableLine(): string {
     const t = this.table;
     if (t.state === "building") return `approximate — building ${Math.round(100 * t.progress)} %`;
-    if (t.state === "error") return "approximate — no table for these limits";
+    if (t.state === "error") return this.live ? "approximate — no table for these limits" : "none (could not be loaded; t held at 0)";
+    if (t.state === "loading") return "loading… (seek view)";
     const how = t.ms === 0 ? "" : t.cached ? ` (cache, ${t.ms.toFixed(0)} ms)` : ` (built, ${(t.ms / 1000).toFixed(1)} s)`;
     return `exact for these limits${how}`;
   }
@@ -121,7 +153,7 @@ export class LabSim {
     this.table = { ...this.table, wanted, message: "" };
     if (wanted === this.lab.tableKey()) {
       cancelBuild();
-      this.table = { ...this.table, state: "exact", progress: 1 };
+      this.table = { ...this.table, state: this.lab.hasTable() ? "exact" : "loading", progress: 1 };
       this.dirty = true;
       return;
     }
@@ -147,7 +179,8 @@ export class LabSim {
       (t) => {
         if (gen !== this.tableGen) return;
         this.table = { ...this.table, state: "exact", progress: 1, key: t.key, ms: t.ms, cached: t.cached, workers: t.workers, phases: t.phases };
-        this.dirty = true;
+        // A lab's first table plans its agents (Lab.setTable).
+        this.pull();
       },
       (e: unknown) => {
         if (e instanceof Cancelled || gen !== this.tableGen) return;
@@ -409,6 +442,7 @@ export class LabSim {
 
   /** One step, paused afterwards (the caller shows the pause). */
   stepOnce(): void {
+    if (!this.live) return;
     if (this.stepping()) {
       void this.stepN(1);
       return;
@@ -422,7 +456,7 @@ export class LabSim {
   /** Runs the steps that `intervalMs` of wall time is worth (none when
    *  paused); returns the agent updates done and the ms they took. */
   advance(intervalMs: number): { updates: number; ms: number } {
-    if (this.count === 0) return { updates: 0, ms: 0 };
+    if (this.count === 0 || !this.live) return { updates: 0, ms: 0 };
     // Paused, the workers still take the edits (drags) and single steps.
     if (this.paused) return this.stepping() ? this.advanceInWorkers(0) : { updates: 0, ms: 0 };
     this.acc += Math.min(0.1, intervalMs / 1000) * (this.st.slow ? 0.25 : 1);

@@ -54,7 +54,8 @@ window.__learn = hook;
 
 async function start(): Promise<void> {
   showVersion(await loadCore());
-  const lab = await createLab("tables/eta.bin");
+  // The table in byte planes (issue 17: 0.54 MB gzipped, not 1.2; src/tableplanes.ts).
+  const lab = await createLab("tables/eta.planes");
   setLinkContext(new RangeTable(ranges(), precision()), lab.params());
   for (const [name, build] of SECTIONS) {
     figures.push(build($(`fig-${name}`), lab));
