@@ -12,15 +12,12 @@ import { runLoop } from "./loop";
 import { buildPanel } from "./panel";
 import { presetNames } from "./presets";
 import { HANDLE_PX, SceneBuilder } from "./scene";
-import { LabSim } from "./sim";
+import { LabSim, TABLE_URL } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
 import { cacheKeys, openTableCache } from "../workers/tablecache";
 import { tableBadge } from "./loading";
 
-/** The committed table in byte planes (issue 17: 0.54 MB gzipped, not
- *  1.2; the same bytes once rejoined, src/tableplanes.ts). */
-const TABLE_URL = "tables/eta.planes";
 
 const hook = installHook();
 performance.mark("lab:main");

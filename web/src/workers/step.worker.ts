@@ -7,7 +7,7 @@
 // offset of the shared back buffer, or hands them back (no isolation).
 // Driven by `WorldStepper` (stepping.ts) through `WorkerPool.each`.
 
-import { errorText, Lab, loadCore, type Internals } from "../wasm";
+import { errorText, fetchTable, Lab, loadCore, type Internals } from "../wasm";
 import type { ResultMessage, TaskMessage } from "./pool";
 import type { StepReply, StepTask, TableSource } from "./stepping";
 
@@ -22,11 +22,7 @@ async function tableLab(src: TableSource): Promise<Lab> {
   if (base && base.key === src.key) return base.lab.fork();
   let bytes: Uint8Array;
   if (src.bytes) bytes = src.bytes;
-  else {
-    const res = await fetch(src.url);
-    if (!res.ok) throw new Error(`could not fetch the η table ${src.url}: HTTP ${res.status}`);
-    bytes = new Uint8Array(await res.arrayBuffer());
-  }
+  else bytes = await fetchTable(src.url);
   const l = new Lab(bytes);
   base?.lab.free();
   base = { key: src.key, lab: l };
