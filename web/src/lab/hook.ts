@@ -4,6 +4,7 @@
 import type { FunnelConfig, Internals, VehicleParams } from "../wasm";
 import type { TableStatus } from "./sim";
 import type { Handles } from "./handles";
+import type { Vec } from "../view";
 import { presetNames } from "./presets";
 import { defaultState, type LabState } from "./state";
 
@@ -46,6 +47,20 @@ export interface LabHook {
   params(): VehicleParams | null;
   /** Keys in the browser's table cache. */
   cachedTables(): Promise<string[]>;
+  /** Issue 18: the avoidance method in force in the core. */
+  avoidance(): string | null;
+  /** Pairs of agents whose bodies overlap now (the core's count). */
+  overlaps(): number;
+  /** The core's obstacles (lab/obstacles.ts layout). */
+  obstacles(): number[];
+  /** CSS-pixel canvas positions of obstacle i's knobs (disc: centre, rim; wall: ends). */
+  obstacleKnobs(i: number): Vec[];
+  /** Agents in End_of_Steering, as last read from the core. */
+  finished(): number;
+  /** Simulated seconds since the last (re)build. */
+  simTime(): number;
+  /** The view's CSS pixels per metre. */
+  viewScale(): number;
 }
 
 declare global {
@@ -68,6 +83,13 @@ export function installHook(): LabHook {
     table: () => null,
     params: () => null,
     cachedTables: () => Promise.resolve([]),
+    avoidance: () => null,
+    overlaps: () => 0,
+    obstacles: () => [],
+    obstacleKnobs: () => [],
+    finished: () => 0,
+    simTime: () => 0,
+    viewScale: () => 1,
     internals: () => null,
     funnel: () => null,
     state: () => defaultState(),

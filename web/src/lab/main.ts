@@ -4,9 +4,12 @@
 import { setupCanvas } from "../canvas";
 import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
-import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
+import { createLab, errorText, loadCore, Mode, precision, ranges, StateField, type Lab } from "../wasm";
 import { RangeTable } from "./fields";
+import { obstacleDrags } from "./avoidance";
+import { avoidanceSection } from "./avoidpanel";
 import { attachDrags, handlePositions, type Handles } from "./handles";
+import { obstacleKnobs, obstacleLimits } from "./obstacles";
 import { installHook, Perf } from "./hook";
 import { runLoop } from "./loop";
 import { buildPanel } from "./panel";
@@ -62,6 +65,8 @@ async function start(): Promise<void> {
   });
   const transport = buildTransport(sim);
   const goal = buildPanel(sim, canvas);
+  const changed = (): void => { sim.dirty = true; sim.url.save(); };
+  avoidanceSection($("panel"), sim.avoid, () => ({ x: view.cx, y: view.cy }), changed);
 
   const handles = (): Handles | null =>
     sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
@@ -73,7 +78,7 @@ async function start(): Promise<void> {
     vehicle: (pose) => { st.vehicle = pose; sim.placeVehicle(); },
     vehiclePose: () => sim.pose(sim.focus),
     redraw: () => { sim.dirty = true; sim.url.save(); },
-  });
+  }, obstacleDrags(view, sim.avoid, obstacleLimits(table), changed));
 
   const perf = new Perf();
   hook.count = () => sim.count;
@@ -89,6 +94,17 @@ async function start(): Promise<void> {
   hook.table = () => ({ ...sim.table });
   hook.params = () => lab.params();
   hook.cachedTables = cacheKeys;
+  hook.avoidance = () => lab.avoidance();
+  hook.overlaps = () => lab.overlaps();
+  hook.obstacles = () => Array.from(lab.obstacles());
+  hook.obstacleKnobs = (i) => obstacleKnobs(view, sim.avoid.obstacles, i);
+  hook.finished = () => {
+    let n = 0;
+    for (let i = 0; i < sim.count; i++) if (sim.field(i, StateField.Mode) === Mode.EndOfSteering) n++;
+    return n;
+  };
+  hook.simTime = () => sim.time;
+  hook.viewScale = () => view.scale;
 
   const since = performance.now();
   await sim.rebuild(true);

@@ -6,6 +6,7 @@
 import { showMessage } from "../page";
 import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
+import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
@@ -65,6 +66,8 @@ export class LabSim {
   onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
   /** The η table's status (HUD, window.__lab.table()). */
   table: TableStatus;
+  /** Avoidance method and obstacles (issue 18). */
+  readonly avoid: LabAvoidance;
   private acc = 0;
   private generation = 0;
   private tableGen = 0;
@@ -76,6 +79,7 @@ export class LabSim {
     this.dt = this.defaults.dt;
     this.sharedView = st.view;
     this.url = new UrlSync(st, view, ranges, this.defaults);
+    this.avoid = new LabAvoidance(lab, st);
     const key = lab.tableKey();
     this.table = { state: "exact", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
   }
@@ -316,6 +320,7 @@ export class LabSim {
       }
     }
     this.applyFunnel();
+    this.avoid.apply();
     this.dt = lab.params().dt;
     this.pull();
     this.trails.record(0, this.state, this.stride, this.count);
