@@ -31,9 +31,10 @@ export function avoidanceSection(panel: HTMLElement, avoid: LabAvoidance, centre
     const c = centre();
     add([0, c.x, c.y, 0.8, 0]);
   });
-  button(r, "add-wall", "+ wall", "Add a wall at the view's centre", () => {
+  button(r, "add-wall", "+ wall", "Add a wall 4 m long, 1.5 m below the view's centre", () => {
     const c = centre();
-    add([1, c.x - 2, c.y, c.x + 2, c.y]);
+    // Below a disc added at the same centre, not across it.
+    add([1, c.x - 2, c.y - 1.5, c.x + 2, c.y - 1.5]);
   });
   const remove = button(r, "remove-obstacle", "− last", "Remove the last obstacle", () => {
     avoid.setObstacles(avoid.obstacles.slice(0, -OBSTACLE_STRIDE));
