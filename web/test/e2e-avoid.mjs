@@ -64,7 +64,8 @@ try {
 
   await check("circle swap N = 32 played in the page with ORCA: 0 overlapping pairs in every frame, every agent arrives", async () => {
     await page.keyboard.press("r");
-    await page.waitForFunction(() => window.__lab.simTime() === 0, null, { timeout: 5000 });
+    // The rebuild is done when the swap starts again (nobody at its target).
+    await page.waitForFunction(() => window.__lab.simTime() === 0 && window.__lab.count() === 32 && window.__lab.finished() === 0, null, { timeout: 10000 });
     const r = await play(page, 60);
     console.log(`# ORCA: ${r.frames} frames, ${r.t.toFixed(1)} s simulated, ${r.finished}/${r.count} finished, most overlapping pairs in a frame ${r.worst}`);
     await shot(page, "avoid-01-circle32-orca-end");
@@ -79,7 +80,8 @@ try {
     await page.waitForFunction(() => location.hash.includes("avoid=off"), null, { timeout: 3000 });
     // Reset keeps the choice (the link's state), and replays the swap.
     await page.keyboard.press("r");
-    await page.waitForFunction(() => window.__lab.simTime() === 0, null, { timeout: 5000 });
+    // The rebuild is done when the swap starts again (nobody at its target).
+    await page.waitForFunction(() => window.__lab.simTime() === 0 && window.__lab.count() === 32 && window.__lab.finished() === 0, null, { timeout: 10000 });
     assert.equal(await page.evaluate(() => window.__lab.avoidance()), "off");
     const r = await play(page, 30, true);
     console.log(`# off: overlapping pairs ${r.worst} after ${r.t.toFixed(1)} s simulated`);
