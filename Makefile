@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables
+	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid
 
 setup: setup-rust setup-browser setup-web
 
@@ -100,6 +100,12 @@ test-e2e-learn: setup-browser web-build
 test-e2e-vehicle: setup-browser web-build
 	node web/test/e2e-vehicle.mjs
 
+# Issue 18 in the lab: the page plays the circle swap and reads the core's
+# overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
+# dragged by mouse and finger, the link; screenshots in artifacts/.
+test-e2e-avoid: setup-browser web-build
+	node web/test/e2e-avoid.mjs
+
 # Issue 17's browser checks: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
 # ?draw=gl: headless WebGL is software, where the pages keep 2D sprites);
@@ -131,7 +137,7 @@ bench-wasm-native: setup-web wasm
 	node web/test/wasmnative.mjs 10000
 	node web/test/wasmnative.mjs 100000
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf test-e2e-avoid
 	@echo "make test: all suites passed"
 
 demo: setup web-build

@@ -41,3 +41,42 @@ fn a_bad_method_is_refused_and_changes_nothing() {
     assert_eq!(lab.avoidance_method(), "orca");
     assert_eq!(lab.obstacles().len(), 10);
 }
+
+/// The lab's obstacle drags send the whole list back (`setObstacles`, the
+/// layout of `obstacles()`): a good list replaces the world's; a bad one
+/// is refused naming the obstacle and changes nothing.
+#[wasm_bindgen_test]
+fn set_obstacles_replaces_the_list_or_refuses_naming_the_obstacle() {
+    let mut lab = Lab::new(TABLE).map_err(|_| ()).unwrap();
+    lab.load_scenario(include_str!("../scenarios/avoid_corridor.json"))
+        .map_err(|_| ())
+        .unwrap();
+    let before = lab.obstacles();
+    assert_eq!(before.len(), 10);
+    let mut moved = before.clone();
+    moved[2] += 0.5;
+    moved[4] += 0.5;
+    lab.set_obstacles(&moved).map_err(|_| ()).unwrap();
+    assert_eq!(lab.obstacles(), moved);
+    let disc = [0.0, 1.0, 2.0, 0.8, 0.0];
+    lab.set_obstacles(&disc).map_err(|_| ()).unwrap();
+    assert_eq!(lab.obstacles(), disc.to_vec());
+    for bad in [
+        vec![0.0, 1.0, 2.0, 0.8],                               // not 5 per obstacle
+        vec![2.0, 1.0, 2.0, 0.8, 0.0],                          // unknown kind
+        vec![0.0, 1.0, 2.0, 0.0, 0.0],                          // radius 0
+        vec![0.0, f32::NAN, 2.0, 0.8, 0.0],                     // NaN
+        vec![0.0, 1.0, 2.0, 0.8, 0.0, 1.0, 3.0, 3.0, 3.0, 3.0], // zero-length wall
+        vec![1.0, 0.0, 0.0, 2e6, 0.0],                          // out of the world
+    ] {
+        assert!(lab.set_obstacles(&bad).is_err(), "{bad:?} accepted");
+        assert_eq!(
+            lab.obstacles(),
+            disc.to_vec(),
+            "a refused list changed the world"
+        );
+    }
+    // Stepping with the new obstacles runs.
+    lab.step(10);
+    assert!(lab.state().iter().all(|v| v.is_finite()));
+}

@@ -62,6 +62,9 @@ pub struct Command {
     pub speed: f32,
     /// True when the avoidance changed the funnel's (γ, v_dt).
     pub active: bool,
+    /// An obstacle was in reach: the step keeps the agent's turn near the
+    /// ±π seam (`avoidance::world_step`'s turn commitment).
+    pub walls: bool,
 }
 
 /// The avoidance's buffers (reused every step).
@@ -164,6 +167,7 @@ impl Avoider {
                     heading: h_pref,
                     speed: s_pref,
                     active: false,
+                    walls: false,
                 },
                 AvoidanceMethod::Orca => {
                     let mut lines = Lines::default();
@@ -179,11 +183,37 @@ impl Avoider {
                             ));
                         }
                     }
+                    // An unfinished agent whose funnel turns it in place
+                    // (v_dt ≈ 0) towards a wall is blocked too: the
+                    // funnel's heading is tested against the walls at a
+                    // walking speed, or the funnel and the avoidance take
+                    // turns for ever at a wall's corner. Blocked by a wall,
+                    // it seeks its goal's direction (the funnel's γ turns
+                    // with the agent's own heading).
+                    let unfinished = self.priority.get(i).is_some_and(|q| q.is_finite());
+                    let walled =
+                        unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
+                    let (v_pref, u_seek) = match self.goals.get(i) {
+                        Some(&g) if walled && (g - s.pos).length_squared() > 1e-6 => {
+                            let u = (g - s.pos).normalize();
+                            (u * s_pref.max(DODGE_SPEED), u)
+                        }
+                        _ => (v_pref, u_pref),
+                    };
                     let mut oncoming = false;
                     for &(_, j) in &near[..k] {
                         let j = j as usize;
-                        let opposed = self.fwd[j].dot(u_pref) < ONCOMING_COS;
-                        oncoming |= opposed && (states[j].pos - s.pos).dot(u_pref) > 0.0;
+                        // Oncoming and ahead along the way the agent will
+                        // seek (its goal's direction when walled, not the
+                        // funnel's γ it then ignores: judged along γ, a
+                        // neighbour beside the way flipped in and out of
+                        // "ahead" step after step at a doorway's wall end,
+                        // and the keep-right turn with it: at rest, the
+                        // velocity sought swung between the gap and the
+                        // wall and the agent never turned, doorway seeds
+                        // 1012 and 1017).
+                        let opposed = self.fwd[j].dot(u_seek) < ONCOMING_COS;
+                        oncoming |= opposed && (states[j].pos - s.pos).dot(u_seek) > 0.0;
                         let opposed = self.fwd[j].dot(self.fwd[i]) < ONCOMING_COS;
                         let tie = if i < j { Vec2::Y } else { -Vec2::Y };
                         // Reciprocity assumes the neighbour takes half the
@@ -229,22 +259,6 @@ impl Avoider {
                                 && (s.pos - states[j].pos).dot(self.fwd[j]) > 0.0,
                         ));
                     }
-                    // An unfinished agent whose funnel turns it in place
-                    // (v_dt ≈ 0) towards a wall is blocked too: the
-                    // funnel's heading is tested against the walls at a
-                    // walking speed, or the funnel and the avoidance take
-                    // turns for ever at a wall's corner. Blocked by a wall,
-                    // it seeks its goal's direction (the funnel's γ turns
-                    // with the agent's own heading).
-                    let unfinished = self.priority.get(i).is_some_and(|q| q.is_finite());
-                    let walled =
-                        unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
-                    let v_pref = match self.goals.get(i) {
-                        Some(&g) if walled && (g - s.pos).length_squared() > 1e-6 => {
-                            (g - s.pos).normalize() * s_pref.max(DODGE_SPEED)
-                        }
-                        _ => v_pref,
-                    };
                     // An oncoming neighbour ahead: keep right at once (at
                     // least LANE_BIAS of the bias), before the pair is
                     // blocked, so that lanes form before a jam does.
@@ -253,6 +267,7 @@ impl Avoider {
                             heading: h_pref,
                             speed: s_pref,
                             active: false,
+                            walls: false,
                         }
                     } else {
                         // Keep right, the more the slower the agent goes
@@ -274,7 +289,10 @@ impl Avoider {
                         // speeding up to pass in front.
                         let cap = s_pref.max(DODGE_SPEED).min(p.v_max);
                         let v = orca::solve(&lines, cap, v_seek);
-                        unicycle(s, self.fwd[i], h_pref, v_pref, v, &lines, cap)
+                        Command {
+                            walls: lines.obstacle_count() > 0,
+                            ..unicycle(s, self.fwd[i], h_pref, v_pref, v, &lines, cap)
+                        }
                     }
                 }
                 AvoidanceMethod::Separation => {
@@ -304,6 +322,7 @@ impl Avoider {
                             heading: h_pref,
                             speed: s_pref,
                             active: false,
+                            walls: false,
                         }
                     } else {
                         let v = (v_pref + push * cfg.separation_weight).clamp_length_max(p.v_max);
@@ -397,6 +416,7 @@ pub fn unicycle(
             heading: trig::atan2(v_orca.y, v_orca.x),
             speed: v_orca.dot(forward).max(0.0).min(along),
             active: true,
+            walls: false,
         };
     }
     if v_seek.length_squared() < 1e-6 {
@@ -406,6 +426,7 @@ pub fn unicycle(
             heading: h_pref,
             speed: 0.0,
             active: true,
+            walls: false,
         };
     }
     let step = 15f32.to_radians();
@@ -441,11 +462,13 @@ pub fn unicycle(
             heading: h_pref,
             speed: 0.0,
             active: true,
+            walls: false,
         };
     }
     Command {
         heading,
         speed: (sp * turn.cos().max(0.0)).min(along),
         active: true,
+        walls: false,
     }
 }

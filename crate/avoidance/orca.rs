@@ -115,6 +115,13 @@ impl Lines {
         &self.lines[..self.len]
     }
 
+    /// Obstacle half-planes in the set.
+    #[inline]
+    #[must_use]
+    pub fn obstacle_count(&self) -> usize {
+        self.obstacles
+    }
+
     /// True when `v` satisfies every obstacle line (within `slack`).
     #[must_use]
     pub fn obstacles_admit(&self, v: Vec2, slack: f32) -> bool {

@@ -2,10 +2,12 @@
 //! avoidance adjusts the plans together, then every agent steps. With
 //! avoidance off [`World::step`] keeps its own loop (same bits as before).
 
+use crate::angle::diff;
 use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::ParamError;
+use crate::vehicle::{VehicleParams, VehicleState};
 use crate::world::{Planner, World};
 
 impl World {
@@ -78,7 +80,12 @@ impl World {
         // 3. Every agent steps with its command; goals switch as usual.
         for (a, c) in self.agents.iter_mut().zip(&self.avoider.commands) {
             let prev = a.state;
-            seek_step_committed(&p, &mut a.state, c.heading, c.speed);
+            if c.active && c.walls {
+                avoidance_step(&p, &mut a.state, c.heading, c.speed);
+            } else {
+                // The funnel's own command: its step, the same bits.
+                seek_step_committed(&p, &mut a.state, c.heading, c.speed);
+            }
             if !a.done() {
                 let spec = a.goals[a.current];
                 crate::world::advance_queue(a, &spec, t);
@@ -89,4 +96,33 @@ impl World {
         }
         self.time += p.dt;
     }
+}
+
+/// Half-width of the band around the ±π seam of the heading error in
+/// which [`avoidance_step`] keeps the current turn direction: 45° (the
+/// funnel's own step keeps it within 10°, `seek::TURN_COMMIT_WINDOW`).
+pub const AVOID_TURN_COMMIT_WINDOW: f32 = core::f32::consts::FRAC_PI_4;
+
+/// The seek step for a command the avoidance changed near an obstacle: the
+/// PD law, with the current turn kept while the agent is at rest (below
+/// `STUCK_SPEED`) and the error is within [`AVOID_TURN_COMMIT_WINDOW`] of
+/// ±π. Only near obstacles: in open space (paper 000 Fig. 6 with ORCA) it
+/// kept two agents at rest turning round for good. Why wider than the
+/// funnel's: an agent at rest behind a wall,
+/// facing away from its way, was told to turn to headings 156° one way and
+/// 161° the other on alternate steps (the funnel's γ and the goal's
+/// direction, as the wall test flipped), and sat turning neither way for
+/// good (doorway, tune seed 1007).
+#[inline]
+fn avoidance_step(p: &VehicleParams, s: &mut VehicleState, heading: f32, speed: f32) {
+    let e = diff(heading, s.theta);
+    let e = if s.v < crate::avoidance::avoider::STUCK_SPEED
+        && e.abs() > core::f32::consts::PI - AVOID_TURN_COMMIT_WINDOW
+        && e * s.omega < 0.0
+    {
+        e + core::f32::consts::TAU.copysign(s.omega)
+    } else {
+        e
+    };
+    p.integrate(s, p.kp * e - p.kd * s.omega, speed);
 }

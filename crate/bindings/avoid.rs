@@ -1,7 +1,8 @@
 //! The avoidance (issue 18) through the lab's binding: the method of the
 //! world in force (presets carry theirs, `scenarios/avoid_*.json`), the
-//! obstacles as a flat array for drawing, and the overlap count the e2e
-//! test reads. Thin: the core does the work.
+//! obstacles as a flat array for drawing and dragging (`obstacles` /
+//! `setObstacles`, the same five floats per obstacle), and the overlap
+//! count the e2e test reads. Thin: the core does the work.
 
 use wasm_bindgen::prelude::*;
 
@@ -36,6 +37,12 @@ impl Lab {
             .map_err(|e| js_err("avoidance", e))
     }
 
+    /// The agents' body radius, m (the lab draws the bodies with it).
+    #[wasm_bindgen(js_name = avoidanceRadius)]
+    pub fn avoidance_radius(&self) -> f32 {
+        self.world.avoidance.radius
+    }
+
     /// Pairs of agents whose bodies (radius `avoidance.radius`) overlap now.
     pub fn overlaps(&self) -> u32 {
         let r2 = 4.0 * self.world.avoidance.radius * self.world.avoidance.radius;
@@ -64,5 +71,46 @@ impl Lab {
             }
         }
         out
+    }
+
+    /// Replaces the obstacles with `flat`, in the layout of
+    /// [`Lab::obstacles`] (the lab's drags send the whole list back).
+    /// A bad record (length not a multiple of 5, unknown kind, a value out
+    /// of range, a zero-length segment, too many) is an error naming
+    /// `obstacles[i]` and changes nothing.
+    #[wasm_bindgen(js_name = setObstacles)]
+    pub fn set_obstacles(&mut self, flat: &[f32]) -> Result<(), JsError> {
+        if flat.len() % 5 != 0 {
+            return Err(js_err(
+                "obstacles",
+                format!("{} floats is not 5 per obstacle", flat.len()),
+            ));
+        }
+        let mut list = Vec::with_capacity(flat.len() / 5);
+        for (i, r) in flat.chunks_exact(5).enumerate() {
+            list.push(match r[0] {
+                0.0 => Obstacle::Disc {
+                    x: r[1],
+                    y: r[2],
+                    radius: r[3],
+                },
+                1.0 => Obstacle::Segment {
+                    x1: r[1],
+                    y1: r[2],
+                    x2: r[3],
+                    y2: r[4],
+                },
+                k => {
+                    return Err(js_err(
+                        &format!("obstacles[{i}]"),
+                        format!("kind {k} is not 0 (disc) or 1 (segment)"),
+                    ))
+                }
+            });
+        }
+        let cfg = self.world.avoidance;
+        self.world
+            .set_avoidance(cfg, list)
+            .map_err(|e| js_err("obstacles", e))
     }
 }

@@ -4,6 +4,8 @@
 // (URL flag n=N, no trails or overlays) in headless Chromium. For each N,
 // waits 0.5 s, then samples ~2 s with performance.now(): mean rAF interval,
 // mean and p95 work per frame (core step + drawing) and core step time.
+// Issue 18: the largest N again with each avoidance method of AVOID
+// (default separation,orca; the second argument), beside the same run's avoidance-off figures.
 import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 
@@ -78,19 +80,22 @@ try {
   // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl, issue 17:
   // headless WebGL is software, so the page's own choice is the 2D sprites).
   const runs = onlyWorkers ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
-  for (const [n, draw] of runs) {
+  const avoids = onlyWorkers ? [] : (args[1] ?? "separation,orca").split(",").filter((m) => m !== "");
+  const largest = Math.max(...sizes);
+  for (const m of avoids) runs.push([largest, "", m]);
+  for (const [n, draw, avoid] of runs) {
     const { page, problems: all, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
-    await page.goto(`${url.replace(/\/?$/, "/")}${draw ? `?draw=${draw}` : ""}#n=${n}&ov=`);
+    await page.goto(`${url.replace(/\/?$/, "/")}${draw ? `?draw=${draw}` : ""}#n=${n}&ov=${avoid ? `&avoid=${avoid}` : ""}`);
     const err = await waitReady(page, 60000);
     if (err) throw new Error(err);
     await page.waitForTimeout(500);
     await page.evaluate(() => window.__lab.perfReset());
     await page.waitForTimeout(2000);
     const s = await page.evaluate(() => window.__lab.perfStats());
-    await page.screenshot({ path: resolve(artifacts, `perf-${n}${draw ? `-${draw}` : ""}.png`) });
+    await page.screenshot({ path: resolve(artifacts, `perf-${n}${draw ? `-${draw}` : ""}${avoid ? `-${avoid}` : ""}.png`) });
     const how = await page.$eval("#lab", (c) => c.dataset.agents);
     console.log(
-      `perf n=${s.agents - 1}+1 agents (${how}): ${s.frames} frames in ~2 s, rAF interval ${s.meanIntervalMs.toFixed(2)} ms ` +
+      `perf n=${s.agents - 1}+1 agents (${how}${avoid ? `, avoidance ${avoid}` : ""}): ${s.frames} frames in ~2 s, rAF interval ${s.meanIntervalMs.toFixed(2)} ms ` +
         `(${(1000 / s.meanIntervalMs).toFixed(1)} fps), work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
         `core step/frame ${s.meanStepMs.toFixed(2)} ms, drawing/frame ${s.meanDrawMs.toFixed(2)} ms, ` +
         `core ${s.usPerUpdate.toFixed(2)} µs per agent update`,

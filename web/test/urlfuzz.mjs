@@ -9,7 +9,8 @@
 // for the random agents (and, for small counts, spawning them), the η field
 // view; every key whose value was not taken has a message naming it; and the
 // state re-encodes to a fragment that decodes with no message to the same
-// state. Prints "urlfuzz: N cases, M refused values, T ms".
+// state. Issue 18: the avoidance method (`avoid`) and the obstacles (`obs`)
+// too, set in the core with setAvoidance / setObstacles. Prints "urlfuzz: N cases, M refused values, T ms".
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { fileURLToPath, pathToFileURL } from "node:url";
@@ -59,7 +60,7 @@ const rand = () => {
 };
 const pick = (xs) => xs[Math.floor(rand() * xs.length)];
 
-const OTHER_KEYS = ["halting", "relaxed", "slow", "bound", "aim", "raim", "lp", "ov", "preset", "zx", "zy", "zs"];
+const OTHER_KEYS = ["halting", "relaxed", "slow", "bound", "aim", "raim", "lp", "ov", "preset", "zx", "zy", "zs", "avoid", "obs"];
 const NUM_KEYS = page.FIELDS.map((f) => f.url);
 const WEIRD = ["NaN", "Infinity", "-Infinity", "1e999", "-1e999", "0x10", "0b11", "0o7", "", " ", "  3 ", "1e308", "-1e308", "5e-324",
   "-0", "+7", ".5", "5.", "1,5", "1_000", "١٢", "１２", "٣.٥", "½", "∞", "1e", "e3", "--1", "%ZZ", "%", "%E2%82", "null", "undefined",
@@ -92,9 +93,29 @@ const value = (key) => {
   if (key === "bound") return pick(["tr", "sl", "lit", "const", "bogus"]);
   if (key === "aim") return pick(["entry", "centre", "left"]);
   if (key === "raim") return pick(["entry", "paperArc", "x"]);
+  if (key === "avoid") return pick(["off", "separation", "orca", "ORCA", "rvo", ""]);
+  if (key === "obs" && rand() < 0.7) return obstacles();
   if (["halting", "relaxed", "slow", "lp"].includes(key) && rand() < 0.6) return pick(["0", "1"]);
   return pick(WEIRD);
 };
+/** Obstacle lists for `obs`: mostly well formed, with values at and past
+ *  the core's ranges, zero-length walls, bad kinds and separators, too many. */
+function obstacles() {
+  const coord = () => pick([() => String((rand() - 0.5) * 40), () => "1000000", () => "-1000000", () => "1000000.5", () => pick(WEIRD)])();
+  const coordOk = () => (rand() < 0.9 ? String(Math.round((rand() - 0.5) * 4000) / 100) : coord());
+  const radius = () => pick(["0.01", "0.009", "0", "-1", "10000", "10000.1", String(rand() * 3), "NaN"]);
+  const one = () => {
+    if (rand() < 0.5) return `d:${coordOk()},${coordOk()},${rand() < 0.8 ? String(0.05 + rand() * 3) : radius()}`;
+    const x = coordOk();
+    const y = coordOk();
+    return rand() < 0.1 ? `s:${x},${y},${x},${y}` : `s:${x},${y},${coordOk()},${coordOk()}`;
+  };
+  const n = rand() < 0.03 ? 65 + Math.floor(rand() * 10) : Math.floor(rand() * 5);
+  const items = Array.from({ length: n }, one);
+  if (rand() < 0.1) items.push(pick(["x:1,2,3", "d:1,2", "s:1,2,3", "d:1,2,3,4", "", "d:,,"]));
+  return items.join(pick([";", ";", ";", ",", "|"]));
+}
+
 function fragment() {
   if (rand() < 0.03) return "#" + Array.from({ length: 1 + Math.floor(rand() * 40) }, () => pick(["%", "&", "=", "#", "a", "1", "é", "%2", " "])).join("");
   const pairs = [];
@@ -132,6 +153,9 @@ function coreSteps(st, step) {
   step("setFunnel");
   lab.setFunnel(page.funnelConfig(st.funnel));
   lab.setRelaxed(page.relaxedConfig(st.funnel));
+  step("setAvoidance");
+  if (st.avoidance !== null) lab.setAvoidance(st.avoidance);
+  if (st.obstacles !== null) lab.setObstacles(new Float32Array(st.obstacles));
   step("checkRoom");
   lab.checkRoom(st.agents);
   assert.ok(Number.isInteger(st.agents) && Number.isInteger(st.seed) && st.seed >= 0 && st.seed <= 2 ** 32 - 1, `n=${st.agents} seed=${st.seed}`);
@@ -148,6 +172,8 @@ function coreSteps(st, step) {
 const t0 = performance.now();
 let refused = 0;
 let accepted = 0;
+let withObstacles = 0;
+let withAvoid = 0;
 const failures = [];
 for (let c = 0; c < CASES; c++) {
   const frag = fragment();
@@ -157,6 +183,8 @@ for (let c = 0; c < CASES; c++) {
     assert.ok(problems.every((p) => typeof p === "string" && p.length > 0 && p.length < 400), "messages are short and non-empty");
     coreAccepts(st);
     accepted++;
+    if (st.obstacles !== null && st.obstacles.length > 0) withObstacles++;
+    if (st.avoidance !== null) withAvoid++;
     // Every numeric key whose (first) value was not taken is named in a message.
     const raw = frag.startsWith("#") ? frag.slice(1) : frag;
     let params = null;
@@ -172,6 +200,9 @@ for (let c = 0; c < CASES; c++) {
         const taken = v !== null && Math.abs(got - v) <= 1e-9 * Math.max(1, Math.abs(v));
         if (!taken) assert.ok(problems.some((p) => p.startsWith(`${f.url}=`) || p.startsWith(`${f.url}:`)), `${f.url}="${t.slice(0, 30)}" not taken and not reported: ${JSON.stringify(problems)}`);
       }
+      const avoid = params.get("avoid");
+      if (avoid !== null && st.avoidance !== avoid) assert.ok(problems.some((p) => p.startsWith("avoid=")), `avoid="${avoid}" not taken and not reported`);
+      if (params.get("obs") !== null && st.obstacles === null) assert.ok(problems.some((p) => p.startsWith("obs:")), "obs not taken and not reported");
       for (const k of params.keys()) {
         if (!NUM_KEYS.includes(k) && !OTHER_KEYS.includes(k)) assert.ok(problems.some((p) => p.includes("unknown field")), `unknown ${k.slice(0, 20)} not reported`);
       }
@@ -184,11 +215,17 @@ for (let c = 0; c < CASES; c++) {
       const b = f.get(again.state, defaults) * f.scale;
       assert.ok(Math.abs(a - b) <= 1e-4 * Math.max(1, Math.abs(a)) + 1e-4, `${f.url}: ${a} → ${b}`);
     }
+    assert.equal(again.state.avoidance, st.avoidance, "avoid round trip");
+    assert.equal(again.state.obstacles === null, st.obstacles === null, "obs round trip");
+    if (st.obstacles !== null) {
+      assert.equal(again.state.obstacles.length, st.obstacles.length, "obs count round trip");
+      st.obstacles.forEach((v, i) => assert.ok(Math.abs(v - again.state.obstacles[i]) <= 1e-4 * Math.max(1, Math.abs(v)), `obs[${i}]: ${v} → ${again.state.obstacles[i]}`));
+    }
   } catch (e) {
     failures.push(`${JSON.stringify(frag.slice(0, 200))}: ${e && e.message ? e.message.slice(0, 300) : e}`);
   }
 }
 const ms = performance.now() - t0;
 for (const f of failures.slice(0, 10)) console.log(`not ok - ${f}`);
-console.log(`urlfuzz: ${CASES} cases (seed ${SEED}), ${accepted} states built in the core, ${refused} refused values reported, ${failures.length} failures, ${ms.toFixed(0)} ms`);
+console.log(`urlfuzz: ${CASES} cases (seed ${SEED}), ${accepted} states built in the core (${withObstacles} with obstacles, ${withAvoid} with a method), ${refused} refused values reported, ${failures.length} failures, ${ms.toFixed(0)} ms`);
 process.exit(failures.length === 0 ? 0 : 1);

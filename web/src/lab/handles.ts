@@ -66,7 +66,9 @@ export function pick(p: Vec, h: Handles): Kind | null {
   return null;
 }
 
-export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () => Handles | null, sink: DragSink): void {
+/** `extra`: other draggable things (the obstacles), tried after the
+ *  playground's handles and before panning. */
+export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () => Handles | null, sink: DragSink, extra?: (p: Vec) => Drag | null): void {
   const grab = (p: Vec, h: Handles, kind: Kind): Drag => {
     switch (kind) {
       case "beta":
@@ -125,11 +127,14 @@ export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () =
       const h = handles();
       const kind = h ? pick(p, h) : null;
       if (h && kind) return grab(p, h, kind);
+      const other = extra?.(p);
+      if (other) return other;
       return panDrag(canvas, view, p, () => sink.redraw());
     },
     (p) => {
       const h = handles();
-      canvas.style.cursor = p !== null && h !== null && pick(p, h) !== null ? "grab" : "";
+      const over = p !== null && ((h !== null && pick(p, h) !== null) || (extra !== undefined && extra(p) !== null));
+      canvas.style.cursor = over ? "grab" : "";
     },
   );
   wheelZoom(canvas, view, () => sink.redraw());

@@ -5,6 +5,7 @@ import type { FunnelConfig, Internals, VehicleParams } from "../wasm";
 import type { SteppingInfo } from "../workers/stepping";
 import type { TableStatus } from "./sim";
 import type { Handles } from "./handles";
+import type { Vec } from "../view";
 import { presetNames } from "./presets";
 import { defaultState, type LabState } from "./state";
 
@@ -66,6 +67,20 @@ export interface LabHook {
   stepN(k: number): Promise<void>;
   /** Rebuilds the world at t = 0 (workers included) without unpausing. */
   restart(): Promise<void>;
+  /** Issue 18: the avoidance method in force in the core. */
+  avoidance(): string | null;
+  /** Pairs of agents whose bodies overlap now (the core's count). */
+  overlaps(): number;
+  /** The core's obstacles (lab/obstacles.ts layout). */
+  obstacles(): number[];
+  /** CSS-pixel canvas positions of obstacle i's knobs (disc: centre, rim; wall: ends). */
+  obstacleKnobs(i: number): Vec[];
+  /** Agents in End_of_Steering, as last read from the core. */
+  finished(): number;
+  /** Simulated seconds since the last (re)build. */
+  simTime(): number;
+  /** The view's CSS pixels per metre. */
+  viewScale(): number;
 }
 
 declare global {
@@ -94,6 +109,13 @@ export function installHook(): LabHook {
     stateHash: () => "",
     stepN: async () => {},
     restart: async () => {},
+    avoidance: () => null,
+    overlaps: () => 0,
+    obstacles: () => [],
+    obstacleKnobs: () => [],
+    finished: () => 0,
+    simTime: () => 0,
+    viewScale: () => 1,
     internals: () => null,
     funnel: () => null,
     state: () => defaultState(),

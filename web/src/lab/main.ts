@@ -4,9 +4,12 @@
 import { setupCanvas } from "../canvas";
 import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
-import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges } from "../wasm";
+import { errorText, fetchTable, installTable, Lab, loadCore, Mode, precision, ranges, StateField } from "../wasm";
 import { RangeTable } from "./fields";
+import { obstacleDrags } from "./avoidance";
+import { avoidanceSection } from "./avoidpanel";
 import { attachDrags, handlePositions, type Handles } from "./handles";
+import { obstacleKnobs, obstacleLimits } from "./obstacles";
 import { fnvHex, installHook, Perf } from "./hook";
 import { runLoop } from "./loop";
 import { buildPanel } from "./panel";
@@ -54,6 +57,15 @@ async function start(): Promise<void> {
   });
   const transport = buildTransport(sim);
   const goal = buildPanel(sim, canvas);
+  const changed = (): void => {
+    // Workers step worlds without avoidance only (issue 17: every agent is
+    // coupled once it is on); switching it on while they step rebuilds the
+    // world, at t = 0, on this page's core.
+    if (sim.stepping() && sim.avoid.method !== "off") void sim.rebuild(false);
+    sim.dirty = true;
+    sim.url.save();
+  };
+  avoidanceSection($("panel"), sim.avoid, () => ({ x: view.cx, y: view.cy }), changed);
 
   const handles = (): Handles | null =>
     sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
@@ -65,7 +77,7 @@ async function start(): Promise<void> {
     vehicle: (pose) => { st.vehicle = pose; sim.placeVehicle(); },
     vehiclePose: () => sim.pose(sim.focus),
     redraw: () => { sim.dirty = true; sim.url.save(); },
-  });
+  }, obstacleDrags(view, sim.avoid, obstacleLimits(table), changed));
 
   const perf = new Perf();
   hook.count = () => sim.count;
@@ -85,6 +97,17 @@ async function start(): Promise<void> {
   hook.stateHash = () => fnvHex(sim.state);
   hook.stepN = (k) => sim.stepN(k);
   hook.restart = () => sim.rebuild(false);
+  hook.avoidance = () => lab.avoidance();
+  hook.overlaps = () => lab.overlaps();
+  hook.obstacles = () => Array.from(lab.obstacles());
+  hook.obstacleKnobs = (i) => obstacleKnobs(view, sim.avoid.obstacles, i);
+  hook.finished = () => {
+    let n = 0;
+    for (let i = 0; i < sim.count; i++) if (sim.field(i, StateField.Mode) === Mode.EndOfSteering) n++;
+    return n;
+  };
+  hook.simTime = () => sim.time;
+  hook.viewScale = () => view.scale;
 
   hook.live = () => sim.live;
   const since = performance.now();

@@ -7,6 +7,7 @@ import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
 import { abgr, PixelSprites, triangle } from "../sprites";
 import type { View } from "../view";
 import { FIELD_STRIDE, Mode, StateField } from "../wasm";
+import { drawObstacles } from "./obstacles";
 import type { Trails } from "./trails";
 
 /** The paper's names of the modes, indexed by the core's `Mode` number. */
@@ -125,6 +126,10 @@ export interface Scene {
   field: FieldDraw | null;
   /** Screen length of the orientation/heading handles, CSS px. */
   handlePx: number;
+  /** Static obstacles (lab/obstacles.ts layout), drawn with their knobs. */
+  obstacles: readonly number[];
+  /** Body radius (m) drawn round each agent when avoidance is on, else null. */
+  bodyRadius: number | null;
 }
 
 export function arrow(ctx: CanvasRenderingContext2D, x: number, y: number, ang: number, len: number, head = 6): void {
@@ -311,6 +316,22 @@ function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
   markPath(ctx.canvas, "triangles");
   const size = Math.max(5, Math.min(14, 0.45 * v.scale));
   const { X, Y, Theta } = StateField;
+  if (sc.bodyRadius !== null && sc.bodyRadius * v.scale >= 3) {
+    // The bodies avoidance keeps apart (issue 18).
+    const r = sc.bodyRadius * v.scale;
+    ctx.save();
+    ctx.strokeStyle = "rgba(43, 43, 43, 0.35)";
+    ctx.lineWidth = 1;
+    ctx.beginPath();
+    for (let i = 0; i < sc.count; i++) {
+      const p = v.toScreen(sc.state[i * sc.stride + X]!, sc.state[i * sc.stride + Y]!);
+      if (p.x < -r || p.y < -r || p.x > v.width + r || p.y > v.height + r) continue;
+      ctx.moveTo(p.x + r, p.y);
+      ctx.arc(p.x, p.y, r, 0, Math.PI * 2);
+    }
+    ctx.stroke();
+    ctx.restore();
+  }
   // One path per mode colour: cheap enough for 10⁴ agents.
   for (const mode of [Mode.EndOfSteering, Mode.OrientationOnly, Mode.PositionOnly, Mode.Funnelling]) {
     ctx.fillStyle = mode === Mode.Funnelling || mode === Mode.PositionOnly ? COLOURS.vehicle : modeColour(mode);
@@ -330,6 +351,7 @@ function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
 export function drawScene(s: Surface, v: View, sc: Scene): void {
   const { ctx } = s;
   grid(s, v);
+  drawObstacles(ctx, v, sc.obstacles, true);
   if (sc.field) drawField(ctx, v, sc.field, 10, 1);
   if (sc.trails) {
     ctx.strokeStyle = COLOURS.trail;

@@ -91,6 +91,8 @@ export class SceneBuilder {
       focus: sim.focus, focusTarget, overlay,
       showRadial: st.overlays.radial,
       ring, field, handlePx: HANDLE_PX,
+      obstacles: sim.avoid.obstacles,
+      bodyRadius: sim.avoid.method === "off" ? null : sim.avoid.radius,
     };
   }
 

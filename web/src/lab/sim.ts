@@ -6,6 +6,7 @@
 import { showMessage } from "../page";
 import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
+import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
@@ -81,6 +82,8 @@ export class LabSim {
   private readonly defaultTableKey: string;
   /** The bytes of a table built for other limits (workers load them too). */
   private tableBytes: { key: string; bytes: Uint8Array } | null = null;
+  /** Avoidance method and obstacles (issue 18). */
+  readonly avoid: LabAvoidance;
   private acc = 0;
   private generation = 0;
   private tableGen = 0;
@@ -92,6 +95,7 @@ export class LabSim {
     this.dt = this.defaults.dt;
     this.sharedView = st.view;
     this.url = new UrlSync(st, view, ranges, this.defaults);
+    this.avoid = new LabAvoidance(lab, st);
     const key = lab.tableKey();
     this.defaultTableKey = key;
     this.table = { state: lab.hasTable() ? "exact" : "loading", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
@@ -397,6 +401,7 @@ export class LabSim {
       }
     }
     this.applyFunnel();
+    this.avoid.apply();
     this.dt = lab.params().dt;
     this.pull();
     this.trails.record(0, this.state, this.stride, this.count);

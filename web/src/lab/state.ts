@@ -45,6 +45,10 @@ export type AimKey = (typeof AIM_KEYS)[number];
 export const RELAXED_AIM_KEYS = ["entry", "paperArc"] as const;
 export type RelaxedAimKey = (typeof RELAXED_AIM_KEYS)[number];
 
+/** The avoidance methods (issue 18), as the core and the URL name them. */
+export const AVOID_KEYS = ["off", "separation", "orca"] as const;
+export type AvoidKey = (typeof AVOID_KEYS)[number];
+
 /** The funnelling controller's settings as the page edits them. */
 export interface FunnelSettings {
   bound: BoundKey;
@@ -78,6 +82,12 @@ export interface LabState {
   overlays: Overlays;
   /** η field view inputs: current speed, angular speed, desired speed. */
   field: { vC: number; omegaC: number; vD: number };
+  /** Avoidance method chosen in the panel or the link; null = the
+   *  scenario's own (the playground's: off). A preset change resets it. */
+  avoidance: AvoidKey | null;
+  /** Obstacles as edited (lab/obstacles.ts layout); null = the scenario's
+   *  own. A preset change resets them. */
+  obstacles: number[] | null;
   /** Scenario file name without .json; "" = playground. */
   preset: string;
   /** Extra funnelling agents spawned at random (performance runs). */
@@ -102,6 +112,8 @@ export function defaultState(): LabState {
     funnel: { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 },
     overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false, ghost: true },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
+    avoidance: null,
+    obstacles: null,
     preset: "",
     agents: 0,
     seed: 1,

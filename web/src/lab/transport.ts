@@ -60,6 +60,9 @@ export function buildTransport(sim: LabSim): Transport {
   presetSel.value = st.preset;
   const setPreset = async (name: string): Promise<void> => {
     st.preset = name;
+    // Issue 18: each scenario brings its own avoidance and obstacles.
+    st.avoidance = null;
+    st.obstacles = null;
     presetSel.value = name;
     await sim.rebuild(true);
     sim.url.save();

@@ -6,7 +6,8 @@
 
 import type { View } from "../view";
 import { clampToLimits, clip, FIELDS, parseField, type LimitDefaults, type RangeTable } from "./fields";
-import { AIM_KEYS, BOUND_KEYS, RELAXED_AIM_KEYS, defaultState, type AimKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
+import { decodeObstacles, encodeObstacles } from "./obstacles";
+import { AIM_KEYS, AVOID_KEYS, BOUND_KEYS, RELAXED_AIM_KEYS, defaultState, type AimKey, type AvoidKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
 
 const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc", "ghost"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];
@@ -35,6 +36,8 @@ export function encodeState(s: LabState, ranges: RangeTable, d: LimitDefaults): 
   p.set("lp", s.funnel.pursuit ? "1" : "0");
   p.set("raim", s.funnel.relaxedAim);
   p.set("ov", OVERLAY_KEYS.filter((k) => s.overlays[k]).join(","));
+  if (s.avoidance !== null) p.set("avoid", s.avoidance);
+  if (s.obstacles !== null) p.set("obs", encodeObstacles(s.obstacles));
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
     p.set("zx", fmt(s.view.cx));
@@ -64,7 +67,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["ov", "bound", "preset", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
+  const known = new Set<string>(["ov", "bound", "preset", "avoid", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
   const seen = new Set<string>();
   for (const key of p.keys()) {
     if (seen.has(key)) problems.push(`field "${clip(key)}" given twice; the first kept`);
@@ -116,6 +119,18 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   if (lp !== null) {
     if (lp === "1" || lp === "0") s.funnel.pursuit = lp === "1";
     else problems.push(`lp="${clip(lp)}" must be 0 or 1; default kept`);
+  }
+  // Issue 18: the avoidance method and the obstacles (absent: the scenario's own).
+  const avoid = p.get("avoid");
+  if (avoid !== null) {
+    if ((AVOID_KEYS as readonly string[]).includes(avoid)) s.avoidance = avoid as AvoidKey;
+    else problems.push(`avoid="${clip(avoid)}" is not one of ${AVOID_KEYS.join(", ")}; the scenario's own kept`);
+  }
+  const obs = p.get("obs");
+  if (obs !== null) {
+    const r = decodeObstacles(obs, ranges);
+    if ("list" in r) s.obstacles = r.list;
+    else problems.push(`obs: ${r.error}; the scenario's own obstacles kept`);
   }
   const ov = p.get("ov");
   if (ov !== null) {

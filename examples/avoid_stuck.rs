@@ -1,0 +1,73 @@
+//! Where avoidance benchmark agents first get stuck (issue 18's deadlock
+//! target): for each seed, every agent the moment it has been unfinished
+//! and slower than 0.05 m/s for 10 s (the study's deadlock rule), with
+//! its goal, mode and the agents within 1.5 m.
+//!
+//! `cargo run --release --example avoid_stuck -- corridor 1000 20`
+//! (benchmark `corridor` | `doorway` | `circle32` | `circle100`, first
+//! seed, seeds). Tune seeds are 1000–1019; the report seeds 0–99.
+
+use steering::avoidance::benchmarks::Bench;
+use steering::avoidance::AvoidanceMethod;
+use steering::table::EtaTable;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let which = args.get(1).map_or("corridor", String::as_str);
+    let s0: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
+    let n: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(20);
+    let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
+    let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
+    let bench = match which {
+        "doorway" => Bench::Doorway,
+        "circle32" => Bench::CircleSwap(32),
+        "circle100" => Bench::CircleSwap(100),
+        _ => Bench::Corridor,
+    };
+    for seed in s0..s0 + n {
+        let sc = bench.scenario(seed, AvoidanceMethod::Orca);
+        let mut w = sc.world().expect("benchmark scenarios are valid");
+        w.plan(&table);
+        let mut slow = vec![0.0f32; w.agents.len()];
+        let mut reported = vec![false; w.agents.len()];
+        for step in 0..sc.steps() {
+            w.step(&table);
+            for (i, a) in w.agents.iter().enumerate() {
+                if !a.done() && a.state.v < 0.05 {
+                    slow[i] += w.params.dt;
+                } else {
+                    slow[i] = 0.0;
+                }
+                if slow[i] < 10.0 || reported[i] {
+                    continue;
+                }
+                reported[i] = true;
+                let g = a.goal_now;
+                let mut near = String::new();
+                for (j, b) in w.agents.iter().enumerate() {
+                    let d = (b.state.pos - a.state.pos).length();
+                    if j != i && d < 1.5 {
+                        near += &format!(
+                            " [{j} d={d:.2} done={} v={:.2} θ={:.0}°]",
+                            b.done(),
+                            b.state.v,
+                            b.state.theta.to_degrees()
+                        );
+                    }
+                }
+                println!(
+                    "seed {seed} t={:.1} s agent {i} at ({:.2}, {:.2}) θ={:.0}° goal #{} ({:.1}, {:.1}) D={:.2} {:?}{near}",
+                    step as f32 * w.params.dt,
+                    a.state.pos.x,
+                    a.state.pos.y,
+                    a.state.theta.to_degrees(),
+                    a.current,
+                    g.pos.x,
+                    g.pos.y,
+                    (g.pos - a.state.pos).length(),
+                    a.internals.mode
+                );
+            }
+        }
+    }
+}

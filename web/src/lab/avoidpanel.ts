@@ -1,0 +1,57 @@
+// The side panel's avoidance section (issue 18): the method (off,
+// separation, ORCA) for the world in force, a preset's own until changed;
+// buttons that add a disc or a wall at the view's centre and remove the
+// last obstacle. The obstacles themselves are dragged on the canvas.
+
+import { button, help, row, section, select } from "../controls";
+import type { Vec } from "../view";
+import type { LabAvoidance } from "./avoidance";
+import { OBSTACLE_STRIDE } from "./obstacles";
+import { AVOID_KEYS, type AvoidKey } from "./state";
+
+const LABELS: Record<AvoidKey, string> = { off: "off (ghosts)", separation: "separation", orca: "ORCA" };
+
+/** Builds the section after the panel's first section; `centre` is the
+ *  world point at the canvas centre. */
+export function avoidanceSection(panel: HTMLElement, avoid: LabAvoidance, centre: () => Vec, changed: () => void): void {
+  const box = section(panel, "Avoidance");
+  panel.querySelector("fieldset")?.after(box);
+  const method = select(box, {
+    id: "avoidance", label: "method", value: avoid.method,
+    options: AVOID_KEYS.map((k) => ({ value: k, label: LABELS[k] })),
+    onChange: (m) => { avoid.setMethod(m); changed(); },
+  });
+  method.el.title = "off: agents pass through each other; separation: paper 003's push, no guarantee; ORCA: reciprocal velocity obstacles for the forward-only vehicle";
+  const r = row(box);
+  const add = (list: number[]): void => {
+    avoid.setObstacles([...avoid.obstacles, ...list]);
+    changed();
+  };
+  button(r, "add-disc", "+ disc", "Add a disc obstacle at the view's centre", () => {
+    const c = centre();
+    add([0, c.x, c.y, 0.8, 0]);
+  });
+  button(r, "add-wall", "+ wall", "Add a wall 4 m long, 1.5 m below the view's centre", () => {
+    const c = centre();
+    // Below a disc added at the same centre, not across it.
+    add([1, c.x - 2, c.y - 1.5, c.x + 2, c.y - 1.5]);
+  });
+  const remove = button(r, "remove-obstacle", "− last", "Remove the last obstacle", () => {
+    avoid.setObstacles(avoid.obstacles.slice(0, -OBSTACLE_STRIDE));
+    changed();
+  });
+  const count = document.createElement("span");
+  count.className = "muted";
+  count.id = "obstacle-count";
+  r.append(count);
+  help(box).textContent = "Drag a disc by its centre (rim knob: radius), a wall by its middle or its ends. A preset's own method and obstacles apply until you change them; the link keeps your changes.";
+  const show = avoid.onChange;
+  avoid.onChange = () => {
+    show();
+    method.set(avoid.method);
+    const n = avoid.obstacles.length / OBSTACLE_STRIDE;
+    count.textContent = ` ${n} obstacle${n === 1 ? "" : "s"}`;
+    remove.disabled = n === 0;
+  };
+  avoid.onChange();
+}
