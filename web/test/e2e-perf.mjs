@@ -253,6 +253,17 @@ try {
     assert.match(await page.$eval("#message", (e) => e.textContent), /workers = x is not a whole number/);
     await context.close();
   });
+  await check("workers stop when avoidance is switched on (every agent coupled): the world is rebuilt on the page's core, ORCA in force", async () => {
+    const { page, problems, context } = await openLab("?workers=2", "#n=20001&ov=");
+    await page.waitForFunction(() => window.__lab.workers()?.mode !== "main" && window.__lab.workers()?.starting === false, null, { timeout: 60000 });
+    await page.selectOption("#avoidance", "orca");
+    await page.waitForFunction(() => window.__lab.workers()?.mode === "main", null, { timeout: 60000 });
+    assert.equal(await page.evaluate(() => window.__lab.avoidance()), "orca");
+    const t0 = await page.evaluate(() => window.__lab.simTime());
+    await page.waitForFunction((t0) => window.__lab.simTime() > t0, t0, { timeout: 60000 });
+    assert.deepEqual(problems, []);
+    await context.close();
+  });
 } finally {
   await browser.close();
   await server.close();
