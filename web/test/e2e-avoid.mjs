@@ -63,6 +63,9 @@ try {
   });
 
   await check("circle swap N = 32 played in the page with ORCA: 0 overlapping pairs in every frame, every agent arrives", async () => {
+    // Paused first: "r" rebuilds at t = 0 and keeps the pause, so the
+    // clock cannot run past 0 before the check sees it (play() unpauses).
+    await page.evaluate(() => window.__lab.setPaused(true));
     await page.keyboard.press("r");
     // The rebuild is done when the swap starts again (nobody at its target).
     await page.waitForFunction(() => window.__lab.simTime() === 0 && window.__lab.count() === 32 && window.__lab.finished() === 0, null, { timeout: 10000 });
@@ -79,6 +82,9 @@ try {
     assert.equal(await page.evaluate(() => window.__lab.avoidance()), "off");
     await page.waitForFunction(() => location.hash.includes("avoid=off"), null, { timeout: 3000 });
     // Reset keeps the choice (the link's state), and replays the swap.
+    // Paused first: "r" rebuilds at t = 0 and keeps the pause, so the
+    // clock cannot run past 0 before the check sees it (play() unpauses).
+    await page.evaluate(() => window.__lab.setPaused(true));
     await page.keyboard.press("r");
     // The rebuild is done when the swap starts again (nobody at its target).
     await page.waitForFunction(() => window.__lab.simTime() === 0 && window.__lab.count() === 32 && window.__lab.finished() === 0, null, { timeout: 10000 });
