@@ -14,43 +14,12 @@
 use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
-use glam::Vec2;
-use steering::avoidance::{AvoidanceConfig, AvoidanceMethod};
-use steering::funnel::{FunnelConfig, Goal};
-use steering::rng::Rng;
+use steering::avoidance::AvoidanceMethod;
 use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
 
-fn world(side: usize, method: AvoidanceMethod) -> World {
-    let p = VehicleParams::default();
-    let mut w = World::new(p, FunnelConfig::default()).unwrap();
-    w.set_avoidance(AvoidanceConfig::with_method(method), Vec::new())
-        .unwrap();
-    let mut rng = Rng::new(18);
-    for i in 0..side * side {
-        let pos = Vec2::new((i % side) as f32, (i / side) as f32) * 1.6;
-        let a = rng.range(-3.1, 3.1);
-        let d = rng.range(20.0, 30.0);
-        let goal = Goal {
-            pos: pos + steering::trig::unit(a) * d,
-            beta: rng.range(-3.1, 3.1),
-            d_tol: 0.3,
-            eps_tol: 10f32.to_radians(),
-            speed: 1.3,
-            halting: true,
-            vel: Vec2::ZERO,
-        };
-        let spec = GoalSpec {
-            goal,
-            motion: GoalMotion::Static,
-            switch: SwitchRule::EndOfSteering,
-        };
-        w.add_agent(VehicleState::new(pos, a, 1.0, 0.0), vec![spec])
-            .unwrap();
-    }
-    w
-}
+#[path = "avoid_world.rs"]
+mod avoid_world;
+use avoid_world::world;
 
 fn bench(c: &mut Criterion) {
     let table = EtaTable::from_bytes(include_bytes!("../tables/eta.bin")).unwrap();

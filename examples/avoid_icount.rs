@@ -12,14 +12,12 @@
 //! about 11 neighbours each): instructions per agent update =
 //! (count(40) − count(20)) / (20 · 1,024).
 
-use glam::Vec2;
 use std::hint::black_box;
-use steering::avoidance::{AvoidanceConfig, AvoidanceMethod};
-use steering::funnel::{FunnelConfig, Goal};
-use steering::rng::Rng;
+use steering::avoidance::AvoidanceMethod;
 use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+
+#[path = "../benches/avoid_world.rs"]
+mod avoid_world;
 
 fn main() {
     let what = std::env::args().nth(1).unwrap_or_else(|| "orca".into());
@@ -34,33 +32,7 @@ fn main() {
     };
     let table = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
         .expect("tables/eta.bin (run from the repository root)");
-    let side = 32;
-    let p = VehicleParams::default();
-    let mut w = World::new(p, FunnelConfig::default()).unwrap();
-    w.set_avoidance(AvoidanceConfig::with_method(method), Vec::new())
-        .unwrap();
-    let mut rng = Rng::new(18);
-    for i in 0..side * side {
-        let pos = Vec2::new((i % side) as f32, (i / side) as f32) * 1.6;
-        let a = rng.range(-3.1, 3.1);
-        let d = rng.range(20.0, 30.0);
-        let goal = Goal {
-            pos: pos + steering::trig::unit(a) * d,
-            beta: rng.range(-3.1, 3.1),
-            d_tol: 0.3,
-            eps_tol: 10f32.to_radians(),
-            speed: 1.3,
-            halting: true,
-            vel: Vec2::ZERO,
-        };
-        let spec = GoalSpec {
-            goal,
-            motion: GoalMotion::Static,
-            switch: SwitchRule::EndOfSteering,
-        };
-        w.add_agent(VehicleState::new(pos, a, 1.0, 0.0), vec![spec])
-            .unwrap();
-    }
+    let mut w = avoid_world::world(32, method);
     for _ in 0..60 + n {
         w.step(&table);
     }

@@ -9,7 +9,7 @@
 // capture) and the core's obstacles move; added obstacles survive a reload
 // through the link; a malformed link is refused field by field. Screenshots
 // at desktop and 390 px widths in artifacts/. Prints "e2e-avoid: N passed, M failed".
-import { serve, launch, openPage, checks, shot, waitReady, settle } from "./harness.mjs";
+import { serve, launch, openPage, checks, shot, waitReady, settle, dragOnLab as mouseDrag } from "./harness.mjs";
 import assert from "node:assert/strict";
 
 const { check, finish } = checks("e2e-avoid");
@@ -36,15 +36,6 @@ async function play(page, maxSimS, stopOnOverlap = false) {
     };
     requestAnimationFrame(frame);
   }), { maxSimS, stopOnOverlap });
-}
-
-async function mouseDrag(page, from, to, steps = 12) {
-  const box = await page.locator("#lab").boundingBox();
-  await page.mouse.move(box.x + from.x, box.y + from.y);
-  await page.mouse.down();
-  await page.mouse.move(box.x + to.x, box.y + to.y, { steps });
-  await page.mouse.up();
-  await settle(page);
 }
 
 const { server, url } = await serve();

@@ -5,7 +5,7 @@
 // bound, gain, seek threshold) reaching the core and the URL; URL state round
 // trip and a malformed link; a corrupt table shows a readable message. Screenshots go
 // to artifacts/ (gitignored). Prints "e2e: N passed, M failed".
-import { serve, launch, openPage, checks, shot, waitReady, settle, artifacts } from "./harness.mjs";
+import { serve, launch, openPage, checks, shot, waitReady, settle, dragOnLab as drag, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
@@ -42,15 +42,6 @@ async function colours(page, at, radius) {
     }
     return { red, blue, grey };
   }, { at, radius });
-}
-
-async function drag(page, from, to, steps = 12) {
-  const box = await page.locator("#lab").boundingBox();
-  await page.mouse.move(box.x + from.x, box.y + from.y);
-  await page.mouse.down();
-  await page.mouse.move(box.x + to.x, box.y + to.y, { steps });
-  await page.mouse.up();
-  await settle(page);
 }
 
 const { server, url } = await serve();

@@ -97,3 +97,14 @@ export function checks(suite) {
 
 /** A screenshot of `page` as artifacts/`name`.png. */
 export const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
+
+/** A mouse drag on the lab's canvas from `from` to `to` (CSS pixels in the
+ *  canvas), `steps` moves, then the page settles. */
+export async function dragOnLab(page, from, to, steps = 12) {
+  const box = await page.locator("#lab").boundingBox();
+  await page.mouse.move(box.x + from.x, box.y + from.y);
+  await page.mouse.down();
+  await page.mouse.move(box.x + to.x, box.y + to.y, { steps });
+  await page.mouse.up();
+  await settle(page);
+}

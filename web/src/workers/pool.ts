@@ -45,11 +45,7 @@ export class WorkerPool<T, R> {
     let next = 0;
     let done = 0;
     return new Promise<R[]>((resolve, reject) => {
-      const fail = (e: Error): void => {
-        this.abort = null;
-        reject(e);
-      };
-      this.abort = () => fail(new Cancelled());
+      const fail = this.failer(reject);
       const feed = (w: Worker): void => {
         if (next >= tasks.length) return;
         const id = next++;
@@ -96,11 +92,7 @@ export class WorkerPool<T, R> {
     const results: R[] = new Array<R>(tasks.length);
     let done = 0;
     return new Promise<R[]>((resolve, reject) => {
-      const fail = (e: Error): void => {
-        this.abort = null;
-        reject(e);
-      };
-      this.abort = () => fail(new Cancelled());
+      const fail = this.failer(reject);
       tasks.forEach((task, id) => {
         const w = this.workers[id] as Worker;
         w.onmessage = (ev: MessageEvent<ResultMessage<R>>) => {
@@ -127,6 +119,17 @@ export class WorkerPool<T, R> {
       });
       if (tasks.length === 0) resolve(results);
     });
+  }
+
+  /** The job's failure: rejects with `e` and forgets the job; `cancel()`
+   *  fails it with `Cancelled`. */
+  private failer(reject: (e: Error) => void): (e: Error) => void {
+    const fail = (e: Error): void => {
+      this.abort = null;
+      reject(e);
+    };
+    this.abort = () => fail(new Cancelled());
+    return fail;
   }
 
   /** Ends the job in flight, if any (its workers are replaced on the next run). */
