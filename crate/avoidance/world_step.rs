@@ -8,7 +8,7 @@ use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::ParamError;
 use crate::vehicle::{VehicleParams, VehicleState};
-use crate::world::{Planner, World};
+use crate::world::World;
 
 impl World {
     /// Sets the avoidance method, settings and static obstacles.
@@ -30,32 +30,24 @@ impl World {
     /// [`World::step`] with avoidance on.
     pub(crate) fn step_avoiding(&mut self, table: &EtaTable) {
         debug_assert_ne!(self.avoidance.method, AvoidanceMethod::Off);
-        for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
-            *s = a.state;
-        }
-        let p = self.params;
-        let t = self.time;
-        let planner = Planner {
-            kind: self.controller,
-            funnel: &self.config,
-            relaxed: &self.relaxed,
-            table,
-            p: &p,
-            t,
-            snapshot: &self.snapshot,
-        };
         // 1. Every funnel plans (mode memory advances as in a plain step).
-        self.preferred.clear();
-        for a in &mut self.agents {
+        // The buffer is taken out and put back (no allocation) so that the
+        // planner may borrow the world beside it.
+        let mut preferred = core::mem::take(&mut self.preferred);
+        preferred.clear();
+        let (planner, agents) = self.planning(table);
+        let (p, t) = (*planner.p, planner.t);
+        for a in agents {
             if a.done() {
                 let speed = a.cruise_speed();
                 a.hold(speed);
-                self.preferred.push((a.state.theta, speed));
+                preferred.push((a.state.theta, speed));
             } else {
                 planner.plan(a, true);
-                self.preferred.push((a.internals.gamma, a.internals.v_dt));
+                preferred.push((a.internals.gamma, a.internals.v_dt));
             }
         }
+        self.preferred = preferred;
         // Right of way: nearer the current goal first, finished agents last.
         self.avoider.priority.clear();
         self.avoider.priority.extend(self.agents.iter().map(|a| {

@@ -201,19 +201,8 @@ impl World {
     /// Call it after adding agents or changing the controller (stepping
     /// does not need it). Constant cost per agent, no allocation.
     pub fn plan(&mut self, table: &EtaTable) {
-        for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
-            *s = a.state;
-        }
-        let planner = Planner {
-            kind: self.controller,
-            funnel: &self.config,
-            relaxed: &self.relaxed,
-            table,
-            p: &self.params,
-            t: self.time,
-            snapshot: &self.snapshot,
-        };
-        for a in &mut self.agents {
+        let (planner, agents) = self.planning(table);
+        for a in agents {
             if a.done() {
                 a.hold(a.cruise_speed());
             } else {
@@ -229,21 +218,9 @@ impl World {
             self.step_avoiding(table);
             return;
         }
-        for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
-            *s = a.state;
-        }
-        let p = self.params;
-        let t = self.time;
-        let planner = Planner {
-            kind: self.controller,
-            funnel: &self.config,
-            relaxed: &self.relaxed,
-            table,
-            p: &p,
-            t,
-            snapshot: &self.snapshot,
-        };
-        for a in &mut self.agents {
+        let (planner, agents) = self.planning(table);
+        let (p, t) = (*planner.p, planner.t);
+        for a in agents {
             let prev = a.state;
             if a.done() {
                 // All goals done: rest if the last goal halts, else cruise on.
@@ -259,6 +236,29 @@ impl World {
             a.metrics.add(&p, &prev, &a.state);
         }
         self.time += p.dt;
+    }
+
+    /// What every per-agent loop of a step begins with (plan, step, the
+    /// avoidance step): the snapshot of the states at the start of the step
+    /// (goals that follow other agents read it), and the planner over it,
+    /// beside the agents to update (disjoint borrows of the world).
+    pub(crate) fn planning<'a>(
+        &'a mut self,
+        table: &'a EtaTable,
+    ) -> (Planner<'a>, &'a mut [Agent]) {
+        for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
+            *s = a.state;
+        }
+        let planner = Planner {
+            kind: self.controller,
+            funnel: &self.config,
+            relaxed: &self.relaxed,
+            table,
+            p: &self.params,
+            t: self.time,
+            snapshot: &self.snapshot,
+        };
+        (planner, &mut self.agents)
     }
 
     /// Writes the per-agent state into `out` with stride [`STATE_STRIDE`],
