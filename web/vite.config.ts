@@ -5,6 +5,9 @@ import { readFileSync, readdirSync, existsSync, statSync } from "node:fs";
 import { gzipSync } from "node:zlib";
 import { resolve, basename } from "node:path";
 import type { IncomingMessage, ServerResponse } from "node:http";
+import { pathToFileURL } from "node:url";
+import { build as bundle } from "rolldown";
+import type { firstFrameData } from "./src/lab/firstdata";
 
 const TABLES = resolve(import.meta.dirname, "../tables");
 
@@ -98,13 +101,70 @@ function coreWasmUrl(): Plugin {
   };
 }
 
+/** `v` as a JavaScript literal: JSON, but NaN and ±Infinity kept (the
+ *  core's internals use NaN for "none") and typed arrays as arrays. */
+function jsLiteral(v: unknown): string {
+  if (typeof v === "number") return Number.isNaN(v) ? "NaN" : !Number.isFinite(v) ? (v > 0 ? "Infinity" : "-Infinity") : Object.is(v, -0) ? "-0" : String(v);
+  if (typeof v === "string" || typeof v === "boolean" || v === null || v === undefined) return JSON.stringify(v ?? null);
+  if (ArrayBuffer.isView(v)) return jsLiteral(Array.from(v as unknown as ArrayLike<number>));
+  if (Array.isArray(v)) return `[${v.map(jsLiteral).join(",")}]`;
+  const entries = Object.entries(v as Record<string, unknown>).filter(([, x]) => x !== undefined);
+  return `{${entries.map(([k, x]) => `${JSON.stringify(k)}:${jsLiteral(x)}`).join(",")}}`;
+}
+
+/** Issue 17, the first drawn frame (src/lab/firstframe.ts): the core, run
+ *  here in Node, builds the default playground as src/lab/sim.ts does
+ *  (`Lab.withoutTable`, the playground agent, the controller settings) and
+ *  its state at t = 0, the agent's internals and predicted seek path go
+ *  into the lab's built HTML, with src/lab/first.ts bundled inline to draw
+ *  them before any script request or the core is in. */
+async function firstFrameScript(): Promise<string> {
+  const src = resolve(import.meta.dirname, "src/lab");
+  const pkg = resolve(import.meta.dirname, "pkg");
+  const bundleTs = (input: string, format: "iife" | "esm") =>
+    bundle({
+      input, platform: format === "iife" ? "browser" : "node", logLevel: "warn", write: false, output: { format, minify: format === "iife" },
+      // The inline script takes the core's enums from its glue, not the glue's classes (no wasm there).
+      treeshake: { moduleSideEffects: (id: string) => !/pkg[\\/]steering\.js$/.test(id) },
+    });
+  // src/lab/firstdata.ts (bundled, as the config loader does not load the page's modules) on the core's package.
+  const maker = (await bundleTs(resolve(src, "firstdata.ts"), "esm")).output[0].code;
+  const { firstFrameData: make } = (await import(`data:text/javascript;base64,${Buffer.from(maker).toString("base64")}`)) as { firstFrameData: typeof firstFrameData };
+  const core = (await import(pathToFileURL(resolve(pkg, "steering.js")).href)) as typeof import("./pkg/steering.js");
+  core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
+  const data = make(core);
+  const code = (await bundleTs(resolve(src, "first.ts"), "iife")).output[0].code.replace(/<\/(script)/gi, "<\\/$1");
+  return `window.__labFirstFrame=${jsLiteral(data)};\n${code}`;
+}
+
+function firstFrame(): Plugin {
+  return {
+    name: "steering-first-frame",
+    transformIndexHtml: {
+      order: "post",
+      async handler(html, ctx) {
+        // The built lab page only (the dev server starts as before).
+        const bundle = ctx.bundle;
+        if (!bundle || !html.includes('<canvas id="lab"')) return html;
+        // The stylesheet inline too: a linked one would hold the inline script
+        // (and the layout it measures) until its request came back.
+        const inlined = html.replace(/<link rel="stylesheet" crossorigin href="\.\/([^"]+\.css)">/g, (link, file: string) => {
+          const css = bundle[file];
+          return css && css.type === "asset" ? `<style>${String(css.source)}</style>` : link;
+        });
+        return inlined.replace("</main>", `</main>\n    <script>${await firstFrameScript()}</script>`);
+      },
+    },
+  };
+}
+
 // Cross-origin isolation gives performance.now() 5 µs resolution (instead
 // of 100 µs), which the HUD's µs-per-update figure needs.
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
 
 export default defineConfig({
   base: "./",
-  plugins: [tables(), coreWasmUrl()],
+  plugins: [tables(), coreWasmUrl(), firstFrame()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
   // The η-table workers (issue 14) import the wasm module: ES workers.

@@ -264,6 +264,69 @@ try {
     assert.deepEqual(problems, []);
     await context.close();
   });
+
+  // Issue 17, the first drawn frame: the default page draws its scene from
+  // the HTML (src/lab/firstframe.ts) before its scripts and core arrive; the
+  // core's first frame, the η table held back (the clock at t = 0), must be
+  // the same picture, pixel for pixel, from the same state, bit for bit.
+  for (const [w, h] of [[1280, 800], [390, 844]]) {
+    await check(`first frame at ${w} px: drawn before the scripts, the core's first frame the same pixels and state`, async () => {
+      const { page, problems, context } = await openPage(browser, { width: w, height: h }, 1);
+      const gate = () => {
+        let open = () => {};
+        const wait = new Promise((r) => { open = r; });
+        return { wait, open };
+      };
+      const scripts = gate();
+      const table = gate();
+      await page.route(/\.js(\?|$)/, async (r) => { await scripts.wait; await r.continue(); });
+      await page.route(/eta\.(bin|planes)/, async (r) => { await table.wait; await r.continue(); });
+      const pixels = () => page.evaluate(() => {
+        const c = document.getElementById("lab");
+        // A PNG of the backing store (getImageData would warn on a canvas not made for readback).
+        const d = c.toDataURL("image/png");
+        let hsh = 0x811c9dc5;
+        for (let i = 0; i < d.length; i++) hsh = Math.imul(hsh ^ d.charCodeAt(i), 0x01000193) >>> 0;
+        return { w: c.width, h: c.height, hash: hsh.toString(16) };
+      });
+      await page.goto(url, { waitUntil: "commit" });
+      await page.waitForFunction(() => window.__labFirst !== undefined, null, { timeout: 30000 });
+      assert.equal(await page.evaluate(() => window.__lab), undefined, "the page's modules ran before the first frame");
+      const first = await pixels();
+      await shot(page, `first-frame-${w}`);
+      scripts.open();
+      await page.waitForFunction(() => (window.__lab?.frames ?? 0) >= 2, null, { timeout: 60000 });
+      assert.equal(await page.evaluate(() => window.__lab.live()), false);
+      const core = await pixels();
+      await shot(page, `first-frame-core-${w}`);
+      assert.deepEqual(core, first, "the core's first frame differs from the HTML's");
+      const hashes = await page.evaluate(async () => {
+        const u = new Uint32Array(window.__labFirst.state.buffer);
+        let h = 0x811c9dc5;
+        for (const x of u) for (let b = 0; b < 32; b += 8) h = Math.imul(h ^ ((x >>> b) & 0xff), 0x01000193) >>> 0;
+        return { first: h.toString(16).padStart(8, "0"), core: window.__lab.stateHash(), firstMs: window.__lab.firstFrameMs, ff: window.__labFirst.ms };
+      });
+      assert.equal(hashes.first, hashes.core);
+      assert.equal(hashes.firstMs, hashes.ff, "window.__lab.firstFrameMs is the HTML's frame");
+      table.open();
+      assert.equal(await waitReady(page, 60000), null);
+      await page.waitForFunction(() => window.__lab.simTime() > 0.5, null, { timeout: 60000 });
+      await shot(page, `first-frame-loaded-${w}`);
+      assert.deepEqual(problems, []);
+      await context.close();
+    });
+  }
+  await check("first frame: a link with a hash or ?workers= is not drawn from the HTML (the core's scene of the link)", async () => {
+    for (const at of ["#preset=p000_fig6_face_to_face", "?workers=1"]) {
+      const { page, problems, context } = await openPage(browser);
+      await page.goto(`${url.replace(/\/?$/, "/")}${at}`);
+      assert.equal(await waitReady(page, 60000), null);
+      assert.equal(await page.evaluate(() => window.__labFirst), undefined, at);
+      assert.ok(Number.isFinite(await page.evaluate(() => window.__lab.firstFrameMs)), at);
+      assert.deepEqual(problems, []);
+      await context.close();
+    }
+  });
 } finally {
   await browser.close();
   await server.close();

@@ -5,6 +5,7 @@ import { chromium } from "playwright-core";
 import { fileURLToPath } from "node:url";
 import { dirname, resolve } from "node:path";
 import { mkdirSync } from "node:fs";
+import { spawn } from "node:child_process";
 
 export const webDir = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 export const artifacts = resolve(webDir, "../artifacts");
@@ -34,6 +35,21 @@ export async function serve(outDir) {
   const url = server.resolvedUrls?.local?.[0];
   if (!url) throw new Error("vite preview gave no URL");
   return { server, url };
+}
+
+/** As serve, but from a child process (test/serve.mjs): the server's work
+ *  then does not wait on the harness's own (issue 17, perf.mjs --child). */
+export function serveChild(outDir) {
+  const child = spawn(process.execPath, [resolve(webDir, "test/serve.mjs"), outDir ? resolve(outDir) : ""], { stdio: ["ignore", "pipe", "inherit"] });
+  return new Promise((ok, fail) => {
+    let out = "";
+    child.once("exit", (code) => fail(new Error(`the preview server exited (${code})`)));
+    child.stdout.on("data", (d) => {
+      out += String(d);
+      const line = out.split("\n")[0];
+      if (out.includes("\n")) ok({ url: line.trim(), server: { close: async () => { child.kill(); } } });
+    });
+  });
 }
 
 export async function launch() {
@@ -71,7 +87,7 @@ export function settle(page) {
   return page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
 }
 
-/** Named checks that do not stop the run: each prints `ok - name` or
+/** Named checks that do not stop the run (CHECK=text: those named with it): each prints `ok - name` or
  *  `not ok - name` with the first lines of the stack; `finish` prints
  *  "`suite`: N passed, M failed" and exits non-zero on any failure. */
 export function checks(suite) {
@@ -79,6 +95,8 @@ export function checks(suite) {
   let failed = 0;
   return {
     async check(name, f) {
+      // CHECK=text runs only the checks whose name contains it.
+      if (process.env.CHECK && !name.includes(process.env.CHECK)) return;
       try {
         await f();
         passed++;

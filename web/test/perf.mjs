@@ -6,8 +6,9 @@
 // mean and p95 work per frame (core step + drawing) and core step time.
 // Issue 18: the largest N again with each avoidance method of AVOID
 // (default separation,orca; the second argument), beside the same run's avoidance-off figures.
-import { serve, launch, openPage, waitReady, artifacts } from "./harness.mjs";
+import { serve, serveChild, launch, openPage, waitReady, artifacts } from "./harness.mjs";
 import { resolve } from "node:path";
+import { loadavg } from "node:os";
 
 const args = process.argv.slice(2);
 // `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
@@ -17,11 +18,24 @@ const baseDirs = [];
 for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) baseDirs.push(args.splice(at, 2)[1]);
 const loadsAt = args.indexOf("--loads");
 const LOADS = loadsAt >= 0 ? Number(args.splice(loadsAt, 2)[1]) : 9;
+// `--server inproc|child|both` (issue 17): the first-frame loads' builds
+// served by a preview server in this process (the default, as before), by
+// one in a child process (test/serve.mjs: a user's server does not share
+// the browser driver's event loop), or both, alternating in one run.
+const serverAt = args.indexOf("--server");
+const SERVER = serverAt >= 0 ? args.splice(serverAt, 2)[1] : "inproc";
+if (!["inproc", "child", "both"].includes(SERVER)) throw new Error(`--server: inproc, child or both, not ${SERVER}`);
+// An empty size list ("") runs the first-frame loads alone.
 const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const onlyFirst = sizes.length === 0;
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
 const { server, url } = await serve();
 const bases = [];
 for (const d of baseDirs) bases.push({ dir: d, ...(await serve(d)) });
+const children = [];
+if (SERVER !== "inproc" && !onlyWorkers) {
+  for (const d of [...baseDirs, ""]) children.push({ dir: d || "this", ...(await serveChild(d || undefined)) });
+}
 const browser = await launch();
 let bad = 0;
 
@@ -42,6 +56,7 @@ async function startLoad(at) {
     const l = window.__lab;
     return {
       "html": nav.responseEnd,
+      "first-frame script runs": mark("lab:firstscript"),
       "scripts in": end(/\.js(\?|$)/),
       "main module runs": mark("lab:main"),
       "DOMContentLoaded": nav.domContentLoadedEventStart,
@@ -50,6 +65,7 @@ async function startLoad(at) {
       "core instantiated": mark("lab:core"),
       "scene built (first rAF next)": mark("lab:scene"),
       "first frame": l.firstFrameMs,
+      "core's first frame (loop)": mark("lab:loop"),
       "table in": end(/eta\.(bin|planes)/),
       "table loaded (clock runs)": Number.isFinite(l.tableMs) ? l.tableMs : mark("lab:table"),
     };
@@ -60,7 +76,12 @@ async function startLoad(at) {
 
 try {
   if (!onlyWorkers) {
-  const sides = [...bases.map((b) => [b.dir, b.url]), ["this", url]];
+  const inproc = [...bases.map((b) => [b.dir, b.url]), ["this", url]];
+  const sides = [
+    ...(SERVER === "child" ? [] : inproc),
+    ...children.map((c) => [SERVER === "both" ? `${c.dir}, child server` : c.dir, c.url]),
+  ];
+  console.log(`first-frame loads: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (before)`);
   const rows = Object.fromEntries(sides.map(([n]) => [n, []]));
   for (let k = 0; k < LOADS; k++) for (let j = 0; j < sides.length; j++) { const [n, at] = sides[(j + k) % sides.length]; rows[n].push(await startLoad(at)); }
   const q = (a, p) => { const s = a.filter(Number.isFinite).sort((x, y) => x - y); return s.length ? s[Math.min(s.length - 1, Math.floor(p * s.length))] : NaN; };
@@ -72,6 +93,7 @@ try {
         `p90 ${f(q(firsts, 0.9))} ms (min ${f(q(firsts, 0))}, max ${f(q(firsts, 1))}) over ${firsts.length} loads`,
     );
   }
+  console.log(`host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (after)`);
   const keys = Object.keys(rows[sides[0][0]][0]);
   console.log(`start-up breakdown, medians (ms after navigation start): ${sides.map(([n]) => n).join(" / ")}`);
   for (const key of keys) console.log(`  ${key.padEnd(28)} ${sides.map(([n]) => f(q(rows[n].map((r) => r[key]), 0.5)).padStart(6)).join(" / ")}`);
@@ -79,8 +101,8 @@ try {
 
   // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl, issue 17:
   // headless WebGL is software, so the page's own choice is the 2D sprites).
-  const runs = onlyWorkers ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
-  const avoids = onlyWorkers ? [] : (args[1] ?? "separation,orca").split(",").filter((m) => m !== "");
+  const runs = onlyWorkers || onlyFirst ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
+  const avoids = onlyWorkers || onlyFirst ? [] : (args[1] ?? "separation,orca").split(",").filter((m) => m !== "");
   const largest = Math.max(...sizes);
   for (const m of avoids) runs.push([largest, "", m]);
   for (const [n, draw, avoid] of runs) {
@@ -110,7 +132,7 @@ try {
   // page's thread and to one worker. Agents stepped per frame = agent
   // updates finished / (sampled wall time / 16.7 ms); every frame draws the
   // last complete state (fps), "states" = frames that drew a new one.
-  const wsizes = (process.env.WORKER_SIZES ?? "10000,30000,100000").split(",").map(Number);
+  const wsizes = onlyFirst ? [] : (process.env.WORKER_SIZES ?? "10000,30000,100000").split(",").map(Number);
   const rounds = Number(process.env.WORKER_ROUNDS ?? 1);
   let cores = 0;
   const rows = new Map();
@@ -145,7 +167,7 @@ try {
       }
     }
   }
-  console.log(`workers: navigator.hardwareConcurrency = ${cores}; agents stepped per 16.7 ms frame (median of ${rounds} round(s)), ratios in the same run:`);
+  if (wsizes.length) console.log(`workers: navigator.hardwareConcurrency = ${cores}; agents stepped per 16.7 ms frame (median of ${rounds} round(s)), ratios in the same run:`);
   const med = (a) => [...a].sort((x, y) => x - y)[a.length >> 1];
   for (const n of wsizes) {
     const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(rows.get(`${n}|${w}`)));
@@ -158,5 +180,6 @@ try {
   await browser.close();
   await server.close();
   for (const b of bases) await b.server.close();
+  for (const c of children) await c.server.close();
 }
 process.exit(bad ? 1 : 0);

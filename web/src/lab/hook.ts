@@ -33,7 +33,9 @@ export interface LabHook {
   problems: string[];
   version: string;
   /** performance.now() when the first frame with agents was drawn (issue
-   *  17: before the η table has arrived, the scene at t = 0). */
+   *  17: before the η table has arrived, the scene at t = 0; for the
+   *  default playground, drawn by the HTML's own script before the core
+   *  is in, src/lab/firstframe.ts). */
   firstFrameMs: number;
   /** performance.now() when the η table was in force and the clock free. */
   tableMs: number;
@@ -96,7 +98,8 @@ export function installHook(): LabHook {
     error: null,
     problems: [],
     version: "",
-    firstFrameMs: NaN,
+    // Issue 17: the default playground's frame drawn from the HTML (firstframe.ts), if it came first.
+    firstFrameMs: window.__labFirst?.ms ?? NaN,
     tableMs: NaN,
     live: () => false,
     frames: 0,

@@ -33,6 +33,7 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
       renderHud(hudEl, scenes.hud(inter, frameMsEma));
       sim.dirty = false;
       hook.frames++;
+      if (hook.frames === 1) performance.mark("lab:loop");
       if (Number.isNaN(hook.firstFrameMs) && sim.count > 0) hook.firstFrameMs = performance.now();
     }
     const work = performance.now() - t0;

@@ -113,6 +113,11 @@ async function start(): Promise<void> {
   const since = performance.now();
   await sim.rebuild(true);
   performance.mark("lab:scene");
+  // Issue 17: the frame the HTML drew (firstframe.ts) must be this scene.
+  const early = window.__labFirst;
+  if (early && (fnvHex(early.state) !== fnvHex(sim.state) || early.view.scale !== view.scale || early.view.cx !== view.cx || early.view.cy !== view.cy)) {
+    console.warn("the first frame drawn from the HTML is not the core's scene at t = 0 (rebuild web/dist)");
+  }
   // A refused value does not stick in the address bar: it now holds the state in force.
   if (decoded.problems.length > 0) {
     // The build may have warned too (a vehicle limit the table was not built for): both stay.

@@ -3,7 +3,8 @@
 // relaxed arc), the η ring and field, the playground's editable target.
 // The η field is cached while its three inputs stay the same.
 
-import { Mode, StateField, type Internals } from "../wasm";
+import { Mode, StateField, type Internals, type Lab } from "../wasm";
+import type { LabAvoidance } from "./avoidance";
 import type { HudData } from "./hud";
 import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type GhostDraw, type Overlay, type Scene, type TargetDraw } from "./render";
 import type { LabSim } from "./sim";
@@ -18,10 +19,18 @@ function seekView(mode: number, live: boolean): number {
   return !live && mode === Mode.Funnelling ? Mode.PositionOnly : mode;
 }
 
+/** What a scene is built from: the page's simulation (sim.ts), or, for
+ *  issue 17's first frame, the core's picture of the default playground at
+ *  t = 0 carried in the HTML (firstframe.ts). */
+export type SceneSource = Pick<LabSim, "st" | "count" | "state" | "stride" | "focus" | "shown" | "live" | "pose" | "field" | "stepping" | "trails" | "usPerUpdate" | "time" | "paused" | "tableLine" | "steppingLine"> & {
+  lab: Pick<Lab, "ghost" | "etaRing" | "etaField">;
+  avoid: Pick<LabAvoidance, "method" | "radius" | "obstacles">;
+};
+
 export class SceneBuilder {
   private fieldCache: { key: string; samples: Float32Array } | null = null;
 
-  constructor(private readonly sim: LabSim) {}
+  constructor(private readonly sim: SceneSource) {}
 
   /** Every agent's target but the focus agent's (none for large crowds). */
   private targets(): TargetDraw[] {

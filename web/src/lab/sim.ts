@@ -10,7 +10,7 @@ import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
-import type { LabState, Pose } from "./state";
+import { fitPlayground, goalConfig, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { Cancelled } from "../workers/pool";
@@ -202,17 +202,7 @@ export class LabSim {
   }
 
   goal(): GoalConfig {
-    const st = this.st;
-    return {
-      x: st.target.x,
-      y: st.target.y,
-      beta: st.target.theta,
-      dTol: st.dTol,
-      epsTol: st.epsTol,
-      speed: st.speed,
-      halting: st.halting,
-      relaxed: st.relaxed,
-    };
+    return goalConfig(this.st);
   }
 
   /** Reads the agents' state back from the core. */
@@ -394,9 +384,7 @@ export class LabSim {
           const r = extent + 3;
           view.fit(-r, -r, r, r);
         } else {
-          const xs = [st.vehicle.x, st.target.x];
-          const ys = [st.vehicle.y, st.target.y];
-          view.fit(Math.min(...xs) - 3, Math.min(...ys) - 3, Math.max(...xs) + 3, Math.max(...ys) + 3, 60);
+          fitPlayground(view, st);
         }
       }
     }

@@ -1,5 +1,8 @@
 // The lab's user-editable state: everything the URL shares. Plain data.
 
+import type { View } from "../view";
+import type { GoalConfig } from "../wasm";
+
 export interface Pose {
   x: number;
   y: number;
@@ -120,4 +123,28 @@ export function defaultState(): LabState {
     slow: false,
     view: null,
   };
+}
+
+/** The playground agent's goal in the core's terms (the page's sim, and the
+ *  build's first frame, vite.config.ts). */
+export function goalConfig(st: LabState): GoalConfig {
+  return {
+    x: st.target.x,
+    y: st.target.y,
+    beta: st.target.theta,
+    dTol: st.dTol,
+    epsTol: st.epsTol,
+    speed: st.speed,
+    halting: st.halting,
+    relaxed: st.relaxed,
+  };
+}
+
+/** The view of the playground without extra agents: the vehicle and the
+ *  target with 3 m around them (the page's first build, and issue 17's
+ *  first frame, which must not jump when the core takes over). */
+export function fitPlayground(view: View, st: LabState): void {
+  const xs = [st.vehicle.x, st.target.x];
+  const ys = [st.vehicle.y, st.target.y];
+  view.fit(Math.min(...xs) - 3, Math.min(...ys) - 3, Math.max(...xs) + 3, Math.max(...ys) + 3, 60);
 }
