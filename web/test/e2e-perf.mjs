@@ -269,9 +269,9 @@ try {
   // the HTML (src/lab/firstframe.ts) before its scripts and core arrive; the
   // core's first frame, the η table held back (the clock at t = 0), must be
   // the same picture, pixel for pixel, from the same state, bit for bit.
-  for (const [w, h] of [[1280, 800], [390, 844]]) {
-    await check(`first frame at ${w} px: drawn before the scripts, the core's first frame the same pixels and state`, async () => {
-      const { page, problems, context } = await openPage(browser, { width: w, height: h }, 1);
+  for (const [w, h, dpr] of [[1280, 800, 1], [390, 844, 3]]) {
+    await check(`first frame at ${w} px (devicePixelRatio ${dpr}): drawn before the scripts, the core's first frame the same pixels and state`, async () => {
+      const { page, problems, context } = await openPage(browser, { width: w, height: h }, dpr);
       const gate = () => {
         let open = () => {};
         const wait = new Promise((r) => { open = r; });

@@ -66,6 +66,7 @@ async function startLoad(at) {
       "scene built (first rAF next)": mark("lab:scene"),
       "first frame": l.firstFrameMs,
       "core's first frame (loop)": mark("lab:loop"),
+      "first contentful paint": performance.getEntriesByName("first-contentful-paint")[0]?.startTime ?? NaN,
       "table in": end(/eta\.(bin|planes)/),
       "table loaded (clock runs)": Number.isFinite(l.tableMs) ? l.tableMs : mark("lab:table"),
     };
