@@ -64,6 +64,7 @@ async function startLoad(at) {
       "wasm in": end(/\.wasm(\?|$)/),
       "core instantiated": mark("lab:core"),
       "scene built (first rAF next)": mark("lab:scene"),
+      "first-frame script's rAF": mark("lab:firstraf"),
       "first frame": l.firstFrameMs,
       "core's first frame (loop)": mark("lab:loop"),
       "first contentful paint": performance.getEntriesByName("first-contentful-paint")[0]?.startTime ?? NaN,

@@ -66,6 +66,7 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
   if (!(canvas instanceof HTMLCanvasElement) || !hud) return;
   performance.mark("lab:firstscript");
   requestAnimationFrame(() => {
+    performance.mark("lab:firstraf");
     if ((window.__lab?.frames ?? 0) > 0) return;
     const ctx = canvas.getContext("2d", { alpha: false });
     if (!ctx) return;
