@@ -175,6 +175,9 @@ export default defineConfig({
     // The gallery pages (crowd path following, random steering) and the learn
     // page (issue 15) beside the funnelling lab.
     rolldownOptions: {
+      // Issue 17: the code the pages share in one chunk (was four beside each
+      // page's own: fewer requests before the lab's core takes over).
+      output: { codeSplitting: { groups: [{ name: "shared", test: /[\\/](src|pkg)[\\/]|preload-helper|modulepreload-polyfill/, minShareCount: 2 }] } },
       input: {
         index: resolve(import.meta.dirname, "index.html"),
         crowd: resolve(import.meta.dirname, "crowd.html"),
