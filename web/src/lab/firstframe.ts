@@ -11,9 +11,11 @@
 // index.html: the state record, the focus agent's internals and its
 // predicted seek path. This module, inlined into the same HTML (no request),
 // draws them with the page's own renderer (SceneBuilder + drawScene + HUD)
-// on the next animation frame. The core then builds the same scene from the
-// same state: main.ts checks the core's state against this one bit for bit
-// (a warning if they differ; the e2e suite fails on it) and its first frame
+// as soon as it runs, while the HTML is parsed (its time: the start of the
+// animation frame that shows it; the page's loop times a frame after drawing
+// it, in that frame). The core then builds the same scene from the same
+// state: main.ts checks the core's state against this one bit for bit (a
+// warning if they differ; the e2e suite fails on it) and its first frame
 // replaces this one. Fallback: a link with a hash, a `?workers=` page, or a
 // build without the data draws nothing here; the page starts as before.
 
@@ -57,17 +59,15 @@ export function defaultScene(loc: Location): boolean {
   return (loc.hash === "" || loc.hash === "#") && !new URLSearchParams(loc.search).has("workers");
 }
 
-/** Draws the carried first frame on the next animation frame, unless the
- *  page's own loop has drawn by then. */
+/** Draws the carried first frame now, while the HTML is parsed (the first
+ *  rendering opportunity then shows it; its time is that frame's start). */
 export function drawFirstFrame(data: FirstFrameData | undefined): void {
   if (!data || !defaultScene(location)) return;
   const canvas = document.getElementById("lab");
   const hud = document.getElementById("hud");
   if (!(canvas instanceof HTMLCanvasElement) || !hud) return;
   performance.mark("lab:firstscript");
-  requestAnimationFrame(() => {
-    performance.mark("lab:firstraf");
-    if ((window.__lab?.frames ?? 0) > 0) return;
+  {
     const ctx = canvas.getContext("2d", { alpha: false });
     if (!ctx) return;
     // Sized as canvas.ts's setupCanvas sizes it.
@@ -106,9 +106,14 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
     beginFrame(surface, COLOURS.background);
     drawScene(surface, view, scenes.scene(data.internals));
     renderHud(hud, scenes.hud(data.internals, 0));
-    const ms = performance.now();
-    performance.mark("lab:first");
-    window.__labFirst = { ms, state, view: { cx: view.cx, cy: view.cy, scale: view.scale, width: view.width, height: view.height } };
-    if (window.__lab && Number.isNaN(window.__lab.firstFrameMs)) window.__lab.firstFrameMs = ms;
-  });
+    const first: FirstFrameRecord = { ms: NaN, state, view: { cx: view.cx, cy: view.cy, scale: view.scale, width: view.width, height: view.height } };
+    // Drawn while the HTML is parsed; the frame that shows it is the next
+    // one: its time is the first frame's.
+    requestAnimationFrame(() => {
+      first.ms = performance.now();
+      performance.mark("lab:firstraf");
+      window.__labFirst = first;
+      if (window.__lab && Number.isNaN(window.__lab.firstFrameMs)) window.__lab.firstFrameMs = first.ms;
+    });
+  }
 }
