@@ -30,7 +30,10 @@
 //! from the other, which keeps the whole margin: the pair never overlaps,
 //! and where the margins leave no room one of them goes. *Keep right*
 //! only against an oncoming neighbour ahead (heading cosine below
-//! [`ONCOMING_COS`]): a neighbour going the same way is followed. *Walls*:
+//! [`ONCOMING_COS`]): a neighbour going the same way is followed; and
+//! *early*, against any oncoming neighbour in reach, not only the nearest
+//! ([`crate::avoidance::passing`]: the funnel's velocity turned right, so
+//! that two groups meeting head on pass in lanes). *Walls*:
 //! when the funnel's heading runs into a wall (tested at a walking speed,
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own
@@ -49,6 +52,7 @@ use glam::Vec2;
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
+use crate::avoidance::passing::Passing;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -147,8 +151,13 @@ impl Avoider {
             // deterministic).
             let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
             let mut k = 0usize;
+            // Every neighbour in reach tells the keep-right rule whether
+            // it comes the other way (`passing`), the nearest or not.
+            let mut lane = Passing::new(u_pref, 2.0 * r);
+            let fwd = &self.fwd;
             self.grid
-                .for_each_neighbour(&self.pos, i, cfg.reach, |j, _, d2| {
+                .for_each_neighbour(&self.pos, i, cfg.reach, |j, rel, d2| {
+                    lane.see(-rel, fwd[j]);
                     if k == k_max && d2 >= near[k - 1].0 {
                         return;
                     }
@@ -199,6 +208,20 @@ impl Avoider {
                             (u * s_pref.max(DODGE_SPEED), u)
                         }
                         _ => (v_pref, u_pref),
+                    };
+                    // Keep right early ([`crate::avoidance::passing`]): the
+                    // funnel's velocity turned right, away from oncoming
+                    // neighbours anywhere in reach, unless that runs into a
+                    // wall.
+                    let u_lane = lane.turn(u_pref);
+                    let turned = unfinished
+                        && !walled
+                        && lane.active()
+                        && lines.obstacles_admit(u_lane * s_pref.max(DODGE_SPEED), 0.0);
+                    let (h_pref, v_pref, u_seek) = if turned {
+                        (trig::atan2(u_lane.y, u_lane.x), lane.turn(v_pref), u_lane)
+                    } else {
+                        (h_pref, v_pref, u_seek)
                     };
                     let mut oncoming = false;
                     for &(_, j) in &near[..k] {
@@ -266,7 +289,7 @@ impl Avoider {
                         Command {
                             heading: h_pref,
                             speed: s_pref,
-                            active: false,
+                            active: turned,
                             walls: false,
                         }
                     } else {
