@@ -29,6 +29,14 @@ fn main() {
     for step in 0..sc.steps() {
         w.step(&table);
         let t = (step + 1) as f32 * w.params.dt;
+        for (k, a) in w.agents.iter().enumerate() {
+            for o in &w.obstacles {
+                let d = o.distance_normal(a.state.pos).0;
+                if d < sc.avoidance.radius {
+                    println!("t={t:.2} agent {k} touches an obstacle: {d:.3} m");
+                }
+            }
+        }
         if t < t0 || t > t1 || step % every != 0 {
             continue;
         }

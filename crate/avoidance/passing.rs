@@ -38,7 +38,9 @@
 //! **Measured** (`steer avoid --seeds 100`, tuned on seeds 1000–1099, see
 //! the README's figures table for seeds 0–99 and the held-out 200–299).
 //! Tune seeds, corridor with ORCA: 394 deadlocked agents in 72 runs, reach
-//! 90.2 % → 99 in 49 runs, 99.6 %. Applying the turn in the avoider's
+//! 90.2 % → 99 in 49 runs, 99.6 % (with the avoider's check that the
+//! present heading is clear of walls, added after a report seed showed a
+//! wall contact: 100 in 48, 99.1 %; doorway 0 deadlocks). Applying the turn in the avoider's
 //! ORCA branch only (the velocity sought, leaving the funnel's command
 //! whenever an oncoming agent was in reach) made it far worse (1,368 in 99
 //! runs, even with a turn of 0.006°: ORCA's projected speed while turning
