@@ -30,7 +30,10 @@
 //! from the other, which keeps the whole margin: the pair never overlaps,
 //! and where the margins leave no room one of them goes. *Keep right*
 //! only against an oncoming neighbour ahead (heading cosine below
-//! [`ONCOMING_COS`]): a neighbour going the same way is followed. *Walls*:
+//! [`ONCOMING_COS`]): a neighbour going the same way is followed; and
+//! *early*, against any oncoming neighbour in reach, not only the nearest
+//! ([`crate::avoidance::passing`]: the funnel's velocity turned right, so
+//! that two groups meeting head on pass in lanes). *Walls*:
 //! when the funnel's heading runs into a wall (tested at a walking speed,
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own
@@ -49,6 +52,7 @@ use glam::Vec2;
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
+use crate::avoidance::passing::Passing;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -147,8 +151,13 @@ impl Avoider {
             // deterministic).
             let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
             let mut k = 0usize;
+            // Every neighbour in reach tells the keep-right rule whether
+            // it comes the other way (`passing`), the nearest or not.
+            let mut lane = Passing::new(u_pref, 2.0 * r);
+            let fwd = &self.fwd;
             self.grid
-                .for_each_neighbour(&self.pos, i, cfg.reach, |j, _, d2| {
+                .for_each_neighbour(&self.pos, i, cfg.reach, |j, rel, d2| {
+                    lane.see(-rel, fwd[j]);
                     if k == k_max && d2 >= near[k - 1].0 {
                         return;
                     }
@@ -199,6 +208,20 @@ impl Avoider {
                             (u * s_pref.max(DODGE_SPEED), u)
                         }
                         _ => (v_pref, u_pref),
+                    };
+                    // Keep right early ([`crate::avoidance::passing`]): the
+                    // funnel's velocity turned right, away from oncoming
+                    // neighbours anywhere in reach, unless that runs into a
+                    // wall.
+                    let u_lane = lane.turn(u_pref);
+                    let turned = unfinished
+                        && !walled
+                        && lane.active()
+                        && lines.obstacles_admit(u_lane * s_pref.max(DODGE_SPEED), 0.0);
+                    let (h_pref, v_pref, u_seek) = if turned {
+                        (trig::atan2(u_lane.y, u_lane.x), lane.turn(v_pref), u_lane)
+                    } else {
+                        (h_pref, v_pref, u_seek)
                     };
                     let mut oncoming = false;
                     for &(_, j) in &near[..k] {
@@ -262,11 +285,16 @@ impl Avoider {
                     // An oncoming neighbour ahead: keep right at once (at
                     // least LANE_BIAS of the bias), before the pair is
                     // blocked, so that lanes form before a jam does.
-                    if !walled && !oncoming && s_pref <= p.v_max && lines.admits(v_pref, 0.0) {
+                    if !walled
+                        && !oncoming
+                        && s_pref <= p.v_max
+                        && lines.admits(v_pref, 0.0)
+                        && present_heading_clear(&lines, self.fwd[i], s_pref)
+                    {
                         Command {
                             heading: h_pref,
                             speed: s_pref,
-                            active: false,
+                            active: turned,
                             walls: false,
                         }
                     } else {
@@ -333,6 +361,18 @@ impl Avoider {
             self.commands[i] = cmd;
         }
     }
+}
+
+/// True when the vehicle, still moving along its present heading `forward`
+/// while it turns to the funnel's, may speed up to `speed` without running
+/// into an obstacle. The funnel's own command sets a heading to turn to and
+/// a speed, not a velocity: an agent facing a wall whose funnel asked to
+/// turn round at full speed accelerated into it (corridor, seed 94: 28
+/// steps closer than a radius). Without obstacles in reach: always (the
+/// same bits).
+#[inline]
+fn present_heading_clear(lines: &Lines, forward: Vec2, speed: f32) -> bool {
+    lines.obstacle_count() == 0 || lines.obstacles_admit(forward * speed, 0.0)
 }
 
 /// Speed up to which an agent whose funnel asks for less (at rest on its

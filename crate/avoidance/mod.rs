@@ -7,6 +7,7 @@
 //! | [`config`] | — | the method (off, separation, ORCA), body radius and settings; disc and segment obstacles; their validation |
 //! | [`orca`] | van den Berg et al. 2011 (RVO2) | the agents' and obstacles' half-planes, the 2D and 3D linear programs; why not `dodgy_2d` |
 //! | [`avoider`] | — | one pass: neighbours through the crowd's grid, the method's velocity, turned into an admissible heading and speed of the forward-only unicycle |
+//! | [`passing`] | — | keep right early: the funnel's velocity turned right by oncoming neighbours anywhere in reach, so that groups meeting head on pass in lanes (the corridor's deadlocks) |
 //! | `world_step` | 000 §6 | the world's step with avoidance: plan every funnel, avoid, step |
 //! | [`proximity`] | — | metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |
 //! | [`benchmarks`] | — | the benchmark scenarios (circle swap, corridor, doorway, paper figures with avoidance) and the seeded study behind `steer avoid` |
@@ -15,6 +16,7 @@ pub mod avoider;
 pub mod benchmarks;
 pub mod config;
 pub mod orca;
+pub mod passing;
 pub mod proximity;
 mod world_step;
 

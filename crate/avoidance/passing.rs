@@ -1,0 +1,163 @@
+//! Keep right early: the passing side taken before two groups crossing
+//! head on meet (issue 18's deadlock target, the corridor).
+//!
+//! **Problem.** Two groups of 12 in 3 × 4 blocks, 1 m apart, each as wide
+//! as the 4 m corridor, met face to face mid-corridor and locked: in 100
+//! runs (seeds 0–99) 398 agents deadlocked in 70 runs and reach was 90.4 %.
+//! The jams were not at the goals nor against the walls: the blocks came
+//! to rest interlocked around x ≈ 0–2 m, every agent at the distance ORCA
+//! keeps (0.75–0.9 m) from an oncoming one ahead and its own group mates
+//! beside and behind, turning on the spot but with no admissible forward
+//! ray (`examples/avoid_stuck.rs`, `examples/avoid_snap.rs`). The avoider
+//! already kept right against an oncoming neighbour, but only against the
+//! `max_neighbours` (10) *nearest*: inside a block of 12 those are its own
+//! group mates until the other block is about a metre away, half a second
+//! before contact at a closing speed of 2.6 m/s — too late for a forward-only
+//! unicycle to make room, so the blocks met at full width.
+//!
+//! **Rule.** While the grid lists the neighbours in reach (all of them, not
+//! only the nearest kept for ORCA), every *oncoming* neighbour ahead
+//! (heading cosine with the agent's way below
+//! [`crate::avoidance::avoider::ONCOMING_COS`]) that is not already clear on
+//! the agent's left (lateral offset within ± the clearance 2(r + margin))
+//! asks the agent to move right by its half share ([`LANE_SHARE`]) of the
+//! lateral gap that would put it on the left at that clearance; the largest
+//! ask, as the tangent of a turn over the distance ahead (at most
+//! [`LANE_MAX_TAN`], 45°), turns the funnel's preferred velocity to the
+//! right. The ask is seen from both sides of a pair alike (each is on the
+//! other's same side), so a pair never chooses opposite sides; a whole
+//! group moves to its right half and the two groups pass in lanes. The turn
+//! is skipped when the turned velocity would run into a wall (an agent at
+//! the wall already keeps as far right as it can) and for walled agents
+//! (they seek their goal's direction). The turned velocity then goes
+//! through the avoider as the funnel's own would: used as it is when
+//! admissible, else ORCA's nearest. No agent in reach oncoming: the funnel's
+//! (γ, v_dt) unchanged, the same bits (so Fig. 7-like scenes and every world
+//! without avoidance are untouched).
+//!
+//! **Measured** (`steer avoid --seeds 100`, ORCA, tuned on seeds
+//! 1000–1099). Report seeds 0–99, corridor: 398 deadlocked agents in 70
+//! runs → 113 in 52, reach 90.4 → 98.5 %; held-out seeds 200–299 (looked
+//! at once, after the choice): 364 in 74 → 119 in 50, reach 90.6 →
+//! 97.5 %. Doorway 0 deadlocks before and after; circle swaps 0 overlaps,
+//! N = 100 reach 100 %, oriented 99.3 % (the README's figures table has
+//! every cell). Cost: the heading of every neighbour in reach is read,
+//! 6,109 → 6,479 instructions per ORCA agent update (+6 %,
+//! `examples/avoid_icount.rs` under callgrind).
+//! Tune seeds, corridor with ORCA: 394 deadlocked agents in 72 runs, reach
+//! 90.2 % → 99 in 49 runs, 99.6 % (with the avoider's check that the
+//! present heading is clear of walls, added after a report seed showed a
+//! wall contact: 100 in 48, 99.1 %; doorway 0 deadlocks). Applying the turn in the avoider's
+//! ORCA branch only (the velocity sought, leaving the funnel's command
+//! whenever an oncoming agent was in reach) made it far worse (1,368 in 99
+//! runs, even with a turn of 0.006°: ORCA's projected speed while turning
+//! starves a group that the funnel's own command keeps moving); a full
+//! instead of half share 87 in 55; at most 27° (tan 0.5) 125 in 59; a
+//! wider clearance (×1.33) 65 in 48 but 39 wall contacts (rejected); asks
+//! only from neighbours less than half the clearance on the right 197 in
+//! 64. **Not reached: 0 deadlocks.** What is left are agents that ended in
+//! the other group's lane against a wall (the corridor's goals at
+//! y = ±3 m lie beyond its walls, and the funnel draws the outer rows back
+//! out), head on with it where neither side has room, and slow jams that
+//! take more than 10 s to clear.
+
+use glam::Vec2;
+
+use crate::avoidance::avoider::ONCOMING_COS;
+
+/// Largest turn of the preferred velocity, as its tangent (1: 45°).
+pub const LANE_MAX_TAN: f32 = 1.0;
+
+/// The share of the lateral gap an agent makes up itself (its oncoming
+/// neighbour, seeing the same gap, makes up the other half).
+pub const LANE_SHARE: f32 = 0.5;
+
+/// One agent's keep-right turn, accumulated over every neighbour in reach.
+#[derive(Clone, Copy, Debug)]
+pub struct Passing {
+    u: Vec2,
+    left: Vec2,
+    clear: f32,
+    tan: f32,
+}
+
+impl Passing {
+    /// An agent going along the unit direction `u`, passing oncoming
+    /// neighbours `clear` apart (centre to centre) on its left.
+    #[inline]
+    #[must_use]
+    pub fn new(u: Vec2, clear: f32) -> Self {
+        Self {
+            u,
+            left: Vec2::new(-u.y, u.x),
+            clear,
+            tan: 0.0,
+        }
+    }
+
+    /// A neighbour at `rel` from the agent, heading along the unit `fwd`.
+    #[inline]
+    pub fn see(&mut self, rel: Vec2, fwd: Vec2) {
+        let ahead = rel.dot(self.u);
+        if ahead <= 0.0 || fwd.dot(self.u) >= ONCOMING_COS {
+            return;
+        }
+        let lat = rel.dot(self.left);
+        if lat >= self.clear || lat <= -self.clear {
+            return;
+        }
+        let ask = (self.clear - lat) * LANE_SHARE / ahead;
+        self.tan = self.tan.max(ask.min(LANE_MAX_TAN));
+    }
+
+    /// True when an oncoming neighbour asks for a turn.
+    #[inline]
+    #[must_use]
+    pub fn active(&self) -> bool {
+        self.tan > 0.0
+    }
+
+    /// `v` (along the agent's direction) turned right by the largest turn
+    /// asked, its length kept.
+    #[inline]
+    #[must_use]
+    pub fn turn(&self, v: Vec2) -> Vec2 {
+        if self.tan <= 0.0 {
+            return v;
+        }
+        (self.u - self.left * self.tan).normalize() * v.length()
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    #[test]
+    fn a_head_on_pair_both_turn_right_by_the_same_angle() {
+        // A at the origin going +x, B 2 m ahead and 0.1 m to A's left
+        // going −x: each sees the other on its left within the clearance.
+        let (pa, pb) = (Vec2::ZERO, Vec2::new(2.0, 0.1));
+        let mut a = Passing::new(Vec2::X, 0.9);
+        a.see(pb - pa, -Vec2::X);
+        let mut b = Passing::new(-Vec2::X, 0.9);
+        b.see(pa - pb, Vec2::X);
+        let (ta, tb) = (a.turn(Vec2::X), b.turn(-Vec2::X));
+        assert!(ta.y < 0.0 && tb.y > 0.0, "{ta} {tb}");
+        assert!((ta.y + tb.y).abs() < 1e-6 && (ta.length() - 1.0).abs() < 1e-6);
+    }
+
+    #[test]
+    fn followers_neighbours_behind_and_clear_ones_ask_nothing() {
+        let mut p = Passing::new(Vec2::X, 0.9);
+        p.see(Vec2::new(1.0, 0.0), Vec2::X); // same way
+        p.see(Vec2::new(-1.0, 0.0), -Vec2::X); // behind
+        p.see(Vec2::new(2.0, 1.0), -Vec2::X); // already clear on the left
+        p.see(Vec2::new(2.0, -1.0), -Vec2::X); // clear on the right
+        assert!(!p.active());
+        assert_eq!(p.turn(Vec2::X), Vec2::X);
+        p.see(Vec2::new(0.1, 0.0), -Vec2::X); // close ahead: at most 45°
+        let t = p.turn(Vec2::X);
+        assert!((t.x + t.y).abs() < 1e-6 && t.y < 0.0, "{t}");
+    }
+}

@@ -1,0 +1,61 @@
+//! One agent of an avoidance benchmark run, step by step: pose, the
+//! funnel's (γ, v_dt) and the avoidance's command.
+//!
+//! `cargo run --release --example avoid_trace -- corridor 1008 0 18 24 0.2`
+//! (benchmark, seed, agent, from s, to s, every s).
+
+use steering::avoidance::benchmarks::Bench;
+use steering::avoidance::AvoidanceMethod;
+use steering::table::EtaTable;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let bench = match args.get(1).map_or("corridor", String::as_str) {
+        "doorway" => Bench::Doorway,
+        "circle32" => Bench::CircleSwap(32),
+        "circle100" => Bench::CircleSwap(100),
+        _ => Bench::Corridor,
+    };
+    let num = |k: usize, d: f32| args.get(k).and_then(|s| s.parse().ok()).unwrap_or(d);
+    let seed = num(2, 1000.0) as u64;
+    let i = num(3, 0.0) as usize;
+    let (t0, t1, every) = (num(4, 0.0), num(5, 30.0), num(6, 0.2));
+    let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
+    let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
+    let sc = bench.scenario(seed, AvoidanceMethod::Orca);
+    let mut w = sc.world().expect("benchmark scenarios are valid");
+    w.plan(&table);
+    let every = (every / w.params.dt).round().max(1.0) as u32;
+    for step in 0..sc.steps() {
+        w.step(&table);
+        let t = (step + 1) as f32 * w.params.dt;
+        for (k, a) in w.agents.iter().enumerate() {
+            for o in &w.obstacles {
+                let d = o.distance_normal(a.state.pos).0;
+                if d < sc.avoidance.radius {
+                    println!("t={t:.2} agent {k} touches an obstacle: {d:.3} m");
+                }
+            }
+        }
+        if t < t0 || t > t1 || step % every != 0 {
+            continue;
+        }
+        let a = &w.agents[i];
+        let c = w.avoider.commands[i];
+        println!(
+            "t={t:.2} pos=({:.2},{:.2}) θ={:.0}° v={:.2} ω={:.2} γ={:.0}° v_dt={:.2} {:?} cmd θ={:.0}° v={:.2} active={} walls={}",
+            a.state.pos.x,
+            a.state.pos.y,
+            a.state.theta.to_degrees(),
+            a.state.v,
+            a.state.omega,
+            a.internals.gamma.to_degrees(),
+            a.internals.v_dt,
+            a.internals.mode,
+            c.heading.to_degrees(),
+            c.speed,
+            c.active,
+            c.walls
+        );
+    }
+}
