@@ -612,7 +612,9 @@ mod tests {
         let mut rng = crate::rng::Rng::new(7);
         for trial in 0..3000 {
             let m = trial % (RANKED + 1);
-            let d: Vec<f32> = (0..m).map(|_| (rng.range(0.0, 6.0) as u32) as f32 * 0.5).collect();
+            let d: Vec<f32> = (0..m)
+                .map(|_| (rng.range(0.0, 6.0) as u32) as f32 * 0.5)
+                .collect();
             let mut keys = [u64::MAX; RANKED];
             for (a, key) in keys.iter_mut().take(m).enumerate() {
                 *key = (u64::from(d[a].to_bits()) << 32) | a as u64;
