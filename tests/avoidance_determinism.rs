@@ -49,7 +49,7 @@ const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
         include_str!("../scenarios/avoid_doorway.json"),
         None,
         1200,
-        0xcafe_a8c6_f357_0024,
+        DOORWAY,
     ),
     (
         "avoid_fig8",
@@ -66,6 +66,17 @@ const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
         0x15c1_8995_78e2_9a9b,
     ),
 ];
+
+/// The doorway's golden hash differs between native and wasm32, with
+/// main's avoidance code as with this one (both measured in Chromium):
+/// a divergence older than the cost work, not yet explained — a suspect
+/// is `unicycle`'s `turn.cos()`, the platform's libm rather than
+/// `steering::trig`, in the heading search that agents stuck at the
+/// door's walls run. Both values pinned; the other worlds agree.
+#[cfg(not(target_arch = "wasm32"))]
+const DOORWAY: u64 = 0xcafe_a8c6_f357_0024;
+#[cfg(target_arch = "wasm32")]
+const DOORWAY: u64 = 0x7cbb_9552_1efb_2fff;
 
 /// The lattice world's golden hash (ORCA, 16 × 16 agents, 300 steps).
 const LATTICE: u64 = 0x530a_5493_19fe_21b6;
