@@ -10,7 +10,8 @@
 //! `off`, `separation` or `orca`, N steps after 60 unmeasured ones, on the
 //! world of `benches/avoidance.rs` (32 × 32 agents on a 1.6 m lattice,
 //! about 11 neighbours each): instructions per agent update =
-//! (count(40) − count(20)) / (20 · 1,024).
+//! (count(40) − count(20)) / (20 · 1,024). An optional third argument
+//! sets `maxNeighbours` (a change of behaviour, to measure its cost).
 
 use std::hint::black_box;
 use steering::avoidance::AvoidanceMethod;
@@ -33,6 +34,11 @@ fn main() {
     let table = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
         .expect("tables/eta.bin (run from the repository root)");
     let mut w = avoid_world::world(32, method);
+    if let Some(k) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
+        let mut cfg = steering::avoidance::AvoidanceConfig::with_method(method);
+        cfg.max_neighbours = k;
+        w.set_avoidance(cfg, Vec::new()).unwrap();
+    }
     for _ in 0..60 + n {
         w.step(&table);
     }

@@ -77,6 +77,6 @@ fn set_obstacles_replaces_the_list_or_refuses_naming_the_obstacle() {
         );
     }
     // Stepping with the new obstacles runs.
-    lab.step(10);
+    assert!(lab.step(10).is_ok());
     assert!(lab.state().iter().all(|v| v.is_finite()));
 }

@@ -148,12 +148,28 @@ impl NeighbourGrid {
     ) {
         let pi = Vec2::new(pos[2 * i], pos[2 * i + 1]);
         let r2 = reach * reach;
-        let ix = cell_coord(pi.x, self.inv_cell);
-        let iy = cell_coord(pi.y, self.inv_cell);
+        let (runs, n_runs) = self.candidate_runs(pi);
+        for &(lo, hi) in &runs[..n_runs] {
+            self.scan(i, pi, r2, lo, hi, &mut f);
+        }
+    }
+
+    /// The runs of bucket-order slots (`lo..hi`, into the order of
+    /// [`NeighbourGrid::boid_in_bucket_order`]) that hold the candidates
+    /// of a neighbour query at `p`, in the order
+    /// [`NeighbourGrid::for_each_neighbour`] visits them: the 3 × 3 cells
+    /// round `p`'s, each bucket once. A caller keeping its own per-slot
+    /// copy of the boids (issue 18's avoidance) scans the same candidates
+    /// in the same order without the callback.
+    #[inline]
+    #[must_use]
+    pub fn candidate_runs(&self, p: Vec2) -> ([(u32, u32); 9], usize) {
+        let ix = cell_coord(p.x, self.inv_cell);
+        let iy = cell_coord(p.y, self.inv_cell);
         let buckets = self.mask + 1;
         // Each row's three cells are buckets b, b+1, b+2 (mod buckets):
         // at most two non-wrapping intervals per row.
-        let mut ranges = [(0u32, 0u32); 6];
+        let mut ranges = [(0u32, 0u32); 9];
         let mut n_ranges = 0;
         for dy in -1i32..=1 {
             let b = bucket_of_cell(ix.wrapping_sub(1), iy.wrapping_add(dy), self.mask);
@@ -179,33 +195,38 @@ impl NeighbourGrid {
                     let b = bucket_of_cell(ix.wrapping_add(dx), iy.wrapping_add(dy), self.mask);
                     if !seen[..n_seen].contains(&b) {
                         seen[n_seen] = b;
+                        ranges[n_seen] = (b, b + 1);
                         n_seen += 1;
-                        self.scan(i, pi, r2, b, b + 1, &mut f);
                     }
                 }
             }
-        } else {
-            for &(lo, hi) in &ranges[..n_ranges] {
-                self.scan(i, pi, r2, lo, hi, &mut f);
-            }
+            n_ranges = n_seen;
         }
+        for r in &mut ranges[..n_ranges] {
+            *r = (self.starts[r.0 as usize], self.starts[r.1 as usize]);
+        }
+        (ranges, n_ranges)
     }
 
-    /// Visits the boids of buckets `lo..hi` (one contiguous run).
+    /// Adds `n` to [`NeighbourGrid::checks`] (candidate pairs a caller of
+    /// [`NeighbourGrid::candidate_runs`] examined itself).
+    #[inline]
+    pub fn add_checks(&mut self, n: u64) {
+        self.checks += n;
+    }
+
+    /// Visits the boids of bucket-order slots `s0..s1` (one contiguous run).
     #[inline]
     fn scan(
         &mut self,
         i: usize,
         pi: Vec2,
         r2: f32,
-        lo: u32,
-        hi: u32,
+        s0: u32,
+        s1: u32,
         f: &mut impl FnMut(usize, Vec2, f32),
     ) {
-        let (s0, s1) = (
-            self.starts[lo as usize] as usize,
-            self.starts[hi as usize] as usize,
-        );
+        let (s0, s1) = (s0 as usize, s1 as usize);
         let mut checks = 0u64;
         for (&j, &pj) in self.order[s0..s1].iter().zip(&self.sorted[s0..s1]) {
             let j = j as usize;

@@ -1,0 +1,119 @@
+//! Avoidance worlds, same trajectory bits — natively and in WebAssembly
+//! (issue 18's cost work must not change a trajectory: every
+//! optimisation of the avoidance pass is bit-identical or it is a change
+//! of behaviour, reported as one).
+//!
+//! The golden values hash the raw f32 bits of every agent's state at every
+//! step of the avoidance presets (ORCA: circle swap N = 32, corridor,
+//! doorway with its walls, Fig. 8; separation: the corridor) and of the
+//! cost benchmark's lattice world (`benches/avoid_world.rs`, 16 × 16
+//! agents, about 11 neighbours each: the k-nearest selection, ties on the
+//! lattice included). First recorded before the avoidance cost work (main
+//! a39a444), which left them unchanged; re-recorded for the early keep-right
+//! (`avoidance/passing.rs`) and the heading search's `trig` cosine. No proptest and no file I/O, so it also runs under
+//! `wasm-pack test --headless --chrome`.
+
+#[cfg(target_arch = "wasm32")]
+wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
+
+use steering::avoidance::AvoidanceMethod;
+use steering::scenario::Scenario;
+use steering::table::EtaTable;
+use steering::world::World;
+
+mod common;
+use common::{fnv, FNV_OFFSET};
+
+#[path = "../benches/avoid_world.rs"]
+mod avoid_world;
+
+static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
+
+/// Preset, method override (`None`: the preset's own), steps, golden hash.
+const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
+    (
+        "avoid_circle32",
+        include_str!("../scenarios/avoid_circle32.json"),
+        None,
+        1200,
+        0x6166_b045_36a6_4bb8,
+    ),
+    (
+        "avoid_corridor",
+        include_str!("../scenarios/avoid_corridor.json"),
+        None,
+        1200,
+        0xeac8_ac6f_6964_bf09,
+    ),
+    (
+        "avoid_doorway",
+        include_str!("../scenarios/avoid_doorway.json"),
+        None,
+        1200,
+        DOORWAY,
+    ),
+    (
+        "avoid_fig8",
+        include_str!("../scenarios/avoid_fig8.json"),
+        None,
+        900,
+        0xac3a_4755_b7fd_6945,
+    ),
+    (
+        "avoid_corridor separation",
+        include_str!("../scenarios/avoid_corridor.json"),
+        Some(AvoidanceMethod::Separation),
+        600,
+        0x15c1_8995_78e2_9a9b,
+    ),
+];
+
+/// The doorway's golden hash. It once differed between native and wasm32:
+/// `unicycle`'s heading search (run by agents stuck at the door's walls)
+/// took `f32::cos`, the platform's libm; it now takes `steering::trig`.
+const DOORWAY: u64 = 0xaf98_331f_2d4e_bf9d;
+
+/// The lattice world's golden hash (ORCA, 16 × 16 agents, 300 steps).
+const LATTICE: u64 = 0xd5db_868d_56a0_2723;
+
+/// FNV-1a over the f32 bit patterns of every state, every step.
+fn hash_world(table: &EtaTable, w: &mut World, steps: u32) -> u64 {
+    let mut h = FNV_OFFSET;
+    let mut buf = Vec::new();
+    for _ in 0..steps {
+        w.step(table);
+        buf.clear();
+        w.write_state(&mut buf);
+        fnv(&mut h, &buf);
+    }
+    h
+}
+
+#[test]
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+fn avoidance_presets_match_golden_hashes() {
+    let table = EtaTable::from_bytes(TABLE).expect("committed table loads");
+    let got: Vec<(&str, u64)> = PRESETS
+        .iter()
+        .map(|(name, json, method, steps, _)| {
+            let mut sc = Scenario::from_json(json).expect("preset parses and validates");
+            if let Some(m) = method {
+                sc.avoidance.method = *m;
+            }
+            let mut w = sc.world().expect("preset builds a world");
+            (*name, hash_world(&table, &mut w, *steps))
+        })
+        .collect();
+    for ((name, h), (_, _, _, _, golden)) in got.iter().zip(PRESETS) {
+        assert_eq!(*h, golden, "preset {name}: got {h:#018x}; all: {got:#x?}");
+    }
+}
+
+#[test]
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+fn the_cost_benchmark_lattice_matches_its_golden_hash() {
+    let table = EtaTable::from_bytes(TABLE).expect("committed table loads");
+    let mut w = avoid_world::world(16, AvoidanceMethod::Orca);
+    let h = hash_world(&table, &mut w, 300);
+    assert_eq!(h, LATTICE, "lattice: got {h:#018x}");
+}
