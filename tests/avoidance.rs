@@ -11,20 +11,11 @@ use steering::avoidance::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use steering::scenario::Scenario;
 
 mod common;
-use common::{fnv, table, FNV_OFFSET};
+use common::{table, world_hash};
 
 fn hash_run(sc: &Scenario, steps: u32) -> u64 {
     let t = table();
-    let mut w = sc.world().unwrap();
-    let mut h = FNV_OFFSET;
-    let mut buf = Vec::new();
-    for _ in 0..steps {
-        w.step(&t);
-        buf.clear();
-        w.write_state(&mut buf);
-        fnv(&mut h, &buf);
-    }
-    h
+    world_hash(&t, &mut sc.world().unwrap(), steps)
 }
 
 #[test]

@@ -19,10 +19,9 @@ wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 use steering::avoidance::AvoidanceMethod;
 use steering::scenario::Scenario;
 use steering::table::EtaTable;
-use steering::world::World;
 
 mod common;
-use common::{fnv, FNV_OFFSET};
+use common::world_hash;
 
 #[path = "../benches/avoid_world.rs"]
 mod avoid_world;
@@ -76,19 +75,6 @@ const DOORWAY: u64 = 0xaf98_331f_2d4e_bf9d;
 /// The lattice world's golden hash (ORCA, 16 × 16 agents, 300 steps).
 const LATTICE: u64 = 0xd5db_868d_56a0_2723;
 
-/// FNV-1a over the f32 bit patterns of every state, every step.
-fn hash_world(table: &EtaTable, w: &mut World, steps: u32) -> u64 {
-    let mut h = FNV_OFFSET;
-    let mut buf = Vec::new();
-    for _ in 0..steps {
-        w.step(table);
-        buf.clear();
-        w.write_state(&mut buf);
-        fnv(&mut h, &buf);
-    }
-    h
-}
-
 #[test]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
 fn avoidance_presets_match_golden_hashes() {
@@ -101,7 +87,7 @@ fn avoidance_presets_match_golden_hashes() {
                 sc.avoidance.method = *m;
             }
             let mut w = sc.world().expect("preset builds a world");
-            (*name, hash_world(&table, &mut w, *steps))
+            (*name, world_hash(&table, &mut w, *steps))
         })
         .collect();
     for ((name, h), (_, _, _, _, golden)) in got.iter().zip(PRESETS) {
@@ -114,6 +100,6 @@ fn avoidance_presets_match_golden_hashes() {
 fn the_cost_benchmark_lattice_matches_its_golden_hash() {
     let table = EtaTable::from_bytes(TABLE).expect("committed table loads");
     let mut w = avoid_world::world(16, AvoidanceMethod::Orca);
-    let h = hash_world(&table, &mut w, 300);
+    let h = world_hash(&table, &mut w, 300);
     assert_eq!(h, LATTICE, "lattice: got {h:#018x}");
 }

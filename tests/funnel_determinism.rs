@@ -16,7 +16,7 @@ use steering::scenario::Scenario;
 use steering::table::EtaTable;
 
 mod common;
-use common::{fnv, FNV_OFFSET};
+use common::world_hash;
 
 static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
 
@@ -51,15 +51,7 @@ const STEPS: u32 = 1800;
 fn trajectory_hash(table: &EtaTable, json: &str) -> u64 {
     let sc = Scenario::from_json(json).expect("preset parses and validates");
     let mut w = sc.world().expect("preset builds a world");
-    let mut h = FNV_OFFSET;
-    let mut buf = Vec::new();
-    for _ in 0..STEPS {
-        w.step(table);
-        buf.clear();
-        w.write_state(&mut buf);
-        fnv(&mut h, &buf);
-    }
-    h
+    world_hash(table, &mut w, STEPS)
 }
 
 #[test]

@@ -25,6 +25,24 @@ pub fn fnv(hash: &mut u64, values: &[f32]) {
     }
 }
 
+/// FNV-1a over every agent's state bits at every step of `steps` world
+/// steps: the golden trajectory hash of a funnelling or avoidance world.
+pub fn world_hash(
+    table: &steering::table::EtaTable,
+    w: &mut steering::world::World,
+    steps: u32,
+) -> u64 {
+    let mut h = FNV_OFFSET;
+    let mut buf = Vec::new();
+    for _ in 0..steps {
+        w.step(table);
+        buf.clear();
+        w.write_state(&mut buf);
+        fnv(&mut h, &buf);
+    }
+    h
+}
+
 /// The wander gallery's preset files (paper 004, one per component) and the
 /// golden hash of every variant's trace after the preset's suggested steps
 /// (recorded natively; `tests/web_gallery.rs` checks the same values

@@ -334,7 +334,10 @@ try {
       assert.deepEqual(after.st.vehicle, st0.vehicle, "the drag survived the table's arrival");
       assert.deepEqual(after.st.target, st0.target);
       assert.equal(after.table.state, "exact");
-      assert.match(await pl.page.locator("#hud").textContent(), /mode\s+Funnelling/);
+      const hudAfter = await pl.page.locator("#hud").textContent();
+      assert.match(hudAfter, /mode\s+Funnelling/);
+      // The committed table was fetched, not built: the HUD says so.
+      assert.match(hudAfter, /table\s+exact for these limits \(fetched, \d+ ms\)/);
       assert.match(after.hash, /n=12/);
       assert.match(after.hash, /seed=4/);
       await pl.page.waitForTimeout(900);

@@ -34,6 +34,8 @@ export interface TableStatus {
   /** The last build: wall ms, from the cache or built, workers. */
   ms: number;
   cached: boolean;
+  /** The page's committed table, fetched (not built or from the cache). */
+  fetched: boolean;
   workers: number;
   /** The last build's phases, ms (tables.ts `BuiltTable.phases`). */
   phases?: Record<string, number>;
@@ -98,7 +100,7 @@ export class LabSim {
     this.avoid = new LabAvoidance(lab, st);
     const key = lab.tableKey();
     this.defaultTableKey = key;
-    this.table = { state: lab.hasTable() ? "exact" : "loading", progress: 1, key, wanted: key, ms: 0, cached: false, workers: 0, message: "" };
+    this.table = { state: lab.hasTable() ? "exact" : "loading", progress: 1, key, wanted: key, ms: 0, cached: false, fetched: false, workers: 0, message: "" };
   }
 
   /** Whether the clock can run: the lab has an η table (issue 17: until
@@ -124,7 +126,7 @@ export class LabSim {
     install();
     if (this.table.state === "loading") {
       const key = this.lab.tableKey();
-      this.table = { ...this.table, state: "exact", key, wanted: key, ms, cached: false };
+      this.table = { ...this.table, state: "exact", key, wanted: key, ms, cached: false, fetched: true };
     }
     this.pull();
     return true;
@@ -136,7 +138,14 @@ export class LabSim {
     if (t.state === "building") return `approximate — building ${Math.round(100 * t.progress)} %`;
     if (t.state === "error") return this.live ? "approximate — no table for these limits" : "none (could not be loaded; t held at 0)";
     if (t.state === "loading") return "loading… (seek view)";
-    const how = t.ms === 0 ? "" : t.cached ? ` (cache, ${t.ms.toFixed(0)} ms)` : ` (built, ${(t.ms / 1000).toFixed(1)} s)`;
+    const how =
+      t.ms === 0
+        ? ""
+        : t.fetched
+          ? ` (fetched, ${t.ms.toFixed(0)} ms)`
+          : t.cached
+            ? ` (cache, ${t.ms.toFixed(0)} ms)`
+            : ` (built, ${(t.ms / 1000).toFixed(1)} s)`;
     return `exact for these limits${how}`;
   }
 
@@ -184,7 +193,7 @@ export class LabSim {
     ).then(
       (t) => {
         if (gen !== this.tableGen) return;
-        this.table = { ...this.table, state: "exact", progress: 1, key: t.key, ms: t.ms, cached: t.cached, workers: t.workers, phases: t.phases };
+        this.table = { ...this.table, state: "exact", progress: 1, key: t.key, ms: t.ms, cached: t.cached, fetched: false, workers: t.workers, phases: t.phases };
         // A lab's first table plans its agents (Lab.setTable).
         this.pull();
       },
