@@ -245,14 +245,6 @@ impl Avoider {
             // the runs once) was examined.
             self.grid.add_checks(total as u64 - 1);
             let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
-            // Every neighbour in reach tells the keep-right rule whether
-            // it comes the other way (`passing`), the nearest or not (the
-            // largest ask wins: the order does not matter).
-            let mut lane = Passing::new(u_pref, 2.0 * r);
-            for &sj in &self.cand_slot[..m] {
-                let q = &self.peers[sj as usize];
-                lane.see(q.pos - me.pos, q.fwd);
-            }
             let k = m.min(k_max);
             if m <= RANKED {
                 // Keys (d² bits, gather order): unique, and ordered as
@@ -334,6 +326,18 @@ impl Avoider {
                     // funnel's velocity turned right, away from oncoming
                     // neighbours anywhere in reach, unless that runs into a
                     // wall.
+                    // Every neighbour in reach tells the rule whether it
+                    // comes the other way, the nearest or not (the largest
+                    // ask wins: the order does not matter); read only where
+                    // the turn can apply (ORCA, an unfinished agent not
+                    // blocked by a wall).
+                    let mut lane = Passing::new(u_pref, 2.0 * r);
+                    if unfinished && !walled {
+                        for &sj in &self.cand_slot[..m] {
+                            let q = &self.peers[sj as usize];
+                            lane.see(q.pos - me.pos, q.fwd);
+                        }
+                    }
                     let u_lane = lane.turn(u_pref);
                     let turned = unfinished
                         && !walled
