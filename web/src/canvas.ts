@@ -15,19 +15,7 @@ export function setupCanvas(canvas: HTMLCanvasElement, onResize: (s: Surface) =>
   if (!ctx) throw new Error("this browser gives no 2D canvas context");
   const surface: Surface = { canvas, ctx, width: 1, height: 1, dpr: 1 };
   const apply = (): void => {
-    const rect = canvas.getBoundingClientRect();
-    const dpr = window.devicePixelRatio || 1;
-    const w = Math.max(1, Math.round(rect.width));
-    const h = Math.max(1, Math.round(rect.height));
-    const bw = Math.round(w * dpr);
-    const bh = Math.round(h * dpr);
-    if (canvas.width !== bw || canvas.height !== bh) {
-      canvas.width = bw;
-      canvas.height = bh;
-    }
-    surface.width = w;
-    surface.height = h;
-    surface.dpr = dpr;
+    fitSurface(surface);
     onResize(surface);
   };
   new ResizeObserver(apply).observe(canvas);
@@ -42,6 +30,25 @@ export function setupCanvas(canvas: HTMLCanvasElement, onResize: (s: Surface) =>
   watchDpr();
   apply();
   return surface;
+}
+
+/** Sets `s` to its canvas's CSS size and devicePixelRatio, and the backing
+ *  store to match (once, no observers: the lab's first frame drawn from the
+ *  HTML sizes its canvas exactly as the page will). */
+export function fitSurface(s: Surface): void {
+  const rect = s.canvas.getBoundingClientRect();
+  const dpr = window.devicePixelRatio || 1;
+  const w = Math.max(1, Math.round(rect.width));
+  const h = Math.max(1, Math.round(rect.height));
+  const bw = Math.round(w * dpr);
+  const bh = Math.round(h * dpr);
+  if (s.canvas.width !== bw || s.canvas.height !== bh) {
+    s.canvas.width = bw;
+    s.canvas.height = bh;
+  }
+  s.width = w;
+  s.height = h;
+  s.dpr = dpr;
 }
 
 /** Resets the transform so that drawing is in CSS pixels. */

@@ -19,7 +19,7 @@
 // replaces this one. Fallback: a link with a hash, a `?workers=` page, or a
 // build without the data draws nothing here; the page starts as before.
 
-import { beginFrame, type Surface } from "../canvas";
+import { beginFrame, fitSurface, type Surface } from "../canvas";
 import { View } from "../view";
 import { StateField, type Ghost, type Internals } from "../wasm";
 import { renderHud } from "./hud";
@@ -70,12 +70,9 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
   {
     const ctx = canvas.getContext("2d", { alpha: false });
     if (!ctx) return;
-    // Sized as canvas.ts's setupCanvas sizes it.
-    const rect = canvas.getBoundingClientRect();
-    const dpr = window.devicePixelRatio || 1;
-    const surface: Surface = { canvas, ctx, width: Math.max(1, Math.round(rect.width)), height: Math.max(1, Math.round(rect.height)), dpr };
-    canvas.width = Math.round(surface.width * dpr);
-    canvas.height = Math.round(surface.height * dpr);
+    // Sized as the page will size it (canvas.ts).
+    const surface: Surface = { canvas, ctx, width: 1, height: 1, dpr: 1 };
+    fitSurface(surface);
     const view = new View();
     view.resize(surface.width, surface.height);
     const st = defaultState();
