@@ -105,6 +105,20 @@ impl Pieces {
         black_box(&s);
     }
 
+    /// The seek step on the funnelling update's own inputs: from the same
+    /// random state towards the same goal's position (paper 000 §3's seek,
+    /// which the funnelling update plans the heading of). The `seek`
+    /// baseline instead follows one continuous trajectory, whose heading
+    /// and speed change little from one step to the next (its branches
+    /// predictable, its data hot); this one pays what a fresh agent state
+    /// costs, as the funnelling update does.
+    fn seek_like(&self, far: bool, k: usize) {
+        let mut s = self.st[k & 1023];
+        let g = if far { &self.far } else { &self.near }[k & 1023];
+        seek_point(&self.p, &mut s, black_box(g.pos), black_box(g.speed));
+        black_box(s);
+    }
+
     fn lookup(&self, k: usize) {
         let q = self.qs[k & 1023];
         black_box(self.t.lookup(black_box(q[0]), q[1], q[2], q[3], q[4]));
@@ -160,6 +174,15 @@ fn bench(c: &mut Criterion) {
             x.seek(&mut s, k);
         });
     });
+    for (dist, far) in [("near", false), ("far", true)] {
+        g.bench_function(format!("seek_step_like_{dist}"), |b| {
+            let mut k = 0usize;
+            b.iter(|| {
+                k += 1;
+                x.seek_like(far, k);
+            });
+        });
+    }
     g.bench_function("table_lookup", |b| {
         let mut k = 0usize;
         b.iter(|| {
@@ -216,9 +239,14 @@ fn ratio() {
     let cfgs = bounds();
     // best[0] seek, best[1] lookup, then funnel (bound, near/far).
     let mut best = [f64::INFINITY; 2 + 2 * 4];
+    // The like-for-like seek, near and far.
+    let mut like = [f64::INFINITY; 2];
     let mut s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
     for _ in 0..7 {
         best[0] = best[0].min(time(&mut |k| x.seek(&mut s, k)));
+        for (j, far) in [false, true].into_iter().enumerate() {
+            like[j] = like[j].min(time(&mut |k| x.seek_like(far, k)));
+        }
         best[1] = best[1].min(time(&mut |k| x.lookup(k)));
         for (i, (_, cfg)) in cfgs.iter().enumerate() {
             for (j, far) in [false, true].into_iter().enumerate() {
@@ -265,6 +293,13 @@ fn ratio() {
             "same-run ratio: funnelling update, {name}: near 1-4 m {near:.1} ns ({:.2}× seek), far 20-30 m {far:.1} ns ({:.2}× seek)",
             near / seek,
             far / seek
+        );
+        println!(
+            "same-run ratio, like for like: funnelling update, {name} / the seek step from the same states to the same goals ({:.1} / {:.1} ns): near {:.2}×, far {:.2}×",
+            like[0],
+            like[1],
+            near / like[0],
+            far / like[1]
         );
         // Paper 000 §7: 9.5 µs far (30 units) against 12.5 µs near: 0.76.
         println!("same-run ratio: funnelling update far / near, {name}: {:.2} (paper 000 §7: 9.5 / 12.5 = 0.76)", far / near);

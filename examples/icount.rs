@@ -6,7 +6,7 @@
 //! for n in 20000 40000; do valgrind --tool=callgrind --callgrind-out-file=/dev/null \
 //!   target/release/examples/icount funnel $n 2>&1 | grep Collected; done
 //! ```
-//! `seek`, `lookup` or `funnel` (default funnelling update), N iterations.
+//! `seek`, `seek_like` (from the funnelling update's states), `lookup` or `funnel` (default funnelling update), N iterations.
 
 use glam::Vec2;
 use std::hint::black_box;
@@ -46,6 +46,14 @@ fn main() {
             "seek" => {
                 let tg = s.pos + Vec2::from_angle(q[1]) * q[0];
                 seek_point(&p, &mut s, black_box(tg), 1.3);
+            }
+            // The seek step on the funnelling update's inputs (a fresh
+            // state, the same goal; `benches/core.rs`'s like-for-like seek).
+            "seek_like" => {
+                let mut st = VehicleState::new(Vec2::ZERO, black_box(0.0), q[3], q[2]);
+                let tg = Vec2::from_angle(q[1]) * q[0];
+                seek_point(&p, &mut st, black_box(tg), black_box(1.3));
+                black_box(st);
             }
             "lookup" => {
                 black_box(t.lookup(black_box(q[0]), q[1], q[2], q[3], q[4]));
