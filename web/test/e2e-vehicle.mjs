@@ -10,6 +10,8 @@
 //   (cached, ≤ 100 ms target) and the cache holds its key;
 // - lowering max speed below the desired speed, then Reset: the playground
 //   keeps its agent;
+// - a build whose workers cannot load the core (wasm requests refused)
+//   ends in an error the page shows, not at 0 % for ever;
 // - the reference vehicles (select "vehicle"): the car's table built;
 // - no console errors. Prints the build and cache timings (README figures)
 //   and "e2e-vehicle: N passed, M failed". Screenshots in artifacts/.
@@ -40,6 +42,28 @@ try {
     assert.ok(m && Number(m[1]) <= 0.0501, `HUD speed: ${text}`);
     assert.match(text, /table\s+exact/);
     assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  await check("a table build whose workers cannot load the core says so (HUD and message), not 0 % for ever", async () => {
+    const { context, page } = await openPage(browser);
+    await page.goto(`${url}index.html`);
+    assert.equal(await waitReady(page), null);
+    // The page's own core is in; from now on every wasm request fails, so
+    // the table workers cannot instantiate theirs.
+    let blocked = 0;
+    await context.route(/\.wasm(\?|$)/, (r) => {
+      blocked++;
+      return r.abort();
+    });
+    await page.locator("#vmax-num").fill("1.1");
+    await page.locator("#vmax-num").press("Enter");
+    await page.waitForFunction(() => window.__lab.table()?.state === "error", null, { timeout: 15000, polling: 50 });
+    assert.ok(blocked > 0, "the workers asked for the core");
+    const msg = (await page.locator("#message").textContent()) ?? "";
+    assert.match(msg, /could not be built/);
+    assert.match(await hud(page), /table/);
+    await shot(page, "vehicle-build-failed");
     await context.close();
   });
 

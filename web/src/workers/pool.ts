@@ -57,7 +57,10 @@ export class WorkerPool<T, R> {
           if (job !== this.job) return;
           const m = ev.data;
           if (!m.ok) {
-            this.cancel();
+            // Not `cancel()`: that rejects the job with `Cancelled`, which
+            // callers take for a newer job and ignore (a table build whose
+            // workers could not load the core stood at 0 % with no word).
+            this.halt();
             fail(new Error(m.error));
             return;
           }
@@ -71,8 +74,8 @@ export class WorkerPool<T, R> {
         };
         w.onerror = (ev: ErrorEvent) => {
           if (job !== this.job) return;
-          this.cancel();
-          fail(new Error(`worker failed: ${ev.message}`));
+          this.halt();
+          fail(new Error(`worker failed: ${ev.message || "its script did not load"}`));
         };
         feed(w);
       }
@@ -112,7 +115,7 @@ export class WorkerPool<T, R> {
         w.onerror = (ev: ErrorEvent) => {
           if (job !== this.job) return;
           this.job++;
-          fail(new Error(`worker failed: ${ev.message}`));
+          fail(new Error(`worker failed: ${ev.message || "its script did not load"}`));
         };
         const msg: TaskMessage<T> = { id, task };
         w.postMessage(msg, transfer(task));
@@ -132,15 +135,22 @@ export class WorkerPool<T, R> {
     return fail;
   }
 
-  /** Ends the job in flight, if any (its workers are replaced on the next run). */
+  /** Ends the job in flight, if any (its workers are replaced on the next
+   *  run); its promise rejects with `Cancelled`. */
   cancel(): void {
     if (!this.abort) return;
     const abort = this.abort;
     this.abort = null;
+    this.halt();
+    abort();
+  }
+
+  /** Forgets the job in flight and terminates its workers (replaced on the
+   *  next run), without settling its promise. */
+  private halt(): void {
     this.job++;
     for (const w of this.workers) w.terminate();
     this.workers = [];
-    abort();
   }
 
   /** Terminates every worker. */
