@@ -13,6 +13,7 @@
 //! speed `v_dt`), and, when an orientation correction is needed, the bounded
 //! modulation μ of Fig. 4 around the aim direction ([`Approach::funnel`]).
 
+use core::cell::Cell;
 use core::ops::ControlFlow;
 
 use glam::Vec2;
@@ -253,6 +254,54 @@ pub fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
     (d, bearing, diff(bearing, s.theta))
 }
 
+/// The unit vector of a goal's orientation β, kept in the agent's
+/// [`FunnelMemory`] from one update to the next.
+///
+/// Why (issue 17): the entry aim and the terminal pursuit need β's
+/// direction every update, and [`crate::trig::sin_cos`] (f64, for bits that
+/// are the same natively and in wasm) was about a tenth of a world step
+/// (`examples/world_bench.rs`, 1,000 agents: 186 → 170 ns per agent update
+/// without it). A goal's β changes only with the goal (or every step for
+/// a goal that follows an agent or circles), so the vector is recomputed
+/// only when β's bits differ from the kept ones: the same vector, the same
+/// bits. A cache, not state: any two compare equal, and it is not
+/// serialised.
+#[derive(Clone, Copy, Debug)]
+pub struct BetaDir {
+    /// β's bits, `u32::MAX` (a NaN no valid goal has) when empty.
+    beta: u32,
+    dir: Vec2,
+}
+
+impl Default for BetaDir {
+    fn default() -> Self {
+        Self {
+            beta: u32::MAX,
+            dir: Vec2::NAN,
+        }
+    }
+}
+
+impl PartialEq for BetaDir {
+    fn eq(&self, _: &Self) -> bool {
+        true
+    }
+}
+
+impl Eq for BetaDir {}
+
+impl BetaDir {
+    /// `(cos β, sin β)`: kept, or computed and kept.
+    #[inline]
+    pub fn unit(&mut self, beta: f32) -> Vec2 {
+        if beta.to_bits() != self.beta {
+            self.dir = crate::trig::unit(beta);
+            self.beta = beta.to_bits();
+        }
+        self.dir
+    }
+}
+
 /// One update's view of its goal, once the tolerance phase has let it
 /// through: the context (table, vehicle) and what was measured.
 #[derive(Clone, Copy, Debug)]
@@ -279,6 +328,8 @@ pub struct Approach<'a> {
     /// the vehicle will meet it ([`lead`]). `d`, `bearing` and `alpha`
     /// are measured to it; the tolerance phase judged the goal itself.
     pub goal: Goal,
+    /// The agent's kept β direction ([`BetaDir`], in its memory).
+    pub beta_dir: &'a Cell<BetaDir>,
 }
 
 impl<'a> Approach<'a> {
@@ -292,7 +343,7 @@ impl<'a> Approach<'a> {
         p: &'a VehicleParams,
         s: &'a VehicleState,
         g: &Goal,
-        mem: &mut FunnelMemory,
+        mem: &'a mut FunnelMemory,
     ) -> ControlFlow<Internals, (Self, Internals)> {
         let (d, bearing, alpha) = seen_from(s, g.pos);
         let mut v_d = g.speed;
@@ -328,6 +379,7 @@ impl<'a> Approach<'a> {
                 follows_agent: mem.goal_follows_agent,
                 passes: mem.passes,
                 goal,
+                beta_dir: Cell::from_mut(&mut mem.beta_dir),
             },
             out,
         ))
@@ -343,6 +395,16 @@ impl<'a> Approach<'a> {
         } else {
             configured
         }
+    }
+
+    /// `(cos β, sin β)` of goal `g` ([`BetaDir`]).
+    #[inline]
+    #[must_use]
+    pub fn beta_unit(&self, g: &Goal) -> Vec2 {
+        let mut kept = self.beta_dir.get();
+        let u = kept.unit(g.beta);
+        self.beta_dir.set(kept);
+        u
     }
 
     /// Distance, world bearing and radial angle α of `point` from the
@@ -362,7 +424,7 @@ impl<'a> Approach<'a> {
     #[inline]
     #[must_use]
     pub fn entry_point(&self, g: &Goal) -> Vec2 {
-        g.pos - crate::trig::unit(g.beta) * self.entry_depth(g)
+        g.pos - self.beta_unit(g) * self.entry_depth(g)
     }
 
     /// How far before the centre the entry point lies, m (0: the centre).
@@ -414,7 +476,7 @@ impl<'a> Approach<'a> {
         if depth == 0.0 {
             (self.d, self.bearing, self.alpha)
         } else {
-            self.seen(g.pos - crate::trig::unit(g.beta) * depth)
+            self.seen(g.pos - self.beta_unit(g) * depth)
         }
     }
 
@@ -436,7 +498,7 @@ impl<'a> Approach<'a> {
         if heading_err.abs() >= t.heading {
             return false;
         }
-        let u = crate::trig::unit(g.beta);
+        let u = self.beta_unit(g);
         let r = s.pos - g.pos;
         let along = r.dot(u);
         let lateral = r.perp_dot(u);

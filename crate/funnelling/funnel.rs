@@ -298,6 +298,10 @@ pub struct FunnelMemory {
     /// ([`crate::approach::Approach::aim_depth`]).
     #[serde(default)]
     pub passes: u8,
+    /// β's unit vector, kept from one update to the next
+    /// ([`crate::funnelling::approach::BetaDir`]): a cache, not part of the mode logic.
+    #[serde(skip)]
+    pub beta_dir: crate::funnelling::approach::BetaDir,
 }
 
 impl FunnelMemory {

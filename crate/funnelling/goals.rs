@@ -102,6 +102,7 @@ impl GoalSpec {
             goal_moves: self.moves(),
             goal_follows_agent: matches!(self.motion, GoalMotion::FaceAgent { .. }),
             passes: 0,
+            ..FunnelMemory::default()
         }
     }
 
