@@ -19,19 +19,31 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     if (!lab) return;
     const t0 = performance.now();
     const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
-    if (n > 0) {
+    const st = s.stepper?.active ? s.stepper : null;
+    if (st) {
+      // Issue 17: workers step; this frame only asks (never waits) and
+      // draws the last complete state.
+      if (n > 0) st.request(n);
+      if (!s.playing) s.singleSteps = 0;
+      st.pump();
+      const d = st.takeCompleted();
+      hook.workerSteps += d.steps;
+      hook.workerUpdates += d.steps * st.count;
+    } else if (n > 0) {
       lab.step(n);
       if (!s.playing) s.singleSteps = 0;
+      hook.workerUpdates += n * lab.count();
       s.dirty = true;
     }
     const t1 = performance.now();
     if (s.dirty) {
+      const half = st ? st.state.length >> 1 : 0;
       drawCrowd(surface, s.view, {
         path: lab.pathPoints(),
         radius: lab.pathRadius(),
         closed: lab.pathClosed(),
-        positions: lab.positions(),
-        velocities: lab.velocities(),
+        positions: st ? st.state.subarray(0, half) : lab.positions(),
+        velocities: st ? st.state.subarray(half) : lab.velocities(),
         trace: s.showTrace ? lab.trace() : new Float32Array(),
         traced: lab.tracedBoid(),
         boidRadius: lab.boidRadius(),
@@ -41,8 +53,10 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         hover: s.editor.hover,
       });
       s.dirty = false;
+      hook.drawnFrames++;
     }
     const t2 = performance.now();
+    hook.workMs.push(t2 - t0);
     stepAcc += t1 - t0;
     drawAcc += t2 - t1;
     frameAcc++;
@@ -56,7 +70,8 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     }
     if (now - lastMetrics > 250) {
       lastMetrics = now;
-      s.panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
+      if (st) s.panel?.metricsOff(`Measured on the page's thread only: off while ${st.workers} workers step the crowd (?workers=0 steps it here).`);
+      else s.panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
       const c = lab.config();
       const seek = c.seek;
       hud.textContent = [
@@ -65,6 +80,7 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
         c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
         `${hook.fps.toFixed(0)} fps`,
+        st ? `${st.workers} workers (${st.shared ? "shared memory" : "messages"})` : "page's thread",
         `step ${hook.stepMs.toFixed(2)} ms`,
         `draw ${hook.drawMs.toFixed(2)} ms`,
       ].join("  ·  ");

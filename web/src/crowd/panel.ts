@@ -37,6 +37,8 @@ export interface PanelActions {
   radius(r: number): void;
   closed(c: boolean): void;
   speed(stepsPerFrame: number): void;
+  /** Issue 17: count changes scale the pathway (Test IV's boids per length). */
+  density(on: boolean): void;
   showTrace(on: boolean): void;
   showHandles(on: boolean): void;
   addPoint(): void;
@@ -59,6 +61,8 @@ export interface PanelState {
 export interface Panel {
   set(s: PanelState): void;
   showMetrics(m: CrowdMetrics, overlapsNow: number, boids: number): void;
+  /** No measures (the crowd steps in workers): `why` instead. */
+  metricsOff(why: string): void;
 }
 
 /** Largest count on the boid slider (the number box goes further). */
@@ -168,6 +172,7 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
     button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => askBoids(String(n)));
   }
+  checkbox(crowd, "density", "Test IV density (the pathway grows with the count)", false, a.density);
   slider(crowd, {
     id: "speed", label: "steps / frame", unit: "", min: 1, max: 20, step: 1, value: 1, digits: 0, onInput: a.speed,
   });
@@ -213,6 +218,9 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
       showBoids(s.boids);
       radius.set(s.radius);
       closed.set(s.closed);
+    },
+    metricsOff(why) {
+      pre.textContent = why;
     },
     showMetrics(m, overlapsNow, boids) {
       pre.textContent = [
