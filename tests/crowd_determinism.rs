@@ -85,7 +85,9 @@ fn crowd_split_into_strips_gives_the_golden_bits() {
         for (k, recut) in [(1, 1000), (2, 1), (3, 7), (5, 50)] {
             let h = run_strips(&cfg, steps, k, recut);
             if h != golden {
-                bad.push(format!("{name} in {k} strips: {h:#018x}, golden {golden:#018x}"));
+                bad.push(format!(
+                    "{name} in {k} strips: {h:#018x}, golden {golden:#018x}"
+                ));
             }
         }
     }
@@ -97,7 +99,9 @@ fn a_bad_state_length_is_refused_and_changes_nothing() {
     let (_, cfg, _, _) = &crowd_golden_cases()[0];
     let mut c = Crowd::new(cfg).unwrap();
     let before = c.positions().to_vec();
-    let e = c.set_state(&[0.0; 4], c.velocities().to_vec().as_slice(), 9).unwrap_err();
+    let e = c
+        .set_state(&[0.0; 4], c.velocities().to_vec().as_slice(), 9)
+        .unwrap_err();
     assert!(e.to_string().contains("positions length"), "{e}");
     assert_eq!(c.positions(), &before[..]);
     assert_eq!(c.time(), 0);

@@ -253,14 +253,21 @@ fn crowd_golden_hashes_through_the_bindings_whole_and_in_strips() {
         let mut page = CrowdLab::new(js(&cfg)).unwrap();
         page.set_metrics_enabled(false);
         let n = page.count() as usize;
-        let mut strips = [CrowdLab::new(js(&cfg)).unwrap(), CrowdLab::new(js(&cfg)).unwrap()];
+        let mut strips = [
+            CrowdLab::new(js(&cfg)).unwrap(),
+            CrowdLab::new(js(&cfg)).unwrap(),
+        ];
         let mut state = page.state();
         let mut h = FNV_OFFSET;
         for t in 0..steps {
             let mut next = state.clone();
             for (w, s) in strips.iter_mut().enumerate() {
                 s.load_state(&state, f64::from(t)).unwrap();
-                let (lo, hi) = if w == 0 { (f32::NEG_INFINITY, 0.0) } else { (0.0, f32::INFINITY) };
+                let (lo, hi) = if w == 0 {
+                    (f32::NEG_INFINITY, 0.0)
+                } else {
+                    (0.0, f32::INFINITY)
+                };
                 s.step_strip(lo, hi);
                 let o = s.owned_state();
                 for (k, &i) in s.owned_indices().iter().enumerate() {

@@ -109,7 +109,12 @@ impl NeighbourGrid {
     /// boids only add rejected candidates.
     pub fn rebuild_members(&mut self, pos: &[f32], cell: f32, members: &[u32]) {
         debug_assert!(members.windows(2).all(|w| w[0] < w[1]));
-        self.rebuild_from(pos, cell, members.len(), members.iter().map(|&i| i as usize));
+        self.rebuild_from(
+            pos,
+            cell,
+            members.len(),
+            members.iter().map(|&i| i as usize),
+        );
     }
 
     /// The counting sort behind both rebuilds. Issue 17: the placing pass

@@ -49,6 +49,9 @@ export interface CrowdPerf {
   meanIntervalMs: number;
   meanWorkMs: number;
   p95WorkMs: number;
+  /** Workers: wall ms per step of their jobs, and the slowest worker's stepping ms per step. */
+  jobMsPerStep: number;
+  workerMsPerStep: number;
 }
 
 /** What the end-to-end test reads and drives (window.__crowd). */
@@ -76,6 +79,9 @@ export interface CrowdHook {
   /** Issue 17: counters the loop keeps (perfReset / perfStats read them). */
   workerUpdates: number;
   workerSteps: number;
+  /** Wall ms of the workers' jobs, and of the slowest worker's stepping in them. */
+  workerJobMs: number;
+  workerStepMs: number;
   drawnFrames: number;
   workMs: number[];
   workers(): CrowdWorkersInfo;

@@ -9,6 +9,9 @@ import type { CrowdSession } from "./session";
 
 export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hook: CrowdHook): void {
   let stepAcc = 0;
+  /** Workers: their steps and the slowest worker's ms in the window. */
+  let wSteps = 0;
+  let wMs = 0;
   let drawAcc = 0;
   let frameAcc = 0;
   let windowStart = performance.now();
@@ -28,7 +31,11 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
       st.pump();
       const d = st.takeCompleted();
       hook.workerSteps += d.steps;
+      hook.workerJobMs += d.ms;
+      hook.workerStepMs += d.workerMs;
       hook.workerUpdates += d.steps * st.count;
+      wSteps += d.steps;
+      wMs += d.workerMs;
     } else if (n > 0) {
       lab.step(n);
       if (!s.playing) s.singleSteps = 0;
@@ -62,7 +69,9 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     frameAcc++;
     hook.frames++;
     if (now - windowStart >= 1000) {
-      hook.stepMs = stepAcc / frameAcc;
+      // With workers: the slowest worker's ms per step (the page's share is in draw).
+      hook.stepMs = s.stepper?.active ? (wSteps > 0 ? wMs / wSteps : 0) : stepAcc / frameAcc;
+      wSteps = wMs = 0;
       hook.drawMs = drawAcc / frameAcc;
       hook.fps = (1000 * frameAcc) / (now - windowStart);
       stepAcc = drawAcc = frameAcc = 0;
@@ -80,8 +89,7 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
         c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
         `${hook.fps.toFixed(0)} fps`,
-        st ? `${st.workers} workers (${st.shared ? "shared memory" : "messages"})` : "page's thread",
-        `step ${hook.stepMs.toFixed(2)} ms`,
+        st ? `step ${hook.stepMs.toFixed(1)} ms in ${st.workers} workers` : `step ${hook.stepMs.toFixed(2)} ms`,
         `draw ${hook.drawMs.toFixed(2)} ms`,
       ].join("  ·  ");
     }

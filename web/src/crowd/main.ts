@@ -45,6 +45,8 @@ const hook: CrowdHook = {
   bench: (counts, minMs) => bench(presets, counts, minMs),
   workerUpdates: 0,
   workerSteps: 0,
+  workerJobMs: 0,
+  workerStepMs: 0,
   drawnFrames: 0,
   workMs: [],
   workers: () => {
@@ -89,7 +91,9 @@ const hook: CrowdHook = {
   runSteps: async (n) => {
     const st = s.stepper;
     if (st?.active) {
-      for (let k = 0; k < n; k++) await st.step();
+      // A job runs up to 20 steps with shared memory, one by message.
+      const per = st.shared ? 20 : 1;
+      for (let k = 0; k < n; k += per) await st.step(Math.min(per, n - k));
     } else s.lab?.step(n);
     s.dirty = true;
   },
@@ -100,7 +104,7 @@ const hook: CrowdHook = {
   },
   perfReset: () => {
     hook.workMs = [];
-    perfAt = { t: performance.now(), frames: hook.frames, updates: hook.workerUpdates, drawn: hook.drawnFrames };
+    perfAt = { t: performance.now(), frames: hook.frames, updates: hook.workerUpdates, drawn: hook.drawnFrames, steps: hook.workerSteps, jobMs: hook.workerJobMs, stepMs: hook.workerStepMs };
   },
   perfStats: () => {
     const now = performance.now();
@@ -114,10 +118,12 @@ const hook: CrowdHook = {
       meanIntervalMs: (now - perfAt.t) / Math.max(1, frames),
       meanWorkMs: w.reduce((a, b) => a + b, 0) / Math.max(1, w.length),
       p95WorkMs: w[Math.min(w.length - 1, Math.floor(0.95 * w.length))] ?? 0,
+      jobMsPerStep: (hook.workerJobMs - perfAt.jobMs) / Math.max(1, hook.workerSteps - perfAt.steps),
+      workerMsPerStep: (hook.workerStepMs - perfAt.stepMs) / Math.max(1, hook.workerSteps - perfAt.steps),
     };
   },
 };
-let perfAt = { t: 0, frames: 0, updates: 0, drawn: 0 };
+let perfAt = { t: 0, frames: 0, updates: 0, drawn: 0, steps: 0, jobMs: 0, stepMs: 0 };
 window.__crowd = hook;
 
 const transport = $("transport");

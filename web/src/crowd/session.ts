@@ -105,6 +105,7 @@ export class CrowdSession {
     if (!this.stepper || this.stepper.workers !== w.n) {
       this.stepper?.terminate();
       this.stepper = new CrowdStepper(w.n);
+      this.stepper.onTraced = (x, y) => this.lab?.observeStep(x, y);
       this.stepper.onStep = (state) => {
         const l = this.lab;
         if (!l) return;
@@ -112,6 +113,7 @@ export class CrowdSession {
         l.observeStep(state[2 * i] ?? 0, state[2 * i + 1] ?? 0);
         this.dirty = true;
       };
+      this.stepper.traced = () => this.lab?.tracedBoid() ?? 0;
     }
     // Measures need every boid's forces: only on the page's thread.
     lab.setMetricsEnabled(false);

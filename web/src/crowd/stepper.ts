@@ -9,15 +9,18 @@
 //   reads the positions at the step's start), so its strip's boids get the
 //   same bits as on one core (`Crowd::step_strip`, tests/crowd_determinism.rs)
 //   and no boid has to migrate between workers.
-// - One step per job, so the page sees every complete state: it records
-//   the traced boid's lap from it (`CrowdLab.observeStep`).
-// - Double buffer: workers write into the back buffer while the page draws
-//   the front one (the last complete state); when every worker has
-//   answered, the two swap. The page never waits for a worker.
-// - Shared memory where the page is cross-origin isolated (COOP/COEP): the
-//   two buffers are SharedArrayBuffers the workers read and write. Else the
-//   front state goes to each worker by message and the stepped boids come
-//   back with their indices (transferred), copied here into the back buffer.
+// - The page records the traced boid's lap from every complete state
+//   (`CrowdLab.observeStep`).
+// - Shared memory where the page is cross-origin isolated (COOP/COEP):
+//   three state buffers; the page draws the front one (the last complete
+//   state) while a job runs the steps owed (a frame's worth) through the other
+//   two, the workers meeting at a barrier (Atomics) between steps, without
+//   the page; worker 0 notes the traced boid's position after each step.
+//   When every worker has answered the last written buffer becomes the
+//   front. The page never waits for a worker.
+// - Else one step per job: the front state goes to each worker by message
+//   and the stepped boids come back with their indices (transferred),
+//   copied here into the back buffer, then the two swap.
 // - Edits (count, path, seek, …) are made on the page's CrowdLab, loaded
 //   with the front state first; then the workers restart from its
 //   configuration and state (`start`), after the job in flight.
@@ -36,6 +39,11 @@ export interface CrowdTask {
   time: number;
   lo: number;
   hi: number;
+  /** This worker's strip (shared memory: the cuts are made in the workers, each step). */
+  worker: number;
+  workers: number;
+  /** The traced boid (shared memory: worker 0 notes it after every step but the last). */
+  traced: number;
 }
 
 export interface CrowdReply {
@@ -49,6 +57,10 @@ export interface CrowdReply {
 /** Boids from which the page steps the crowd in workers by default
  *  (measured, README: below it the page's thread keeps 60 fps). */
 export const AUTO_WORKERS_FROM = 20_000;
+
+/** Steps one job runs at most (shared memory: the page's "steps / frame"
+ *  goes up to 20). */
+const MAX_STEPS_PER_JOB = 20;
 
 /** `?workers=N` (0 = page's thread) or, unset, `navigator.hardwareConcurrency`
  *  workers from AUTO_WORKERS_FROM boids; a bad value is reported. */
@@ -99,8 +111,11 @@ export class CrowdStepper {
   private pending = 0;
   private owed = 0;
   private gen = 0;
-  /** Called after each completed step with the new front state. */
+  /** Called when a job's last step is the front state (the traced boid:
+   *  read it there); before that `onTraced` with its position after each
+   *  earlier step of the job. */
   onStep: (state: Float32Array) => void = () => {};
+  onTraced: (x: number, y: number) => void = () => {};
   /** Steps completed, wall ms of their jobs, the slowest worker's ms. */
   private done = { steps: 0, ms: 0, workerMs: 0 };
   startMs = 0;
@@ -120,7 +135,10 @@ export class CrowdStepper {
     this.error = null;
     this.owed = 0;
     this.count = state.length >> 2;
-    this.sab = this.shared ? [new SharedArrayBuffer(state.length * 4), new SharedArrayBuffer(state.length * 4)] : null;
+    const bytes = state.length * 4;
+    this.sab = this.shared
+      ? [new SharedArrayBuffer(bytes), new SharedArrayBuffer(bytes), new SharedArrayBuffer(bytes), new SharedArrayBuffer(4), new SharedArrayBuffer(4 * 2 * MAX_STEPS_PER_JOB)]
+      : null;
     this.frontIndex = 0;
     if (this.sab) {
       this.state = new Float32Array(this.sab[0] as SharedArrayBuffer);
@@ -134,7 +152,8 @@ export class CrowdStepper {
     const sab = this.sab;
     const t0 = performance.now();
     const init = { config, shared: sab };
-    return this.job(gen, () => Array.from({ length: this.workers }, () => ({ init, steps: 0, front: 0, state: null, time, lo: 0, hi: 0 })), 0).then(() => {
+    const w = this.workers;
+    return this.job(gen, () => Array.from({ length: w }, (_, k) => ({ init, steps: 0, front: 0, state: null, time, lo: 0, hi: 0, worker: k, workers: w, traced: 0 })), 0).then(() => {
       if (gen === this.gen && this.error === null) {
         this.ready = true;
         this.startMs = performance.now() - t0;
@@ -142,9 +161,12 @@ export class CrowdStepper {
     });
   }
 
-  /** `steps` more steps are owed (at most four wait: a slow host drops the rest). */
+  /** A frame asks for `steps` steps. At most one frame's worth waits: a
+   *  host that cannot keep up runs slower than real time rather than
+   *  batching steps the page would never draw (one step per frame: one
+   *  step per job, every state drawn). */
   request(steps: number): void {
-    this.owed = Math.min(4, this.owed + steps);
+    this.owed = Math.min(Math.min(MAX_STEPS_PER_JOB, steps), this.owed + steps);
   }
 
   /** No job queued or in flight. */
@@ -155,20 +177,28 @@ export class CrowdStepper {
   /** Starts a step if none is in flight and one is owed; never waits. */
   pump(): void {
     if (!this.ready || this.pending > 0 || this.owed === 0) return;
-    this.owed--;
-    void this.step();
+    const k = this.sab ? this.owed : 1;
+    this.owed -= k;
+    void this.step(k);
   }
 
-  /** Runs one step; resolves when its state is the front one. */
-  step(): Promise<void> {
+  /** Runs `k` steps (shared memory; else one) as one job; resolves when its state is the front one. */
+  step(k = 1): Promise<void> {
     const gen = this.gen;
+    const steps = this.sab ? Math.max(1, Math.min(MAX_STEPS_PER_JOB, k)) : 1;
     return this.job(gen, () => {
-      const cuts = stripCuts(this.state, this.count, this.workers);
-      return cuts.slice(0, -1).map((lo, w) => ({
-        init: null, steps: 1, front: this.frontIndex, state: this.sab ? null : this.state, time: this.time, lo, hi: cuts[w + 1] ?? Infinity,
+      const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
+      if (this.sab) Atomics.store(new Int32Array(this.sab[3] as SharedArrayBuffer), 0, 0);
+      const traced = this.traced();
+      return Array.from({ length: this.workers }, (_, w) => ({
+        init: null, steps, front: this.frontIndex, state: this.sab ? null : this.state, time: this.time,
+        lo: cuts[w] ?? 0, hi: cuts[w + 1] ?? Infinity, worker: w, workers: this.workers, traced,
       }));
-    }, 1);
+    }, steps);
   }
+
+  /** The boid whose lap the page records (set by the page). */
+  traced: () => number = () => 0;
 
   /** Steps completed since the last call, wall ms of their jobs, the slowest worker's stepping ms. */
   takeCompleted(): { steps: number; ms: number; workerMs: number } {
@@ -193,7 +223,15 @@ export class CrowdStepper {
         return;
       }
       if (gen !== this.gen || steps === 0) return;
-      if (!this.sab) {
+      if (this.sab) {
+        const sab = this.sab;
+        const others = [0, 1, 2].filter((b) => b !== this.frontIndex);
+        const last = others[(steps - 1) % 2] ?? 0;
+        const slots = new Float32Array(sab[4] as SharedArrayBuffer);
+        for (let s = 0; s + 1 < steps; s++) this.onTraced(slots[2 * s] ?? 0, slots[2 * s + 1] ?? 0);
+        this.frontIndex = last;
+        this.state = new Float32Array(sab[last] as SharedArrayBuffer);
+      } else {
         const back = this.back;
         const half = back.length >> 1;
         back.set(this.state);
@@ -209,17 +247,15 @@ export class CrowdStepper {
             back[half + i + 1] = st[4 * k + 3] ?? 0;
           }
         }
+        this.back = this.state;
+        this.state = back;
       }
-      const front = this.back;
-      this.back = this.state;
-      this.state = front;
-      this.frontIndex = 1 - this.frontIndex;
       this.time += steps;
       this.owned = replies.map((r) => r.owned);
       this.done.steps += steps;
       this.done.workerMs += Math.max(...replies.map((r) => r.stepMs));
       this.done.ms += performance.now() - t0;
-      this.onStep(front);
+      this.onStep(this.state);
     });
     this.pending++;
     this.queue = next.finally(() => {
