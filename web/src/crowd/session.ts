@@ -98,6 +98,8 @@ export class CrowdSession {
       showMessage(w.problem, "error");
     }
     if (w.n === 0 || lab.count() === 0) {
+      // Back from workers: the measures restart (they skipped those steps).
+      if (this.stepper?.active) lab.resetMetrics();
       this.stepper?.stop();
       lab.setMetricsEnabled(true);
       return;
