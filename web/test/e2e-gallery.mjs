@@ -384,6 +384,20 @@ try {
       r = await sameAsOneCore(page, snap, { path: after }, 12);
       assert.equal(r.got, r.ref, "path drag");
     });
+    await check("crowd: the Test IV density switch scales the pathway with the count (→ 90,000: by 90,000 / n about its centroid)", async () => {
+      const before = await page.evaluate(() => window.__crowd.pathPoints());
+      const k = 90000 / (await page.evaluate(() => window.__crowd.count()));
+      await page.click("#density");
+      await page.fill("#boids", "90000");
+      await page.press("#boids", "Enter");
+      assert.equal(await page.locator("#boids-confirm").count(), 0, "90,000 at Test IV density does not ask");
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 90000);
+      const after = await page.evaluate(() => window.__crowd.pathPoints());
+      const m = before.length / 2;
+      const c = [0, 1].map((k) => before.filter((_, j) => j % 2 === k).reduce((a, b) => a + b, 0) / m);
+      after.forEach((v, j) => assert.ok(Math.abs(v - (c[j % 2] + k * (before[j] - c[j % 2]))) < 1e-3 * Math.abs(v) + 1e-2, `coordinate ${j}: ${before[j]} → ${v}`));
+      await owned(page);
+    });
     await check("crowd in workers: no console errors or warnings", async () => {
       assert.deepEqual(problems, []);
     });
