@@ -1,4 +1,4 @@
-//! Step cost of the crowd (paper 003) at 300, 3,000 and 30,000 boids.
+//! Step cost of the crowd (paper 003) at 300, 3,000, 30,000 and 100,000 boids.
 //!
 //! The pathway is scaled with the boid count (perimeter ∝ boids, same
 //! radius), so crowd density — and the work separation does per boid — is
@@ -66,7 +66,7 @@ fn bench(c: &mut Criterion) {
         ("crowd_step_cpu_no_metrics", false, true),
     ] {
         let mut g = c.benchmark_group(group_name);
-        for n in [300usize, 3_000, 30_000] {
+        for n in [300usize, 3_000, 30_000, 100_000] {
             let mut w = crowd(n, metrics);
             g.throughput(Throughput::Elements(n as u64));
             g.bench_function(BenchmarkId::from_parameter(n), |b| {

@@ -14,7 +14,7 @@ use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
 mod common;
-use common::{fnv, FNV_OFFSET, WANDER_PRESETS};
+use common::{crowd_golden_cases, crowd_hash_step, fnv, FNV_OFFSET, WANDER_PRESETS};
 
 wasm_bindgen_test_configure!(run_in_browser);
 
@@ -232,4 +232,59 @@ fn the_json_box_refuses_duplicate_keys_and_deep_nesting() {
         assert!(m.starts_with("wander configuration: "), "{m}");
         assert!(m.contains("invalid type: sequence"), "{m}");
     }
+}
+
+/// Issue 17: the crowd's golden trajectories (native, `tests/crowd_determinism.rs`)
+/// through the bindings, on one core and as two vertical strips (the
+/// stepping workers' calls: `loadState`, `stepStrip`, `ownedState`,
+/// `observeStep`).
+#[wasm_bindgen_test]
+fn crowd_golden_hashes_through_the_bindings_whole_and_in_strips() {
+    for (name, cfg, steps, golden) in crowd_golden_cases() {
+        let mut lab = CrowdLab::new(js(&cfg)).unwrap();
+        let mut h = FNV_OFFSET;
+        for _ in 0..steps {
+            lab.step(1);
+            crowd_hash_step(&mut h, &lab.positions(), &lab.velocities());
+        }
+        fnv(&mut h, &lab.trace());
+        assert_eq!(h, golden, "{name}: got {h:#018x}");
+
+        let mut page = CrowdLab::new(js(&cfg)).unwrap();
+        page.set_metrics_enabled(false);
+        let n = page.count() as usize;
+        let mut strips = [
+            CrowdLab::new(js(&cfg)).unwrap(),
+            CrowdLab::new(js(&cfg)).unwrap(),
+        ];
+        let mut state = page.state();
+        let mut h = FNV_OFFSET;
+        for t in 0..steps {
+            let mut next = state.clone();
+            for (w, s) in strips.iter_mut().enumerate() {
+                s.load_state(&state, f64::from(t)).unwrap();
+                let (lo, hi) = if w == 0 {
+                    (f32::NEG_INFINITY, 0.0)
+                } else {
+                    (0.0, f32::INFINITY)
+                };
+                s.step_strip(lo, hi);
+                let o = s.owned_state();
+                for (k, &i) in s.owned_indices().iter().enumerate() {
+                    let i = 2 * i as usize;
+                    next[i..i + 2].copy_from_slice(&o[4 * k..4 * k + 2]);
+                    next[2 * n + i..2 * n + i + 2].copy_from_slice(&o[4 * k + 2..4 * k + 4]);
+                }
+            }
+            state = next;
+            let tr = page.traced_boid() as usize;
+            page.observe_step(state[2 * tr], state[2 * tr + 1]);
+            crowd_hash_step(&mut h, &state[..2 * n], &state[2 * n..]);
+        }
+        fnv(&mut h, &page.trace());
+        assert_eq!(h, golden, "{name} in two strips: got {h:#018x}");
+    }
+    let mut lab = CrowdLab::new(js(&crowd_preset(10))).unwrap();
+    let m = message(lab.load_state(&[0.0; 8], 0.0).unwrap_err());
+    assert!(m.contains("8 floats for 10 boids"), "{m}");
 }

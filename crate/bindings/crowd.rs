@@ -67,6 +67,8 @@ const MAX_STEPS_PER_CALL: u32 = 10_000;
 #[wasm_bindgen]
 pub struct CrowdLab {
     crowd: Crowd,
+    /// Boids the last [`CrowdLab::step_strip`] stepped.
+    owned: Vec<u32>,
 }
 
 #[wasm_bindgen]
@@ -79,14 +81,20 @@ impl CrowdLab {
     ) -> Result<CrowdLab, JsError> {
         let cfg: CrowdConfig = from_js("crowd configuration", config)?;
         let crowd = Crowd::new(&cfg).map_err(|e| js_err("crowd configuration", e))?;
-        Ok(CrowdLab { crowd })
+        Ok(CrowdLab {
+            crowd,
+            owned: Vec::new(),
+        })
     }
 
     /// A crowd from the JSON text of a preset (`scenarios/crowd/*.json`).
     #[wasm_bindgen(js_name = fromJson)]
     pub fn from_json(text: &str) -> Result<CrowdLab, JsError> {
         let crowd = Crowd::from_json(text).map_err(|e| js_err("crowd preset", e))?;
-        Ok(CrowdLab { crowd })
+        Ok(CrowdLab {
+            crowd,
+            owned: Vec::new(),
+        })
     }
 
     /// The paper's presets: Tests I–IV × (Reynolds, Parker 100 %, 10 %,
@@ -254,6 +262,74 @@ impl CrowdLab {
     #[must_use]
     pub fn last_overlaps(&self) -> f64 {
         self.crowd.last_overlaps() as f64
+    }
+
+    /// Issue 17 (the crowd's stepping workers): the complete state, flat
+    /// `[x0, y0, …, x(n−1), y(n−1), vx0, vy0, …]` (positions, then
+    /// velocities).
+    #[must_use]
+    pub fn state(&self) -> Vec<f32> {
+        let mut s = Vec::with_capacity(2 * self.crowd.positions().len());
+        s.extend_from_slice(self.crowd.positions());
+        s.extend_from_slice(self.crowd.velocities());
+        s
+    }
+
+    /// Loads a complete state (the layout of [`CrowdLab::state`]) and the
+    /// step count; the trace and measures are kept. A wrong length is an
+    /// error naming it, and nothing changes.
+    #[wasm_bindgen(js_name = loadState)]
+    pub fn load_state(&mut self, state: &[f32], time: f64) -> Result<(), JsError> {
+        let half = state.len() / 2;
+        if state.len() != 2 * self.crowd.positions().len() {
+            return Err(JsError::new(&format!(
+                "crowd state: {} floats for {} boids (4 per boid)",
+                state.len(),
+                self.crowd.len()
+            )));
+        }
+        let (pos, vel) = state.split_at(half);
+        self.crowd
+            .set_state(pos, vel, time.max(0.0) as u64)
+            .map_err(|e| js_err("crowd state", e))
+    }
+
+    /// One step of the boids whose x lies in `[lo, hi)` (one worker's
+    /// vertical strip, `Crowd::step_strip`: the same bits as a whole
+    /// step); returns how many it stepped. Read them with
+    /// [`CrowdLab::owned_indices`] and [`CrowdLab::owned_state`].
+    #[wasm_bindgen(js_name = stepStrip)]
+    pub fn step_strip(&mut self, lo: f32, hi: f32) -> u32 {
+        self.crowd.step_strip(lo, hi, &mut self.owned);
+        self.owned.len() as u32
+    }
+
+    /// The boids the last `stepStrip` stepped, ascending.
+    #[wasm_bindgen(js_name = ownedIndices)]
+    #[must_use]
+    pub fn owned_indices(&self) -> Vec<u32> {
+        self.owned.clone()
+    }
+
+    /// Their new states, `[x, y, vx, vy]` per boid in the order of
+    /// `ownedIndices`.
+    #[wasm_bindgen(js_name = ownedState)]
+    #[must_use]
+    pub fn owned_state(&self) -> Vec<f32> {
+        let (p, v) = (self.crowd.positions(), self.crowd.velocities());
+        let mut out = Vec::with_capacity(4 * self.owned.len());
+        for &i in &self.owned {
+            let i = 2 * i as usize;
+            out.extend_from_slice(&[p[i], p[i + 1], v[i], v[i + 1]]);
+        }
+        out
+    }
+
+    /// A step run in workers: counts it and records the traced boid's new
+    /// position (`x`, `y`) in its lap trace.
+    #[wasm_bindgen(js_name = observeStep)]
+    pub fn observe_step(&mut self, x: f32, y: f32) {
+        self.crowd.observe_step(glam::Vec2::new(x, y));
     }
 
     /// Switches metric recording (on by default).

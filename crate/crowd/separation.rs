@@ -88,29 +88,75 @@ impl NeighbourGrid {
     /// of side `cell` (> 0, world units).
     pub fn rebuild(&mut self, pos: &[f32], cell: f32) {
         let n = pos.len() / 2;
-        let buckets = (4 * n).next_power_of_two().max(64);
+        self.rebuild_from(pos, cell, n, 0..n);
+    }
+
+    /// Re-bins only the boids `members` (ascending indices into `pos`) with
+    /// the bucket table of all `pos.len() / 2` boids (issue 17's strips):
+    /// any boid's neighbours among the members come in the order
+    /// [`NeighbourGrid::rebuild`] gives them, so sums over them are the
+    /// same bits when every neighbour within reach is a member.
+    ///
+    /// The table is sized for the members, not for all boids: a table of
+    /// any power-of-two size ≥ 64 gives the same order. A query visits
+    /// rows `iy−1..=iy+1`, each the run of buckets of cells `ix−1..=ix+1`
+    /// and boids by ascending index within a bucket, so boids within reach
+    /// come in (row, cell, index) order unless two of the nine cells share
+    /// a bucket; the buckets of cells one or two rows apart differ by
+    /// `ROW_PITCH` or `2·ROW_PITCH` (mod the size) plus at most 2, which is
+    /// never 0 mod a power of two ≥ 64 (`ROW_PITCH` ≡ 49 mod 64): the
+    /// fallback of `candidate_runs` never runs, and a colliding far cell's
+    /// boids only add rejected candidates.
+    pub fn rebuild_members(&mut self, pos: &[f32], cell: f32, members: &[u32]) {
+        debug_assert!(members.windows(2).all(|w| w[0] < w[1]));
+        self.rebuild_from(
+            pos,
+            cell,
+            members.len(),
+            members.iter().map(|&i| i as usize),
+        );
+    }
+
+    /// The counting sort behind both rebuilds. Issue 17: the placing pass
+    /// runs backwards with a falling cursor per bucket (ascending index
+    /// within a bucket, as before), which leaves each cursor at its bucket's
+    /// start: no pass over the table to restore it, and each boid's cell is
+    /// computed once.
+    fn rebuild_from(
+        &mut self,
+        pos: &[f32],
+        cell: f32,
+        n_all: usize,
+        members: impl DoubleEndedIterator<Item = usize> + ExactSizeIterator + Clone,
+    ) {
+        let m = members.len();
+        let buckets = (4 * n_all).next_power_of_two().max(64);
         self.mask = (buckets - 1) as u32;
         self.inv_cell = 1.0 / cell;
-        self.bucket_of.resize(n, 0);
-        self.order.resize(n, 0);
-        self.sorted.resize(n, Vec2::ZERO);
-        self.cells.resize(n, [0, 0]);
+        self.bucket_of.resize(m, 0);
+        self.order.resize(m, 0);
+        self.sorted.resize(m, Vec2::ZERO);
+        self.cells.resize(m, [0, 0]);
         self.starts.clear();
         self.starts.resize(buckets + 1, 0);
-        for (i, b) in self.bucket_of.iter_mut().enumerate() {
+        // Counts, then running ends: starts[b] = end of bucket b.
+        for (k, i) in members.clone().enumerate() {
             let ix = cell_coord(pos[2 * i], self.inv_cell);
             let iy = cell_coord(pos[2 * i + 1], self.inv_cell);
-            *b = bucket_of_cell(ix, iy, self.mask);
-            self.starts[*b as usize + 1] += 1;
+            let b = bucket_of_cell(ix, iy, self.mask);
+            self.bucket_of[k] = b;
+            self.starts[b as usize] += 1;
         }
-        for k in 0..buckets {
-            self.starts[k + 1] += self.starts[k];
+        let mut run = 0;
+        for s in &mut self.starts[..buckets] {
+            run += *s;
+            *s = run;
         }
-        // Place with a moving cursor per bucket: reuse `starts` shifted by
-        // one (the classic in-place counting sort), then restore it.
-        for i in 0..n {
-            let b = self.bucket_of[i] as usize;
-            let slot = self.starts[b];
+        self.starts[buckets] = m as u32;
+        for (k, i) in members.enumerate().rev() {
+            let b = self.bucket_of[k] as usize;
+            let slot = self.starts[b] - 1;
+            self.starts[b] = slot;
             let p = Vec2::new(pos[2 * i], pos[2 * i + 1]);
             self.order[slot as usize] = i as u32;
             self.sorted[slot as usize] = p;
@@ -118,12 +164,14 @@ impl NeighbourGrid {
                 cell_coord(p.x, self.inv_cell),
                 cell_coord(p.y, self.inv_cell),
             ];
-            self.starts[b] += 1;
         }
-        for k in (1..=buckets).rev() {
-            self.starts[k] = self.starts[k - 1];
-        }
-        self.starts[0] = 0;
+    }
+
+    /// Boids binned by the last rebuild.
+    #[inline]
+    #[must_use]
+    pub fn binned(&self) -> usize {
+        self.order.len()
     }
 
     /// The `k`-th boid in bucket order (`k < n` of the last rebuild). Boids
@@ -336,6 +384,40 @@ pub fn separate(
         out[2 * i + 1] = sum.y * weight;
     }
     ordered_pairs / 2
+}
+
+/// [`separate`] for the boids `owned` only (issue 17: one worker's strip),
+/// through a grid of `members` (ascending; must hold every boid within
+/// `2·boid_radius` of an owned one). Writes `out` at the owned boids' slots
+/// only, the same bits as [`separate`] there.
+pub fn separate_owned(
+    grid: &mut NeighbourGrid,
+    pos: &[f32],
+    members: &[u32],
+    owned: &[bool],
+    boid_radius: f32,
+    weight: f32,
+    out: &mut [f32],
+) {
+    let reach = 2.0 * boid_radius;
+    grid.rebuild_members(pos, reach, members);
+    let nudge = 1e-3 * boid_radius;
+    for k in 0..grid.binned() {
+        let i = grid.boid_in_bucket_order(k);
+        if !owned[i] {
+            continue;
+        }
+        let mut sum = Vec2::ZERO;
+        grid.for_each_neighbour(pos, i, reach, |j, d, d2| {
+            if d2 > 0.0 {
+                sum += d;
+            } else {
+                sum.x += if i < j { -nudge } else { nudge };
+            }
+        });
+        out[2 * i] = sum.x * weight;
+        out[2 * i + 1] = sum.y * weight;
+    }
 }
 
 /// Counts overlapping pairs (closer than `2·boid_radius`) without computing

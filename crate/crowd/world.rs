@@ -33,7 +33,7 @@ use crate::crowd::error::{check_range, CrowdError};
 use crate::crowd::metrics::{CrowdMetrics, MetricsAccumulator};
 use crate::crowd::path::Path;
 use crate::crowd::path_follow::PathFollow;
-use crate::crowd::separation::{count_overlaps, separate, NeighbourGrid};
+use crate::crowd::separation::{count_overlaps, separate, separate_owned, NeighbourGrid};
 use crate::rng::Rng;
 
 /// Most points kept for the highlighted lap trace; longer laps are
@@ -64,6 +64,9 @@ pub struct Crowd {
     trace_stride: u32,
     trace_tick: u32,
     last_overlaps: u64,
+    /// Issue 17's strip steps: which boids this copy steps, and the grid's members.
+    owned: Vec<bool>,
+    members: Vec<u32>,
 }
 
 impl Crowd {
@@ -94,6 +97,8 @@ impl Crowd {
             trace_stride: 1,
             trace_tick: 0,
             last_overlaps: 0,
+            owned: Vec::new(),
+            members: Vec::new(),
         };
         c.resize_boids(config.boids);
         let n = config.boids.max(1) as u32;
@@ -164,19 +169,13 @@ impl Crowd {
         let radius = self.path.radius();
         self.step += 1;
         for i in 0..n {
-            let (p, mut v) = self.boid(i);
-            let decision = follow.decide(&self.path, p, v);
-            let steer = decision.target.map_or(Vec2::ZERO, |target| {
-                seek.steer(p, v, target, max_speed, max_force)
-            });
+            let (p, v) = self.boid(i);
             let sep = if sep_on {
                 Vec2::new(self.sep[2 * i], self.sep[2 * i + 1])
             } else {
                 Vec2::ZERO
             };
-            v += steer + sep;
-            v = v.clamp_length_max(max_speed);
-            let p = p + v;
+            let (p, v, steer) = advance(&self.path, &follow, seek, max_speed, max_force, p, v, sep);
             self.pos[2 * i] = p.x;
             self.pos[2 * i + 1] = p.y;
             self.vel[2 * i] = v.x;
@@ -194,6 +193,96 @@ impl Crowd {
             self.metrics.end_step();
         }
         self.record_trace();
+    }
+
+    /// Issue 17: one step of the boids whose x at the step's start lies in
+    /// `[lo, hi)` (a NaN x counts as −∞; `hi = +∞` takes +∞), as one
+    /// worker's share of a world split into vertical strips. Separation
+    /// reads every boid within reach of an owned one (the strip and a halo
+    /// of twice the reach each side), so owned boids get the same bits as
+    /// in [`Crowd::step`]; the other boids keep their state (the caller
+    /// loads the next complete state with [`Crowd::set_state`]). No metrics,
+    /// no trace (the page records the trace from the complete state,
+    /// [`Crowd::observe_step`]). `owned` receives the owned indices.
+    pub fn step_strip(&mut self, lo: f32, hi: f32, owned: &mut Vec<u32>) {
+        let n = self.len();
+        let cfg = &self.config;
+        let sep_on = cfg.separation && n > 1;
+        let halo = 4.0 * cfg.boid_radius;
+        let (hlo, hhi) = (lo - halo, hi + halo);
+        owned.clear();
+        self.members.clear();
+        self.owned.clear();
+        self.owned.resize(n, false);
+        for i in 0..n {
+            let x = self.pos[2 * i];
+            let xo = if x.is_nan() { f32::NEG_INFINITY } else { x };
+            let own = xo >= lo && (xo < hi || hi == f32::INFINITY);
+            if own {
+                owned.push(i as u32);
+                self.owned[i] = true;
+            }
+            if own || (x >= hlo && x < hhi) {
+                self.members.push(i as u32);
+            }
+        }
+        if sep_on {
+            separate_owned(
+                &mut self.grid,
+                &self.pos,
+                &self.members,
+                &self.owned,
+                cfg.boid_radius,
+                cfg.separation_weight,
+                &mut self.sep,
+            );
+        }
+        let follow = PathFollow {
+            predict_distance: cfg.predict_distance,
+            lookahead: cfg.lookahead,
+        };
+        let (seek, max_speed, max_force) = (cfg.seek, cfg.max_speed, cfg.max_force);
+        for &i in owned.iter() {
+            let i = i as usize;
+            let (p, v) = self.boid(i);
+            let sep = if sep_on {
+                Vec2::new(self.sep[2 * i], self.sep[2 * i + 1])
+            } else {
+                Vec2::ZERO
+            };
+            let (p, v, _) = advance(&self.path, &follow, seek, max_speed, max_force, p, v, sep);
+            self.pos[2 * i] = p.x;
+            self.pos[2 * i + 1] = p.y;
+            self.vel[2 * i] = v.x;
+            self.vel[2 * i + 1] = v.y;
+        }
+        self.step += 1;
+    }
+
+    /// Issue 17: loads a complete state (positions and velocities, flat,
+    /// two floats per boid each, for the present count) and the step
+    /// count; the trace and the measures are kept.
+    ///
+    /// # Errors
+    /// A length other than `2 × count`, named by field; nothing changes.
+    pub fn set_state(&mut self, pos: &[f32], vel: &[f32], time: u64) -> Result<(), CrowdError> {
+        let want = self.pos.len() as f32;
+        check_range("positions length", pos.len() as f32, want, want)?;
+        check_range("velocities length", vel.len() as f32, want, want)?;
+        self.pos.copy_from_slice(pos);
+        self.vel.copy_from_slice(vel);
+        self.step = time;
+        Ok(())
+    }
+
+    /// Issue 17: a step run elsewhere (in workers): counts it and records
+    /// the traced boid's new position `p` in the lap trace, as
+    /// [`Crowd::step`] would have.
+    pub fn observe_step(&mut self, p: Vec2) {
+        self.step += 1;
+        if self.traced < self.len() {
+            self.record_trace_at(p);
+        }
     }
 
     /// Runs `steps` steps.
@@ -217,6 +306,10 @@ impl Crowd {
             return;
         }
         let (p, _) = self.boid(self.traced);
+        self.record_trace_at(p);
+    }
+
+    fn record_trace_at(&mut self, p: Vec2) {
         let s = f64::from(self.path.normal_point(p).s);
         if self.path.is_closed() {
             let total = f64::from(self.path.length());
@@ -448,6 +541,30 @@ impl Crowd {
         self.config.separation_weight = weight;
         Ok(())
     }
+}
+
+/// One boid's update of [`Crowd::step`] (module docs): seek only when the
+/// prediction leaves the path, plus separation, speed clamp, Euler move.
+/// Returns the new position, velocity and the seek steering.
+#[inline]
+#[allow(clippy::too_many_arguments)]
+fn advance(
+    path: &Path,
+    follow: &PathFollow,
+    seek: Seek,
+    max_speed: f32,
+    max_force: f32,
+    p: Vec2,
+    mut v: Vec2,
+    sep: Vec2,
+) -> (Vec2, Vec2, Vec2) {
+    let decision = follow.decide(path, p, v);
+    let steer = decision.target.map_or(Vec2::ZERO, |target| {
+        seek.steer(p, v, target, max_speed, max_force)
+    });
+    v += steer + sep;
+    v = v.clamp_length_max(max_speed);
+    (p + v, v, steer)
 }
 
 #[cfg(test)]

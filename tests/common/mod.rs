@@ -146,3 +146,65 @@ pub fn table() -> steering::table::EtaTable {
     )
     .unwrap()
 }
+
+/// Issue 17 (crowd in workers): the crowd's golden trajectories, as
+/// `(name, config, steps, hash)`. The hash is FNV-1a over positions and
+/// velocities after every step, then the traced boid's lap trace
+/// ([`crowd_hash_step`]); recorded natively before the step was made
+/// cheaper and split across workers, checked natively with metrics on and
+/// off (`tests/crowd_determinism.rs`) and through the bindings in Chromium
+/// (`tests/web_gallery.rs`).
+pub fn crowd_golden_cases() -> Vec<(&'static str, steering::crowd::config::CrowdConfig, u32, u64)> {
+    use steering::crowd::boid_seek::Seek;
+    use steering::crowd::config::{CrowdConfig, PaperTest};
+    let parker = Seek::Parker { fraction: 0.1 };
+    let scaled = |n: usize| {
+        let mut c = CrowdConfig::paper(PaperTest::IV, parker);
+        let k = n as f32 / 300.0;
+        c.boids = n;
+        for p in &mut c.path.points {
+            p[0] *= k;
+            p[1] *= k;
+        }
+        c
+    };
+    let dense = {
+        let mut c = CrowdConfig::paper(PaperTest::IV, parker);
+        c.boids = 3000;
+        c
+    };
+    vec![
+        (
+            "test4_parker10",
+            CrowdConfig::paper(PaperTest::IV, parker),
+            400,
+            0xc4ff_2cc1_605d_d61d,
+        ),
+        (
+            "test4_reynolds",
+            CrowdConfig::paper(PaperTest::IV, Seek::Reynolds),
+            400,
+            0xb936_957f_a86f_5290,
+        ),
+        (
+            "test2_reynolds",
+            CrowdConfig::paper(PaperTest::II, Seek::Reynolds),
+            400,
+            0xaeb7_f014_ee30_0aa1,
+        ),
+        (
+            "test3_parker0.1",
+            CrowdConfig::paper(PaperTest::III, Seek::Parker { fraction: 0.001 }),
+            400,
+            0x2852_2229_5aac_ddce,
+        ),
+        ("scaled_3000", scaled(3000), 120, 0x264c_216b_b58e_876b),
+        ("dense_3000", dense, 60, 0x7569_4fff_b6c3_685e),
+    ]
+}
+
+/// Adds one crowd step's positions and velocities to `h`.
+pub fn crowd_hash_step(h: &mut u64, pos: &[f32], vel: &[f32]) {
+    fnv(h, pos);
+    fnv(h, vel);
+}

@@ -240,7 +240,7 @@ try {
       await shot(page, "crowd-count-refused");
       await page.fill("#boids", "50000");
       await page.press("#boids", "Enter");
-      assert.match(await page.locator("#boids-msg").textContent(), /50,000 boids is heavy: above 15,000/);
+      assert.match(await page.locator("#boids-msg").textContent(), /50,000 boids is heavy: .*above 15,000/);
       assert.equal(await page.evaluate(() => window.__crowd.count()), n0, "not run before asked");
       await shot(page, "crowd-count-heavy");
       await page.click("#boids-confirm");
@@ -305,6 +305,142 @@ try {
     });
     allProblems.push(...problems);
     await context.close();
+  }
+
+  // ------------------------------------------------- crowd in workers (issue 17)
+  {
+    /** Strips COOP/COEP from every response: no cross-origin isolation, no SharedArrayBuffer. */
+    const unisolated = (context) =>
+      context.route("**/*", async (route) => {
+        const res = await route.fetch();
+        const headers = { ...res.headers() };
+        delete headers["cross-origin-opener-policy"];
+        delete headers["cross-origin-embedder-policy"];
+        await route.fulfill({ response: res, headers });
+      });
+    const owned = (page) => page.waitForFunction(() => { const w = window.__crowd.workers(); return !w.starting && window.__crowd.idle(); }, null, { timeout: 60000 });
+    const pause = async (page) => {
+      if (await page.evaluate(() => window.__crowd.playing)) await page.click("#play");
+      await owned(page);
+    };
+    /** Paused: the workers' state after `steps` steps against one core's from the same snapshot (and `edit`). */
+    const sameAsOneCore = async (page, snap, edit, steps) => {
+      await owned(page);
+      return page.evaluate(async ([snap, edit, steps]) => {
+        const h = window.__crowd;
+        const ref = h.reference(snap, edit, steps);
+        await h.runSteps(steps);
+        return { ref, got: h.stateHash(), info: h.workers() };
+      }, [snap, edit, steps]);
+    };
+    const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
+    await page.goto(new URL("crowd.html?workers=2", url).href);
+    assert.equal(await waitCrowd(page), null);
+    await check("crowd in 2 workers (shared memory, 40,000 boids at Test IV density): runs, draws, its state equals one core's after 30 steps from step 0 and 24 more", async () => {
+      await pause(page);
+      await page.evaluate(() => window.__crowd.loadScaled(40000));
+      await owned(page);
+      const snap0 = await page.evaluate(() => window.__crowd.snapshot());
+      assert.equal(snap0.time, 0);
+      let r = await sameAsOneCore(page, snap0, {}, 30);
+      assert.equal(r.info.mode, "shared");
+      assert.equal(r.info.workers, 2);
+      assert.equal(r.got, r.ref, "after 30 steps from step 0");
+      await page.click("#play");
+      const t0 = await page.evaluate(() => window.__crowd.time());
+      await page.waitForFunction((t0) => window.__crowd.time() > t0 + 5, t0, { timeout: 30000 });
+      await page.waitForTimeout(300);
+      assert.ok((await inked(page, "#crowd")) > 0.01, "canvas drawn");
+      const w = await page.evaluate(() => window.__crowd.workers());
+      assert.equal(w.owned.length, 2);
+      assert.ok(w.owned.every((k) => k > 10000), `strips ${w.owned}`);
+      assert.match(await page.$eval("#metrics", (e) => e.textContent), /off while 2 workers step/);
+      await pause(page);
+      const snap = await page.evaluate(() => window.__crowd.snapshot());
+      r = await sameAsOneCore(page, snap, {}, 24);
+      assert.equal(r.got, r.ref, "24 more steps");
+      await shot(page, "crowd-workers-40000");
+    });
+    await check("crowd in workers: a count change and a path drag reach the workers (same state as one core with the same edit)", async () => {
+      await pause(page);
+      let snap = await page.evaluate(() => window.__crowd.snapshot());
+      await page.fill("#boids", "45000");
+      await page.press("#boids", "Enter");
+      if (await page.locator("#boids-confirm").isVisible()) await page.click("#boids-confirm");
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 45000);
+      let r = await sameAsOneCore(page, snap, { boids: 45000 }, 12);
+      assert.equal(r.info.mode, "shared");
+      assert.equal(r.got, r.ref, "count change");
+      snap = await page.evaluate(() => window.__crowd.snapshot());
+      const before = await page.evaluate(() => window.__crowd.pathPoints());
+      const p = await page.evaluate(([x, y]) => window.__crowd.toScreen(x, y), before.slice(0, 2));
+      const box = await page.locator("#crowd").boundingBox();
+      await page.mouse.move(box.x + p.x, box.y + p.y);
+      await page.mouse.down();
+      await page.mouse.move(box.x + p.x + 40, box.y + p.y - 30, { steps: 6 });
+      await page.mouse.up();
+      const after = await page.evaluate(() => window.__crowd.pathPoints());
+      assert.ok(after[0] > before[0] + 1, `${before.slice(0, 2)} → ${after.slice(0, 2)}`);
+      r = await sameAsOneCore(page, snap, { path: after }, 12);
+      assert.equal(r.got, r.ref, "path drag");
+    });
+    await check("crowd: the Test IV density switch scales the pathway with the count (→ 90,000: by 90,000 / n about its centroid)", async () => {
+      const before = await page.evaluate(() => window.__crowd.pathPoints());
+      const k = 90000 / (await page.evaluate(() => window.__crowd.count()));
+      await page.click("#density");
+      await page.fill("#boids", "90000");
+      await page.press("#boids", "Enter");
+      assert.equal(await page.locator("#boids-msg").isHidden(), true, "90,000 at Test IV density does not ask");
+      assert.equal(await page.evaluate(() => window.__crowd.count()), 90000);
+      const after = await page.evaluate(() => window.__crowd.pathPoints());
+      const m = before.length / 2;
+      const c = [0, 1].map((k) => before.filter((_, j) => j % 2 === k).reduce((a, b) => a + b, 0) / m);
+      after.forEach((v, j) => assert.ok(Math.abs(v - (c[j % 2] + k * (before[j] - c[j % 2]))) < 1e-3 * Math.abs(v) + 1e-2, `coordinate ${j}: ${before[j]} → ${v}`));
+      await owned(page);
+    });
+    await check("crowd in workers: no console errors or warnings", async () => {
+      assert.deepEqual(problems, []);
+    });
+    allProblems.push(...problems);
+    await context.close();
+
+    await check("crowd in 2 workers without cross-origin isolation (by message): its state equals one core's", async () => {
+      const { page: t, problems: tp, context: c } = await openPage(browser, { width: 900, height: 700 }, 1);
+      await unisolated(c);
+      await t.goto(new URL("crowd.html?workers=2", url).href);
+      assert.equal(await waitCrowd(t), null);
+      await pause(t);
+      await t.evaluate(() => window.__crowd.loadScaled(30000));
+      const snap = await t.evaluate(() => window.__crowd.snapshot());
+      const r = await sameAsOneCore(t, snap, {}, 12);
+      assert.equal(r.info.mode, "messages");
+      assert.equal(r.info.crossOriginIsolated, false);
+      assert.equal(r.got, r.ref);
+      assert.deepEqual(tp, []);
+      await c.close();
+    });
+    await check("crowd: 100,000 boids at Test IV density in workers by default, at 1280 and 390 px (screenshots)", async () => {
+      for (const [name, vp, dpr] of [["1280", { width: 1280, height: 800 }, 1], ["390", { width: 390, height: 844 }, 3]]) {
+        const { page: t, problems: tp, context: c } = await openPage(browser, vp, dpr);
+        await t.goto(new URL("crowd.html", url).href);
+        assert.equal(await waitCrowd(t), null);
+        await t.evaluate(() => window.__crowd.loadScaled(100000));
+        await t.waitForFunction(() => !window.__crowd.workers().starting, null, { timeout: 60000 });
+        const t0 = await t.evaluate(() => window.__crowd.time());
+        await t.waitForFunction((t0) => window.__crowd.time() > t0 + 10, t0, { timeout: 60000 });
+        const info = await t.evaluate(() => window.__crowd.workers());
+        assert.equal(info.mode, "shared");
+        assert.equal(info.workers, await t.evaluate(() => Math.min(8, navigator.hardwareConcurrency)));
+        assert.ok((await inked(t, "#crowd")) > 0.005, "canvas drawn");
+        await t.waitForTimeout(1500);
+        assert.match(await t.$eval("#hud", (e) => e.textContent), /100,000 boids .* in \d+ workers/);
+        await shot(t, `crowd-100000-${name}`);
+        const w = await t.evaluate(() => document.documentElement.scrollWidth);
+        assert.ok(w <= vp.width, `page ${w} px wide`);
+        assert.deepEqual(tp, []);
+        await c.close();
+      }
+    });
   }
 
   // ----------------------------------------------------------------- wander

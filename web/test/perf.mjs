@@ -29,6 +29,8 @@ if (!["inproc", "child", "both"].includes(SERVER)) throw new Error(`--server: in
 const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
 const onlyFirst = sizes.length === 0;
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
+// ONLY_CROWD=1: the crowd page's rows alone (issue 17, crowd boids per frame).
+const onlyCrowd = process.env.ONLY_CROWD === "1";
 const { server, url } = await serve();
 const bases = [];
 for (const d of baseDirs) bases.push({ dir: d, ...(await serve(d)) });
@@ -77,7 +79,7 @@ async function startLoad(at) {
 }
 
 try {
-  if (!onlyWorkers) {
+  if (!onlyWorkers && !onlyCrowd) {
   const inproc = [...bases.map((b) => [b.dir, b.url]), ["this", url]];
   const sides = [
     ...(SERVER === "child" ? [] : inproc),
@@ -103,8 +105,8 @@ try {
 
   // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl, issue 17:
   // headless WebGL is software, so the page's own choice is the 2D sprites).
-  const runs = onlyWorkers || onlyFirst ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
-  const avoids = onlyWorkers || onlyFirst ? [] : (args[1] ?? "separation,orca").split(",").filter((m) => m !== "");
+  const runs = onlyWorkers || onlyFirst || onlyCrowd ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
+  const avoids = onlyWorkers || onlyFirst || onlyCrowd ? [] : (args[1] ?? "separation,orca").split(",").filter((m) => m !== "");
   const largest = Math.max(...sizes);
   for (const m of avoids) runs.push([largest, "", m]);
   for (const [n, draw, avoid] of runs) {
@@ -134,7 +136,7 @@ try {
   // page's thread and to one worker. Agents stepped per frame = agent
   // updates finished / (sampled wall time / 16.7 ms); every frame draws the
   // last complete state (fps), "states" = frames that drew a new one.
-  const wsizes = onlyFirst ? [] : (process.env.WORKER_SIZES ?? "10000,30000,100000").split(",").map(Number);
+  const wsizes = onlyFirst || onlyCrowd ? [] : (process.env.WORKER_SIZES ?? "10000,30000,100000").split(",").map(Number);
   const rounds = Number(process.env.WORKER_ROUNDS ?? 1);
   let cores = 0;
   const rows = new Map();
@@ -177,6 +179,53 @@ try {
       `workers summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ` +
         `${cores} workers / 1 worker ${(mn / m1).toFixed(2)}×, / page's thread ${(mn / m0).toFixed(2)}×`,
     );
+  }
+
+  // Issue 17, the crowd target: boids stepped + drawn per 16.7 ms frame at
+  // Test IV's density (Parker 10 %, separation, pathway scaled by n / 300:
+  // `window.__crowd.loadScaled`), the crowd on the page's thread
+  // (workers=0), in one worker and in as many as the browser reports cores,
+  // same run, alternating order by round; medians of CROWD_ROUNDS (3)
+  // rounds. Per frame = boids of the states drawn (each a complete new
+  // step of every boid) / (sampled wall time / 16.7 ms).
+  const csizes = onlyWorkers || (onlyFirst && !onlyCrowd) ? [] : (process.env.CROWD_SIZES ?? "30000,100000,200000").split(",").filter(Boolean).map(Number);
+  const crounds = Number(process.env.CROWD_ROUNDS ?? 3);
+  const crows = new Map();
+  if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (before)`);
+  for (let round = 0; round < crounds; round++) {
+    for (const n of csizes) {
+      for (const w of round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]) {
+        const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
+        await page.goto(`${url.replace(/\/?$/, "/")}crowd.html?workers=${w === "N" ? cores || 2 : w}`);
+        await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 60000 });
+        cores = await page.evaluate(() => navigator.hardwareConcurrency);
+        await page.evaluate((n) => window.__crowd.loadScaled(n), n);
+        await page.waitForFunction(() => !window.__crowd.workers().starting, null, { timeout: 120000 });
+        await page.waitForTimeout(700);
+        await page.evaluate(() => window.__crowd.perfReset());
+        await page.waitForTimeout(3000);
+        const s = await page.evaluate(() => window.__crowd.perfStats());
+        const info = await page.evaluate(() => window.__crowd.workers());
+        const frame = s.spanMs / (1000 / 60);
+        const drawn = (s.drawnFrames * n) / frame;
+        const key = `${n}|${w}`;
+        crows.set(key, [...(crows.get(key) ?? []), drawn]);
+        const how = await page.$eval("#crowd", (c) => c.dataset.agents);
+        console.log(
+          `crowd n=${n} ${w === "N" ? `N=${cores}` : w} (${info.mode === "main" ? "page's thread" : `${info.mode}, ${info.workers} workers`}, drawn as ${how}): ` +
+            `${Math.round(drawn)} boids stepped + drawn per 16.7 ms (${Math.round(s.updates / frame)} stepped), ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
+            `${((s.drawnFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms`,
+        );
+        if (round === 0 && w === "N") await page.screenshot({ path: resolve(artifacts, `perf-crowd-${n}.png`) });
+        if (problems.length) { bad++; console.log(problems.join("\n")); }
+        await context.close();
+      }
+    }
+  }
+  if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (after); navigator.hardwareConcurrency = ${cores}; boids stepped + drawn per 16.7 ms frame, median of ${crounds} round(s):`);
+  for (const n of csizes) {
+    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${n}|${w}`)));
+    console.log(`crowd summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ${cores} workers / page's thread ${(mn / m0).toFixed(2)}×`);
   }
 } finally {
   await browser.close();

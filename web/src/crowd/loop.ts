@@ -9,6 +9,9 @@ import type { CrowdSession } from "./session";
 
 export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hook: CrowdHook): void {
   let stepAcc = 0;
+  /** Workers: their steps and the slowest worker's ms in the window. */
+  let wSteps = 0;
+  let wMs = 0;
   let drawAcc = 0;
   let frameAcc = 0;
   let windowStart = performance.now();
@@ -19,19 +22,35 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     if (!lab) return;
     const t0 = performance.now();
     const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
-    if (n > 0) {
+    const st = s.stepper?.active ? s.stepper : null;
+    if (st) {
+      // Issue 17: workers step; this frame only asks (never waits) and
+      // draws the last complete state.
+      if (n > 0) st.request(n);
+      if (!s.playing) s.singleSteps = 0;
+      st.pump();
+      const d = st.takeCompleted();
+      hook.workerSteps += d.steps;
+      hook.workerJobMs += d.ms;
+      hook.workerStepMs += d.workerMs;
+      hook.workerUpdates += d.steps * st.count;
+      wSteps += d.steps;
+      wMs += d.workerMs;
+    } else if (n > 0) {
       lab.step(n);
       if (!s.playing) s.singleSteps = 0;
+      hook.workerUpdates += n * lab.count();
       s.dirty = true;
     }
     const t1 = performance.now();
     if (s.dirty) {
+      const half = st ? st.state.length >> 1 : 0;
       drawCrowd(surface, s.view, {
         path: lab.pathPoints(),
         radius: lab.pathRadius(),
         closed: lab.pathClosed(),
-        positions: lab.positions(),
-        velocities: lab.velocities(),
+        positions: st ? st.state.subarray(0, half) : lab.positions(),
+        velocities: st ? st.state.subarray(half) : lab.velocities(),
         trace: s.showTrace ? lab.trace() : new Float32Array(),
         traced: lab.tracedBoid(),
         boidRadius: lab.boidRadius(),
@@ -41,14 +60,18 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         hover: s.editor.hover,
       });
       s.dirty = false;
+      hook.drawnFrames++;
     }
     const t2 = performance.now();
+    hook.workMs.push(t2 - t0);
     stepAcc += t1 - t0;
     drawAcc += t2 - t1;
     frameAcc++;
     hook.frames++;
     if (now - windowStart >= 1000) {
-      hook.stepMs = stepAcc / frameAcc;
+      // With workers: the slowest worker's ms per step (the page's share is in draw).
+      hook.stepMs = s.stepper?.active ? (wSteps > 0 ? wMs / wSteps : 0) : stepAcc / frameAcc;
+      wSteps = wMs = 0;
       hook.drawMs = drawAcc / frameAcc;
       hook.fps = (1000 * frameAcc) / (now - windowStart);
       stepAcc = drawAcc = frameAcc = 0;
@@ -56,7 +79,8 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     }
     if (now - lastMetrics > 250) {
       lastMetrics = now;
-      s.panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
+      if (st) s.panel?.metricsOff(`Measured on the page's thread only: off while ${st.workers} workers step the crowd (?workers=0 steps it here).`);
+      else s.panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
       const c = lab.config();
       const seek = c.seek;
       hud.textContent = [
@@ -65,7 +89,7 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
         c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
         `${hook.fps.toFixed(0)} fps`,
-        `step ${hook.stepMs.toFixed(2)} ms`,
+        st ? `step ${hook.stepMs.toFixed(1)} ms in ${st.workers} workers` : `step ${hook.stepMs.toFixed(2)} ms`,
         `draw ${hook.drawMs.toFixed(2)} ms`,
       ].join("  ·  ");
     }

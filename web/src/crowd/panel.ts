@@ -37,6 +37,8 @@ export interface PanelActions {
   radius(r: number): void;
   closed(c: boolean): void;
   speed(stepsPerFrame: number): void;
+  /** Issue 17: count changes scale the pathway (Test IV's boids per length). */
+  density(on: boolean): void;
   showTrace(on: boolean): void;
   showHandles(on: boolean): void;
   addPoint(): void;
@@ -59,6 +61,8 @@ export interface PanelState {
 export interface Panel {
   set(s: PanelState): void;
   showMetrics(m: CrowdMetrics, overlapsNow: number, boids: number): void;
+  /** No measures (the crowd steps in workers): `why` instead. */
+  metricsOff(why: string): void;
 }
 
 /** Largest count on the boid slider (the number box goes further). */
@@ -105,6 +109,8 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   // Crowd.
   const crowd = section(parent, "Crowd");
   let boids = initial.boids;
+  /** Test IV density on: count changes scale the pathway (other limits, ./count). */
+  let dense = false;
   /** The count in force, everywhere it shows. */
   const showBoids = (n: number): void => {
     boids = n;
@@ -114,7 +120,7 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   };
   /** Runs `n` boids, after asking when the count is heavy; a refused count changes nothing. */
   const askBoids = (text: string): void => {
-    const d = decideCount(text, boids);
+    const d = decideCount(text, boids, dense);
     if (d.kind === "run") {
       note.hidden = true;
       showBoids(d.n);
@@ -168,6 +174,10 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
     button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => askBoids(String(n)));
   }
+  checkbox(crowd, "density", "Test IV density (the pathway grows with the count)", false, (on) => {
+    dense = on;
+    a.density(on);
+  });
   slider(crowd, {
     id: "speed", label: "steps / frame", unit: "", min: 1, max: 20, step: 1, value: 1, digits: 0, onInput: a.speed,
   });
@@ -213,6 +223,9 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
       showBoids(s.boids);
       radius.set(s.radius);
       closed.set(s.closed);
+    },
+    metricsOff(why) {
+      pre.textContent = why;
     },
     showMetrics(m, overlapsNow, boids) {
       pre.textContent = [

@@ -40,13 +40,17 @@ function drawSprites(s: Surface, view: View, pos: Float32Array, vel: Float32Arra
   const nose = 3 * k;
   const m = r + Math.ceil(nose) + 1;
   const n = pos.length >> 1;
+  // Issue 17 (100,000 boids and more): rounding by `| 0` after a float
+  // range test (no Math.round, no overflow), sqrt not hypot.
   for (let i = 0; i < n; i++) {
-    const sx = Math.round(ox + (pos[2 * i] ?? 0) * sc);
-    const sy = Math.round(oy - (pos[2 * i + 1] ?? 0) * sc);
-    if (sx < m || sy < m || sx >= W - m || sy >= H - m) continue;
+    const fx = ox + (pos[2 * i] ?? 0) * sc;
+    const fy = oy - (pos[2 * i + 1] ?? 0) * sc;
+    if (!(fx >= m && fy >= m && fx < W - m && fy < H - m)) continue;
+    const sx = (fx + 0.5) | 0;
+    const sy = (fy + 0.5) | 0;
     const vx = vel[2 * i] ?? 0;
     const vy = vel[2 * i + 1] ?? 0;
-    const len = Math.hypot(vx, vy);
+    const len = Math.sqrt(vx * vx + vy * vy);
     // A boid at rest has no nose.
     sprites.stamp(sx, sy, r, c, len > 0 ? vx / len : 0, len > 0 ? -(vy / len) : 0, nose);
   }

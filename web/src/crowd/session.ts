@@ -8,6 +8,7 @@ import { PAPER_UNITS, View } from "../view";
 import { CrowdLab, errorText, type CrowdConfig } from "../wasm";
 import type { Panel } from "./panel";
 import { PathEditor } from "./patheditor";
+import { CrowdStepper, crowdWorkersWanted } from "./stepper";
 
 export class CrowdSession {
   lab: CrowdLab | null = null;
@@ -24,6 +25,14 @@ export class CrowdSession {
   panel: Panel | null = null;
   readonly view = new View(PAPER_UNITS);
   readonly editor: PathEditor;
+  /** Issue 17: the crowd stepped in workers (null: never started). */
+  stepper: CrowdStepper | null = null;
+  /** Workers asked for at the present count (URL or default). */
+  workersWanted = 0;
+  /** A bad `?workers=` value, reported once. */
+  workersProblem: string | null = null;
+  /** Test IV density: a count change scales the pathway with it. */
+  scaleWithCount = false;
 
   constructor() {
     this.editor = new PathEditor(
@@ -33,7 +42,9 @@ export class CrowdSession {
         commit: (xy) => {
           if (!this.lab) return "the core is not loaded";
           try {
+            this.syncFromWorkers();
             this.lab.setPathPoints(xy);
+            this.placeStepping();
             return null;
           } catch (e) {
             return errorText(e);
@@ -51,13 +62,64 @@ export class CrowdSession {
   /** Runs a setter on the core; shows its message if it refuses. */
   apply(f: (l: CrowdLab) => void): void {
     if (!this.lab) return;
+    this.syncFromWorkers();
     try {
       f(this.lab);
       showMessage(null);
     } catch (e) {
       showMessage(errorText(e), "error");
     }
+    this.placeStepping();
     this.dirty = true;
+  }
+
+  /** Whether workers own the crowd now. */
+  get inWorkers(): boolean {
+    return this.stepper?.active === true;
+  }
+
+  /** Before an edit with workers stepping: the page's CrowdLab takes the
+   *  last complete state (the edit applies to what is drawn). */
+  syncFromWorkers(): void {
+    const st = this.stepper;
+    if (this.lab && st?.active && st.state.length === this.lab.count() * 4) this.lab.loadState(st.state, st.time);
+  }
+
+  /** After a load or an edit: workers (re)start from the page's CrowdLab
+   *  when the count asks for them (`?workers=`, or the default from
+   *  AUTO_WORKERS_FROM boids), else the page's thread steps. */
+  placeStepping(): void {
+    const lab = this.lab;
+    if (!lab) return;
+    const w = crowdWorkersWanted(lab.count());
+    this.workersWanted = w.n;
+    if (w.problem && !this.workersProblem) {
+      this.workersProblem = w.problem;
+      showMessage(w.problem, "error");
+    }
+    if (w.n === 0 || lab.count() === 0) {
+      // Back from workers: the measures restart (they skipped those steps).
+      if (this.stepper?.active) lab.resetMetrics();
+      this.stepper?.stop();
+      lab.setMetricsEnabled(true);
+      return;
+    }
+    if (!this.stepper || this.stepper.workers !== w.n) {
+      this.stepper?.terminate();
+      this.stepper = new CrowdStepper(w.n);
+      this.stepper.onTraced = (x, y) => this.lab?.observeStep(x, y);
+      this.stepper.onStep = (state) => {
+        const l = this.lab;
+        if (!l) return;
+        const i = l.tracedBoid();
+        l.observeStep(state[2 * i] ?? 0, state[2 * i + 1] ?? 0);
+        this.dirty = true;
+      };
+      this.stepper.traced = () => this.lab?.tracedBoid() ?? 0;
+    }
+    // Measures need every boid's forces: only on the page's thread.
+    lab.setMetricsEnabled(false);
+    void this.stepper.start(lab.config(), lab.state(), lab.time());
   }
 
   /** Fits the pathway (with its radius) in the canvas. */
@@ -107,6 +169,7 @@ export class CrowdSession {
       showMessage(errorText(e), "error");
       return;
     }
+    this.placeStepping();
     this.syncPanel();
     if (fit) this.fitView();
     this.dirty = true;
