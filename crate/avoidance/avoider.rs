@@ -53,6 +53,7 @@ use glam::Vec2;
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
 use crate::avoidance::passing::Passing;
+use crate::avoidance::stalled;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -315,8 +316,11 @@ impl Avoider {
                     let unfinished = me.prio.is_finite();
                     let walled =
                         unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
+                    // At rest, too ([`crate::avoidance::stalled`]): γ
+                    // turns with the agent turning on the spot.
+                    let to_goal = walled || stalled::seeks_goal(unfinished, me.v);
                     let (v_pref, u_seek) = match self.goals.get(i) {
-                        Some(&g) if walled && (g - s.pos).length_squared() > 1e-6 => {
+                        Some(&g) if to_goal && (g - s.pos).length_squared() > 1e-6 => {
                             let u = (g - s.pos).normalize();
                             (u * s_pref.max(DODGE_SPEED), u)
                         }
@@ -331,14 +335,14 @@ impl Avoider {
                     // ask wins: the order does not matter); read only where
                     // the turn can apply (ORCA, an unfinished agent not
                     // blocked by a wall).
-                    let mut lane = Passing::new(u_pref, 2.0 * r);
+                    let mut lane = Passing::new(u_seek, 2.0 * r);
                     if unfinished && !walled {
                         for &sj in &self.cand_slot[..m] {
                             let q = &self.peers[sj as usize];
                             lane.see(q.pos - me.pos, q.fwd);
                         }
                     }
-                    let u_lane = lane.turn(u_pref);
+                    let u_lane = lane.turn(u_seek);
                     let turned = unfinished
                         && !walled
                         && lane.active()
@@ -427,7 +431,13 @@ impl Avoider {
                             0.0
                         };
                         let v_seek = if slow > 0.0 {
-                            v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow))
+                            // Not into a wall ([`crate::avoidance::stalled`]).
+                            stalled::bias_clear_of_walls(
+                                &lines,
+                                v_pref,
+                                v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow)),
+                                DODGE_SPEED,
+                            )
                         } else {
                             v_pref
                         };
