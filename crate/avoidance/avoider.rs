@@ -39,8 +39,8 @@
 //! sought points at the goal, not along γ, which turns with the agent's own
 //! heading (funnel and avoidance otherwise took turns for ever at a
 //! corner); so it does for an agent at rest, and the keep-right bias never
-//! points into a wall ([`crate::avoidance::stalled`]). Finished agents rank last and step aside at up to
-//! [`DODGE_SPEED`].
+//! points into a wall ([`crate::avoidance::stalled`]). Finished agents
+//! rank last and step aside at up to [`DODGE_SPEED`].
 //!
 //! **Neighbours** come from the crowd's hashed uniform grid
 //! ([`crate::crowd::separation::NeighbourGrid`], cell = the search
