@@ -12,7 +12,9 @@
 //! a39a444), which left them unchanged; re-recorded for the early keep-right
 //! (`avoidance/passing.rs`) and the heading search's `trig` cosine, and again
 //! for agents at rest seeking their goal's direction with no keep-right bias
-//! into a wall (`avoidance/stalled.rs`; the separation hash is unchanged). No proptest and no file I/O, so it also runs under
+//! into a wall (`avoidance/stalled.rs`; the separation hash is unchanged,
+//! and exempting agents the funnel turns on the spot changed none). No
+//! proptest and no file I/O, so it also runs under
 //! `wasm-pack test --headless --chrome`.
 
 #[cfg(target_arch = "wasm32")]

@@ -319,7 +319,7 @@ impl Avoider {
                         unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
                     // At rest, too ([`crate::avoidance::stalled`]): γ
                     // turns with the agent turning on the spot.
-                    let to_goal = walled || stalled::seeks_goal(unfinished, me.v);
+                    let to_goal = walled || stalled::seeks_goal(unfinished, me.v, s_pref);
                     let (v_pref, u_seek) = match self.goals.get(i) {
                         Some(&g) if to_goal && (g - s.pos).length_squared() > 1e-6 => {
                             let u = (g - s.pos).normalize();

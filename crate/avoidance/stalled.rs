@@ -75,12 +75,14 @@ use glam::Vec2;
 use crate::avoidance::avoider::STUCK_SPEED;
 use crate::avoidance::orca::Lines;
 
-/// True when an unfinished agent at speed `v` seeks its goal's direction
-/// instead of the funnel's heading γ: at rest, γ turns with it.
+/// True when an unfinished agent at speed `v`, whose funnel asks for
+/// `v_dt`, seeks its goal's direction instead of the funnel's heading γ:
+/// at rest, γ turns with it. Not when the funnel itself asks for no speed
+/// (it turns the agent on the spot on purpose, to its orientation).
 #[inline]
 #[must_use]
-pub fn seeks_goal(unfinished: bool, v: f32) -> bool {
-    unfinished && v < STUCK_SPEED
+pub fn seeks_goal(unfinished: bool, v: f32, v_dt: f32) -> bool {
+    unfinished && v < STUCK_SPEED && v_dt >= STUCK_SPEED
 }
 
 /// The keep-right `biased` velocity when an agent may walk along it
