@@ -76,12 +76,10 @@ fn walls_are_never_crossed_and_limits_hold() {
             assert_eq!(r.obstacle_contacts, 0, "{}: {r:?}", b.name());
             assert_eq!(r.overlap_pair_steps, 0, "{}: {r:?}", b.name());
             assert_eq!((r.violations, r.nan), (0, 0));
-            // Doorway seeds 1 and 2 and corridor seed 1 arrive whole; in
-            // corridor seed 2 one agent does not (it arrived before the
-            // early keep-right; `steer avoid --seeds 100 --seed 0`:
-            // corridor REACH_C, doorway REACH_D of agents).
-            let missing = usize::from(b == Bench::Corridor && seed == 2);
-            assert_eq!(r.reached + missing, r.agents, "{}: {r:?}", b.name());
+            // All four arrive whole (corridor seed 2 lost one agent
+            // before agents at rest sought their goal's direction,
+            // `avoidance::stalled`).
+            assert_eq!(r.reached, r.agents, "{}: {r:?}", b.name());
         }
     }
 }
@@ -91,9 +89,11 @@ fn corridor_groups_keep_right_early_and_pass_in_lanes() {
     // Tune seeds 1000–1019 (the rule was tuned on 1000–1099). Before the
     // early keep-right (`avoidance::passing`) the two blocks met at full
     // width and locked mid-corridor: 90 deadlocked agents in 12 of these 20
-    // runs, reach 87.5 % (420 of 480). Now 469 of 480 arrive; 22 agents in
-    // 10 runs still wait 10 s or more at once (issue 18's target, 0, is
-    // not met).
+    // runs, reach 87.5 % (420 of 480). With it, 469 of 480 arrived and 22
+    // agents in 10 runs still waited 10 s or more at once; with agents at
+    // rest seeking their goal's direction and no keep-right bias into a
+    // wall (`avoidance::stalled`), all 480 arrive and 1 agent waits
+    // (issue 18's target, 0, is met on 19 of these 20 seeds, not all).
     let t = table();
     let runs: Vec<_> = steering::parallel::map_indices(20, |k| {
         run(
@@ -106,8 +106,8 @@ fn corridor_groups_keep_right_early_and_pass_in_lanes() {
     let deadlocks: usize = runs.iter().map(|r| r.deadlocks).sum();
     println!("corridor 1000–1019: reach {reached}/{agents}, deadlocked {deadlocks}");
     assert_eq!(agents, 480);
-    assert!(reached >= 469, "{reached}");
-    assert!(deadlocks <= 22, "{deadlocks}");
+    assert_eq!(reached, 480);
+    assert!(deadlocks <= 1, "{deadlocks}");
     for r in &runs {
         assert_eq!((r.overlap_pair_steps, r.obstacle_contacts), (0, 0), "{r:?}");
         assert_eq!((r.violations, r.nan), (0, 0));

@@ -38,8 +38,9 @@
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own
 //! heading (funnel and avoidance otherwise took turns for ever at a
-//! corner). Finished agents rank last and step aside at up to
-//! [`DODGE_SPEED`].
+//! corner); so it does for an agent at rest, and the keep-right bias never
+//! points into a wall ([`crate::avoidance::stalled`]). Finished agents
+//! rank last and step aside at up to [`DODGE_SPEED`].
 //!
 //! **Neighbours** come from the crowd's hashed uniform grid
 //! ([`crate::crowd::separation::NeighbourGrid`], cell = the search
@@ -53,6 +54,7 @@ use glam::Vec2;
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
 use crate::avoidance::passing::Passing;
+use crate::avoidance::stalled;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
 use crate::vehicle::{VehicleParams, VehicleState};
@@ -315,8 +317,11 @@ impl Avoider {
                     let unfinished = me.prio.is_finite();
                     let walled =
                         unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
+                    // At rest, too ([`crate::avoidance::stalled`]): γ
+                    // turns with the agent turning on the spot.
+                    let to_goal = walled || stalled::seeks_goal(unfinished, me.v, s_pref);
                     let (v_pref, u_seek) = match self.goals.get(i) {
-                        Some(&g) if walled && (g - s.pos).length_squared() > 1e-6 => {
+                        Some(&g) if to_goal && (g - s.pos).length_squared() > 1e-6 => {
                             let u = (g - s.pos).normalize();
                             (u * s_pref.max(DODGE_SPEED), u)
                         }
@@ -331,14 +336,14 @@ impl Avoider {
                     // ask wins: the order does not matter); read only where
                     // the turn can apply (ORCA, an unfinished agent not
                     // blocked by a wall).
-                    let mut lane = Passing::new(u_pref, 2.0 * r);
+                    let mut lane = Passing::new(u_seek, 2.0 * r);
                     if unfinished && !walled {
                         for &sj in &self.cand_slot[..m] {
                             let q = &self.peers[sj as usize];
                             lane.see(q.pos - me.pos, q.fwd);
                         }
                     }
-                    let u_lane = lane.turn(u_pref);
+                    let u_lane = lane.turn(u_seek);
                     let turned = unfinished
                         && !walled
                         && lane.active()
@@ -427,7 +432,13 @@ impl Avoider {
                             0.0
                         };
                         let v_seek = if slow > 0.0 {
-                            v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow))
+                            // Not into a wall ([`crate::avoidance::stalled`]).
+                            stalled::bias_clear_of_walls(
+                                &lines,
+                                v_pref,
+                                v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow)),
+                                DODGE_SPEED,
+                            )
                         } else {
                             v_pref
                         };

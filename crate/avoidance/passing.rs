@@ -59,7 +59,9 @@
 //! the other group's lane against a wall (the corridor's goals at
 //! y = ±3 m lie beyond its walls, and the funnel draws the outer rows back
 //! out), head on with it where neither side has room, and slow jams that
-//! take more than 10 s to clear.
+//! take more than 10 s to clear. Agents at rest in those jams now seek
+//! their goal's direction, with no keep-right bias into a wall
+//! ([`crate::avoidance::stalled`]).
 
 use glam::Vec2;
 
