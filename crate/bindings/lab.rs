@@ -539,6 +539,28 @@ impl Lab {
         self.buf.clone()
     }
 
+    /// [`Lab::state`] written into `out` (issue 17: a stepping worker's
+    /// slice of the page's shared buffer) with one copy out of the core's
+    /// memory, instead of a `Vec` clone, a new JS array and a copy of that.
+    ///
+    /// # Errors
+    /// `out` is not exactly [`Lab::count`] × [`STATE_STRIDE`] floats long
+    /// (nothing written).
+    #[wasm_bindgen(js_name = stateInto)]
+    pub fn state_into(&mut self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+        self.world.write_state(&mut self.buf);
+        if out.length() as usize != self.buf.len() {
+            return Err(JsError::new(&format!(
+                "stateInto: the array holds {} floats, the state {} ({} agents × {STATE_STRIDE})",
+                out.length(),
+                self.buf.len(),
+                self.world.agents.len()
+            )));
+        }
+        out.copy_from(&self.buf);
+        Ok(())
+    }
+
     /// Floats per agent in [`Lab::state`].
     #[wasm_bindgen(js_name = stateStride)]
     #[must_use]
