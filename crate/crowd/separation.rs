@@ -371,19 +371,37 @@ pub fn separate(
     // the visiting order, so results do not depend on it.
     for k in 0..n {
         let i = grid.boid_in_bucket_order(k);
-        let mut sum = Vec2::ZERO;
-        grid.for_each_neighbour(pos, i, reach, |j, d, d2| {
-            ordered_pairs += 1;
-            if d2 > 0.0 {
-                sum += d;
-            } else {
-                sum.x += if i < j { -nudge } else { nudge };
-            }
-        });
+        let (sum, visited) = separation_sum(grid, pos, i, reach, nudge);
+        ordered_pairs += visited;
         out[2 * i] = sum.x * weight;
         out[2 * i + 1] = sum.y * weight;
     }
     ordered_pairs / 2
+}
+
+/// Boid `i`'s sum `Σ (pᵢ − pⱼ)` over the boids within `reach` (a nudge of
+/// ±`nudge` along x for one at the same spot), and how many it visited:
+/// one body for [`separate`] and [`separate_owned`], so a strip's boids get
+/// the whole crowd's bits.
+#[inline]
+fn separation_sum(
+    grid: &mut NeighbourGrid,
+    pos: &[f32],
+    i: usize,
+    reach: f32,
+    nudge: f32,
+) -> (Vec2, u64) {
+    let mut sum = Vec2::ZERO;
+    let mut visited = 0u64;
+    grid.for_each_neighbour(pos, i, reach, |j, d, d2| {
+        visited += 1;
+        if d2 > 0.0 {
+            sum += d;
+        } else {
+            sum.x += if i < j { -nudge } else { nudge };
+        }
+    });
+    (sum, visited)
 }
 
 /// [`separate`] for the boids `owned` only (issue 17: one worker's strip),
@@ -407,14 +425,7 @@ pub fn separate_owned(
         if !owned[i] {
             continue;
         }
-        let mut sum = Vec2::ZERO;
-        grid.for_each_neighbour(pos, i, reach, |j, d, d2| {
-            if d2 > 0.0 {
-                sum += d;
-            } else {
-                sum.x += if i < j { -nudge } else { nudge };
-            }
-        });
+        let (sum, _) = separation_sum(grid, pos, i, reach, nudge);
         out[2 * i] = sum.x * weight;
         out[2 * i + 1] = sum.y * weight;
     }

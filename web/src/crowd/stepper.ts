@@ -26,6 +26,7 @@
 //   configuration and state (`start`), after the job in flight.
 
 import type { CrowdConfig } from "../wasm";
+import { stateBuffers } from "../workers/buffers";
 import { WorkerPool } from "../workers/pool";
 
 export interface CrowdTask {
@@ -135,19 +136,9 @@ export class CrowdStepper {
     this.error = null;
     this.owed = 0;
     this.count = state.length >> 2;
-    const bytes = state.length * 4;
-    this.sab = this.shared
-      ? [new SharedArrayBuffer(bytes), new SharedArrayBuffer(bytes), new SharedArrayBuffer(bytes), new SharedArrayBuffer(4), new SharedArrayBuffer(4 * 2 * MAX_STEPS_PER_JOB)]
-      : null;
+    // Three states (front, back, spare), the barrier's counter, the step slots.
+    ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4, 4 * 2 * MAX_STEPS_PER_JOB]));
     this.frontIndex = 0;
-    if (this.sab) {
-      this.state = new Float32Array(this.sab[0] as SharedArrayBuffer);
-      this.back = new Float32Array(this.sab[1] as SharedArrayBuffer);
-    } else {
-      this.state = new Float32Array(state.length);
-      this.back = new Float32Array(state.length);
-    }
-    this.state.set(state);
     this.time = time;
     const sab = this.sab;
     const t0 = performance.now();

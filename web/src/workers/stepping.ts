@@ -23,6 +23,7 @@
 //   (transferred, no copy) and the page copies them into the back buffer.
 
 import type { AgentConfig, FunnelConfig, GoalConfig, Internals, Lab, RelaxedConfig, VehicleParams } from "../wasm";
+import { stateBuffers } from "./buffers";
 import { WorkerPool } from "./pool";
 
 /** Where a worker finds the η table in force: its bytes (a table built for
@@ -172,17 +173,8 @@ export class WorldStepper {
     const ranges: Array<[number, number]> = [];
     for (let k = 0; k + 1 < flat.length; k += 2) ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
     this.ranges = ranges;
-    const bytes = initial.length * 4;
-    this.sab = this.shared ? [new SharedArrayBuffer(bytes), new SharedArrayBuffer(bytes)] : null;
+    ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(initial, this.shared));
     this.frontIndex = 0;
-    if (this.sab) {
-      this.state = new Float32Array(this.sab[0] as SharedArrayBuffer);
-      this.back = new Float32Array(this.sab[1] as SharedArrayBuffer);
-    } else {
-      this.state = new Float32Array(initial.length);
-      this.back = new Float32Array(initial.length);
-    }
-    this.state.set(initial);
     const sab = this.sab;
     const t0 = performance.now();
     return this.job(gen, (buffer) =>
