@@ -1,7 +1,7 @@
 //! Moving-goal runs of the envelope study that never enter the disk.
+use steering::funnel::FunnelConfig;
 use steering::funnelling::envelope::{run, EnvelopeStudy, GoalKind};
 use steering::relaxed::Controller;
-use steering::funnel::FunnelConfig;
 use steering::table::EtaTable;
 use steering::vehicle::VehicleParams;
 fn main() {
@@ -11,7 +11,13 @@ fn main() {
     let bytes = std::fs::read("tables/eta.bin").unwrap();
     let table = EtaTable::from_bytes(&bytes).unwrap();
     let p = VehicleParams::default();
-    let st = EnvelopeStudy { seed, n_static: 0, n_moving: n, n_chain: 0, ..EnvelopeStudy::default() };
+    let st = EnvelopeStudy {
+        seed,
+        n_static: 0,
+        n_moving: n,
+        n_chain: 0,
+        ..EnvelopeStudy::default()
+    };
     let ctl = Controller::Standard(FunnelConfig::default());
     for i in 0..n {
         let sc = st.scenario(&p, GoalKind::Moving, i);

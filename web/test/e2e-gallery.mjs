@@ -404,6 +404,20 @@ try {
     allProblems.push(...problems);
     await context.close();
 
+    await check("crowd in 1 worker (shared memory, every boid owned: the two bulk copies out of the core's memory): its state equals one core's", async () => {
+      const { page: t, problems: tp, context: c } = await openPage(browser, { width: 900, height: 700 }, 1);
+      await t.goto(new URL("crowd.html?workers=1", url).href);
+      assert.equal(await waitCrowd(t), null);
+      await pause(t);
+      await t.evaluate(() => window.__crowd.loadScaled(30000));
+      const snap = await t.evaluate(() => window.__crowd.snapshot());
+      const r = await sameAsOneCore(t, snap, {}, 12);
+      assert.equal(r.info.mode, "shared");
+      assert.equal(r.info.workers, 1);
+      assert.equal(r.got, r.ref);
+      assert.deepEqual(tp, []);
+      await c.close();
+    });
     await check("crowd in 2 workers without cross-origin isolation (by message): its state equals one core's", async () => {
       const { page: t, problems: tp, context: c } = await openPage(browser, { width: 900, height: 700 }, 1);
       await unisolated(c);

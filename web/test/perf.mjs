@@ -30,6 +30,7 @@ const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
 const onlyFirst = sizes.length === 0;
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
 // ONLY_CROWD=1: the crowd page's rows alone (issue 17, crowd boids per frame).
+// CROWD_SIZES (30000,100000,200000), CROWD_ROUNDS (3), CROWD_MODES (0,1,N: page's thread, 1 worker, a worker per core).
 const onlyCrowd = process.env.ONLY_CROWD === "1";
 const { server, url } = await serve();
 const bases = [];
@@ -143,7 +144,7 @@ try {
   for (let round = 0; round < rounds; round++) {
     for (const n of wsizes) {
       // Alternating order by round, so a drift in the host's load does not favour one mode.
-      for (const w of round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]) {
+      for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => crowdModes.includes(m))) {
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
         // "N": as many workers as navigator.hardwareConcurrency (read on the first load).
         const nq = `?workers=${w === "N" ? cores || 2 : w}`;
@@ -190,11 +191,13 @@ try {
   // step of every boid) / (sampled wall time / 16.7 ms).
   const csizes = onlyWorkers || (onlyFirst && !onlyCrowd) ? [] : (process.env.CROWD_SIZES ?? "30000,100000,200000").split(",").filter(Boolean).map(Number);
   const crounds = Number(process.env.CROWD_ROUNDS ?? 3);
+  // CROWD_MODES (default "0,1,N"): page's thread, 1 worker, one per core.
+  const crowdModes = (process.env.CROWD_MODES ?? "0,1,N").split(",");
   const crows = new Map();
   if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (before)`);
   for (let round = 0; round < crounds; round++) {
     for (const n of csizes) {
-      for (const w of round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]) {
+      for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => crowdModes.includes(m))) {
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
         await page.goto(`${url.replace(/\/?$/, "/")}crowd.html?workers=${w === "N" ? cores || 2 : w}`);
         await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 60000 });
@@ -224,7 +227,7 @@ try {
   }
   if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (after); navigator.hardwareConcurrency = ${cores}; boids stepped + drawn per 16.7 ms frame, median of ${crounds} round(s):`);
   for (const n of csizes) {
-    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${n}|${w}`)));
+    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${n}|${w}`) ?? [NaN]));
     console.log(`crowd summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ${cores} workers / page's thread ${(mn / m0).toFixed(2)}×`);
   }
 } finally {

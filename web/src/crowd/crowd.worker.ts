@@ -14,19 +14,26 @@ import { stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
 let lab: CrowdLab | null = null;
 let shared: SharedArrayBuffer[] | null = null;
 
-/** One step of this worker's strip from `front` into `back` (shared memory). */
+/** One step of this worker's strip from `front` into `back` (shared memory).
+ *  The stepped boids are copied straight out of the core's memory
+ *  (`stripViews`, read before the next call into the core): all of them in
+ *  two bulk copies when this worker owns every boid. */
 function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: number, lo: number, hi: number): number {
   l.loadState(front, time);
   const owned = l.stepStrip(lo, hi);
-  const indices = l.ownedIndices();
-  const states = l.ownedState();
+  const [indices, pos, vel] = l.stripViews();
   const half = back.length >> 1;
+  if (indices.length === half >> 1) {
+    back.set(pos, 0);
+    back.set(vel, half);
+    return owned;
+  }
   for (let k = 0; k < indices.length; k++) {
     const i = 2 * (indices[k] ?? 0);
-    back[i] = states[4 * k] ?? 0;
-    back[i + 1] = states[4 * k + 1] ?? 0;
-    back[half + i] = states[4 * k + 2] ?? 0;
-    back[half + i + 1] = states[4 * k + 3] ?? 0;
+    back[i] = pos[i] ?? 0;
+    back[i + 1] = pos[i + 1] ?? 0;
+    back[half + i] = vel[i] ?? 0;
+    back[half + i + 1] = vel[i + 1] ?? 0;
   }
   return owned;
 }

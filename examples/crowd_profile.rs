@@ -1,0 +1,62 @@
+//! Crowd step cost (issue 17): N boids of Test IV's pathway scaled with N
+//! (its density), Parker 10 %, metrics off (the workers' mode), STEPS steps
+//! after 100 settling ones; then separation alone and its grid rebuild
+//! alone on the last positions (`ONLY_REBUILD=1`: 500 rebuilds, for
+//! `perf record`). `cargo run --release --example crowd_profile -- N STEPS`.
+use steering::crowd::boid_seek::Seek;
+use steering::crowd::config::{CrowdConfig, PaperTest};
+use steering::crowd::Crowd;
+fn main() {
+    let a: Vec<String> = std::env::args().collect();
+    let n: usize = a.get(1).map_or(100_000, |s| s.parse().unwrap());
+    let steps: u32 = a.get(2).map_or(100, |s| s.parse().unwrap());
+    let scale = n as f32 / 300.0;
+    let mut cfg = CrowdConfig::paper(PaperTest::IV, Seek::Parker { fraction: 0.1 });
+    cfg.boids = n;
+    for p in &mut cfg.path.points {
+        p[0] *= scale;
+        p[1] *= scale;
+    }
+    let mut c = Crowd::new(&cfg).unwrap();
+    c.set_metrics_enabled(false);
+    c.run(100);
+    let t = std::time::Instant::now();
+    c.run(steps);
+    let dt = t.elapsed().as_secs_f64() / f64::from(steps);
+    let h = c.positions().iter().fold(0u64, |h, v| {
+        h.wrapping_mul(31).wrapping_add(u64::from(v.to_bits()))
+    });
+    let mut grid = steering::crowd::separation::NeighbourGrid::new();
+    let mut out = vec![0.0f32; 2 * n];
+    let pos = c.positions().to_vec();
+    let t = std::time::Instant::now();
+    for _ in 0..steps {
+        steering::crowd::separation::separate(
+            &mut grid,
+            &pos,
+            cfg.boid_radius,
+            cfg.separation_weight,
+            &mut out,
+        );
+    }
+    let ds = t.elapsed().as_secs_f64() / f64::from(steps);
+    if std::env::var("ONLY_REBUILD").is_ok() {
+        let t = std::time::Instant::now();
+        for _ in 0..500 {
+            grid.rebuild(&pos, 2.0 * cfg.boid_radius);
+        }
+        println!("rebuild {:.3} ms", t.elapsed().as_secs_f64() * 2.0);
+        return;
+    }
+    let t = std::time::Instant::now();
+    for _ in 0..steps {
+        grid.rebuild(&pos, 2.0 * cfg.boid_radius);
+    }
+    let dr = t.elapsed().as_secs_f64() / f64::from(steps);
+    println!("separate {:.2} ms (rebuild {:.2} ms)", ds * 1e3, dr * 1e3);
+    println!(
+        "{n} boids: {:.2} ms per step, {:.1} ns per boid; hash {h:016x}",
+        dt * 1e3,
+        dt * 1e9 / n as f64
+    );
+}
