@@ -40,6 +40,23 @@ fn main() {
         );
     }
     let ds = t.elapsed().as_secs_f64() / f64::from(steps);
+    if std::env::var("SORTED").is_ok() {
+        grid.rebuild(&pos, 2.0 * cfg.boid_radius);
+        let sorted: Vec<f32> = (0..n)
+            .flat_map(|k| {
+                let i = grid.boid_in_bucket_order(k);
+                [pos[2 * i], pos[2 * i + 1]]
+            })
+            .collect();
+        let t = std::time::Instant::now();
+        for _ in 0..500 {
+            grid.rebuild(&sorted, 2.0 * cfg.boid_radius);
+        }
+        println!(
+            "rebuild of spatially sorted {:.3} ms",
+            t.elapsed().as_secs_f64() * 2.0
+        );
+    }
     if std::env::var("ONLY_REBUILD").is_ok() {
         let t = std::time::Instant::now();
         for _ in 0..500 {

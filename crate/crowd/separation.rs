@@ -41,6 +41,12 @@ pub struct NeighbourGrid {
     /// Cell `(ix, iy)` of each boid, in the same order as `order`: lets
     /// [`count_overlaps`] tell a cell's own boids from a colliding cell's.
     cells: Vec<[i32; 2]>,
+    /// The visiting order of a rebuild (last step's `order`; kept to reuse
+    /// its allocation).
+    visit: Vec<u32>,
+    /// `order` holds every boid of a [`NeighbourGrid::rebuild`] (not a
+    /// member subset): the next full rebuild may visit boids in it.
+    order_full: bool,
     checks: u64,
 }
 
@@ -86,9 +92,61 @@ impl NeighbourGrid {
 
     /// Re-bins the boids at `pos` (flat `[x0, y0, x1, y1, ...]`) into cells
     /// of side `cell` (> 0, world units).
+    ///
+    /// Issue 17: from the second rebuild of the same boids on, they are
+    /// visited in the previous rebuild's bucket order, not by index. The
+    /// counting sort writes each boid's slot in three arrays; visited by
+    /// index (spatially random in a moving crowd) those writes missed the
+    /// cache one by one, visited in last step's order they land almost in
+    /// sequence (most boids stay in their cell from one step to the next).
+    /// Within a bucket the boids then follow last step's order, so each
+    /// bucket is put back into ascending index by an insertion sort (runs
+    /// already sorted but for the boids that changed cell): the same order,
+    /// and so the same bits, as the by-index sort. 100,000 boids at Test
+    /// IV's density (`examples/crowd_profile.rs`): a rebuild cost 3.9–4.1
+    /// ms by index; rebuilding the same positions stored in bucket order
+    /// took 1.6 ms.
     pub fn rebuild(&mut self, pos: &[f32], cell: f32) {
         let n = pos.len() / 2;
-        self.rebuild_from(pos, cell, n, 0..n);
+        if self.order_full && self.order.len() == n && n > 0 {
+            let mut prev = core::mem::take(&mut self.visit);
+            prev.clear();
+            prev.extend_from_slice(&self.order);
+            self.rebuild_from(pos, cell, n, prev.iter().map(|&i| i as usize));
+            self.sort_buckets_by_index();
+            self.visit = prev;
+        } else {
+            self.rebuild_from(pos, cell, n, 0..n);
+        }
+        self.order_full = true;
+    }
+
+    /// Restores ascending index within every bucket after a rebuild that
+    /// visited boids out of index order (insertion sort of `order`,
+    /// `sorted` and `cells` together; `starts` holds each bucket's start).
+    fn sort_buckets_by_index(&mut self) {
+        for s in 1..self.order.len() {
+            let id = self.order[s];
+            if self.order[s - 1] <= id {
+                continue;
+            }
+            let [ix, iy] = self.cells[s];
+            let start = self.starts[bucket_of_cell(ix, iy, self.mask) as usize] as usize;
+            if s == start {
+                continue;
+            }
+            let (p, c) = (self.sorted[s], self.cells[s]);
+            let mut t = s;
+            while t > start && self.order[t - 1] > id {
+                self.order[t] = self.order[t - 1];
+                self.sorted[t] = self.sorted[t - 1];
+                self.cells[t] = self.cells[t - 1];
+                t -= 1;
+            }
+            self.order[t] = id;
+            self.sorted[t] = p;
+            self.cells[t] = c;
+        }
     }
 
     /// Re-bins only the boids `members` (ascending indices into `pos`) with
@@ -109,6 +167,7 @@ impl NeighbourGrid {
     /// boids only add rejected candidates.
     pub fn rebuild_members(&mut self, pos: &[f32], cell: f32, members: &[u32]) {
         debug_assert!(members.windows(2).all(|w| w[0] < w[1]));
+        self.order_full = false;
         self.rebuild_from(
             pos,
             cell,
@@ -183,6 +242,13 @@ impl NeighbourGrid {
         self.order[k] as usize
     }
 
+    /// The position of the `k`-th boid in bucket order, as binned.
+    #[inline]
+    #[must_use]
+    pub fn position_in_bucket_order(&self, k: usize) -> Vec2 {
+        self.sorted[k]
+    }
+
     /// Calls `f(j, pᵢ − pⱼ, |pᵢ − pⱼ|²)` for every boid `j ≠ i` with
     /// `|pᵢ − pⱼ| < reach` (`reach` ≤ the cell size given to `rebuild`),
     /// in a deterministic order.
@@ -192,9 +258,22 @@ impl NeighbourGrid {
         pos: &[f32],
         i: usize,
         reach: f32,
+        f: impl FnMut(usize, Vec2, f32),
+    ) {
+        self.for_each_neighbour_at(Vec2::new(pos[2 * i], pos[2 * i + 1]), i, reach, f);
+    }
+
+    /// [`NeighbourGrid::for_each_neighbour`] for boid `i` at `pi` (its
+    /// position as binned: a caller visiting boids in bucket order reads it
+    /// from [`NeighbourGrid::position_in_bucket_order`], in sequence).
+    #[inline]
+    pub fn for_each_neighbour_at(
+        &mut self,
+        pi: Vec2,
+        i: usize,
+        reach: f32,
         mut f: impl FnMut(usize, Vec2, f32),
     ) {
-        let pi = Vec2::new(pos[2 * i], pos[2 * i + 1]);
         let r2 = reach * reach;
         let (runs, n_runs) = self.candidate_runs(pi);
         for &(lo, hi) in &runs[..n_runs] {
@@ -371,7 +450,7 @@ pub fn separate(
     // the visiting order, so results do not depend on it.
     for k in 0..n {
         let i = grid.boid_in_bucket_order(k);
-        let (sum, visited) = separation_sum(grid, pos, i, reach, nudge);
+        let (sum, visited) = separation_sum(grid, k, reach, nudge);
         ordered_pairs += visited;
         out[2 * i] = sum.x * weight;
         out[2 * i + 1] = sum.y * weight;
@@ -379,21 +458,17 @@ pub fn separate(
     ordered_pairs / 2
 }
 
-/// Boid `i`'s sum `Σ (pᵢ − pⱼ)` over the boids within `reach` (a nudge of
+/// The sum `Σ (pᵢ − pⱼ)` of boid `i`, the `k`-th in bucket order, over the boids within `reach` (a nudge of
 /// ±`nudge` along x for one at the same spot), and how many it visited:
 /// one body for [`separate`] and [`separate_owned`], so a strip's boids get
 /// the whole crowd's bits.
 #[inline]
-fn separation_sum(
-    grid: &mut NeighbourGrid,
-    pos: &[f32],
-    i: usize,
-    reach: f32,
-    nudge: f32,
-) -> (Vec2, u64) {
+fn separation_sum(grid: &mut NeighbourGrid, k: usize, reach: f32, nudge: f32) -> (Vec2, u64) {
+    let i = grid.boid_in_bucket_order(k);
     let mut sum = Vec2::ZERO;
     let mut visited = 0u64;
-    grid.for_each_neighbour(pos, i, reach, |j, d, d2| {
+    let pi = grid.position_in_bucket_order(k);
+    grid.for_each_neighbour_at(pi, i, reach, |j, d, d2| {
         visited += 1;
         if d2 > 0.0 {
             sum += d;
@@ -425,7 +500,7 @@ pub fn separate_owned(
         if !owned[i] {
             continue;
         }
-        let (sum, _) = separation_sum(grid, pos, i, reach, nudge);
+        let (sum, _) = separation_sum(grid, k, reach, nudge);
         out[2 * i] = sum.x * weight;
         out[2 * i + 1] = sum.y * weight;
     }

@@ -226,7 +226,17 @@ impl Crowd {
                 self.members.push(i as u32);
             }
         }
-        if sep_on {
+        if sep_on && owned.len() == n {
+            // One worker owns every boid: the whole grid, rebuilt in last
+            // step's order (`NeighbourGrid::rebuild`), same bits.
+            separate(
+                &mut self.grid,
+                &self.pos,
+                cfg.boid_radius,
+                cfg.separation_weight,
+                &mut self.sep,
+            );
+        } else if sep_on {
             separate_owned(
                 &mut self.grid,
                 &self.pos,
