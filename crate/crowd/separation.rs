@@ -44,6 +44,10 @@ pub struct NeighbourGrid {
     /// The visiting order of a rebuild (last step's `order`; kept to reuse
     /// its allocation).
     visit: Vec<u32>,
+    /// Per boid: `generation` if a member of the present
+    /// [`NeighbourGrid::rebuild_members`], one more once visited.
+    mark: Vec<u32>,
+    generation: u32,
     /// `order` holds every boid of a [`NeighbourGrid::rebuild`] (not a
     /// member subset): the next full rebuild may visit boids in it.
     order_full: bool,
@@ -168,12 +172,47 @@ impl NeighbourGrid {
     pub fn rebuild_members(&mut self, pos: &[f32], cell: f32, members: &[u32]) {
         debug_assert!(members.windows(2).all(|w| w[0] < w[1]));
         self.order_full = false;
-        self.rebuild_from(
-            pos,
-            cell,
-            members.len(),
-            members.iter().map(|&i| i as usize),
-        );
+        let n_all = pos.len() / 2;
+        if self.order.is_empty() || members.is_empty() {
+            self.rebuild_from(
+                pos,
+                cell,
+                members.len(),
+                members.iter().map(|&i| i as usize),
+            );
+            return;
+        }
+        // As `rebuild`: last rebuild's order first (the members still in
+        // it), then the new members; generation marks tell them apart
+        // without clearing an array per step.
+        if self.generation >= u32::MAX - 2 {
+            self.mark.fill(0);
+            self.generation = 0;
+        }
+        self.generation += 2;
+        let (member, seen) = (self.generation, self.generation + 1);
+        self.mark.resize(n_all, 0);
+        for &m in members {
+            self.mark[m as usize] = member;
+        }
+        let mut visit = core::mem::take(&mut self.visit);
+        visit.clear();
+        for &i in &self.order {
+            if let Some(k) = self.mark.get_mut(i as usize) {
+                if *k == member {
+                    *k = seen;
+                    visit.push(i);
+                }
+            }
+        }
+        for &m in members {
+            if self.mark[m as usize] == member {
+                visit.push(m);
+            }
+        }
+        self.rebuild_from(pos, cell, members.len(), visit.iter().map(|&i| i as usize));
+        self.sort_buckets_by_index();
+        self.visit = visit;
     }
 
     /// The counting sort behind both rebuilds. Issue 17: the placing pass
