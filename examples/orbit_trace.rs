@@ -15,11 +15,18 @@ fn main() {
     let relaxed = a.get(4).is_some_and(|s| s == "relaxed");
     let table = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap()).unwrap();
     let p = VehicleParams::default();
-    let st = EnvelopeStudy { seed, n_static: 0, n_moving: i + 1, n_chain: 0, ..EnvelopeStudy::default() };
+    let st = EnvelopeStudy {
+        seed,
+        n_static: 0,
+        n_moving: i + 1,
+        n_chain: 0,
+        ..EnvelopeStudy::default()
+    };
     let sc = st.scenario(&p, GoalKind::Moving, i);
     let mut w = World::new(p, FunnelConfig::default()).unwrap();
     if relaxed {
-        w.set_controller(ControllerKind::Relaxed, RelaxedConfig::default()).unwrap();
+        w.set_controller(ControllerKind::Relaxed, RelaxedConfig::default())
+            .unwrap();
     }
     w.add_agent(sc.start, sc.goals.clone()).unwrap();
     println!("start {:?}\ngoal {:?}", sc.start, sc.goals[0]);
@@ -38,6 +45,9 @@ fn main() {
                 d, dmin, it.mode, it.aim_d, it.aim_alpha.to_degrees(), it.v_dt, ag.memory.passes, it.reachable, it.delta_eta.to_degrees(), it.mu.to_degrees(), ag.memory.passes
             );
         }
-        if ag.done() { println!("done at {}", k as f32 * p.dt); break; }
+        if ag.done() {
+            println!("done at {}", k as f32 * p.dt);
+            break;
+        }
     }
 }

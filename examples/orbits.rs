@@ -1,7 +1,8 @@
-//! Moving-goal runs of the envelope study that never enter the disk.
-use steering::funnelling::envelope::{run, EnvelopeStudy, GoalKind};
-use steering::relaxed::Controller;
+//! Moving-goal runs of the envelope study that never enter the disk (or
+//! never finish): `orbits -- SEED N [relaxed]`.
 use steering::funnel::FunnelConfig;
+use steering::funnelling::envelope::{run, EnvelopeStudy, GoalKind};
+use steering::relaxed::{Controller, RelaxedConfig};
 use steering::table::EtaTable;
 use steering::vehicle::VehicleParams;
 fn main() {
@@ -11,8 +12,18 @@ fn main() {
     let bytes = std::fs::read("tables/eta.bin").unwrap();
     let table = EtaTable::from_bytes(&bytes).unwrap();
     let p = VehicleParams::default();
-    let st = EnvelopeStudy { seed, n_static: 0, n_moving: n, n_chain: 0, ..EnvelopeStudy::default() };
-    let ctl = Controller::Standard(FunnelConfig::default());
+    let st = EnvelopeStudy {
+        seed,
+        n_static: 0,
+        n_moving: n,
+        n_chain: 0,
+        ..EnvelopeStudy::default()
+    };
+    let ctl = if a.get(3).is_some_and(|s| s == "relaxed") {
+        Controller::Relaxed(FunnelConfig::default(), RelaxedConfig::default())
+    } else {
+        Controller::Standard(FunnelConfig::default())
+    };
     for i in 0..n {
         let sc = st.scenario(&p, GoalKind::Moving, i);
         let r = run(&table, &p, &ctl, &sc, 150.0);

@@ -277,7 +277,10 @@ impl Default for FunnelConfig {
 /// → 100 % of declarations, every run still finishes). A goal following
 /// an agent keeps the latch; a goal moving by itself is never latched
 /// ([`crate::approach::tolerance_phase`]): `position_met` then says
-/// whether the vehicle is inside its disk now.
+/// whether the vehicle is inside its disk now, and the laps the vehicle
+/// goes round it without entering are counted (`laps` and the fields
+/// after it, issue 13), each lowering the approach speed
+/// ([`crate::approach::lap_speed`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct FunnelMemory {
     /// The position tolerance has been met.
