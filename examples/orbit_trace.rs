@@ -1,6 +1,8 @@
 //! One envelope moving-goal run step by step (issue 13's orbits):
 //! `orbit_trace -- SEED INDEX [EVERY] [relaxed]` prints t, pose, speed,
-//! mode, D to the goal, the aim, v_dt, passes.
+//! laps, mode, D to the goal and its least value so far, the aim point
+//! (distance, α), v_dt, passes; `VEHICLE` and `TABLE` as in
+//! `examples/orbits.rs`. Runs 150 s.
 use steering::funnel::FunnelConfig;
 use steering::funnelling::envelope::{EnvelopeStudy, GoalKind};
 use steering::relaxed::{ControllerKind, RelaxedConfig};
@@ -13,14 +15,24 @@ fn main() {
     let i: usize = a.get(2).map_or(0, |s| s.parse().unwrap());
     let every: u32 = a.get(3).map_or(30, |s| s.parse().unwrap());
     let relaxed = a.get(4).is_some_and(|s| s == "relaxed");
-    let table = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap()).unwrap();
-    let p = VehicleParams::default();
+    let table = EtaTable::from_bytes(
+        &std::fs::read(std::env::var("TABLE").unwrap_or_else(|_| "tables/eta.bin".into())).unwrap(),
+    )
+    .unwrap();
+    let p = std::env::var("VEHICLE").map_or_else(
+        |_| VehicleParams::default(),
+        |n| {
+            steering::funnelling::vehicle_file::reference(&n)
+                .unwrap()
+                .vehicle
+        },
+    );
     let st = EnvelopeStudy {
         seed,
         n_static: 0,
         n_moving: i + 1,
         n_chain: 0,
-        ..EnvelopeStudy::default()
+        ..EnvelopeStudy::for_vehicle(&p)
     };
     let sc = st.scenario(&p, GoalKind::Moving, i);
     let mut w = World::new(p, FunnelConfig::default()).unwrap();
