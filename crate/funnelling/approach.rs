@@ -6,7 +6,10 @@
 //! An update begins ([`Approach::begin`]) by measuring the goal in the
 //! vehicle frame (distance D, bearing, radial angle α), capping the desired
 //! speed for final halting, and running the position-tolerance phase of
-//! Fig. 5 ([`tolerance_phase`]), which may settle the update outright. The
+//! Fig. 5 ([`tolerance_phase`]), which may settle the update outright (for
+//! a goal moving by itself it also counts the laps the vehicle goes round
+//! it without entering, and each lap lowers the approach speed,
+//! [`lap_speed`]). The
 //! controllers then differ only in the point they aim at — the goal itself,
 //! or the relaxed point of paper 001 Fig. 7 — and both end the same way: one
 //! table lookup there ([`Approach::look`]: reachability and the proactive
@@ -90,6 +93,12 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 /// pass lengthens ([`Approach::aim_depth`]). Tune seed 1: 100 % of
 /// declarations inside both tolerances, 99.7 % of moving goals finished
 /// (99.5 % latched), 84.6 % entered oriented (54.0 %).
+///
+/// A vehicle that goes round a moving goal without entering its disk
+/// counts laps (`count_laps`, [`FunnelMemory::laps`]), and each lap
+/// lowers the speed the goal is approached with ([`lap_speed`]; issue 13:
+/// 6 of 2,000 moving goals, 27 of 10,000 in `examples/orbits.rs`, tune
+/// seed 1, were orbited for the whole time limit and never entered).
 #[inline]
 pub fn tolerance_phase(
     p: &VehicleParams,
@@ -105,6 +114,7 @@ pub fn tolerance_phase(
         if mem.position_met && !inside {
             mem.passes = mem.passes.saturating_add(1);
         }
+        count_laps(p, s, g, mem, d);
         mem.position_met = inside;
         if inside && heading_err.abs() < g.eps_tol {
             out.delta_eta = heading_err;
@@ -148,6 +158,89 @@ pub fn tolerance_phase(
         return true;
     }
     false
+}
+
+/// Counts the laps of a vehicle circling a goal moving by itself without
+/// entering its disk ([`FunnelMemory::laps`]). Three ways round count:
+/// - a full turn of the heading, signed: the vehicle circles the goal or
+///   the point it aims at;
+/// - a *near miss*: the vehicle passes the goal (crosses the line through
+///   its centre across β, going β's way) beside the disk, within a
+///   turning radius at the desired speed: it came in along β but
+///   laterally off, and must come round again;
+/// - a lap's length of travel, `2π` turning radii at the desired speed
+///   plus `D_tol`, without coming closer to the goal than before: the
+///   vehicle hovers near the goal (or near its runway) as fast as it
+///   moves, getting no closer.
+///
+/// Each count starts afresh after a lap, and on entering the disk. The
+/// same state twice (the relaxed controller's fallback plans again)
+/// counts nothing. Constant cost: a few products and one square root.
+#[inline]
+fn count_laps(p: &VehicleParams, s: &VehicleState, g: &Goal, mem: &mut FunnelMemory, d: f32) {
+    if mem.lap_started && s.pos == mem.last_pos {
+        return;
+    }
+    let u = mem.beta_dir.unit(g.beta);
+    let r = s.pos - g.pos;
+    let ahead = r.dot(u) >= 0.0;
+    let radius = p.min_turn_radius(g.speed);
+    if d < g.d_tol || !mem.lap_started || d < mem.best_d {
+        mem.best_d = d;
+        mem.travel = 0.0;
+    } else {
+        mem.travel += (s.pos - mem.last_pos).length();
+    }
+    if d < g.d_tol {
+        mem.turned = 0.0;
+    } else if mem.lap_started {
+        mem.turned += diff(s.theta, mem.last_theta);
+        let missed = ahead && !mem.ahead && r.perp_dot(u).abs() < g.d_tol + radius;
+        let stalled = mem.travel > core::f32::consts::TAU * radius + g.d_tol;
+        if missed || stalled || mem.turned.abs() >= core::f32::consts::TAU {
+            mem.laps = mem.laps.saturating_add(1);
+            mem.turned = 0.0;
+            mem.travel = 0.0;
+            mem.best_d = d;
+        }
+    }
+    mem.ahead = ahead;
+    mem.last_theta = s.theta;
+    mem.last_pos = s.pos;
+    mem.lap_started = true;
+}
+
+/// The desired speed a goal moving by itself is approached with after
+/// `laps` laps around it ([`FunnelMemory::laps`]): `v_d / (1 + laps/2)`,
+/// not below the slower of `v_d` and the larger of 0.5 m/s (scaled with
+/// the vehicle, the envelope's slowest desired speed) and twice the
+/// goal's speed (a goal is never caught below its own speed).
+///
+/// Why (issue 13): the orbits were near misses at speed. A 0.1 m disk at
+/// 1.8–2 m/s is six steps wide and the vehicle turns on a 2.2–2.7 m
+/// radius; the terminal pursuit brought it in along β but it passed
+/// 1–3 cm outside the disk, came round on the same
+/// wide loop and missed again, lap after lap (left and right loops in
+/// turn for some), at full speed: the table's proactive speed `v_dt`
+/// (paper 000 §3–4) judges a *static* point reachable and never slowed
+/// it. Slower, the turning radius and the pursuit's carrot
+/// ([`Terminal::look`], which follows this speed) shrink, the lateral
+/// offset decays over a shorter run-in, and the next approach enters:
+/// the paper's proactive speed adaptation, driven by what the vehicle
+/// did rather than by the table. Only goals moving by themselves and
+/// only after a lap: every other trajectory keeps its bits. Tune seed 1:
+/// moving goals never entered 6 → 0 of 2,000 (standard and relaxed),
+/// oriented on entry 84.6 → 85.5 %, length/Dubins p90 2.47 → 2.29;
+/// `examples/orbits.rs -- 1 10000`: 27 → 0.
+#[inline]
+#[must_use]
+pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
+    if laps == 0 {
+        return v_d;
+    }
+    let sc = crate::table::generate::VehicleScale::of(p);
+    let floor = v_d.min((0.5 * sc.speed).max(2.0 * g.vel.length()));
+    (v_d / (1.0 + 0.5 * f32::from(laps))).max(floor)
 }
 
 /// The terminal line pursuit: the last stretch before the tolerance disk,
@@ -324,6 +417,8 @@ pub struct Approach<'a> {
     pub follows_agent: bool,
     /// Passes through a moving goal's disk so far ([`FunnelMemory::passes`]).
     pub passes: u8,
+    /// Laps around a moving goal so far ([`FunnelMemory::laps`]).
+    pub laps: u8,
     /// The goal to aim at: the goal itself, or for a goal in motion where
     /// the vehicle will meet it ([`lead`]). `d`, `bearing` and `alpha`
     /// are measured to it; the tolerance phase judged the goal itself.
@@ -361,7 +456,22 @@ impl<'a> Approach<'a> {
         if tolerance_phase(p, s, g, mem, d, &mut out) {
             return ControlFlow::Break(out);
         }
-        let goal = lead(g, s, v_d);
+        // After laps around a goal moving by itself, it is approached
+        // slower (lap_speed): the speed asked of the table, the lead, the
+        // runway and the terminal pursuit's carrot all follow.
+        let (v_d, goal) = if mem.laps > 0 {
+            let v = lap_speed(p, g, v_d, mem.laps);
+            out.v_dt = v;
+            (
+                v,
+                Goal {
+                    speed: v,
+                    ..lead(g, s, v)
+                },
+            )
+        } else {
+            (v_d, lead(g, s, v_d))
+        };
         let (d, bearing, alpha) = if goal.pos == g.pos {
             (d, bearing, alpha)
         } else {
@@ -378,6 +488,7 @@ impl<'a> Approach<'a> {
                 v_d,
                 follows_agent: mem.goal_follows_agent,
                 passes: mem.passes,
+                laps: mem.laps,
                 goal,
                 beta_dir: Cell::from_mut(&mut mem.beta_dir),
             },
@@ -456,6 +567,45 @@ impl<'a> Approach<'a> {
                 entry.max(g.d_tol + 0.75 * self.terminal_range(t) * t.look(self.p, self.s, g))
             }
             _ => entry,
+        }
+    }
+
+    /// Distance, bearing and α of the entry aim's point ([`Approach::aim_depth`]
+    /// before the centre along β), except at the start of the runway of a
+    /// goal coming against β faster than half the approach speed, once
+    /// the vehicle has gone a lap ([`FunnelMemory::laps`]): when that
+    /// point is closer than the table's first ring `D_η`, the carrot on
+    /// β's line one carrot distance ([`Terminal::look`]) ahead of the
+    /// vehicle's projection.
+    ///
+    /// Why (issue 13): a vehicle that reached the runway start unaligned
+    /// sought it at close range, and a goal coming against β carried the
+    /// point on nearly as fast as the vehicle could follow: the vehicle
+    /// hovered at it, turning this way and that, never facing β (tune
+    /// seed 1, a goal at 0.37 m/s and a vehicle asked for 0.5 m/s: 150 s;
+    /// slowing down cannot help, the vehicle is at its floor). There the
+    /// runway has done its work: pursuing the line turns the vehicle onto
+    /// it, facing the goal that comes to meet it, and the terminal pursuit
+    /// takes over. Without the two conditions the carrot cost goals that
+    /// the funnel brings round in its own time (two large disks of the
+    /// tune seed were never finished).
+    #[inline]
+    #[must_use]
+    pub fn seen_aim(&self, g: &Goal, t: Option<&Terminal>) -> (f32, f32, f32) {
+        let depth = self.aim_depth(g, t);
+        let seen = self.seen_entry(g, depth);
+        match t {
+            Some(t)
+                if self.laps > 0
+                    && seen.0 < self.table.d_eta()
+                    && depth > self.entry_depth(g)
+                    && g.vel.dot(self.beta_unit(g)) < -0.5 * self.v_d =>
+            {
+                let u = self.beta_unit(g);
+                let along = (self.s.pos - g.pos).dot(u);
+                self.seen(g.pos + u * (along + t.look(self.p, self.s, g)))
+            }
+            _ => seen,
         }
     }
 
