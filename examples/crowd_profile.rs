@@ -2,7 +2,7 @@
 //! (its density), Parker 10 %, metrics off (the workers' mode), STEPS steps
 //! after 100 settling ones; then separation alone and its grid rebuild
 //! alone on the last positions (`ONLY_REBUILD=1`: 500 rebuilds, for
-//! `perf record`). `cargo run --release --example crowd_profile -- N STEPS`.
+//! `perf record`; `ONLY_STEP=1`: the steps alone). `cargo run --release --example crowd_profile -- N STEPS`.
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{CrowdConfig, PaperTest};
 use steering::crowd::Crowd;
@@ -26,6 +26,10 @@ fn main() {
     let h = c.positions().iter().fold(0u64, |h, v| {
         h.wrapping_mul(31).wrapping_add(u64::from(v.to_bits()))
     });
+    if std::env::var("ONLY_STEP").is_ok() {
+        println!("{n} boids: {:.2} ms per step", dt * 1e3);
+        return;
+    }
     let mut grid = steering::crowd::separation::NeighbourGrid::new();
     let mut out = vec![0.0f32; 2 * n];
     let pos = c.positions().to_vec();

@@ -243,30 +243,48 @@ impl Path {
     /// to the lowest segment index). O(segments).
     #[must_use]
     pub fn normal_point(&self, p: Vec2) -> NormalPoint {
-        let mut best = NormalPoint {
-            point: self.points[0],
-            segment: 0,
-            s: 0.0,
-            distance: f32::INFINITY,
-        };
+        // Issue 17 (every boid, every step): zipped slices instead of
+        // indexing (no bounds checks) and `f32::clamp`'s comparisons
+        // written out (the same result, NaN kept, without its `min ≤ max`
+        // assertion: `len` > 0 by construction); the arc length is formed
+        // once, for the winner. Same bits.
+        let (mut best_q, mut best_i, mut best_t) = (self.points[0], 0, 0.0);
         let mut best_d2 = f32::INFINITY;
-        for (i, (&dir, &len)) in self.dirs.iter().zip(&self.lens).enumerate() {
-            let a = self.points[i];
-            let t = (p - a).dot(dir).clamp(0.0, len);
+        for (i, ((&a, &dir), &len)) in self
+            .points
+            .iter()
+            .zip(&self.dirs)
+            .zip(&self.lens)
+            .enumerate()
+        {
+            let mut t = (p - a).dot(dir);
+            if t < 0.0 {
+                t = 0.0;
+            }
+            if t > len {
+                t = len;
+            }
             let q = a + dir * t;
             let d2 = p.distance_squared(q);
             if d2 < best_d2 {
                 best_d2 = d2;
-                best = NormalPoint {
-                    point: q,
-                    segment: i,
-                    s: self.starts[i] + t,
-                    distance: 0.0,
-                };
+                (best_q, best_i, best_t) = (q, i, t);
             }
         }
-        best.distance = best_d2.sqrt();
-        best
+        if best_d2 == f32::INFINITY {
+            return NormalPoint {
+                point: self.points[0],
+                segment: 0,
+                s: 0.0,
+                distance: f32::INFINITY,
+            };
+        }
+        NormalPoint {
+            point: best_q,
+            segment: best_i,
+            s: self.starts[best_i] + best_t,
+            distance: best_d2.sqrt(),
+        }
     }
 
     /// Signed lateral offset of `p` from the centre line at its normal
