@@ -167,7 +167,7 @@ impl NeighbourGrid {
     /// a bucket; the buckets of cells one or two rows apart differ by
     /// `ROW_PITCH` or `2·ROW_PITCH` (mod the size) plus at most 2, which is
     /// never 0 mod a power of two ≥ 64 (`ROW_PITCH` ≡ 49 mod 64): the
-    /// fallback of `candidate_runs` never runs, and a colliding far cell's
+    /// rows of a query never share a bucket (`candidate_runs`), and a colliding far cell's
     /// boids only add rejected candidates.
     pub fn rebuild_members(&mut self, pos: &[f32], cell: f32, members: &[u32]) {
         debug_assert!(members.windows(2).all(|w| w[0] < w[1]));
@@ -348,26 +348,16 @@ impl NeighbourGrid {
                 n_ranges += 2;
             }
         }
-        // Rows landing on overlapping buckets (possible only when P·Δrow is
-        // within 2 of a multiple of the table size) would visit boids twice:
-        // then fall back to the nine buckets one by one, deduplicated.
-        let overlap = (1..n_ranges)
-            .any(|a| (0..a).any(|b| ranges[a].0 < ranges[b].1 && ranges[b].0 < ranges[a].1));
-        if overlap {
-            let mut seen = [u32::MAX; 9];
-            let mut n_seen = 0;
-            for dy in -1i32..=1 {
-                for dx in -1i32..=1 {
-                    let b = bucket_of_cell(ix.wrapping_add(dx), iy.wrapping_add(dy), self.mask);
-                    if !seen[..n_seen].contains(&b) {
-                        seen[n_seen] = b;
-                        ranges[n_seen] = (b, b + 1);
-                        n_seen += 1;
-                    }
-                }
-            }
-            n_ranges = n_seen;
-        }
+        // Rows never land on overlapping buckets: the buckets of rows one
+        // or two apart differ by `ROW_PITCH` or `2·ROW_PITCH` mod the table
+        // size, ≡ 49 or 34 mod 64, so at least 15 apart round the table of
+        // ≥ 64 buckets (`rebuild_from`), and a row spans 3 (see
+        // `rebuild_members`). Issue 17: the pairwise overlap test that
+        // guarded a fallback here took a fifth of the crowd's step in wasm
+        // (where this function is not inlined), for a fallback that never
+        // ran.
+        debug_assert!((1..n_ranges)
+            .all(|a| (0..a).all(|b| ranges[a].0 >= ranges[b].1 || ranges[b].0 >= ranges[a].1)));
         for r in &mut ranges[..n_ranges] {
             *r = (self.starts[r.0 as usize], self.starts[r.1 as usize]);
         }
