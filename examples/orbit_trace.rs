@@ -4,36 +4,19 @@
 //! (distance, α), v_dt, passes; `VEHICLE` and `TABLE` as in
 //! `examples/orbits.rs`. Runs 150 s.
 use steering::funnel::FunnelConfig;
-use steering::funnelling::envelope::{EnvelopeStudy, GoalKind};
+use steering::funnelling::envelope::GoalKind;
 use steering::relaxed::{ControllerKind, RelaxedConfig};
-use steering::table::EtaTable;
-use steering::vehicle::VehicleParams;
 use steering::world::World;
+#[path = "common/moving.rs"]
+mod moving;
+
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     let seed: u64 = a.get(1).map_or(1, |s| s.parse().unwrap());
     let i: usize = a.get(2).map_or(0, |s| s.parse().unwrap());
     let every: u32 = a.get(3).map_or(30, |s| s.parse().unwrap());
     let relaxed = a.get(4).is_some_and(|s| s == "relaxed");
-    let table = EtaTable::from_bytes(
-        &std::fs::read(std::env::var("TABLE").unwrap_or_else(|_| "tables/eta.bin".into())).unwrap(),
-    )
-    .unwrap();
-    let p = std::env::var("VEHICLE").map_or_else(
-        |_| VehicleParams::default(),
-        |n| {
-            steering::funnelling::vehicle_file::reference(&n)
-                .unwrap()
-                .vehicle
-        },
-    );
-    let st = EnvelopeStudy {
-        seed,
-        n_static: 0,
-        n_moving: i + 1,
-        n_chain: 0,
-        ..EnvelopeStudy::for_vehicle(&p)
-    };
+    let (table, p, st) = moving::setup(seed, i + 1);
     let sc = st.scenario(&p, GoalKind::Moving, i);
     let mut w = World::new(p, FunnelConfig::default()).unwrap();
     if relaxed {

@@ -4,32 +4,16 @@
 //! of `scenarios/vehicles/` and its table, e.g. from `steer run`'s cache);
 //! runs get the study's time limit scaled to the vehicle.
 use steering::funnel::FunnelConfig;
-use steering::funnelling::envelope::{run, EnvelopeStudy, GoalKind};
+use steering::funnelling::envelope::{run, GoalKind};
 use steering::relaxed::{Controller, RelaxedConfig};
-use steering::table::EtaTable;
-use steering::vehicle::VehicleParams;
+#[path = "common/moving.rs"]
+mod moving;
+
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     let seed: u64 = a.get(1).map_or(1, |s| s.parse().unwrap());
     let n: usize = a.get(2).map_or(2000, |s| s.parse().unwrap());
-    let bytes =
-        std::fs::read(std::env::var("TABLE").unwrap_or_else(|_| "tables/eta.bin".into())).unwrap();
-    let table = EtaTable::from_bytes(&bytes).unwrap();
-    let p = std::env::var("VEHICLE").map_or_else(
-        |_| VehicleParams::default(),
-        |n| {
-            steering::funnelling::vehicle_file::reference(&n)
-                .unwrap()
-                .vehicle
-        },
-    );
-    let st = EnvelopeStudy {
-        seed,
-        n_static: 0,
-        n_moving: n,
-        n_chain: 0,
-        ..EnvelopeStudy::for_vehicle(&p)
-    };
+    let (table, p, st) = moving::setup(seed, n);
     let ctl = if a.get(3).is_some_and(|s| s == "relaxed") {
         Controller::Relaxed(FunnelConfig::default(), RelaxedConfig::default())
     } else {

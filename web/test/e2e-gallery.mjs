@@ -404,35 +404,25 @@ try {
     allProblems.push(...problems);
     await context.close();
 
-    await check("crowd in 1 worker (shared memory, every boid owned: the two bulk copies out of the core's memory): its state equals one core's", async () => {
+    /** 30,000 boids at Test IV density in `workers` workers, shared memory or (`isolated` false) by message: 12 steps equal one core's. */
+    const workersEqualOneCore = async (workers, isolated) => {
       const { page: t, problems: tp, context: c } = await openPage(browser, { width: 900, height: 700 }, 1);
-      await t.goto(new URL("crowd.html?workers=1", url).href);
+      if (!isolated) await unisolated(c);
+      await t.goto(new URL(`crowd.html?workers=${workers}`, url).href);
       assert.equal(await waitCrowd(t), null);
       await pause(t);
       await t.evaluate(() => window.__crowd.loadScaled(30000));
       const snap = await t.evaluate(() => window.__crowd.snapshot());
       const r = await sameAsOneCore(t, snap, {}, 12);
-      assert.equal(r.info.mode, "shared");
-      assert.equal(r.info.workers, 1);
+      assert.equal(r.info.mode, isolated ? "shared" : "messages");
+      assert.equal(r.info.workers, workers);
+      assert.equal(r.info.crossOriginIsolated, isolated);
       assert.equal(r.got, r.ref);
       assert.deepEqual(tp, []);
       await c.close();
-    });
-    await check("crowd in 2 workers without cross-origin isolation (by message): its state equals one core's", async () => {
-      const { page: t, problems: tp, context: c } = await openPage(browser, { width: 900, height: 700 }, 1);
-      await unisolated(c);
-      await t.goto(new URL("crowd.html?workers=2", url).href);
-      assert.equal(await waitCrowd(t), null);
-      await pause(t);
-      await t.evaluate(() => window.__crowd.loadScaled(30000));
-      const snap = await t.evaluate(() => window.__crowd.snapshot());
-      const r = await sameAsOneCore(t, snap, {}, 12);
-      assert.equal(r.info.mode, "messages");
-      assert.equal(r.info.crossOriginIsolated, false);
-      assert.equal(r.got, r.ref);
-      assert.deepEqual(tp, []);
-      await c.close();
-    });
+    };
+    await check("crowd in 1 worker (shared memory, every boid owned: the two bulk copies out of the core's memory): its state equals one core's", () => workersEqualOneCore(1, true));
+    await check("crowd in 2 workers without cross-origin isolation (by message): its state equals one core's", () => workersEqualOneCore(2, false));
     await check("crowd: 100,000 boids at Test IV density in workers by default, at 1280 and 390 px (screenshots)", async () => {
       for (const [name, vp, dpr] of [["1280", { width: 1280, height: 800 }, 1], ["390", { width: 390, height: 844 }, 3]]) {
         const { page: t, problems: tp, context: c } = await openPage(browser, vp, dpr);
