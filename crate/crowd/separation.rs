@@ -327,7 +327,7 @@ impl NeighbourGrid {
     /// round `p`'s, each bucket once. A caller keeping its own per-slot
     /// copy of the boids (issue 18's avoidance) scans the same candidates
     /// in the same order without the callback.
-    #[inline]
+    #[inline(always)]
     #[must_use]
     pub fn candidate_runs(&self, p: Vec2) -> ([(u32, u32); 9], usize) {
         let ix = cell_coord(p.x, self.inv_cell);

@@ -79,7 +79,7 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     }
     if (now - lastMetrics > 250) {
       lastMetrics = now;
-      if (st) s.panel?.metricsOff(`Measured on the page's thread only: off while ${st.workers} workers step the crowd (?workers=0 steps it here).`);
+      if (st) s.panel?.metricsOff(`Measured on the page's thread only: off while ${st.workers === 1 ? "a worker steps" : `${st.workers} workers step`} the crowd (?workers=0 steps it here).`);
       else s.panel?.showMetrics(lab.metrics(), lab.lastOverlaps(), lab.count());
       const c = lab.config();
       const seek = c.seek;
@@ -89,7 +89,7 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
         c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
         `${hook.fps.toFixed(0)} fps`,
-        st ? `step ${hook.stepMs.toFixed(1)} ms in ${st.workers} workers` : `step ${hook.stepMs.toFixed(2)} ms`,
+        st ? `step ${hook.stepMs.toFixed(1)} ms in ${st.workers} worker${st.workers === 1 ? "" : "s"}` : `step ${hook.stepMs.toFixed(2)} ms`,
         `draw ${hook.drawMs.toFixed(2)} ms`,
       ].join("  ·  ");
     }

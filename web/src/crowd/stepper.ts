@@ -63,10 +63,13 @@ export const AUTO_WORKERS_FROM = 20_000;
  *  goes up to 20). */
 const MAX_STEPS_PER_JOB = 20;
 
-/** `?workers=N` (0 = page's thread) or, unset, `navigator.hardwareConcurrency`
- *  workers from AUTO_WORKERS_FROM boids; a bad value is reported. */
+/** `?workers=N` (0 = page's thread) or, unset, from AUTO_WORKERS_FROM boids
+ *  a worker per core but one (at least one): the page's drawing keeps a
+ *  core (measured on 2 cores, 100,000 boids at Test IV density, stepped +
+ *  drawn per frame: 1 worker 85,126, 2 workers 66,608; 200,000: 78,735 and
+ *  79,835; README). A bad value is reported. */
 export function crowdWorkersWanted(count: number, search = location.search): { n: number; problem: string | null } {
-  const auto = count >= AUTO_WORKERS_FROM ? Math.max(1, Math.min(8, navigator.hardwareConcurrency || 2)) : 0;
+  const auto = count >= AUTO_WORKERS_FROM ? Math.max(1, Math.min(8, (navigator.hardwareConcurrency || 2) - 1)) : 0;
   const raw = new URLSearchParams(search).get("workers");
   if (raw === null) return { n: auto, problem: null };
   const n = /^\d{1,2}$/.test(raw) ? Number(raw) : NaN;
