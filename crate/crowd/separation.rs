@@ -121,6 +121,10 @@ impl NeighbourGrid {
             self.visit = prev;
         } else {
             self.rebuild_from(pos, cell, n, 0..n);
+            // The next rebuild's visiting order: grown now, so steps after
+            // the first allocate nothing (`tests/crowd_alloc.rs`).
+            self.visit.clear();
+            self.visit.reserve(n);
         }
         self.order_full = true;
     }
@@ -180,6 +184,9 @@ impl NeighbourGrid {
                 members.len(),
                 members.iter().map(|&i| i as usize),
             );
+            self.visit.clear();
+            self.visit.reserve(n_all);
+            self.mark.resize(n_all, 0);
             return;
         }
         // As `rebuild`: last rebuild's order first (the members still in
