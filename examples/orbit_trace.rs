@@ -36,7 +36,7 @@ fn main() {
             let it = ag.internals;
             println!(
                 "t {:6.2} L{} pos ({:7.3},{:7.3}) th {:6.1} v {:4.2} w {:5.2} | D {:6.3} dmin {:5.3} {:?} aimD {:5.2} aimA {:6.1} vdt {:4.2} ia {} reach {} de {:6.1} mu {:6.1} pass {}",
-                k as f32 * p.dt, ag.memory.laps, ag.state.pos.x, ag.state.pos.y, ag.state.theta.to_degrees(), ag.state.v, ag.state.omega,
+                k as f32 * p.dt, ag.memory.lap.laps, ag.state.pos.x, ag.state.pos.y, ag.state.theta.to_degrees(), ag.state.v, ag.state.omega,
                 d, dmin, it.mode, it.aim_d, it.aim_alpha.to_degrees(), it.v_dt, ag.memory.passes, it.reachable, it.delta_eta.to_degrees(), it.mu.to_degrees(), ag.memory.passes
             );
         }

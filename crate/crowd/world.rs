@@ -161,25 +161,10 @@ impl Crowd {
         } else {
             self.last_overlaps = 0;
         }
-        let follow = PathFollow {
-            predict_distance: cfg.predict_distance,
-            lookahead: cfg.lookahead,
-        };
-        let (seek, max_speed, max_force) = (cfg.seek, cfg.max_speed, cfg.max_force);
         let radius = self.path.radius();
         self.step += 1;
         for i in 0..n {
-            let (p, v) = self.boid(i);
-            let sep = if sep_on {
-                Vec2::new(self.sep[2 * i], self.sep[2 * i + 1])
-            } else {
-                Vec2::ZERO
-            };
-            let (p, v, steer) = advance(&self.path, &follow, seek, max_speed, max_force, p, v, sep);
-            self.pos[2 * i] = p.x;
-            self.pos[2 * i + 1] = p.y;
-            self.vel[2 * i] = v.x;
-            self.vel[2 * i + 1] = v.y;
+            let (p, steer, sep) = self.advance_boid(i, sep_on);
             if self.metrics_on {
                 let np = self.path.normal_point(p);
                 let offset = self.path.lateral_offset(p, &np);
@@ -247,26 +232,44 @@ impl Crowd {
                 &mut self.sep,
             );
         }
+        for &i in owned.iter() {
+            self.advance_boid(i as usize, sep_on);
+        }
+        self.step += 1;
+    }
+
+    /// Boid `i`'s update, shared by [`Crowd::step`] and
+    /// [`Crowd::step_strip`]: path following plus its separation (from
+    /// `self.sep` when `sep_on`), written back; returns its new position,
+    /// steering force and separation (for the measures).
+    #[inline]
+    fn advance_boid(&mut self, i: usize, sep_on: bool) -> (Vec2, Vec2, Vec2) {
+        let cfg = &self.config;
         let follow = PathFollow {
             predict_distance: cfg.predict_distance,
             lookahead: cfg.lookahead,
         };
-        let (seek, max_speed, max_force) = (cfg.seek, cfg.max_speed, cfg.max_force);
-        for &i in owned.iter() {
-            let i = i as usize;
-            let (p, v) = self.boid(i);
-            let sep = if sep_on {
-                Vec2::new(self.sep[2 * i], self.sep[2 * i + 1])
-            } else {
-                Vec2::ZERO
-            };
-            let (p, v, _) = advance(&self.path, &follow, seek, max_speed, max_force, p, v, sep);
-            self.pos[2 * i] = p.x;
-            self.pos[2 * i + 1] = p.y;
-            self.vel[2 * i] = v.x;
-            self.vel[2 * i + 1] = v.y;
-        }
-        self.step += 1;
+        let (p, v) = self.boid(i);
+        let sep = if sep_on {
+            Vec2::new(self.sep[2 * i], self.sep[2 * i + 1])
+        } else {
+            Vec2::ZERO
+        };
+        let (p, v, steer) = advance(
+            &self.path,
+            &follow,
+            cfg.seek,
+            cfg.max_speed,
+            cfg.max_force,
+            p,
+            v,
+            sep,
+        );
+        self.pos[2 * i] = p.x;
+        self.pos[2 * i + 1] = p.y;
+        self.vel[2 * i] = v.x;
+        self.vel[2 * i + 1] = v.y;
+        (p, steer, sep)
     }
 
     /// Issue 17: loads a complete state (positions and velocities, flat,

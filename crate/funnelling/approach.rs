@@ -95,7 +95,7 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 /// (99.5 % latched), 84.6 % entered oriented (54.0 %).
 ///
 /// A vehicle that goes round a moving goal without entering its disk
-/// counts laps (`count_laps`, [`FunnelMemory::laps`]), and each lap
+/// counts laps ([`LapCount`], [`FunnelMemory::lap`]), and each lap
 /// lowers the speed the goal is approached with ([`lap_speed`]; issue 13:
 /// 6 of 2,000 moving goals, 27 of 10,000 in `examples/orbits.rs`, tune
 /// seed 1, were orbited for the whole time limit and never entered).
@@ -114,7 +114,8 @@ pub fn tolerance_phase(
         if mem.position_met && !inside {
             mem.passes = mem.passes.saturating_add(1);
         }
-        count_laps(p, s, g, mem, d);
+        let u = mem.beta_dir.unit(g.beta);
+        mem.lap.observe(s, g, u, p.min_turn_radius(g.speed), d);
         mem.position_met = inside;
         if inside && heading_err.abs() < g.eps_tol {
             out.delta_eta = heading_err;
@@ -160,8 +161,8 @@ pub fn tolerance_phase(
     false
 }
 
-/// Counts the laps of a vehicle circling a goal moving by itself without
-/// entering its disk ([`FunnelMemory::laps`]). Three ways round count:
+/// The laps of a vehicle circling a goal moving by itself without entering
+/// its disk ([`FunnelMemory::lap`]), and what counts them. Three ways round count:
 /// - a full turn of the heading, signed: the vehicle circles the goal or
 ///   the point it aims at;
 /// - a *near miss*: the vehicle passes the goal (crosses the line through
@@ -176,42 +177,67 @@ pub fn tolerance_phase(
 /// Each count starts afresh after a lap, and on entering the disk. The
 /// same state twice (the relaxed controller's fallback plans again)
 /// counts nothing. Constant cost: a few products and one square root.
-#[inline]
-fn count_laps(p: &VehicleParams, s: &VehicleState, g: &Goal, mem: &mut FunnelMemory, d: f32) {
-    if mem.lap_started && s.pos == mem.last_pos {
-        return;
-    }
-    let u = mem.beta_dir.unit(g.beta);
-    let r = s.pos - g.pos;
-    let ahead = r.dot(u) >= 0.0;
-    let radius = p.min_turn_radius(g.speed);
-    if d < g.d_tol || !mem.lap_started || d < mem.best_d {
-        mem.best_d = d;
-        mem.travel = 0.0;
-    } else {
-        mem.travel += (s.pos - mem.last_pos).length();
-    }
-    if d < g.d_tol {
-        mem.turned = 0.0;
-    } else if mem.lap_started {
-        mem.turned += diff(s.theta, mem.last_theta);
-        let missed = ahead && !mem.ahead && r.perp_dot(u).abs() < g.d_tol + radius;
-        let stalled = mem.travel > core::f32::consts::TAU * radius + g.d_tol;
-        if missed || stalled || mem.turned.abs() >= core::f32::consts::TAU {
-            mem.laps = mem.laps.saturating_add(1);
-            mem.turned = 0.0;
-            mem.travel = 0.0;
-            mem.best_d = d;
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+pub struct LapCount {
+    /// Laps so far.
+    pub laps: u8,
+    /// The heading turned (signed, rad) since the last lap was counted
+    /// or the disk was last entered.
+    turned: f32,
+    /// The heading at the previous update, rad (`turned` adds the change).
+    last_theta: f32,
+    /// `last_theta` and `last_pos` hold the previous update's (false until
+    /// the first update).
+    started: bool,
+    /// The position at the previous update, m.
+    last_pos: Vec2,
+    /// The least distance to the goal since the last lap, m.
+    best_d: f32,
+    /// The distance travelled since `best_d` last fell, m.
+    travel: f32,
+    /// The vehicle was ahead of the goal along β at the previous update
+    /// (a near miss crosses from behind to ahead beside the disk).
+    ahead: bool,
+}
+
+impl LapCount {
+    /// Counts this update (vehicle `s`, goal `g` at distance `d`, β's
+    /// direction `u`, turning radius at the desired speed `radius`).
+    #[inline]
+    fn observe(&mut self, s: &VehicleState, g: &Goal, u: Vec2, radius: f32, d: f32) {
+        if self.started && s.pos == self.last_pos {
+            return;
         }
+        let r = s.pos - g.pos;
+        let ahead = r.dot(u) >= 0.0;
+        if d < g.d_tol || !self.started || d < self.best_d {
+            self.best_d = d;
+            self.travel = 0.0;
+        } else {
+            self.travel += (s.pos - self.last_pos).length();
+        }
+        if d < g.d_tol {
+            self.turned = 0.0;
+        } else if self.started {
+            self.turned += diff(s.theta, self.last_theta);
+            let missed = ahead && !self.ahead && r.perp_dot(u).abs() < g.d_tol + radius;
+            let stalled = self.travel > core::f32::consts::TAU * radius + g.d_tol;
+            if missed || stalled || self.turned.abs() >= core::f32::consts::TAU {
+                self.laps = self.laps.saturating_add(1);
+                self.turned = 0.0;
+                self.travel = 0.0;
+                self.best_d = d;
+            }
+        }
+        self.ahead = ahead;
+        self.last_theta = s.theta;
+        self.last_pos = s.pos;
+        self.started = true;
     }
-    mem.ahead = ahead;
-    mem.last_theta = s.theta;
-    mem.last_pos = s.pos;
-    mem.lap_started = true;
 }
 
 /// The desired speed a goal moving by itself is approached with after
-/// `laps` laps around it ([`FunnelMemory::laps`]): `v_d / (1 + laps/2)`,
+/// `laps` laps around it ([`FunnelMemory::lap`]): `v_d / (1 + laps/2)`,
 /// not below the slower of `v_d` and the larger of 0.5 m/s (scaled with
 /// the vehicle, the envelope's slowest desired speed) and twice the
 /// goal's speed (a goal is never caught below its own speed).
@@ -417,7 +443,7 @@ pub struct Approach<'a> {
     pub follows_agent: bool,
     /// Passes through a moving goal's disk so far ([`FunnelMemory::passes`]).
     pub passes: u8,
-    /// Laps around a moving goal so far ([`FunnelMemory::laps`]).
+    /// Laps around a moving goal so far ([`FunnelMemory::lap`]).
     pub laps: u8,
     /// The goal to aim at: the goal itself, or for a goal in motion where
     /// the vehicle will meet it ([`lead`]). `d`, `bearing` and `alpha`
@@ -459,8 +485,8 @@ impl<'a> Approach<'a> {
         // After laps around a goal moving by itself, it is approached
         // slower (lap_speed): the speed asked of the table, the lead, the
         // runway and the terminal pursuit's carrot all follow.
-        let (v_d, goal) = if mem.laps > 0 {
-            let v = lap_speed(p, g, v_d, mem.laps);
+        let (v_d, goal) = if mem.lap.laps > 0 {
+            let v = lap_speed(p, g, v_d, mem.lap.laps);
             out.v_dt = v;
             (
                 v,
@@ -488,7 +514,7 @@ impl<'a> Approach<'a> {
                 v_d,
                 follows_agent: mem.goal_follows_agent,
                 passes: mem.passes,
-                laps: mem.laps,
+                laps: mem.lap.laps,
                 goal,
                 beta_dir: Cell::from_mut(&mut mem.beta_dir),
             },
@@ -573,7 +599,7 @@ impl<'a> Approach<'a> {
     /// Distance, bearing and α of the entry aim's point ([`Approach::aim_depth`]
     /// before the centre along β), except at the start of the runway of a
     /// goal coming against β faster than half the approach speed, once
-    /// the vehicle has gone a lap ([`FunnelMemory::laps`]): when that
+    /// the vehicle has gone a lap ([`FunnelMemory::lap`]): when that
     /// point is closer than the table's first ring `D_η`, the carrot on
     /// β's line one carrot distance ([`Terminal::look`]) ahead of the
     /// vehicle's projection.

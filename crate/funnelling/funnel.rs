@@ -278,8 +278,7 @@ impl Default for FunnelConfig {
 /// an agent keeps the latch; a goal moving by itself is never latched
 /// ([`crate::approach::tolerance_phase`]): `position_met` then says
 /// whether the vehicle is inside its disk now, and the laps the vehicle
-/// goes round it without entering are counted (`laps` and the fields
-/// after it, issue 13), each lowering the approach speed
+/// goes round it without entering are counted (`lap`, issue 13), each lowering the approach speed
 /// ([`crate::approach::lap_speed`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct FunnelMemory {
@@ -301,35 +300,13 @@ pub struct FunnelMemory {
     /// ([`crate::approach::Approach::aim_depth`]).
     #[serde(default)]
     pub passes: u8,
-    /// A goal moving by itself: full turns of the heading so far without
-    /// entering its disk ([`crate::approach::tolerance_phase`]). Each lap
-    /// lowers the desired speed the goal is approached with
+    /// A goal moving by itself: the laps the vehicle has gone round it
+    /// without entering its disk, and what counts them
+    /// ([`crate::funnelling::approach::LapCount`]). Each lap lowers the
+    /// desired speed the goal is approached with
     /// ([`crate::approach::lap_speed`]).
     #[serde(default)]
-    pub laps: u8,
-    /// The heading turned (signed, rad) since the last lap was counted
-    /// or the disk was last entered.
-    #[serde(default)]
-    pub turned: f32,
-    /// The heading at the previous update, rad (`turned` adds the change).
-    #[serde(default)]
-    pub last_theta: f32,
-    /// `last_theta` holds a heading (false until the first update).
-    #[serde(default)]
-    pub lap_started: bool,
-    /// The position at the previous update, m.
-    #[serde(default)]
-    pub last_pos: Vec2,
-    /// The least distance to the goal since the last lap, m.
-    #[serde(default)]
-    pub best_d: f32,
-    /// The distance travelled since `best_d` last fell, m.
-    #[serde(default)]
-    pub travel: f32,
-    /// The vehicle was ahead of the goal along β at the previous update
-    /// (a near miss crosses from behind to ahead beside the disk).
-    #[serde(default)]
-    pub ahead: bool,
+    pub lap: crate::funnelling::approach::LapCount,
     /// β's unit vector, kept from one update to the next
     /// ([`crate::funnelling::approach::BetaDir`]): a cache, not part of the mode logic.
     #[serde(skip)]

@@ -8,7 +8,7 @@
 // (non-blank canvases), a knob rebuilds, a bad JSON edit shows the core's
 // message. Screenshots go to artifacts/ (gitignored).
 // Prints "e2e-gallery: N passed, M failed".
-import { serve, launch, openPage, checks, shot, settle, artifacts } from "./harness.mjs";
+import { serve, launch, openPage, checks, shot, settle, artifacts, unisolated } from "./harness.mjs";
 import { resolve } from "node:path";
 import { writeFileSync } from "node:fs";
 import assert from "node:assert/strict";
@@ -309,15 +309,6 @@ try {
 
   // ------------------------------------------------- crowd in workers (issue 17)
   {
-    /** Strips COOP/COEP from every response: no cross-origin isolation, no SharedArrayBuffer. */
-    const unisolated = (context) =>
-      context.route("**/*", async (route) => {
-        const res = await route.fetch();
-        const headers = { ...res.headers() };
-        delete headers["cross-origin-opener-policy"];
-        delete headers["cross-origin-embedder-policy"];
-        await route.fulfill({ response: res, headers });
-      });
     const owned = (page) => page.waitForFunction(() => { const w = window.__crowd.workers(); return !w.starting && window.__crowd.idle(); }, null, { timeout: 60000 });
     const pause = async (page) => {
       if (await page.evaluate(() => window.__crowd.playing)) await page.click("#play");

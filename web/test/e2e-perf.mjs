@@ -10,7 +10,7 @@
 // with `?draw=gl` and allow the one "GPU stall due to ReadPixels" warning
 // that software compositing then prints; `?draw=2d` forces the sprites. Screenshots at 1280 and 390 px in artifacts/perf-gl-*.
 // Prints "e2e-perf: N passed, M failed".
-import { serve, launch, openPage, checks, waitReady, shot, settle } from "./harness.mjs";
+import { serve, launch, openPage, checks, waitReady, shot, settle, unisolated } from "./harness.mjs";
 import assert from "node:assert/strict";
 
 const { check, finish } = checks("e2e-perf");
@@ -122,15 +122,6 @@ try {
   });
   // Issue 17, point 2: the world stepped in Web Workers (?workers=N).
   const base = url.replace(/\/?$/, "/");
-  /** Strips COOP/COEP from every response: the page is not cross-origin isolated (no SharedArrayBuffer). */
-  const unisolated = (context) =>
-    context.route("**/*", async (route) => {
-      const res = await route.fetch();
-      const headers = { ...res.headers() };
-      delete headers["cross-origin-opener-policy"];
-      delete headers["cross-origin-embedder-policy"];
-      await route.fulfill({ response: res, headers });
-    });
   /** Opens the lab at `query` + `hash`; waits for the workers (if any) to own the world. */
   const openLab = async (query, hash, isolated = true) => {
     const o = await openPage(browser);

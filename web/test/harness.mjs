@@ -114,6 +114,17 @@ export function checks(suite) {
 }
 
 /** A screenshot of `page` as artifacts/`name`.png. */
+/** Strips COOP/COEP from every response of `context`: its pages are not
+ *  cross-origin isolated (no SharedArrayBuffer; workers fall back to messages). */
+export const unisolated = (context) =>
+  context.route("**/*", async (route) => {
+    const res = await route.fetch();
+    const headers = { ...res.headers() };
+    delete headers["cross-origin-opener-policy"];
+    delete headers["cross-origin-embedder-policy"];
+    await route.fulfill({ response: res, headers });
+  });
+
 export const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
 
 /** A mouse drag on the lab's canvas from `from` to `to` (CSS pixels in the

@@ -27,6 +27,7 @@
 
 import type { CrowdConfig } from "../wasm";
 import { stateBuffers } from "../workers/buffers";
+import { SteppingJobs } from "../workers/jobs";
 import { WorkerPool } from "../workers/pool";
 
 export interface CrowdTask {
@@ -97,61 +98,42 @@ export function stripCuts(state: Float32Array, n: number, k: number): number[] {
   return cuts;
 }
 
-export class CrowdStepper {
-  private readonly pool: WorkerPool<CrowdTask, CrowdReply>;
-  readonly shared: boolean;
+export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   /** The last complete state, `[positions | velocities]` (what the page draws). */
   state: Float32Array = new Float32Array(0);
   /** Its step count. */
   time = 0;
   count = 0;
-  ready = false;
-  active = false;
-  error: string | null = null;
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
   private frontIndex = 0;
-  private queue: Promise<void> = Promise.resolve();
-  private pending = 0;
-  private owed = 0;
-  private gen = 0;
   /** Called when a job's last step is the front state (the traced boid:
    *  read it there); before that `onTraced` with its position after each
    *  earlier step of the job. */
   onStep: (state: Float32Array) => void = () => {};
   onTraced: (x: number, y: number) => void = () => {};
-  /** Steps completed, wall ms of their jobs, the slowest worker's ms. */
-  private done = { steps: 0, ms: 0, workerMs: 0 };
-  startMs = 0;
   /** Boids per worker in the last step. */
   owned: number[] = [];
 
   constructor(readonly workers: number) {
-    this.pool = new WorkerPool<CrowdTask, CrowdReply>(() => new Worker(new URL("./crowd.worker.ts", import.meta.url), { type: "module" }), workers);
-    this.shared = typeof SharedArrayBuffer === "function" && globalThis.crossOriginIsolated === true;
+    super(new WorkerPool<CrowdTask, CrowdReply>(() => new Worker(new URL("./crowd.worker.ts", import.meta.url), { type: "module" }), workers));
   }
 
   /** (Re)starts the workers on `config` from `state` (`CrowdLab.state()`) at step `time`. */
   start(config: CrowdConfig, state: Float32Array, time: number): Promise<void> {
-    const gen = ++this.gen;
-    this.ready = false;
-    this.active = true;
-    this.error = null;
-    this.owed = 0;
-    this.count = state.length >> 2;
-    // Three states (front, back, spare), the barrier's counter, the step slots.
-    ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4, 4 * 2 * MAX_STEPS_PER_JOB]));
-    this.frontIndex = 0;
-    this.time = time;
-    const sab = this.sab;
-    const t0 = performance.now();
-    const init = { config, shared: sab };
-    const w = this.workers;
-    return this.job(gen, () => Array.from({ length: w }, (_, k) => ({ init, steps: 0, front: 0, state: null, time, lo: 0, hi: 0, worker: k, workers: w, traced: 0 })), 0).then(() => {
-      if (gen === this.gen && this.error === null) {
-        this.ready = true;
-        this.startMs = performance.now() - t0;
-      }
+    return this.restart((gen) => {
+      this.count = state.length >> 2;
+      // Three states (front, back, spare), the barrier's counter, the step slots.
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4, 4 * 2 * MAX_STEPS_PER_JOB]));
+      this.frontIndex = 0;
+      this.time = time;
+      const init = { config, shared: this.sab };
+      const w = this.workers;
+      return this.job(
+        gen,
+        () => Array.from({ length: w }, (_, k) => ({ init, steps: 0, front: 0, state: null, time, lo: 0, hi: 0, worker: k, workers: w, traced: 0 })),
+        () => {},
+      );
     });
   }
 
@@ -163,14 +145,9 @@ export class CrowdStepper {
     this.owed = Math.min(Math.min(MAX_STEPS_PER_JOB, steps), this.owed + steps);
   }
 
-  /** No job queued or in flight. */
-  get idle(): boolean {
-    return this.pending === 0;
-  }
-
   /** Starts a step if none is in flight and one is owed; never waits. */
   pump(): void {
-    if (!this.ready || this.pending > 0 || this.owed === 0) return;
+    if (!this.ready || !this.idle || this.owed === 0) return;
     const k = this.sab ? this.owed : 1;
     this.owed -= k;
     void this.step(k);
@@ -178,98 +155,64 @@ export class CrowdStepper {
 
   /** Runs `k` steps (shared memory; else one) as one job; resolves when its state is the front one. */
   step(k = 1): Promise<void> {
-    const gen = this.gen;
     const steps = this.sab ? Math.max(1, Math.min(MAX_STEPS_PER_JOB, k)) : 1;
-    return this.job(gen, () => {
-      const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
-      if (this.sab) Atomics.store(new Int32Array(this.sab[3] as SharedArrayBuffer), 0, 0);
-      const traced = this.traced();
-      return Array.from({ length: this.workers }, (_, w) => ({
-        init: null, steps, front: this.frontIndex, state: this.sab ? null : this.state, time: this.time,
-        lo: cuts[w] ?? 0, hi: cuts[w + 1] ?? Infinity, worker: w, workers: this.workers, traced,
-      }));
-    }, steps);
+    return this.job(
+      this.gen,
+      () => {
+        const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
+        if (this.sab) Atomics.store(new Int32Array(this.sab[3] as SharedArrayBuffer), 0, 0);
+        const traced = this.traced();
+        return Array.from({ length: this.workers }, (_, w) => ({
+          init: null, steps, front: this.frontIndex, state: this.sab ? null : this.state, time: this.time,
+          lo: cuts[w] ?? 0, hi: cuts[w + 1] ?? Infinity, worker: w, workers: this.workers, traced,
+        }));
+      },
+      (replies, t0) => this.land(replies, steps, t0),
+    );
   }
 
   /** The boid whose lap the page records (set by the page). */
   traced: () => number = () => 0;
 
-  /** Steps completed since the last call, wall ms of their jobs, the slowest worker's stepping ms. */
-  takeCompleted(): { steps: number; ms: number; workerMs: number } {
-    const d = this.done;
-    this.done = { steps: 0, ms: 0, workerMs: 0 };
-    return d;
-  }
-
-  private job(gen: number, tasks: () => CrowdTask[], steps: number): Promise<void> {
-    const next = this.queue.then(async () => {
-      if (gen !== this.gen) return;
-      const t0 = performance.now();
-      let replies: CrowdReply[];
-      try {
-        replies = await this.pool.each(tasks());
-      } catch (e) {
-        if (gen === this.gen) {
-          this.error = e instanceof Error ? e.message : String(e);
-          this.ready = false;
-          this.active = false;
+  /** A step job's replies: its last state becomes the front one. */
+  private land(replies: CrowdReply[], steps: number, t0: number): void {
+    if (this.sab) {
+      const sab = this.sab;
+      const others = [0, 1, 2].filter((b) => b !== this.frontIndex);
+      const last = others[(steps - 1) % 2] ?? 0;
+      const slots = new Float32Array(sab[4] as SharedArrayBuffer);
+      for (let s = 0; s + 1 < steps; s++) this.onTraced(slots[2 * s] ?? 0, slots[2 * s + 1] ?? 0);
+      this.frontIndex = last;
+      this.state = new Float32Array(sab[last] as SharedArrayBuffer);
+    } else {
+      const back = this.back;
+      const half = back.length >> 1;
+      back.set(this.state);
+      for (const r of replies) {
+        const idx = r.indices;
+        const st = r.states;
+        if (!idx || !st) continue;
+        for (let k = 0; k < idx.length; k++) {
+          const i = 2 * (idx[k] ?? 0);
+          back[i] = st[4 * k] ?? 0;
+          back[i + 1] = st[4 * k + 1] ?? 0;
+          back[half + i] = st[4 * k + 2] ?? 0;
+          back[half + i + 1] = st[4 * k + 3] ?? 0;
         }
-        return;
       }
-      if (gen !== this.gen || steps === 0) return;
-      if (this.sab) {
-        const sab = this.sab;
-        const others = [0, 1, 2].filter((b) => b !== this.frontIndex);
-        const last = others[(steps - 1) % 2] ?? 0;
-        const slots = new Float32Array(sab[4] as SharedArrayBuffer);
-        for (let s = 0; s + 1 < steps; s++) this.onTraced(slots[2 * s] ?? 0, slots[2 * s + 1] ?? 0);
-        this.frontIndex = last;
-        this.state = new Float32Array(sab[last] as SharedArrayBuffer);
-      } else {
-        const back = this.back;
-        const half = back.length >> 1;
-        back.set(this.state);
-        for (const r of replies) {
-          const idx = r.indices;
-          const st = r.states;
-          if (!idx || !st) continue;
-          for (let k = 0; k < idx.length; k++) {
-            const i = 2 * (idx[k] ?? 0);
-            back[i] = st[4 * k] ?? 0;
-            back[i + 1] = st[4 * k + 1] ?? 0;
-            back[half + i] = st[4 * k + 2] ?? 0;
-            back[half + i + 1] = st[4 * k + 3] ?? 0;
-          }
-        }
-        this.back = this.state;
-        this.state = back;
-      }
-      this.time += steps;
-      this.owned = replies.map((r) => r.owned);
-      this.done.steps += steps;
-      this.done.workerMs += Math.max(...replies.map((r) => r.stepMs));
-      this.done.ms += performance.now() - t0;
-      this.onStep(this.state);
-    });
-    this.pending++;
-    this.queue = next.finally(() => {
-      this.pending--;
-      // The next step starts at once if one is owed (not at the next frame).
-      this.pump();
-    });
-    return next;
+      this.back = this.state;
+      this.state = back;
+    }
+    this.time += steps;
+    this.owned = replies.map((r) => r.owned);
+    this.done.steps += steps;
+    this.done.workerMs += Math.max(...replies.map((r) => r.stepMs));
+    this.done.ms += performance.now() - t0;
+    this.onStep(this.state);
   }
 
-  /** Stops stepping (the page's thread takes over); workers are kept. */
-  stop(): void {
-    this.gen++;
-    this.ready = false;
-    this.active = false;
-    this.owed = 0;
-  }
-
-  terminate(): void {
-    this.stop();
-    this.pool.terminate();
+  protected afterJob(): void {
+    // The next step starts at once if one is owed (not at the next frame).
+    this.pump();
   }
 }

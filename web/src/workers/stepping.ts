@@ -24,6 +24,7 @@
 
 import type { AgentConfig, FunnelConfig, GoalConfig, Internals, Lab, RelaxedConfig, VehicleParams } from "../wasm";
 import { stateBuffers } from "./buffers";
+import { SteppingJobs } from "./jobs";
 import { WorkerPool } from "./pool";
 
 /** Where a worker finds the η table in force: its bytes (a table built for
@@ -117,30 +118,18 @@ export interface SteppingInfo {
   error: string | null;
 }
 
-export class WorldStepper {
-  private readonly pool: WorkerPool<StepTask, StepReply>;
-  readonly shared: boolean;
+export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   ranges: Array<[number, number]> = [];
   /** The last complete state (what the page draws). */
   state: Float32Array = new Float32Array(0);
   /** Internals of the shown agent in that state. */
   internals: Internals | null = null;
-  ready = false;
-  /** Started and neither stopped nor failed: the workers own the world
-   *  (while `!ready` they are still building it). */
-  active = false;
-  error: string | null = null;
   /** A newer complete state arrived since the page last looked. */
   fresh = false;
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
   private frontIndex = 0;
-  private queue: Promise<void> = Promise.resolve();
-  private pending = 0;
-  private owed = 0;
   private edits: Edit[] = [];
-  private gen = 0;
-  private done = { steps: 0, ms: 0, workerMs: 0 };
   private shown = 0;
   /** Called with the new front state when the buffers swap (the page
    *  must not keep drawing the buffer the next job writes into). */
@@ -149,41 +138,29 @@ export class WorldStepper {
    *  (the workers' own cost per update, beside the jobs' wall time). */
   workerMs = 0;
   workerUpdates = 0;
-  /** Wall ms from `start` until the workers owned the world. */
-  startMs = 0;
 
   constructor(
     readonly workers: number,
     private readonly stride: number,
   ) {
-    this.pool = new WorkerPool<StepTask, StepReply>(() => new Worker(new URL("./step.worker.ts", import.meta.url), { type: "module" }), workers);
-    this.shared = typeof SharedArrayBuffer === "function" && globalThis.crossOriginIsolated === true;
+    super(new WorkerPool<StepTask, StepReply>(() => new Worker(new URL("./step.worker.ts", import.meta.url), { type: "module" }), workers));
   }
 
   /** Splits `lab`'s world (just built by `recipe`, at t = 0) across the
    *  workers; `initial` (its state) is drawn until they are ready. */
   start(recipe: Recipe, lab: Lab, initial: Float32Array, shown: number): Promise<void> {
-    const gen = ++this.gen;
-    this.ready = false;
-    this.active = true;
-    this.error = null;
-    this.owed = 0;
-    this.edits = [];
-    const flat = lab.splitRanges(this.workers);
-    const ranges: Array<[number, number]> = [];
-    for (let k = 0; k + 1 < flat.length; k += 2) ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
-    this.ranges = ranges;
-    ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(initial, this.shared));
-    this.frontIndex = 0;
-    const sab = this.sab;
-    const t0 = performance.now();
-    return this.job(gen, (buffer) =>
-      ranges.map(([start, end]) => ({ init: { recipe, start, end, shared: sab }, edits: [], steps: 0, buffer, shown })),
-    ).then(() => {
-      if (gen === this.gen && this.error === null) {
-        this.ready = true;
-        this.startMs = performance.now() - t0;
-      }
+    return this.restart((gen) => {
+      this.edits = [];
+      const flat = lab.splitRanges(this.workers);
+      const ranges: Array<[number, number]> = [];
+      for (let k = 0; k + 1 < flat.length; k += 2) ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
+      this.ranges = ranges;
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(initial, this.shared));
+      this.frontIndex = 0;
+      const sab = this.sab;
+      return this.swapJob(gen, (buffer) =>
+        ranges.map(([start, end]) => ({ init: { recipe, start, end, shared: sab }, edits: [], steps: 0, buffer, shown })),
+      );
     });
   }
 
@@ -200,7 +177,7 @@ export class WorldStepper {
   /** Starts a job if none is in flight and something is owed; never waits. */
   pump(shown: number): void {
     this.shown = shown;
-    if (!this.ready || this.pending > 0 || (this.owed === 0 && this.edits.length === 0)) return;
+    if (!this.ready || !this.idle || (this.owed === 0 && this.edits.length === 0)) return;
     const steps = this.owed;
     this.owed = 0;
     void this.dispatch(steps, shown);
@@ -215,63 +192,47 @@ export class WorldStepper {
   private dispatch(steps: number, shown: number): Promise<void> {
     const edits = this.edits;
     this.edits = [];
-    return this.job(this.gen, (buffer) => this.ranges.map(() => ({ init: null, edits, steps, buffer, shown })), steps);
+    return this.swapJob(this.gen, (buffer) => this.ranges.map(() => ({ init: null, edits, steps, buffer, shown })), steps);
   }
 
-  /** Steps completed since the last call, the wall ms their jobs took and
-   *  the slowest worker's stepping ms in them. */
-  takeCompleted(): { steps: number; ms: number; workerMs: number } {
-    const d = this.done;
-    this.done = { steps: 0, ms: 0, workerMs: 0 };
-    return d;
-  }
-
-  /** One job on every worker, after the one in flight (a worker answers in
-   *  order, and `each` hands each answer to the job in force). */
-  private job(gen: number, tasks: (buffer: number) => StepTask[], steps = 0): Promise<void> {
-    const next = this.queue.then(async () => {
-      if (gen !== this.gen) return;
-      const buffer = 1 - this.frontIndex;
-      const t0 = performance.now();
-      let replies: StepReply[];
-      try {
-        replies = await this.pool.each(tasks(buffer));
-      } catch (e) {
-        if (gen === this.gen) {
-          this.error = e instanceof Error ? e.message : String(e);
-          this.ready = false;
-          this.active = false;
+  /** One job on every worker writing the back buffer (`buffer`), then the
+   *  two swap (a worker answers in order, and `each` hands each answer to
+   *  the job in force). */
+  private swapJob(gen: number, tasks: (buffer: number) => StepTask[], steps = 0): Promise<void> {
+    let buffer = 0;
+    return this.job(
+      gen,
+      () => {
+        buffer = 1 - this.frontIndex;
+        return tasks(buffer);
+      },
+      (replies, t0) => {
+        if (!this.sab) {
+          replies.forEach((r, k) => {
+            const start = this.ranges[k]?.[0] ?? 0;
+            if (r.state) this.back.set(r.state, start * this.stride);
+          });
         }
-        return;
-      }
-      if (gen !== this.gen) return;
-      if (!this.sab) {
-        replies.forEach((r, k) => {
-          const start = this.ranges[k]?.[0] ?? 0;
-          if (r.state) this.back.set(r.state, start * this.stride);
-        });
-      }
-      const front = this.back;
-      this.back = this.state;
-      this.state = front;
-      this.frontIndex = buffer;
-      this.internals = replies.find((r) => r.internals !== null)?.internals ?? null;
-      this.done.steps += steps;
-      const slowest = Math.max(...replies.map((r) => r.stepMs));
-      this.workerMs += slowest;
-      this.done.workerMs += slowest;
-      this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
-      this.done.ms += performance.now() - t0;
-      this.fresh = true;
-      this.onSwap(front);
-    });
-    this.pending++;
-    this.queue = next.finally(() => {
-      this.pending--;
-      // The next job starts at once if steps are owed (not at the next frame).
-      this.pump(this.shown);
-    });
-    return next;
+        const front = this.back;
+        this.back = this.state;
+        this.state = front;
+        this.frontIndex = buffer;
+        this.internals = replies.find((r) => r.internals !== null)?.internals ?? null;
+        this.done.steps += steps;
+        const slowest = Math.max(...replies.map((r) => r.stepMs));
+        this.workerMs += slowest;
+        this.done.workerMs += slowest;
+        this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
+        this.done.ms += performance.now() - t0;
+        this.fresh = true;
+        this.onSwap(front);
+      },
+    );
+  }
+
+  protected afterJob(): void {
+    // The next job starts at once if steps are owed (not at the next frame).
+    this.pump(this.shown);
   }
 
   info(wanted: number): SteppingInfo {
@@ -291,16 +252,8 @@ export class WorldStepper {
 
   /** Stops stepping (a newer world, or back to the page's thread); the
    *  workers are kept for the next start. */
-  stop(): void {
-    this.gen++;
-    this.ready = false;
-    this.active = false;
-    this.owed = 0;
+  override stop(): void {
+    super.stop();
     this.edits = [];
-  }
-
-  terminate(): void {
-    this.stop();
-    this.pool.terminate();
   }
 }
