@@ -59,13 +59,12 @@ fn cell_coord(v: f32, inv_cell: f32) -> i32 {
     // `as` saturates (and maps NaN to 0): never UB, never a panic. Floor by
     // hand: without SSE4.1 `f32::floor` is a libm call, and this runs 10×
     // per boid per step.
+    // Issue 17: the correction is subtracted, not branched on: its sign
+    // test mispredicted about once per boid per step (boids on both sides
+    // of an axis), in the rebuild and the queries alike.
     let x = v * inv_cell;
     let t = x as i32;
-    if (t as f32) > x {
-        t.saturating_sub(1)
-    } else {
-        t
-    }
+    t.saturating_sub(i32::from((t as f32) > x))
 }
 
 /// Row pitch of the bucket map: odd, so rows spread over all buckets.

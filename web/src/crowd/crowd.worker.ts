@@ -1,25 +1,27 @@
 // One crowd stepping worker (issue 17, point 3): holds a copy of the whole
 // crowd (CrowdLab built from the page's configuration, metrics off) and on
-// each task loads the last complete state (positions, then velocities),
+// each step loads the last complete state (positions, then velocities),
 // steps the boids of its vertical strip [lo, hi) (`stepStrip`: separation
 // reads every boid within reach, so they get the same bits as on one core)
-// and writes them into the back buffer at their indices (shared memory), or
-// hands them back with their indices (no cross-origin isolation). Driven by
+// and writes them into the next buffer at their indices (shared memory: as
+// long as the page asks for steps, `runShared`), or hands them back with
+// their indices (no cross-origin isolation: one step per task). Driven by
 // CrowdStepper (stepper.ts) through WorkerPool.each.
 
 import { CrowdLab, errorText, loadCore } from "../wasm";
 import type { ResultMessage, TaskMessage } from "../workers/pool";
-import { stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
+import { C, MAX_JOB_STEPS, SLOT_RING, stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
 
 let lab: CrowdLab | null = null;
 let shared: SharedArrayBuffer[] | null = null;
 
-/** One step of this worker's strip from `front` into `back` (shared memory).
+/** One step of this worker's strip from `front` into `back` (shared memory;
+ *  `load` false: the core already holds `front`).
  *  The stepped boids are copied straight out of the core's memory
  *  (`stripViews`, read before the next call into the core): all of them in
  *  two bulk copies when this worker owns every boid. */
-function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: number, lo: number, hi: number): number {
-  l.loadState(front, time);
+function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: number, lo: number, hi: number, load = true): number {
+  if (load) l.loadState(front, time);
   const owned = l.stepStrip(lo, hi);
   const [indices, pos, vel] = l.stripViews();
   const half = back.length >> 1;
@@ -38,6 +40,58 @@ function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: nu
   return owned;
 }
 
+/** Shared memory: steps from buffer `task.front` while the page asks for
+ *  more (stepper.ts, "continuing jobs"): after every step (the workers
+ *  meet at a barrier) worker 0 publishes it, notes the traced boid and the
+ *  step's wall ms, and decides the next step's buffer (neither the one just
+ *  written nor the one the page draws) or the end of the job; the others
+ *  follow its decision. */
+function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0: number): CrowdReply {
+  const ctrl = new Int32Array(shared[3] as SharedArrayBuffer);
+  const slots = new Float32Array(shared[4] as SharedArrayBuffer);
+  let src = task.front;
+  let dst = Atomics.load(ctrl, C.next);
+  let owned = 0;
+  let s = 0;
+  let ts = t0;
+  for (;;) {
+    const front = new Float32Array(shared[src] as SharedArrayBuffer);
+    const back = new Float32Array(shared[dst] as SharedArrayBuffer);
+    const cuts = stripCuts(front, front.length >> 2, task.workers);
+    // One worker owns every boid: after its first step the core already
+    // holds the state it wrote (no load of the whole state per step).
+    owned = stepInto(l, front, back, task.time + s, cuts[task.worker] ?? 0, cuts[task.worker + 1] ?? Infinity, s === 0 || task.workers > 1);
+    s++;
+    Atomics.add(ctrl, C.arrived, 1);
+    Atomics.notify(ctrl, C.arrived);
+    const want = s * task.workers;
+    for (let v = Atomics.load(ctrl, C.arrived); v < want; v = Atomics.load(ctrl, C.arrived)) Atomics.wait(ctrl, C.arrived, v, 1000);
+    let next: number;
+    if (task.worker === 0) {
+      const slot = 3 * ((s - 1) % SLOT_RING);
+      slots[slot] = back[2 * task.traced] ?? 0;
+      slots[slot + 1] = back[2 * task.traced + 1] ?? 0;
+      const now = performance.now();
+      slots[slot + 2] = now - ts;
+      ts = now;
+      Atomics.store(ctrl, C.published, (s << 2) | dst);
+      const go = Atomics.load(ctrl, C.stop) === 0 && task.time + s < Atomics.load(ctrl, C.target) && s < MAX_JOB_STEPS;
+      const drawing = Atomics.load(ctrl, C.drawing);
+      next = go ? [0, 1, 2].find((b) => b !== dst && b !== drawing) ?? -1 : -1;
+      Atomics.store(ctrl, C.next, next);
+      Atomics.store(ctrl, C.decided, s);
+      Atomics.notify(ctrl, C.decided);
+    } else {
+      for (let v = Atomics.load(ctrl, C.decided); v < s; v = Atomics.load(ctrl, C.decided)) Atomics.wait(ctrl, C.decided, v, 1000);
+      next = Atomics.load(ctrl, C.next);
+    }
+    if (next < 0) break;
+    src = dst;
+    dst = next;
+  }
+  return { stepMs: performance.now() - t0, owned, steps: s, indices: null, states: null };
+}
+
 async function run(task: CrowdTask): Promise<CrowdReply> {
   await loadCore();
   if (task.init) {
@@ -48,44 +102,16 @@ async function run(task: CrowdTask): Promise<CrowdReply> {
     shared = task.init.shared;
   }
   if (!lab) throw new Error("crowd worker used before its crowd was built");
-  if (task.steps === 0) return { stepMs: 0, owned: 0, indices: null, states: null };
+  if (task.steps === 0) return { stepMs: 0, owned: 0, steps: 0, indices: null, states: null };
   const t0 = performance.now();
-  if (shared) {
-    // Shared memory: `steps` steps without the page, through the two
-    // buffers it is not drawing, the workers meeting at a barrier (control
-    // word 0) between steps; worker 0 notes the traced boid after each.
-    const ctrl = new Int32Array(shared[3] as SharedArrayBuffer);
-    const slots = new Float32Array(shared[4] as SharedArrayBuffer);
-    const others = [0, 1, 2].filter((b) => b !== task.front);
-    let src = task.front;
-    let owned = 0;
-    for (let s = 0; s < task.steps; s++) {
-      const dst = others[s % 2] ?? 0;
-      const front = new Float32Array(shared[src] as SharedArrayBuffer);
-      const cuts = stripCuts(front, front.length >> 2, task.workers);
-      owned = stepInto(lab, front, new Float32Array(shared[dst] as SharedArrayBuffer), task.time + s, cuts[task.worker] ?? 0, cuts[task.worker + 1] ?? Infinity);
-      if (s + 1 < task.steps) {
-        Atomics.add(ctrl, 0, 1);
-        Atomics.notify(ctrl, 0);
-        const want = (s + 1) * task.workers;
-        for (let v = Atomics.load(ctrl, 0); v < want; v = Atomics.load(ctrl, 0)) Atomics.wait(ctrl, 0, v, 1000);
-        if (task.worker === 0) {
-          const back = new Float32Array(shared[dst] as SharedArrayBuffer);
-          slots[2 * s] = back[2 * task.traced] ?? 0;
-          slots[2 * s + 1] = back[2 * task.traced + 1] ?? 0;
-        }
-      }
-      src = dst;
-    }
-    return { stepMs: performance.now() - t0, owned, indices: null, states: null };
-  }
+  if (shared) return runShared(lab, shared, task, t0);
   const front = task.state;
   if (!front) throw new Error("crowd worker: no state to step");
   lab.loadState(front, task.time);
   const owned = lab.stepStrip(task.lo, task.hi);
   const indices = lab.ownedIndices();
   const states = lab.ownedState();
-  return { stepMs: performance.now() - t0, owned, indices, states };
+  return { stepMs: performance.now() - t0, owned, steps: 1, indices, states };
 }
 
 self.onmessage = async (ev: MessageEvent<TaskMessage<CrowdTask>>) => {

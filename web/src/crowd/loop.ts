@@ -24,8 +24,10 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
     const st = s.stepper?.active ? s.stepper : null;
     if (st) {
-      // Issue 17: workers step; this frame only asks (never waits) and
-      // draws the last complete state.
+      // Issue 17: workers step; this frame takes the newest complete state
+      // (before asking for more: the workers then leave its buffer alone),
+      // asks (never waits) and draws it.
+      st.poll();
       if (n > 0) st.request(n);
       if (!s.playing) s.singleSteps = 0;
       st.pump();

@@ -91,8 +91,8 @@ const hook: CrowdHook = {
   runSteps: async (n) => {
     const st = s.stepper;
     if (st?.active) {
-      // A job runs up to 20 steps with shared memory, one by message.
-      const per = st.shared ? 20 : 1;
+      // A job runs any number of steps with shared memory, one by message.
+      const per = st.shared ? n : 1;
       for (let k = 0; k < n; k += per) await st.step(Math.min(per, n - k));
     } else s.lab?.step(n);
     s.dirty = true;

@@ -12,12 +12,17 @@
 // - The page records the traced boid's lap from every complete state
 //   (`CrowdLab.observeStep`).
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
-//   three state buffers; the page draws the front one (the last complete
-//   state) while a job runs the steps owed (a frame's worth) through the other
-//   two, the workers meeting at a barrier (Atomics) between steps, without
-//   the page; worker 0 notes the traced boid's position after each step.
-//   When every worker has answered the last written buffer becomes the
-//   front. The page never waits for a worker.
+//   three state buffers and "continuing jobs". A job steps for as long as
+//   the page asks: each frame raises a shared target step (at most a
+//   frame's worth and one step beyond the drawn state), and the workers,
+//   meeting at a barrier (Atomics) after every step, go on while the target
+//   is ahead. Worker 0 publishes every complete state (its buffer and step),
+//   which the page draws at its next frame, and writes the next step into
+//   the buffer that is neither the one just written nor the one the page
+//   draws. Before, a job ended with every step and the next began only
+//   when the page had handled the answer, after its drawing: at 100,000
+//   boids the worker idled a few ms per step. The page never waits for a
+//   worker.
 // - Else one step per job: the front state goes to each worker by message
 //   and the stepped boids come back with their indices (transferred),
 //   copied here into the back buffer, then the two swap.
@@ -51,6 +56,8 @@ export interface CrowdTask {
 export interface CrowdReply {
   stepMs: number;
   owned: number;
+  /** Steps the job ran. */
+  steps: number;
   /** Without shared memory: the stepped boids and their `[x, y, vx, vy]`. */
   indices: Uint32Array | null;
   states: Float32Array | null;
@@ -60,9 +67,19 @@ export interface CrowdReply {
  *  (measured, README: below it the page's thread keeps 60 fps). */
 export const AUTO_WORKERS_FROM = 20_000;
 
-/** Steps one job runs at most (shared memory: the page's "steps / frame"
- *  goes up to 20). */
-const MAX_STEPS_PER_JOB = 20;
+/** The shared control words (Int32, `sab[3]`): barrier arrivals; the
+ *  step the page asks the job to reach; the latest complete state
+ *  (`steps in the job << 2 | buffer`); decisions made (steps); the next
+ *  step's buffer (−1: the job ends); the buffer the page draws; stop. */
+export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6 } as const;
+/** Per step `[x, y, ms]` of the traced boid and the step's wall time, a
+ *  ring (the page reads it every frame; a job runs at most a frame's worth
+ *  and one step ahead of the drawn state, ≤ 21). */
+export const SLOT_RING = 32;
+/** A continuing job returns after this many steps (its counts stay small). */
+export const MAX_JOB_STEPS = 1 << 20;
+/** The page's "steps / frame" goes up to 20. */
+const MAX_STEPS_PER_FRAME = 20;
 
 /** `?workers=N` (0 = page's thread) or, unset, from AUTO_WORKERS_FROM boids
  *  a worker per core but one (at least one): the page's drawing keeps a
@@ -107,6 +124,10 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
   private frontIndex = 0;
+  /** Shared memory: a job is in flight; its start step; its steps taken. */
+  private running = false;
+  private jobTime = 0;
+  private seen = 0;
   /** Called when a job's last step is the front state (the traced boid:
    *  read it there); before that `onTraced` with its position after each
    *  earlier step of the job. */
@@ -123,8 +144,9 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   start(config: CrowdConfig, state: Float32Array, time: number): Promise<void> {
     return this.restart((gen) => {
       this.count = state.length >> 2;
-      // Three states (front, back, spare), the barrier's counter, the step slots.
-      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4, 4 * 2 * MAX_STEPS_PER_JOB]));
+      this.halt();
+      // Three states, the control words, the step slots.
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4 * 8, 4 * 3 * SLOT_RING]));
       this.frontIndex = 0;
       this.time = time;
       const init = { config, shared: this.sab };
@@ -139,51 +161,106 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
 
   /** A frame asks for `steps` steps. At most one frame's worth waits: a
    *  host that cannot keep up runs slower than real time rather than
-   *  batching steps the page would never draw (one step per frame: one
-   *  step per job, every state drawn). */
+   *  batching steps the page would never draw (one step per frame: every
+   *  state drawn). Shared memory: the target of the job in flight rises
+   *  too, up to one step beyond a frame's worth ahead of the drawn state,
+   *  so a worker slower than the frames never stops to wait for the page. */
   request(steps: number): void {
-    this.owed = Math.min(Math.min(MAX_STEPS_PER_JOB, steps), this.owed + steps);
+    const k = Math.min(MAX_STEPS_PER_FRAME, steps);
+    if (this.sab && this.running) {
+      const ctrl = new Int32Array(this.sab[3] as SharedArrayBuffer);
+      const target = Atomics.load(ctrl, C.target);
+      Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.time + k + 1, target + steps)));
+    } else this.owed = Math.min(k, this.owed + steps);
   }
 
   /** Starts a step if none is in flight and one is owed; never waits. */
   pump(): void {
     if (!this.ready || !this.idle || this.owed === 0) return;
     const k = this.sab ? this.owed : 1;
-    this.owed -= k;
+    this.owed = 0;
     void this.step(k);
   }
 
-  /** Runs `k` steps (shared memory; else one) as one job; resolves when its state is the front one. */
+  /** Runs `k` steps (shared memory: and more while frames ask; else one
+   *  step) as one job; resolves when its last state is the front one. */
   step(k = 1): Promise<void> {
-    const steps = this.sab ? Math.max(1, Math.min(MAX_STEPS_PER_JOB, k)) : 1;
+    const steps = this.sab ? Math.max(1, k) : 1;
     return this.job(
       this.gen,
       () => {
         const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
-        if (this.sab) Atomics.store(new Int32Array(this.sab[3] as SharedArrayBuffer), 0, 0);
+        if (this.sab) {
+          const ctrl = new Int32Array(this.sab[3] as SharedArrayBuffer);
+          ctrl.fill(0);
+          Atomics.store(ctrl, C.target, this.time + steps);
+          Atomics.store(ctrl, C.published, this.frontIndex);
+          Atomics.store(ctrl, C.drawing, this.frontIndex);
+          Atomics.store(ctrl, C.next, this.frontIndex === 0 ? 1 : 0);
+          this.jobTime = this.time;
+          this.seen = 0;
+          this.running = true;
+        }
         const traced = this.traced();
         return Array.from({ length: this.workers }, (_, w) => ({
           init: null, steps, front: this.frontIndex, state: this.sab ? null : this.state, time: this.time,
           lo: cuts[w] ?? 0, hi: cuts[w + 1] ?? Infinity, worker: w, workers: this.workers, traced,
         }));
       },
-      (replies, t0) => this.land(replies, steps, t0),
+      (replies, t0) => this.land(replies, t0),
     );
+  }
+
+  /** Shared memory: takes the states the job in flight has published since
+   *  the last call (the traced boid of each, the newest becomes the front
+   *  state, which the workers then leave alone). Called every frame, before
+   *  drawing. */
+  poll(): void {
+    if (!this.sab || !this.running) return;
+    const ctrl = new Int32Array(this.sab[3] as SharedArrayBuffer);
+    const p = Atomics.load(ctrl, C.published);
+    const s = p >> 2;
+    if (s <= this.seen) return;
+    const slots = new Float32Array(this.sab[4] as SharedArrayBuffer);
+    let ms = 0;
+    for (let k = this.seen + 1; k <= s; k++) {
+      const slot = 3 * ((k - 1) % SLOT_RING);
+      if (k < s) this.onTraced(slots[slot] ?? 0, slots[slot + 1] ?? 0);
+      ms += slots[slot + 2] ?? 0;
+    }
+    this.frontIndex = p & 3;
+    Atomics.store(ctrl, C.drawing, this.frontIndex);
+    this.state = new Float32Array(this.sab[this.frontIndex] as SharedArrayBuffer);
+    this.time = this.jobTime + s;
+    this.done.steps += s - this.seen;
+    this.done.workerMs += ms;
+    this.seen = s;
+    this.onStep(this.state);
+  }
+
+  /** Asks a continuing job to end after its present step. */
+  private halt(): void {
+    if (this.sab) Atomics.store(new Int32Array(this.sab[3] as SharedArrayBuffer), C.stop, 1);
+    this.running = false;
+  }
+
+  override stop(): void {
+    this.halt();
+    super.stop();
   }
 
   /** The boid whose lap the page records (set by the page). */
   traced: () => number = () => 0;
 
   /** A step job's replies: its last state becomes the front one. */
-  private land(replies: CrowdReply[], steps: number, t0: number): void {
+  private land(replies: CrowdReply[], t0: number): void {
     if (this.sab) {
-      const sab = this.sab;
-      const others = [0, 1, 2].filter((b) => b !== this.frontIndex);
-      const last = others[(steps - 1) % 2] ?? 0;
-      const slots = new Float32Array(sab[4] as SharedArrayBuffer);
-      for (let s = 0; s + 1 < steps; s++) this.onTraced(slots[2 * s] ?? 0, slots[2 * s + 1] ?? 0);
-      this.frontIndex = last;
-      this.state = new Float32Array(sab[last] as SharedArrayBuffer);
+      this.poll();
+      this.running = false;
+      // Steps a frame asked for after the workers' last decision.
+      const target = Atomics.load(new Int32Array(this.sab[3] as SharedArrayBuffer), C.target);
+      this.owed = Math.max(this.owed, Math.min(MAX_STEPS_PER_FRAME, target - this.time));
+      this.done.ms += performance.now() - t0;
     } else {
       const back = this.back;
       const half = back.length >> 1;
@@ -202,13 +279,13 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
       }
       this.back = this.state;
       this.state = back;
+      this.time += 1;
+      this.done.steps += 1;
+      this.done.workerMs += Math.max(...replies.map((r) => r.stepMs));
+      this.done.ms += performance.now() - t0;
+      this.onStep(this.state);
     }
-    this.time += steps;
     this.owned = replies.map((r) => r.owned);
-    this.done.steps += steps;
-    this.done.workerMs += Math.max(...replies.map((r) => r.stepMs));
-    this.done.ms += performance.now() - t0;
-    this.onStep(this.state);
   }
 
   protected afterJob(): void {
