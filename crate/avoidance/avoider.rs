@@ -49,7 +49,7 @@
 //! the buffers have grown. Obstacles are tested one by one (few by design,
 //! [`crate::avoidance::config::MAX_OBSTACLES`]).
 
-use glam::Vec2;
+use glam::{BVec4A, Vec2, Vec4};
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
@@ -353,13 +353,49 @@ impl Avoider {
                     } else {
                         (h_pref, v_pref, u_seek)
                     };
-                    let mut oncoming = false;
+                    // The k nearest, lane by lane, four at a time (every
+                    // test a lane mask: their outcomes flip from neighbour
+                    // to neighbour, and as branches they were mispredicted
+                    // about every other time).
+                    let mut nb = [[0.0f32; MAX_NEIGHBOURS]; 8];
+                    for (l, &(_, sj)) in near[..k].iter().enumerate() {
+                        let q = &self.peers[sj as usize];
+                        // The tie direction, +y when i < j, else −y (the
+                        // scalar `-Vec2::Y`: x is −0), by its sign bit.
+                        let after = u32::from(q.index <= me.index) << 31;
+                        for (f, x) in nb.iter_mut().zip([
+                            q.pos.x,
+                            q.pos.y,
+                            q.fwd.x,
+                            q.fwd.y,
+                            q.v,
+                            q.prio,
+                            f32::from_bits(after),
+                            f32::from_bits(0x3f80_0000 | after),
+                        ]) {
+                            f[l] = x;
+                        }
+                    }
+                    let mut oncoming = BVec4A::FALSE;
                     let v_me = me.fwd * me.v;
-                    // Every test below without a branch (`&`, `|`, selects):
-                    // their outcomes flip from neighbour to neighbour.
-                    for &(_, sj) in &near[..k] {
-                        let q = self.peers[sj as usize];
-                        let j = q.index as usize;
+                    let (inv_h, inv_dt) = (1.0 / cfg.horizon, 1.0 / p.dt);
+                    let splat = Vec4::splat;
+                    let moving = BVec4A::splat(me.v >= STUCK_SPEED);
+                    for c in (0..k).step_by(4) {
+                        let lane = |f: usize| Vec4::from_slice(&nb[f][c..c + 4]);
+                        let (qx, qy, fx, fy, qv, prio, tie_x, tie_y) = (
+                            lane(0),
+                            lane(1),
+                            lane(2),
+                            lane(3),
+                            lane(4),
+                            lane(5),
+                            lane(6),
+                            lane(7),
+                        );
+                        let valid = (splat(c as f32) + Vec4::new(0.0, 1.0, 2.0, 3.0))
+                            .cmplt(splat(k as f32));
+                        let (rx, ry) = (qx - splat(s.pos.x), qy - splat(s.pos.y));
                         // Oncoming and ahead along the way the agent will
                         // seek (its goal's direction when walled, not the
                         // funnel's γ it then ignores: judged along γ, a
@@ -369,18 +405,22 @@ impl Avoider {
                         // velocity sought swung between the gap and the
                         // wall and the agent never turned, doorway seeds
                         // 1012 and 1017).
-                        let opposed = q.fwd.dot(u_seek) < ONCOMING_COS;
-                        oncoming |= opposed & ((q.pos - s.pos).dot(u_seek) > 0.0);
-                        let opposed = q.fwd.dot(me.fwd) < ONCOMING_COS;
-                        let tie = if i < j { Vec2::Y } else { -Vec2::Y };
+                        let opposed = (fx * splat(u_seek.x) + fy * splat(u_seek.y))
+                            .cmplt(splat(ONCOMING_COS));
+                        oncoming |= valid
+                            & opposed
+                            & (rx * splat(u_seek.x) + ry * splat(u_seek.y)).cmpgt(Vec4::ZERO);
+                        let opposed = (fx * splat(me.fwd.x) + fy * splat(me.fwd.y))
+                            .cmplt(splat(ONCOMING_COS));
+                        let before = tie_y.cmpgt(Vec4::ZERO);
                         // Reciprocity assumes the neighbour takes half the
                         // avoidance; a forward-only neighbour at rest cannot
                         // step back, so an agent closing on it takes all.
-                        let share = if (q.v < STUCK_SPEED) & (me.v >= STUCK_SPEED) {
-                            1.0
-                        } else {
-                            0.5
-                        };
+                        let share = Vec4::select(
+                            qv.cmplt(splat(STUCK_SPEED)) & moving,
+                            Vec4::ONE,
+                            splat(0.5),
+                        );
                         // Right of way: the agent clearly nearer its goal
                         // keeps only the bodies' distance (plus a sliver)
                         // from the other, which keeps the whole margin;
@@ -390,24 +430,32 @@ impl Avoider {
                         // Within the gap (two agents level at a doorway,
                         // both waiting for the other) the lower index goes
                         // first. No priority given (NaN): nobody is ahead.
-                        let (a, b) = (me.prio, q.prio);
-                        let ahead = (a + PRIORITY_GAP < b) | ((i < j) & (a <= b + PRIORITY_GAP));
-                        let reach_ij = if ahead { reach_ahead } else { reach_yield };
-                        lines.push_agent(orca::agent_line(
-                            s.pos,
-                            v_me,
-                            q.pos,
-                            q.fwd * q.v,
-                            reach_ij,
-                            cfg.horizon,
-                            p.dt,
+                        let a = me.prio;
+                        let ahead = splat(a + PRIORITY_GAP).cmplt(prio)
+                            | (before & splat(a).cmple(prio + splat(PRIORITY_GAP)));
+                        let keep_right = opposed
+                            & (rx * splat(me.fwd.x) + ry * splat(me.fwd.y)).cmpgt(Vec4::ZERO)
+                            & ((splat(s.pos.x) - qx) * fx + (splat(s.pos.y) - qy) * fy)
+                                .cmpgt(Vec4::ZERO);
+                        let pairs = orca::Pairs4 {
+                            pn: (qx, qy),
+                            vn: (fx * qv, fy * qv),
+                            r: Vec4::select(ahead, splat(reach_ahead), splat(reach_yield)),
                             share,
-                            tie,
-                            opposed
-                                & ((q.pos - s.pos).dot(me.fwd) > 0.0)
-                                & ((s.pos - q.pos).dot(q.fwd) > 0.0),
-                        ));
+                            tie: (tie_x, tie_y),
+                            keep_right,
+                        };
+                        let [px, py, dx, dy] =
+                            orca::agent_lines4(s.pos, v_me, &pairs, inv_h, inv_dt)
+                                .map(|x| x.to_array());
+                        for l in 0..(k - c).min(4) {
+                            lines.push_agent(orca::Line {
+                                point: Vec2::new(px[l], py[l]),
+                                direction: Vec2::new(dx[l], dy[l]),
+                            });
+                        }
                     }
+                    let oncoming = oncoming.any();
                     // An oncoming neighbour ahead: keep right at once (at
                     // least LANE_BIAS of the bias), before the pair is
                     // blocked, so that lanes form before a jam does.

@@ -31,7 +31,7 @@
 //! Arithmetic: only `+ − × ÷` and `sqrt` (all IEEE-exact), so the result is
 //! the same bits natively and in wasm.
 
-use glam::Vec2;
+use glam::{BVec4A, Vec2, Vec4};
 
 /// Most agent half-planes per agent ([`crate::avoidance::AvoidanceConfig::max_neighbours`] ≤ this).
 pub const MAX_NEIGHBOURS: usize = 16;
@@ -137,6 +137,24 @@ impl Lines {
     }
 }
 
+/// `a` when `c`, else `b`, through bit masks: a choice whose outcome
+/// flips from neighbour to neighbour, which the compiler would otherwise
+/// often turn into a branch (a select whose condition compares a loaded
+/// value becomes one on x86), mispredicted about every other time.
+#[inline(always)]
+#[must_use]
+pub fn pick(c: bool, a: f32, b: f32) -> f32 {
+    let m = u32::from(c).wrapping_neg();
+    f32::from_bits((a.to_bits() & m) | (b.to_bits() & !m))
+}
+
+/// [`pick`] for vectors.
+#[inline(always)]
+#[must_use]
+pub fn pick2(c: bool, a: Vec2, b: Vec2) -> Vec2 {
+    Vec2::new(pick(c, a.x, b.x), pick(c, a.y, b.y))
+}
+
 #[inline]
 fn det(a: Vec2, b: Vec2) -> f32 {
     a.x * b.y - a.y * b.x
@@ -147,6 +165,14 @@ fn det(a: Vec2, b: Vec2) -> f32 {
 /// radii `r`), taking `share` of the avoidance (½ reciprocal). `dt` is the
 /// step, used when already overlapping; `tie` is a deterministic unit
 /// direction used where RVO2 would divide by zero (coincident agents).
+///
+/// Without a branch: which of the three cases applies (the cut-off
+/// circle, a leg of the cone, already overlapping) flips from neighbour to
+/// neighbour, so every case is computed and the answer selected (the same
+/// operations on the same values as a branch per case: the same bits).
+/// The cut-off circle and the overlap differ only in the inverse time
+/// (1/horizon, 1/dt) and the threshold below which `tie` replaces the
+/// unit vector (0, 1e-9), and share their arithmetic.
 #[allow(clippy::too_many_arguments)]
 #[inline]
 #[must_use]
@@ -166,52 +192,109 @@ pub fn agent_line(
     let rel_vel = v - vn;
     let dist_sq = rel_pos.length_squared();
     let r_sq = r * r;
-    let direction;
-    let u;
-    if dist_sq > r_sq {
-        let inv_h = 1.0 / horizon;
-        // Vector from the cut-off circle's centre to the relative velocity.
-        let w = rel_vel - rel_pos * inv_h;
-        let w_len_sq = w.length_squared();
-        let dot1 = w.dot(rel_pos);
-        if dot1 < 0.0 && dot1 * dot1 > r_sq * w_len_sq {
-            // Project on the cut-off circle.
-            let w_len = w_len_sq.sqrt();
-            let unit_w = if w_len > 0.0 { w / w_len } else { tie };
-            direction = Vec2::new(unit_w.y, -unit_w.x);
-            u = unit_w * (r * inv_h - w_len);
-        } else {
-            // Project on a leg of the cone.
-            let leg = (dist_sq - r_sq).sqrt();
-            // Left leg: pass with the neighbour on one's right; a pair
-            // meeting head-on both keep right instead (the same choice seen
-            // from either side: det is symmetric under the swap).
-            direction = if det(rel_pos, w) > 0.0 && !keep_right {
-                Vec2::new(
-                    rel_pos.x * leg - rel_pos.y * r,
-                    rel_pos.x * r + rel_pos.y * leg,
-                ) / dist_sq
-            } else {
-                -Vec2::new(
-                    rel_pos.x * leg + rel_pos.y * r,
-                    -rel_pos.x * r + rel_pos.y * leg,
-                ) / dist_sq
-            };
-            u = direction * rel_vel.dot(direction) - rel_vel;
-        }
-    } else {
-        // Already overlapping: leave within one step.
-        let inv_dt = 1.0 / dt;
-        let w = rel_vel - rel_pos * inv_dt;
-        let w_len = w.length();
-        let unit_w = if w_len > 1e-9 { w / w_len } else { tie };
-        direction = Vec2::new(unit_w.y, -unit_w.x);
-        u = unit_w * (r * inv_dt - w_len);
-    }
+    let overlap = !(dist_sq > r_sq);
+    // Both inverse times, whatever the case (loop-invariant for a caller
+    // running over its neighbours).
+    let (inv_h, inv_dt) = (1.0 / horizon, 1.0 / dt);
+    let inv = pick(overlap, inv_dt, inv_h);
+    // Vector from the cut-off circle's centre to the relative velocity
+    // (overlapping: from the circle one step away).
+    let w = rel_vel - rel_pos * inv;
+    let w_len_sq = w.length_squared();
+    let dot1 = w.dot(rel_pos);
+    let cut = overlap | ((dot1 < 0.0) & (dot1 * dot1 > r_sq * w_len_sq));
+    // Project on the cut-off circle (overlapping: leave within one step).
+    let w_len = w_len_sq.sqrt();
+    let min_len = pick(overlap, 1e-9, 0.0);
+    let unit_w = pick2(w_len > min_len, w / w_len, tie);
+    let dir_cut = Vec2::new(unit_w.y, -unit_w.x);
+    let u_cut = unit_w * (r * inv - w_len);
+    // Project on a leg of the cone (NaN when overlapping: not selected).
+    let leg = (dist_sq - r_sq).sqrt();
+    // Left leg: pass with the neighbour on one's right; a pair meeting
+    // head-on both keep right instead (the same choice seen from either
+    // side: det is symmetric under the swap).
+    let left = Vec2::new(
+        rel_pos.x * leg - rel_pos.y * r,
+        rel_pos.x * r + rel_pos.y * leg,
+    ) / dist_sq;
+    let right = -Vec2::new(
+        rel_pos.x * leg + rel_pos.y * r,
+        -rel_pos.x * r + rel_pos.y * leg,
+    ) / dist_sq;
+    let dir_leg = pick2((det(rel_pos, w) > 0.0) & !keep_right, left, right);
+    let u_leg = dir_leg * rel_vel.dot(dir_leg) - rel_vel;
+    let direction = pick2(cut, dir_cut, dir_leg);
+    let u = pick2(cut, u_cut, u_leg);
     Line {
         point: v + u * share,
         direction,
     }
+}
+
+/// Four neighbours' inputs to [`agent_lines4`], one per lane: positions,
+/// velocities, the combined radius, the share, the tie direction and
+/// whether the pair keeps right.
+#[derive(Clone, Copy, Debug)]
+pub struct Pairs4 {
+    /// Neighbour positions.
+    pub pn: (Vec4, Vec4),
+    /// Neighbour velocities.
+    pub vn: (Vec4, Vec4),
+    /// Sum of radii.
+    pub r: Vec4,
+    /// Share of the avoidance.
+    pub share: Vec4,
+    /// Tie directions.
+    pub tie: (Vec4, Vec4),
+    /// Keep right (head on).
+    pub keep_right: BVec4A,
+}
+
+/// [`agent_line`] for four neighbours at once, lane by lane (SIMD where
+/// the target has it): the same operations on the same values in every
+/// lane, so the same bits as four calls, and every choice a lane mask (no
+/// branch). `inv_h` and `inv_dt` are `1 / horizon` and `1 / dt`. Returns
+/// the lines' points and directions, `(px, py, dx, dy)`.
+#[inline]
+#[must_use]
+pub fn agent_lines4(p: Vec2, v: Vec2, q: &Pairs4, inv_h: f32, inv_dt: f32) -> [Vec4; 4] {
+    let (rx, ry) = (q.pn.0 - Vec4::splat(p.x), q.pn.1 - Vec4::splat(p.y));
+    let (vx, vy) = (Vec4::splat(v.x) - q.vn.0, Vec4::splat(v.y) - q.vn.1);
+    let r = q.r;
+    let dist_sq = rx * rx + ry * ry;
+    let r_sq = r * r;
+    let overlap = !dist_sq.cmpgt(r_sq);
+    let inv = Vec4::select(overlap, Vec4::splat(inv_dt), Vec4::splat(inv_h));
+    let (wx, wy) = (vx - rx * inv, vy - ry * inv);
+    let w_len_sq = wx * wx + wy * wy;
+    let dot1 = wx * rx + wy * ry;
+    let cut = overlap | (dot1.cmplt(Vec4::ZERO) & (dot1 * dot1).cmpgt(r_sq * w_len_sq));
+    let w_len = w_len_sq.sqrt();
+    let min_len = Vec4::select(overlap, Vec4::splat(1e-9), Vec4::ZERO);
+    let unit = w_len.cmpgt(min_len);
+    let ux = Vec4::select(unit, wx / w_len, q.tie.0);
+    let uy = Vec4::select(unit, wy / w_len, q.tie.1);
+    let c = r * inv - w_len;
+    let leg = (dist_sq - r_sq).sqrt();
+    let left_x = (rx * leg - ry * r) / dist_sq;
+    let left_y = (rx * r + ry * leg) / dist_sq;
+    let right_x = -(rx * leg + ry * r) / dist_sq;
+    let right_y = -(-rx * r + ry * leg) / dist_sq;
+    let to_left = (rx * wy - ry * wx).cmpgt(Vec4::ZERO) & !q.keep_right;
+    let lx = Vec4::select(to_left, left_x, right_x);
+    let ly = Vec4::select(to_left, left_y, right_y);
+    let d = vx * lx + vy * ly;
+    let dx = Vec4::select(cut, uy, lx);
+    let dy = Vec4::select(cut, -ux, ly);
+    let u_x = Vec4::select(cut, ux * c, lx * d - vx);
+    let u_y = Vec4::select(cut, uy * c, ly * d - vy);
+    [
+        Vec4::splat(v.x) + u_x * q.share,
+        Vec4::splat(v.y) + u_y * q.share,
+        dx,
+        dy,
+    ]
 }
 
 /// The half-plane that keeps an agent at signed distance `dist` from an
@@ -357,6 +440,56 @@ pub fn solve(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The four-lane lines are the scalar ones, bit for bit: seeded
+    /// pairs far, near, overlapping and coincident, with and without
+    /// keeping right.
+    #[test]
+    fn four_lanes_give_the_scalar_lines_bit_for_bit() {
+        let mut rng = crate::rng::Rng::new(18);
+        let (horizon, dt) = (2.0f32, 0.1f32);
+        for trial in 0..20_000 {
+            let p = Vec2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
+            let v = Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5));
+            let mut lanes = [(Vec2::ZERO, Vec2::ZERO, 0.0, 0.0, Vec2::ZERO, false); 4];
+            for (l, lane) in lanes.iter_mut().enumerate() {
+                let spread = [3.0, 1.0, 0.5, 0.0][(trial + l) % 4];
+                let pn = p + Vec2::new(rng.range(-spread, spread), rng.range(-spread, spread));
+                let vn = if rng.range(0.0, 1.0) < 0.2 {
+                    v
+                } else {
+                    Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5))
+                };
+                let r = [0.6, 0.9][l % 2];
+                let share = [0.5, 1.0][(trial / 2 + l) % 2];
+                let tie = if rng.range(0.0, 1.0) < 0.5 {
+                    Vec2::Y
+                } else {
+                    -Vec2::Y
+                };
+                *lane = (pn, vn, r, share, tie, rng.range(0.0, 1.0) < 0.3);
+            }
+            let col = |f: &dyn Fn(usize) -> f32| Vec4::new(f(0), f(1), f(2), f(3));
+            let q = Pairs4 {
+                pn: (col(&|l| lanes[l].0.x), col(&|l| lanes[l].0.y)),
+                vn: (col(&|l| lanes[l].1.x), col(&|l| lanes[l].1.y)),
+                r: col(&|l| lanes[l].2),
+                share: col(&|l| lanes[l].3),
+                tie: (col(&|l| lanes[l].4.x), col(&|l| lanes[l].4.y)),
+                keep_right: BVec4A::new(lanes[0].5, lanes[1].5, lanes[2].5, lanes[3].5),
+            };
+            let got = agent_lines4(p, v, &q, 1.0 / horizon, 1.0 / dt).map(|x| x.to_array());
+            for (l, &(pn, vn, r, share, tie, keep)) in lanes.iter().enumerate() {
+                let want = agent_line(p, v, pn, vn, r, horizon, dt, share, tie, keep);
+                let bits = |x: f32| x.to_bits();
+                assert_eq!(
+                    [got[0][l], got[1][l], got[2][l], got[3][l]].map(bits),
+                    [want.point.x, want.point.y, want.direction.x, want.direction.y].map(bits),
+                    "trial {trial} lane {l}"
+                );
+            }
+        }
+    }
 
     #[test]
     fn no_lines_gives_the_preferred_velocity_within_the_disc() {
