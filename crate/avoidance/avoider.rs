@@ -52,7 +52,7 @@
 use glam::{BVec4A, Vec2, Vec4};
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
-use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
+use crate::avoidance::orca::{self, ray_cap, Lines, MAX_NEIGHBOURS};
 use crate::avoidance::passing::Passing;
 use crate::avoidance::stalled;
 use crate::crowd::separation::NeighbourGrid;
@@ -445,15 +445,10 @@ impl Avoider {
                             tie: (tie_x, tie_y),
                             keep_right,
                         };
-                        let [px, py, dx, dy] =
-                            orca::agent_lines4(s.pos, v_me, &pairs, inv_h, inv_dt)
-                                .map(|x| x.to_array());
-                        for l in 0..(k - c).min(4) {
-                            lines.push_agent(orca::Line {
-                                point: Vec2::new(px[l], py[l]),
-                                direction: Vec2::new(dx[l], dy[l]),
-                            });
-                        }
+                        lines.push_agents4(
+                            &orca::agent_lines4(s.pos, v_me, &pairs, inv_h, inv_dt),
+                            k - c,
+                        );
                     }
                     let oncoming = oncoming.any();
                     // An oncoming neighbour ahead: keep right at once (at
@@ -583,24 +578,6 @@ pub const STUCK_SPEED: f32 = 0.1;
 
 /// Headings sampled each side of the current one by [`unicycle`].
 pub const HEADING_SAMPLES: usize = 12;
-
-/// The largest speed along the unit direction `u`, up to `cap`, that the
-/// upper bounds of every line admit (the lower ones, a
-/// neighbour closing from behind, are that neighbour's to meet).
-#[inline]
-fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
-    let mut hi = cap;
-    for l in lines.as_slice() {
-        let a = l.direction.x * u.y - l.direction.y * u.x;
-        let b = l.direction.x * l.point.y - l.direction.y * l.point.x;
-        // Without a branch (which line bounds the ray flips from ray to
-        // ray): an unbounding line divides −∞ by −1, and min keeps `hi`.
-        let bounds = a < -1e-6;
-        let q = if bounds { b } else { f32::NEG_INFINITY } / if bounds { a } else { -1.0 };
-        hi = hi.min(q);
-    }
-    hi.max(0.0)
-}
 
 /// The forward-only unicycle's answer (issue 18: "chooses among admissible
 /// headings and speeds"). When ORCA's velocity `v_orca` is at least

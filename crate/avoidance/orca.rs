@@ -62,9 +62,15 @@ impl Line {
 }
 
 /// A fixed-capacity set of half-planes: obstacles first, then agents.
+///
+/// Kept as a structure of arrays (points' x and y, directions' x and y):
+/// the linear program and the ray caps read four lines at a time.
 #[derive(Clone, Copy, Debug)]
 pub struct Lines {
-    lines: [Line; MAX_LINES],
+    px: [f32; MAX_LINES],
+    py: [f32; MAX_LINES],
+    dx: [f32; MAX_LINES],
+    dy: [f32; MAX_LINES],
     len: usize,
     obstacles: usize,
 }
@@ -72,7 +78,10 @@ pub struct Lines {
 impl Default for Lines {
     fn default() -> Self {
         Self {
-            lines: [Line::default(); MAX_LINES],
+            px: [0.0; MAX_LINES],
+            py: [0.0; MAX_LINES],
+            dx: [0.0; MAX_LINES],
+            dy: [0.0; MAX_LINES],
             len: 0,
             obstacles: 0,
         }
@@ -87,13 +96,21 @@ impl Lines {
         self.obstacles = 0;
     }
 
+    #[inline]
+    fn put(&mut self, at: usize, l: Line) {
+        self.px[at] = l.point.x;
+        self.py[at] = l.point.y;
+        self.dx[at] = l.direction.x;
+        self.dy[at] = l.direction.y;
+    }
+
     /// Adds an obstacle half-plane (call before any agent's); ignored when
     /// [`MAX_OBSTACLE_LINES`] are already in.
     #[inline]
     pub fn push_obstacle(&mut self, l: Line) {
         debug_assert_eq!(self.len, self.obstacles, "obstacles first");
         if self.obstacles < MAX_OBSTACLE_LINES {
-            self.lines[self.len] = l;
+            self.put(self.len, l);
             self.len += 1;
             self.obstacles += 1;
         }
@@ -103,16 +120,75 @@ impl Lines {
     #[inline]
     pub fn push_agent(&mut self, l: Line) {
         if self.len < MAX_LINES {
-            self.lines[self.len] = l;
+            self.put(self.len, l);
             self.len += 1;
         }
     }
 
-    /// The lines.
+    /// Adds the first `n` (≤ 4) of four agent half-planes given lane by
+    /// lane as [`agent_lines4`] returns them (points' x and y, directions'
+    /// x and y); those past the capacity are ignored.
+    #[inline]
+    pub fn push_agents4(&mut self, l: &[Vec4; 4], n: usize) {
+        let at = self.len;
+        if at + 4 <= MAX_LINES {
+            // All four lanes written at once; only `n` counted.
+            l[0].write_to_slice(&mut self.px[at..at + 4]);
+            l[1].write_to_slice(&mut self.py[at..at + 4]);
+            l[2].write_to_slice(&mut self.dx[at..at + 4]);
+            l[3].write_to_slice(&mut self.dy[at..at + 4]);
+            self.len += n.min(4);
+        } else {
+            let lanes = l.map(|x| x.to_array());
+            for k in 0..n.min(4) {
+                self.push_agent(Line {
+                    point: Vec2::new(lanes[0][k], lanes[1][k]),
+                    direction: Vec2::new(lanes[2][k], lanes[3][k]),
+                });
+            }
+        }
+    }
+
+    /// Lines in the set.
     #[inline]
     #[must_use]
-    pub fn as_slice(&self) -> &[Line] {
-        &self.lines[..self.len]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// True when the set has no line.
+    #[inline]
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Line `i` (< [`Lines::len`]).
+    #[inline]
+    #[must_use]
+    pub fn get(&self, i: usize) -> Line {
+        Line {
+            point: Vec2::new(self.px[i], self.py[i]),
+            direction: Vec2::new(self.dx[i], self.dy[i]),
+        }
+    }
+
+    /// The lines, in order.
+    pub fn iter(&self) -> impl Iterator<Item = Line> + '_ {
+        (0..self.len).map(|i| self.get(i))
+    }
+
+    /// Lines `at..at + 4` lane by lane (points' x and y, directions' x
+    /// and y), `at` a multiple of 4; lanes past [`Lines::len`] hold
+    /// whatever an earlier set left (callers mask them).
+    #[inline]
+    fn four(&self, at: usize) -> [Vec4; 4] {
+        [
+            Vec4::from_slice(&self.px[at..at + 4]),
+            Vec4::from_slice(&self.py[at..at + 4]),
+            Vec4::from_slice(&self.dx[at..at + 4]),
+            Vec4::from_slice(&self.dy[at..at + 4]),
+        ]
     }
 
     /// Obstacle half-planes in the set.
@@ -125,16 +201,40 @@ impl Lines {
     /// True when `v` satisfies every obstacle line (within `slack`).
     #[must_use]
     pub fn obstacles_admit(&self, v: Vec2, slack: f32) -> bool {
-        self.lines[..self.obstacles]
-            .iter()
-            .all(|l| l.admits(v, slack))
+        (0..self.obstacles).all(|i| self.get(i).admits(v, slack))
     }
 
     /// True when `v` satisfies every line (within `slack`).
     #[must_use]
     pub fn admits(&self, v: Vec2, slack: f32) -> bool {
-        self.as_slice().iter().all(|l| l.admits(v, slack))
+        self.iter().all(|l| l.admits(v, slack))
     }
+
+    /// The first line from `from` on that `v` violates (`det(direction,
+    /// point − v) > 0`), four lines tested at a time.
+    #[inline]
+    fn first_violated(&self, from: usize, v: Vec2) -> Option<usize> {
+        let (vx, vy) = (Vec4::splat(v.x), Vec4::splat(v.y));
+        let mut at = from & !3;
+        while at < self.len {
+            let [px, py, dx, dy] = self.four(at);
+            let bad = (dx * (py - vy) - dy * (px - vx)).cmpgt(Vec4::ZERO);
+            // Lanes before `from` or past the end do not count.
+            let lanes = lane_mask(from.saturating_sub(at), self.len - at);
+            let hits = bad.bitmask() & lanes;
+            if hits != 0 {
+                return Some(at + hits.trailing_zeros() as usize);
+            }
+            at += 4;
+        }
+        None
+    }
+}
+
+/// Bits `lo..hi` of a 4-lane mask (`hi` clamped to 4).
+#[inline]
+fn lane_mask(lo: usize, hi: usize) -> u32 {
+    (0xf_u32 >> (4 - hi.min(4))) & !((1_u32 << lo.min(4)) - 1)
 }
 
 /// `a` when `c`, else `b`, through bit masks: a choice whose outcome
@@ -318,8 +418,16 @@ pub fn obstacle_line(n: Vec2, dist: f32, r: f32, horizon: f32, dt: f32) -> Line 
 /// Linear program on line `i`: the point of line `i` admitted by lines
 /// `0..i` and the disc of radius `radius` that is nearest `opt` (or
 /// farthest along `opt` when `direction_opt`). `None` if there is none.
-fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
-    let li = lines[i];
+///
+/// RVO2's loop over the lines before `i`, four at a time: each line's
+/// bound on the parameter along line `i` is computed lane by lane, and the
+/// bounds are folded into the interval in the lines' order (the same
+/// min/max sequence, so the same bits; a line that bounds nothing folds
+/// in ±∞, which changes no finite bound). The early `None` of a line that
+/// empties the interval is taken at the end instead: the interval only
+/// shrinks, so it is empty at the end if it ever was.
+fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
+    let li = lines.get(i);
     let dot = li.point.dot(li.direction);
     let disc = dot * dot + radius * radius - li.point.length_squared();
     if disc < 0.0 {
@@ -328,24 +436,31 @@ fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) ->
     let sq = disc.sqrt();
     let mut t_left = -dot - sq;
     let mut t_right = -dot + sq;
-    for lj in &lines[..i] {
-        let denom = det(li.direction, lj.direction);
-        let numer = det(lj.direction, li.point - lj.point);
-        if denom.abs() <= EPS {
-            if numer < 0.0 {
-                return None;
-            }
-            continue;
-        }
-        let t = numer / denom;
-        if denom >= 0.0 {
-            t_right = t_right.min(t);
-        } else {
-            t_left = t_left.max(t);
-        }
-        if t_left > t_right {
+    let (ldx, ldy) = (Vec4::splat(li.direction.x), Vec4::splat(li.direction.y));
+    let (lpx, lpy) = (Vec4::splat(li.point.x), Vec4::splat(li.point.y));
+    let mut at = 0;
+    while at < i {
+        let [px, py, dx, dy] = lines.four(at);
+        // det(li.direction, lj.direction), det(lj.direction, li.point − lj.point).
+        let denom = ldx * dy - ldy * dx;
+        let numer = dx * (lpy - py) - dy * (lpx - px);
+        let parallel = denom.abs().cmple(Vec4::splat(EPS));
+        let lanes = lane_mask(0, i - at);
+        if (parallel & numer.cmplt(Vec4::ZERO)).bitmask() & lanes != 0 {
             return None;
         }
+        let t = numer / denom;
+        let right = denom.cmpge(Vec4::ZERO);
+        let t_r = Vec4::select(!parallel & right, t, Vec4::INFINITY).to_array();
+        let t_l = Vec4::select(!parallel & !right, t, Vec4::NEG_INFINITY).to_array();
+        for k in 0..(i - at).min(4) {
+            t_right = t_right.min(t_r[k]);
+            t_left = t_left.max(t_l[k]);
+        }
+        at += 4;
+    }
+    if t_left > t_right {
+        return None;
     }
     let t = if direction_opt {
         if opt.dot(li.direction) > 0.0 {
@@ -362,8 +477,9 @@ fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) ->
 /// Linear program in 2D: the velocity in the disc nearest `opt` that every
 /// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
 /// the index of the first line that could not be met (`result` then meets
-/// lines `0..n`).
-fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
+/// lines `0..n`). The lines the result already meets are skipped four at
+/// a time ([`Lines::first_violated`]).
+fn lp2(lines: &Lines, radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
     let mut result = if direction_opt {
         opt * radius
     } else if opt.length_squared() > radius * radius {
@@ -371,13 +487,13 @@ fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, us
     } else {
         opt
     };
-    for i in 0..lines.len() {
-        if det(lines[i].direction, lines[i].point - result) > 0.0 {
-            match lp1(lines, i, radius, opt, direction_opt) {
-                Some(r) => result = r,
-                None => return (result, i),
-            }
+    let mut from = 0;
+    while let Some(i) = lines.first_violated(from, result) {
+        match lp1(lines, i, radius, opt, direction_opt) {
+            Some(r) => result = r,
+            None => return (result, i),
         }
+        from = i + 1;
     }
     (result, lines.len())
 }
@@ -385,15 +501,18 @@ fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, us
 /// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
 /// lines (the first `n_obstacles`) and minimises the largest violation of
 /// the others, from line `begin` on.
-fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
+fn lp3(lines: &Lines, n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
     let mut distance = 0.0f32;
-    let mut proj = [Line::default(); MAX_LINES];
+    let mut proj = Lines::default();
     for i in begin..lines.len() {
-        let li = lines[i];
+        let li = lines.get(i);
         if det(li.direction, li.point - *result) > distance {
-            proj[..n_obstacles].copy_from_slice(&lines[..n_obstacles]);
-            let mut n = n_obstacles;
-            for lj in &lines[n_obstacles..i] {
+            proj.clear();
+            for j in 0..n_obstacles {
+                proj.push_agent(lines.get(j));
+            }
+            for j in n_obstacles..i {
+                let lj = lines.get(j);
                 let d = det(li.direction, lj.direction);
                 let point = if d.abs() <= EPS {
                     if li.direction.dot(lj.direction) > 0.0 {
@@ -404,17 +523,16 @@ fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &m
                     li.point + li.direction * (det(lj.direction, li.point - lj.point) / d)
                 };
                 let direction = (lj.direction - li.direction).normalize_or_zero();
-                proj[n] = Line { point, direction };
-                n += 1;
+                proj.push_agent(Line { point, direction });
             }
             let temp = *result;
             let (r, k) = lp2(
-                &proj[..n],
+                &proj,
                 radius,
                 Vec2::new(-li.direction.y, li.direction.x),
                 true,
             );
-            *result = if k < n { temp } else { r };
+            *result = if k < proj.len() { temp } else { r };
             distance = det(li.direction, li.point - *result);
         }
     }
@@ -425,21 +543,185 @@ fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &m
 /// and the largest violation of the agents' is minimised.
 #[must_use]
 pub fn solve(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
-    let ls = lines.as_slice();
-    let (mut result, k) = lp2(ls, max_speed, preferred, false);
+    let (mut result, k) = lp2(lines, max_speed, preferred, false);
     if k < lines.obstacles {
         // The obstacles' own half-planes have no common point (an agent
         // wedged in a corner deeper than its radius): all become soft.
-        lp3(ls, 0, k, max_speed, &mut result);
-    } else if k < ls.len() {
-        lp3(ls, lines.obstacles, k, max_speed, &mut result);
+        lp3(lines, 0, k, max_speed, &mut result);
+    } else if k < lines.len() {
+        lp3(lines, lines.obstacles, k, max_speed, &mut result);
     }
     result
+}
+
+/// The largest speed along the unit direction `u`, up to `cap`, that the
+/// upper bounds of every line admit (the lower ones, a neighbour closing
+/// from behind, are that neighbour's to meet): four lines at a time, each
+/// bounding line's cap `det(d, p) / det(d, u)` (`det(d, u) < −1e-6`) lane
+/// by lane, folded into the minimum in the lines' order. A line that does
+/// not bound the ray folds in −∞ / −1 = +∞.
+#[must_use]
+pub fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
+    let (ux, uy) = (Vec4::splat(u.x), Vec4::splat(u.y));
+    let mut hi = cap;
+    let mut at = 0;
+    while at < lines.len() {
+        let [px, py, dx, dy] = lines.four(at);
+        let a = dx * uy - dy * ux;
+        let b = dx * py - dy * px;
+        let bounds = a.cmplt(Vec4::splat(-1e-6));
+        let q = (Vec4::select(bounds, b, Vec4::NEG_INFINITY)
+            / Vec4::select(bounds, a, Vec4::NEG_ONE))
+        .to_array();
+        for &x in &q[..(lines.len() - at).min(4)] {
+            hi = hi.min(x);
+        }
+        at += 4;
+    }
+    hi.max(0.0)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The linear programs and ray cap as they were before the lines were
+    /// read four at a time (one line at a time, branches): the reference
+    /// the new ones must match bit for bit.
+    mod reference {
+        use super::super::{det, Line, EPS, MAX_LINES};
+        use glam::Vec2;
+
+        /// Linear program on line `i`: the point of line `i` admitted by lines
+        /// `0..i` and the disc of radius `radius` that is nearest `opt` (or
+        /// farthest along `opt` when `direction_opt`). `None` if there is none.
+        fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
+            let li = lines[i];
+            let dot = li.point.dot(li.direction);
+            let disc = dot * dot + radius * radius - li.point.length_squared();
+            if disc < 0.0 {
+                return None;
+            }
+            let sq = disc.sqrt();
+            let mut t_left = -dot - sq;
+            let mut t_right = -dot + sq;
+            for lj in &lines[..i] {
+                let denom = det(li.direction, lj.direction);
+                let numer = det(lj.direction, li.point - lj.point);
+                if denom.abs() <= EPS {
+                    if numer < 0.0 {
+                        return None;
+                    }
+                    continue;
+                }
+                let t = numer / denom;
+                if denom >= 0.0 {
+                    t_right = t_right.min(t);
+                } else {
+                    t_left = t_left.max(t);
+                }
+                if t_left > t_right {
+                    return None;
+                }
+            }
+            let t = if direction_opt {
+                if opt.dot(li.direction) > 0.0 {
+                    t_right
+                } else {
+                    t_left
+                }
+            } else {
+                li.direction.dot(opt - li.point).clamp(t_left, t_right)
+            };
+            Some(li.point + li.direction * t)
+        }
+
+        /// Linear program in 2D: the velocity in the disc nearest `opt` that every
+        /// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
+        /// the index of the first line that could not be met (`result` then meets
+        /// lines `0..n`).
+        fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
+            let mut result = if direction_opt {
+                opt * radius
+            } else if opt.length_squared() > radius * radius {
+                opt.normalize_or_zero() * radius
+            } else {
+                opt
+            };
+            for i in 0..lines.len() {
+                if det(lines[i].direction, lines[i].point - result) > 0.0 {
+                    match lp1(lines, i, radius, opt, direction_opt) {
+                        Some(r) => result = r,
+                        None => return (result, i),
+                    }
+                }
+            }
+            (result, lines.len())
+        }
+
+        /// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
+        /// lines (the first `n_obstacles`) and minimises the largest violation of
+        /// the others, from line `begin` on.
+        fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
+            let mut distance = 0.0f32;
+            let mut proj = [Line::default(); MAX_LINES];
+            for i in begin..lines.len() {
+                let li = lines[i];
+                if det(li.direction, li.point - *result) > distance {
+                    proj[..n_obstacles].copy_from_slice(&lines[..n_obstacles]);
+                    let mut n = n_obstacles;
+                    for lj in &lines[n_obstacles..i] {
+                        let d = det(li.direction, lj.direction);
+                        let point = if d.abs() <= EPS {
+                            if li.direction.dot(lj.direction) > 0.0 {
+                                continue; // parallel, same direction
+                            }
+                            (li.point + lj.point) * 0.5
+                        } else {
+                            li.point + li.direction * (det(lj.direction, li.point - lj.point) / d)
+                        };
+                        let direction = (lj.direction - li.direction).normalize_or_zero();
+                        proj[n] = Line { point, direction };
+                        n += 1;
+                    }
+                    let temp = *result;
+                    let (r, k) = lp2(
+                        &proj[..n],
+                        radius,
+                        Vec2::new(-li.direction.y, li.direction.x),
+                        true,
+                    );
+                    *result = if k < n { temp } else { r };
+                    distance = det(li.direction, li.point - *result);
+                }
+            }
+        }
+
+        /// The former `solve`, on a slice with `obstacles` obstacle lines first.
+        pub fn solve_ref(ls: &[Line], obstacles: usize, max_speed: f32, preferred: Vec2) -> Vec2 {
+            let (mut result, k) = lp2(ls, max_speed, preferred, false);
+            if k < obstacles {
+                lp3(ls, 0, k, max_speed, &mut result);
+            } else if k < ls.len() {
+                lp3(ls, obstacles, k, max_speed, &mut result);
+            }
+            result
+        }
+
+        /// The former scalar ray cap.
+        pub fn ray_cap_ref(ls: &[Line], u: Vec2, cap: f32) -> f32 {
+            let mut hi = cap;
+            for l in ls {
+                let a = l.direction.x * u.y - l.direction.y * u.x;
+                let b = l.direction.x * l.point.y - l.direction.y * l.point.x;
+                let bounds = a < -1e-6;
+                let q = if bounds { b } else { f32::NEG_INFINITY } / if bounds { a } else { -1.0 };
+                hi = hi.min(q);
+            }
+            hi.max(0.0)
+        }
+
+    }
 
     /// The four-lane lines are the scalar ones, bit for bit: seeded
     /// pairs far, near, overlapping and coincident, with and without
@@ -489,6 +771,56 @@ mod tests {
                 );
             }
         }
+    }
+
+    /// The linear programs and the ray cap, four lines at a time, give the
+    /// former ones' bits: seeded line sets of every size, with obstacle
+    /// lines, feasible and not (the 3D program too), parallel lines
+    /// included.
+    #[test]
+    fn four_line_programs_give_the_former_bits() {
+        let mut rng = crate::rng::Rng::new(3);
+        let mut lp3_runs = 0;
+        for trial in 0..30_000 {
+            let n_obs = [0, 0, 1, 3][trial % 4];
+            let n = n_obs + (trial / 4) % (MAX_NEIGHBOURS + 1);
+            let mut set = Lines::default();
+            let mut flat = Vec::new();
+            for k in 0..n {
+                let a = rng.range(-3.2, 3.2);
+                // Some directions repeated exactly (parallel lines).
+                let a = if k > 0 && rng.range(0.0, 1.0) < 0.1 { flat.last().map_or(a, |l: &Line| l.direction.y.atan2(l.direction.x)) } else { a };
+                let l = Line {
+                    point: Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5)),
+                    direction: Vec2::new(a.cos(), a.sin()),
+                };
+                if k < n_obs {
+                    set.push_obstacle(l);
+                } else {
+                    set.push_agent(l);
+                }
+                flat.push(l);
+            }
+            let pref = Vec2::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+            let cap = rng.range(0.5, 2.0);
+            let got = solve(&set, cap, pref);
+            let want = reference::solve_ref(&flat, n_obs, cap, pref);
+            assert_eq!(
+                (got.x.to_bits(), got.y.to_bits()),
+                (want.x.to_bits(), want.y.to_bits()),
+                "trial {trial}: {got} vs {want}"
+            );
+            if !set.admits(got, 1e-4) {
+                lp3_runs += 1;
+            }
+            let u = Vec2::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)).normalize_or_zero();
+            assert_eq!(
+                ray_cap(&set, u, cap).to_bits(),
+                reference::ray_cap_ref(&flat, u, cap).to_bits(),
+                "trial {trial}"
+            );
+        }
+        assert!(lp3_runs > 1000, "{lp3_runs} infeasible sets");
     }
 
     #[test]
@@ -591,6 +923,6 @@ mod tests {
         ));
         let v = solve(&ls, 2.0, Vec2::X);
         assert!(v.is_finite());
-        assert!(ls.as_slice()[0].admits(v, 1e-4), "{v}");
+        assert!(ls.get(0).admits(v, 1e-4), "{v}");
     }
 }
