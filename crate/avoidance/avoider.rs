@@ -133,6 +133,9 @@ pub struct Avoider {
     pos: Vec<f32>,
     /// The agents in the grid's bucket order.
     peers: Vec<Peer>,
+    /// Their positions' and unit headings' x and y, in the same order,
+    /// then four padding lanes: the candidates are read four at a time.
+    lanes: [Vec<f32>; 4],
     /// One query's candidates: squared distance, slot in `peers`.
     cand_d2: Vec<f32>,
     cand_slot: Vec<u32>,
@@ -201,6 +204,11 @@ impl Avoider {
                 index: i as u32,
             }
         }));
+        for (f, lane) in self.lanes.iter_mut().enumerate() {
+            lane.clear();
+            lane.extend(self.peers.iter().map(|q| [q.pos.x, q.pos.y, q.fwd.x, q.fwd.y][f]));
+            lane.extend([0.0; 4]);
+        }
         let r = cfg.radius + cfg.margin;
         let r2 = cfg.reach * cfg.reach;
         let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
@@ -220,27 +228,113 @@ impl Avoider {
             let s = &states[i];
             let u_pref = trig::unit(h_pref);
             let v_pref = u_pref * s_pref;
+            // ORCA's view before the neighbours (none of it reads them):
+            // the obstacles' half-planes, a way blocked by a wall, and the
+            // way sought, along which the keep-right rule reads every
+            // neighbour in reach while they are gathered.
+            let orca = cfg.method == AvoidanceMethod::Orca;
+            lines.clear();
+            let unfinished = me.prio.is_finite();
+            let mut walled = false;
+            let (mut v_seek0, mut u_seek) = (v_pref, u_pref);
+            if orca {
+                for o in obstacles {
+                    let (dist, nrm) = o.distance_normal(s.pos);
+                    if dist - r < cfg.reach {
+                        lines.push_obstacle(orca::obstacle_line(
+                            nrm,
+                            dist,
+                            r,
+                            cfg.obstacle_horizon,
+                            p.dt,
+                        ));
+                    }
+                }
+                // An unfinished agent whose funnel turns it in place
+                // (v_dt ≈ 0) towards a wall is blocked too: the
+                // funnel's heading is tested against the walls at a
+                // walking speed, or the funnel and the avoidance take
+                // turns for ever at a wall's corner. Blocked by a wall,
+                // it seeks its goal's direction (the funnel's γ turns
+                // with the agent's own heading).
+                walled =
+                    unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
+                // At rest, too ([`crate::avoidance::stalled`]): γ
+                // turns with the agent turning on the spot.
+                let to_goal = walled || stalled::seeks_goal(unfinished, me.v, s_pref);
+                if let Some(&g) = self.goals.get(i) {
+                    if to_goal && (g - s.pos).length_squared() > 1e-6 {
+                        u_seek = (g - s.pos).normalize();
+                        v_seek0 = u_seek * s_pref.max(DODGE_SPEED);
+                    }
+                }
+            }
+            // Keep right early ([`crate::avoidance::passing`]): the
+            // funnel's velocity turned right, away from oncoming
+            // neighbours anywhere in reach, unless that runs into a
+            // wall. Every neighbour in reach tells the rule whether it
+            // comes the other way, the nearest or not (the largest ask
+            // wins: the order does not matter); read only where the
+            // turn can apply (ORCA, an unfinished agent not blocked by a
+            // wall).
+            let mut lane = Passing::new(u_seek, 2.0 * r);
+            let passing = orca && unfinished && !walled;
             // The k nearest neighbours, nearest first (ties: grid order,
             // deterministic): the candidates in reach gathered without a
-            // branch, then ranked (below RANKED of them) by counting the
-            // nearer ones, earlier ties first; the same k, in the same
-            // order, as sorting them by insertion.
+            // branch, four at a time, then ranked (below RANKED of them) by
+            // a sorting network on (d², gather order); the same k, in the
+            // same order, as sorting them by insertion.
             let (runs, n_runs) = self.grid.candidate_runs(me.pos);
             let total = runs[..n_runs]
                 .iter()
                 .map(|&(lo, hi)| (hi - lo) as usize)
                 .sum::<usize>();
-            if self.cand_d2.len() < total {
-                self.cand_d2.resize(total, 0.0);
-                self.cand_slot.resize(total, 0);
+            // Room for a run's last four lanes past its end, rounded up to
+            // a power of two: indices masked by it need no bounds check.
+            let room = (total + 4).next_power_of_two();
+            if self.cand_d2.len() < room {
+                self.cand_d2.resize(room, 0.0);
+                self.cand_slot.resize(room, 0);
             }
+            let (cand_d2, cand_slot) = (&mut self.cand_d2[..room], &mut self.cand_slot[..room]);
+            let wrap = room - 1;
+            let [lx, ly, lfx, lfy] = &self.lanes;
+            let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
+            let r2v = Vec4::splat(r2);
             let mut m = 0usize;
             for &(lo, hi) in &runs[..n_runs] {
-                for (q, sj) in self.peers[lo as usize..hi as usize].iter().zip(lo..hi) {
-                    let d2 = (me.pos - q.pos).length_squared();
-                    self.cand_d2[m] = d2;
-                    self.cand_slot[m] = sj;
-                    m += usize::from((sj as usize != slot) & (d2 < r2));
+                let (lo, hi) = (lo as usize, hi as usize);
+                let mut a = lo;
+                while a < hi {
+                    let (qx, qy) = (
+                        Vec4::from_slice(&lx[a..a + 4]),
+                        Vec4::from_slice(&ly[a..a + 4]),
+                    );
+                    // (me.pos − q.pos)², as the scalar length_squared.
+                    let (dx, dy) = (mx - qx, my - qy);
+                    let d2 = dx * dx + dy * dy;
+                    let inside = d2.cmplt(r2v);
+                    if passing {
+                        lane.see4(
+                            qx - mx,
+                            qy - my,
+                            Vec4::from_slice(&lfx[a..a + 4]),
+                            Vec4::from_slice(&lfy[a..a + 4]),
+                            inside,
+                        );
+                    }
+                    // In reach, in the run, and not the agent itself (its
+                    // lane bit, if in these four: the shift saturates to
+                    // bit 31 otherwise).
+                    let own = (1u32 << slot.wrapping_sub(a).min(31)) & 0xf;
+                    let keep = inside.bitmask() & orca::lane_mask(0, hi - a) & !own;
+                    for (l, d) in d2.to_array().into_iter().enumerate() {
+                        // m < total + 4 ≤ room: the mask changes nothing.
+                        cand_d2[m & wrap] = d;
+                        cand_slot[m & wrap] = (a + l) as u32;
+                        m += ((keep >> l) & 1) as usize;
+                    }
+                    a += 4;
                 }
             }
             // Every candidate but the agent itself (its own cell is in
@@ -294,55 +388,7 @@ impl Avoider {
                     walls: false,
                 },
                 AvoidanceMethod::Orca => {
-                    lines.clear();
-                    for o in obstacles {
-                        let (dist, nrm) = o.distance_normal(s.pos);
-                        if dist - r < cfg.reach {
-                            lines.push_obstacle(orca::obstacle_line(
-                                nrm,
-                                dist,
-                                r,
-                                cfg.obstacle_horizon,
-                                p.dt,
-                            ));
-                        }
-                    }
-                    // An unfinished agent whose funnel turns it in place
-                    // (v_dt ≈ 0) towards a wall is blocked too: the
-                    // funnel's heading is tested against the walls at a
-                    // walking speed, or the funnel and the avoidance take
-                    // turns for ever at a wall's corner. Blocked by a wall,
-                    // it seeks its goal's direction (the funnel's γ turns
-                    // with the agent's own heading).
-                    let unfinished = me.prio.is_finite();
-                    let walled =
-                        unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
-                    // At rest, too ([`crate::avoidance::stalled`]): γ
-                    // turns with the agent turning on the spot.
-                    let to_goal = walled || stalled::seeks_goal(unfinished, me.v, s_pref);
-                    let (v_pref, u_seek) = match self.goals.get(i) {
-                        Some(&g) if to_goal && (g - s.pos).length_squared() > 1e-6 => {
-                            let u = (g - s.pos).normalize();
-                            (u * s_pref.max(DODGE_SPEED), u)
-                        }
-                        _ => (v_pref, u_pref),
-                    };
-                    // Keep right early ([`crate::avoidance::passing`]): the
-                    // funnel's velocity turned right, away from oncoming
-                    // neighbours anywhere in reach, unless that runs into a
-                    // wall.
-                    // Every neighbour in reach tells the rule whether it
-                    // comes the other way, the nearest or not (the largest
-                    // ask wins: the order does not matter); read only where
-                    // the turn can apply (ORCA, an unfinished agent not
-                    // blocked by a wall).
-                    let mut lane = Passing::new(u_seek, 2.0 * r);
-                    if unfinished && !walled {
-                        for &sj in &self.cand_slot[..m] {
-                            let q = &self.peers[sj as usize];
-                            lane.see(q.pos - me.pos, q.fwd);
-                        }
-                    }
+                    let v_pref = v_seek0;
                     let u_lane = lane.turn(u_seek);
                     let turned = unfinished
                         && !walled

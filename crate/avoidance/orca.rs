@@ -233,7 +233,8 @@ impl Lines {
 
 /// Bits `lo..hi` of a 4-lane mask (`hi` clamped to 4).
 #[inline]
-fn lane_mask(lo: usize, hi: usize) -> u32 {
+#[must_use]
+pub fn lane_mask(lo: usize, hi: usize) -> u32 {
     (0xf_u32 >> (4 - hi.min(4))) & !((1_u32 << lo.min(4)) - 1)
 }
 

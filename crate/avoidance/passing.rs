@@ -63,7 +63,7 @@
 //! their goal's direction, with no keep-right bias into a wall
 //! ([`crate::avoidance::stalled`]).
 
-use glam::Vec2;
+use glam::{BVec4A, Vec2, Vec4};
 
 use crate::avoidance::avoider::ONCOMING_COS;
 
@@ -115,6 +115,27 @@ impl Passing {
         let ask = (self.clear - lat) * LANE_SHARE / ahead;
         let kept = self.tan.max(ask.min(LANE_MAX_TAN));
         self.tan = if asks { kept } else { self.tan };
+    }
+
+    /// [`Passing::see`] for four neighbours at once, lane by lane (those
+    /// not in `lanes` are not read): the same tests and ask in every lane,
+    /// folded in by their maximum. The asks kept are positive and finite,
+    /// so the order they are folded in does not change the largest.
+    #[inline]
+    pub fn see4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, lanes: BVec4A) {
+        let (ux, uy) = (Vec4::splat(self.u.x), Vec4::splat(self.u.y));
+        let (lx, ly) = (Vec4::splat(self.left.x), Vec4::splat(self.left.y));
+        let clear = Vec4::splat(self.clear);
+        let ahead = rx * ux + ry * uy;
+        let lat = rx * lx + ry * ly;
+        let asks = lanes
+            & !ahead.cmple(Vec4::ZERO)
+            & !(fx * ux + fy * uy).cmpge(Vec4::splat(ONCOMING_COS))
+            & !lat.cmpge(clear)
+            & !lat.cmple(-clear);
+        let ask = (clear - lat) * Vec4::splat(LANE_SHARE) / ahead;
+        let kept = Vec4::select(asks, ask.min(Vec4::splat(LANE_MAX_TAN)), Vec4::ZERO);
+        self.tan = self.tan.max(kept.max_element());
     }
 
     /// True when an oncoming neighbour asks for a turn.
