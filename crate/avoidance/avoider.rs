@@ -291,14 +291,20 @@ impl Avoider {
                 .sum::<usize>();
             // Room for a run's last four lanes past its end, rounded up to
             // a power of two: indices masked by it need no bounds check.
-            let room = (total + 4).next_power_of_two();
-            if self.cand_d2.len() < room {
-                self.cand_d2.resize(room, 0.0);
-                self.cand_slot.resize(room, 0);
+            let wrap = (total + 4).next_power_of_two() - 1;
+            if self.cand_d2.len() <= wrap {
+                self.cand_d2.resize(wrap + 1, 0.0);
+                self.cand_slot.resize(wrap + 1, 0);
             }
-            let (cand_d2, cand_slot) = (&mut self.cand_d2[..room], &mut self.cand_slot[..room]);
-            let wrap = room - 1;
-            let [lx, ly, lfx, lfy] = &self.lanes;
+            let (cand_d2, cand_slot) = (&mut self.cand_d2[..=wrap], &mut self.cand_slot[..=wrap]);
+            // Slices held locally: their bounds stay in registers across
+            // the stores below.
+            let (lx, ly, lfx, lfy) = (
+                &self.lanes[0][..],
+                &self.lanes[1][..],
+                &self.lanes[2][..],
+                &self.lanes[3][..],
+            );
             let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
             let r2v = Vec4::splat(r2);
             let mut m = 0usize;
@@ -329,7 +335,7 @@ impl Avoider {
                     let own = (1u32 << slot.wrapping_sub(a).min(31)) & 0xf;
                     let keep = inside.bitmask() & orca::lane_mask(0, hi - a) & !own;
                     for (l, d) in d2.to_array().into_iter().enumerate() {
-                        // m < total + 4 ≤ room: the mask changes nothing.
+                        // m < total + 4 ≤ wrap + 1: the mask changes nothing.
                         cand_d2[m & wrap] = d;
                         cand_slot[m & wrap] = (a + l) as u32;
                         m += ((keep >> l) & 1) as usize;
@@ -389,6 +395,7 @@ impl Avoider {
                 },
                 AvoidanceMethod::Orca => {
                     let v_pref = v_seek0;
+                    lane.settle();
                     let u_lane = lane.turn(u_seek);
                     let turned = unfinished
                         && !walled

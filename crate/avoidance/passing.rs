@@ -81,6 +81,8 @@ pub struct Passing {
     left: Vec2,
     clear: f32,
     tan: f32,
+    /// [`Passing::see4`]'s asks, lane by lane (each ≥ 0).
+    tan4: Vec4,
 }
 
 impl Passing {
@@ -94,6 +96,7 @@ impl Passing {
             left: Vec2::new(-u.y, u.x),
             clear,
             tan: 0.0,
+            tan4: Vec4::ZERO,
         }
     }
 
@@ -135,7 +138,16 @@ impl Passing {
             & !lat.cmple(-clear);
         let ask = (clear - lat) * Vec4::splat(LANE_SHARE) / ahead;
         let kept = Vec4::select(asks, ask.min(Vec4::splat(LANE_MAX_TAN)), Vec4::ZERO);
-        self.tan = self.tan.max(kept.max_element());
+        // Lane by lane until read ([`Passing::settle`]).
+        self.tan4 = self.tan4.max(kept);
+    }
+
+    /// Folds the asks [`Passing::see4`] kept lane by lane into the
+    /// largest (call before [`Passing::active`] or [`Passing::turn`]).
+    #[inline]
+    pub fn settle(&mut self) {
+        self.tan = self.tan.max(self.tan4.max_element());
+        self.tan4 = Vec4::ZERO;
     }
 
     /// True when an oncoming neighbour asks for a turn.
