@@ -231,6 +231,12 @@ impl Lines {
     }
 }
 
+/// The lanes below `n` (all four from 4 on).
+#[inline]
+fn lanes_below(n: usize) -> BVec4A {
+    Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat(n.min(4) as f32))
+}
+
 /// Bits `lo..hi` of a 4-lane mask (`hi` clamped to 4).
 #[inline]
 #[must_use]
@@ -452,9 +458,12 @@ fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> 
         }
         let t = numer / denom;
         let right = denom.cmpge(Vec4::ZERO);
-        let t_r = Vec4::select(!parallel & right, t, Vec4::INFINITY).to_array();
-        let t_l = Vec4::select(!parallel & !right, t, Vec4::NEG_INFINITY).to_array();
-        for k in 0..(i - at).min(4) {
+        // Lanes past line i − 1 fold in ±∞ too: all four folded, always
+        // (no loop whose length varies, mispredicted at its end).
+        let bounds = !parallel & lanes_below(i - at);
+        let t_r = Vec4::select(bounds & right, t, Vec4::INFINITY).to_array();
+        let t_l = Vec4::select(bounds & !right, t, Vec4::NEG_INFINITY).to_array();
+        for k in 0..4 {
             t_right = t_right.min(t_r[k]);
             t_left = t_left.max(t_l[k]);
         }
@@ -570,11 +579,14 @@ pub fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
         let [px, py, dx, dy] = lines.four(at);
         let a = dx * uy - dy * ux;
         let b = dx * py - dy * px;
-        let bounds = a.cmplt(Vec4::splat(-1e-6));
+        // Lanes past the last line bound nothing either: all four folded,
+        // always.
+        let bounds = a.cmplt(Vec4::splat(-1e-6))
+            & lanes_below(lines.len() - at);
         let q = (Vec4::select(bounds, b, Vec4::NEG_INFINITY)
             / Vec4::select(bounds, a, Vec4::NEG_ONE))
         .to_array();
-        for &x in &q[..(lines.len() - at).min(4)] {
+        for x in q {
             hi = hi.min(x);
         }
         at += 4;
