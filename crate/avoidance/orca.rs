@@ -139,11 +139,11 @@ impl Lines {
             l[3].write_to_slice(&mut self.dy[at..at + 4]);
             self.len += n.min(4);
         } else {
-            let lanes = l.map(|x| x.to_array());
-            for k in 0..n.min(4) {
+            let [px, py, dx, dy] = l.map(|x| x.to_array());
+            for (((&x, &y), &ux), &uy) in px.iter().zip(&py).zip(&dx).zip(&dy).take(n) {
                 self.push_agent(Line {
-                    point: Vec2::new(lanes[0][k], lanes[1][k]),
-                    direction: Vec2::new(lanes[2][k], lanes[3][k]),
+                    point: Vec2::new(x, y),
+                    direction: Vec2::new(ux, uy),
                 });
             }
         }
@@ -280,7 +280,9 @@ fn det(a: Vec2, b: Vec2) -> f32 {
 /// The cut-off circle and the overlap differ only in the inverse time
 /// (1/horizon, 1/dt) and the threshold below which `tie` replaces the
 /// unit vector (0, 1e-9), and share their arithmetic.
-#[allow(clippy::too_many_arguments)]
+// `!(a > b)`, not `a <= b`: the same outcome as the branch it replaces,
+// NaN included.
+#[allow(clippy::too_many_arguments, clippy::neg_cmp_op_on_partial_ord)]
 #[inline]
 #[must_use]
 pub fn agent_line(

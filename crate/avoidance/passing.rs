@@ -107,6 +107,9 @@ impl Passing {
     /// neighbours). The ask is computed whatever the tests say and kept
     /// only when they all pass (the same value as the early returns'
     /// form, NaN cases included).
+    // The early returns' tests negated as written (`!(a <= b)`): the same
+    // outcome, NaN included.
+    #[allow(clippy::neg_cmp_op_on_partial_ord)]
     #[inline]
     pub fn see(&mut self, rel: Vec2, fwd: Vec2) {
         let ahead = rel.dot(self.u);
