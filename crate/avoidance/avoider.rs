@@ -136,6 +136,10 @@ pub struct Avoider {
     /// Their positions' and unit headings' x and y, in the same order,
     /// then four padding lanes: the candidates are read four at a time.
     lanes: [Vec<f32>; 4],
+    /// One agent's k nearest, lane by lane (position x, y, heading x, y,
+    /// speed, priority, tie x, y): kept between agents, its lanes past k
+    /// are never read unmasked (nothing to clear per agent).
+    nb: [[f32; MAX_NEIGHBOURS]; 8],
     /// One query's candidates: squared distance, slot in `peers`.
     cand_d2: Vec<f32>,
     cand_slot: Vec<u32>,
@@ -410,7 +414,7 @@ impl Avoider {
                     // test a lane mask: their outcomes flip from neighbour
                     // to neighbour, and as branches they were mispredicted
                     // about every other time).
-                    let mut nb = [[0.0f32; MAX_NEIGHBOURS]; 8];
+                    let nb = &mut self.nb;
                     for (l, &(_, sj)) in near[..k].iter().enumerate() {
                         let q = &self.peers[sj as usize];
                         // The tie direction, +y when i < j, else −y (the
@@ -434,7 +438,8 @@ impl Avoider {
                     let (inv_h, inv_dt) = (1.0 / cfg.horizon, 1.0 / p.dt);
                     let splat = Vec4::splat;
                     let moving = BVec4A::splat(me.v >= STUCK_SPEED);
-                    for c in (0..k).step_by(4) {
+                    let mut c = 0;
+                    while c < k {
                         let lane = |f: usize| Vec4::from_slice(&nb[f][c..c + 4]);
                         let (qx, qy, fx, fy, qv, prio, tie_x, tie_y) = (
                             lane(0),
@@ -502,6 +507,7 @@ impl Avoider {
                             &orca::agent_lines4(s.pos, v_me, &pairs, inv_h, inv_dt),
                             k - c,
                         );
+                        c += 4;
                     }
                     let oncoming = oncoming.any();
                     // An oncoming neighbour ahead: keep right at once (at
