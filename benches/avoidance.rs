@@ -10,16 +10,24 @@
 //! Throughput is per agent (ns per agent update = 1e9 / elements/s).
 //!
 //! Run with `cargo bench --bench avoidance -- --warm-up-time 1 --measurement-time 3`.
+//! After criterion's groups it prints the same-run ratio ORCA / off at
+//! both sizes: off and ORCA rounds interleaved (a whole 300-step restart
+//! cycle each, thread CPU time), the best round of each kept, so a load
+//! that comes and goes during the run weighs on both alike. The ratio
+//! alone: a filter that matches no group, e.g. `<bench binary> --bench
+//! same-run`.
 
 use std::time::{Duration, Instant};
 
-use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use criterion::{BenchmarkId, Criterion, Throughput};
 use steering::avoidance::AvoidanceMethod;
 use steering::table::EtaTable;
 
 #[path = "avoid_world.rs"]
 mod avoid_world;
 use avoid_world::world;
+#[path = "cpu_clock.rs"]
+mod cpu_clock;
 
 fn bench(c: &mut Criterion) {
     let table = EtaTable::from_bytes(include_bytes!("../tables/eta.bin")).unwrap();
@@ -56,5 +64,50 @@ fn bench(c: &mut Criterion) {
     g.finish();
 }
 
-criterion_group!(benches, bench);
-criterion_main!(benches);
+/// Steps of one restart cycle (as in [`bench`]).
+const CYCLE: usize = 300;
+
+/// ns per agent update over one restart cycle from `w0` (thread CPU time;
+/// wall time without that clock). The clone is not timed.
+fn cycle_ns(w0: &steering::world::World, table: &EtaTable) -> f64 {
+    let mut w = w0.clone();
+    let (t0, w_0) = (cpu_clock::thread_ns(), Instant::now());
+    for _ in 0..CYCLE {
+        w.step(table);
+    }
+    let ns = match (t0, cpu_clock::thread_ns()) {
+        (Some(a), Some(b)) => (b - a) as f64,
+        _ => w_0.elapsed().as_secs_f64() * 1e9,
+    };
+    std::hint::black_box(&w);
+    ns / (CYCLE * w0.agents.len()) as f64
+}
+
+/// Same-run ratio ORCA / off: rounds interleaved, the best of each kept.
+fn ratio() {
+    let table = EtaTable::from_bytes(include_bytes!("../tables/eta.bin")).unwrap();
+    for (side, rounds) in [(32usize, 9), (64, 5)] {
+        let off = world(side, AvoidanceMethod::Off);
+        let orca = world(side, AvoidanceMethod::Orca);
+        let (mut best_off, mut best_orca) = (f64::INFINITY, f64::INFINITY);
+        for _ in 0..rounds {
+            best_off = best_off.min(cycle_ns(&off, &table));
+            best_orca = best_orca.min(cycle_ns(&orca, &table));
+        }
+        println!(
+            "same-run ratio ({} agents, best of {rounds} interleaved {CYCLE}-step cycles): ORCA / off {best_orca:.1} / {best_off:.1} ns per agent update = {:.2}",
+            side * side,
+            best_orca / best_off
+        );
+    }
+}
+
+fn main() {
+    let mut c = Criterion::default().configure_from_args();
+    bench(&mut c);
+    // Not under `cargo test --benches` (criterion's test mode).
+    if std::env::args().any(|a| a == "--bench") {
+        ratio();
+    }
+    c.final_summary();
+}

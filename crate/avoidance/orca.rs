@@ -31,7 +31,7 @@
 //! Arithmetic: only `+ − × ÷` and `sqrt` (all IEEE-exact), so the result is
 //! the same bits natively and in wasm.
 
-use glam::Vec2;
+use glam::{BVec4A, Vec2, Vec4};
 
 /// Most agent half-planes per agent ([`crate::avoidance::AvoidanceConfig::max_neighbours`] ≤ this).
 pub const MAX_NEIGHBOURS: usize = 16;
@@ -62,9 +62,15 @@ impl Line {
 }
 
 /// A fixed-capacity set of half-planes: obstacles first, then agents.
+///
+/// Kept as a structure of arrays (points' x and y, directions' x and y):
+/// the linear program and the ray caps read four lines at a time.
 #[derive(Clone, Copy, Debug)]
 pub struct Lines {
-    lines: [Line; MAX_LINES],
+    px: [f32; MAX_LINES],
+    py: [f32; MAX_LINES],
+    dx: [f32; MAX_LINES],
+    dy: [f32; MAX_LINES],
     len: usize,
     obstacles: usize,
 }
@@ -72,7 +78,10 @@ pub struct Lines {
 impl Default for Lines {
     fn default() -> Self {
         Self {
-            lines: [Line::default(); MAX_LINES],
+            px: [0.0; MAX_LINES],
+            py: [0.0; MAX_LINES],
+            dx: [0.0; MAX_LINES],
+            dy: [0.0; MAX_LINES],
             len: 0,
             obstacles: 0,
         }
@@ -87,13 +96,21 @@ impl Lines {
         self.obstacles = 0;
     }
 
+    #[inline]
+    fn put(&mut self, at: usize, l: Line) {
+        self.px[at] = l.point.x;
+        self.py[at] = l.point.y;
+        self.dx[at] = l.direction.x;
+        self.dy[at] = l.direction.y;
+    }
+
     /// Adds an obstacle half-plane (call before any agent's); ignored when
     /// [`MAX_OBSTACLE_LINES`] are already in.
     #[inline]
     pub fn push_obstacle(&mut self, l: Line) {
         debug_assert_eq!(self.len, self.obstacles, "obstacles first");
         if self.obstacles < MAX_OBSTACLE_LINES {
-            self.lines[self.len] = l;
+            self.put(self.len, l);
             self.len += 1;
             self.obstacles += 1;
         }
@@ -103,16 +120,75 @@ impl Lines {
     #[inline]
     pub fn push_agent(&mut self, l: Line) {
         if self.len < MAX_LINES {
-            self.lines[self.len] = l;
+            self.put(self.len, l);
             self.len += 1;
         }
     }
 
-    /// The lines.
+    /// Adds the first `n` (≤ 4) of four agent half-planes given lane by
+    /// lane as [`agent_lines4`] returns them (points' x and y, directions'
+    /// x and y); those past the capacity are ignored.
+    #[inline]
+    pub fn push_agents4(&mut self, l: &[Vec4; 4], n: usize) {
+        let at = self.len;
+        if at + 4 <= MAX_LINES {
+            // All four lanes written at once; only `n` counted.
+            l[0].write_to_slice(&mut self.px[at..at + 4]);
+            l[1].write_to_slice(&mut self.py[at..at + 4]);
+            l[2].write_to_slice(&mut self.dx[at..at + 4]);
+            l[3].write_to_slice(&mut self.dy[at..at + 4]);
+            self.len += n.min(4);
+        } else {
+            let [px, py, dx, dy] = l.map(|x| x.to_array());
+            for (((&x, &y), &ux), &uy) in px.iter().zip(&py).zip(&dx).zip(&dy).take(n) {
+                self.push_agent(Line {
+                    point: Vec2::new(x, y),
+                    direction: Vec2::new(ux, uy),
+                });
+            }
+        }
+    }
+
+    /// Lines in the set.
     #[inline]
     #[must_use]
-    pub fn as_slice(&self) -> &[Line] {
-        &self.lines[..self.len]
+    pub fn len(&self) -> usize {
+        self.len
+    }
+
+    /// True when the set has no line.
+    #[inline]
+    #[must_use]
+    pub fn is_empty(&self) -> bool {
+        self.len == 0
+    }
+
+    /// Line `i` (< [`Lines::len`]).
+    #[inline]
+    #[must_use]
+    pub fn get(&self, i: usize) -> Line {
+        Line {
+            point: Vec2::new(self.px[i], self.py[i]),
+            direction: Vec2::new(self.dx[i], self.dy[i]),
+        }
+    }
+
+    /// The lines, in order.
+    pub fn iter(&self) -> impl Iterator<Item = Line> + '_ {
+        (0..self.len).map(|i| self.get(i))
+    }
+
+    /// Lines `at..at + 4` lane by lane (points' x and y, directions' x
+    /// and y), `at` a multiple of 4; lanes past [`Lines::len`] hold
+    /// whatever an earlier set left (callers mask them).
+    #[inline]
+    fn four(&self, at: usize) -> [Vec4; 4] {
+        [
+            Vec4::from_slice(&self.px[at..at + 4]),
+            Vec4::from_slice(&self.py[at..at + 4]),
+            Vec4::from_slice(&self.dx[at..at + 4]),
+            Vec4::from_slice(&self.dy[at..at + 4]),
+        ]
     }
 
     /// Obstacle half-planes in the set.
@@ -125,16 +201,65 @@ impl Lines {
     /// True when `v` satisfies every obstacle line (within `slack`).
     #[must_use]
     pub fn obstacles_admit(&self, v: Vec2, slack: f32) -> bool {
-        self.lines[..self.obstacles]
-            .iter()
-            .all(|l| l.admits(v, slack))
+        (0..self.obstacles).all(|i| self.get(i).admits(v, slack))
     }
 
     /// True when `v` satisfies every line (within `slack`).
     #[must_use]
     pub fn admits(&self, v: Vec2, slack: f32) -> bool {
-        self.as_slice().iter().all(|l| l.admits(v, slack))
+        self.iter().all(|l| l.admits(v, slack))
     }
+
+    /// The first line from `from` on that `v` violates (`det(direction,
+    /// point − v) > 0`), four lines tested at a time.
+    #[inline]
+    fn first_violated(&self, from: usize, v: Vec2) -> Option<usize> {
+        let (vx, vy) = (Vec4::splat(v.x), Vec4::splat(v.y));
+        let mut at = from & !3;
+        while at < self.len {
+            let [px, py, dx, dy] = self.four(at);
+            let bad = (dx * (py - vy) - dy * (px - vx)).cmpgt(Vec4::ZERO);
+            // Lanes before `from` or past the end do not count.
+            let lanes = lane_mask(from.saturating_sub(at), self.len - at);
+            let hits = bad.bitmask() & lanes;
+            if hits != 0 {
+                return Some(at + hits.trailing_zeros() as usize);
+            }
+            at += 4;
+        }
+        None
+    }
+}
+
+/// The lanes below `n` (all four from 4 on).
+#[inline]
+fn lanes_below(n: usize) -> BVec4A {
+    Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat(n.min(4) as f32))
+}
+
+/// Bits `lo..hi` of a 4-lane mask (`hi` clamped to 4).
+#[inline]
+#[must_use]
+pub fn lane_mask(lo: usize, hi: usize) -> u32 {
+    (0xf_u32 >> (4 - hi.min(4))) & !((1_u32 << lo.min(4)) - 1)
+}
+
+/// `a` when `c`, else `b`, through bit masks: a choice whose outcome
+/// flips from neighbour to neighbour, which the compiler would otherwise
+/// often turn into a branch (a select whose condition compares a loaded
+/// value becomes one on x86), mispredicted about every other time.
+#[inline(always)]
+#[must_use]
+pub fn pick(c: bool, a: f32, b: f32) -> f32 {
+    let m = u32::from(c).wrapping_neg();
+    f32::from_bits((a.to_bits() & m) | (b.to_bits() & !m))
+}
+
+/// [`pick`] for vectors.
+#[inline(always)]
+#[must_use]
+pub fn pick2(c: bool, a: Vec2, b: Vec2) -> Vec2 {
+    Vec2::new(pick(c, a.x, b.x), pick(c, a.y, b.y))
 }
 
 #[inline]
@@ -147,7 +272,17 @@ fn det(a: Vec2, b: Vec2) -> f32 {
 /// radii `r`), taking `share` of the avoidance (½ reciprocal). `dt` is the
 /// step, used when already overlapping; `tie` is a deterministic unit
 /// direction used where RVO2 would divide by zero (coincident agents).
-#[allow(clippy::too_many_arguments)]
+///
+/// Without a branch: which of the three cases applies (the cut-off
+/// circle, a leg of the cone, already overlapping) flips from neighbour to
+/// neighbour, so every case is computed and the answer selected (the same
+/// operations on the same values as a branch per case: the same bits).
+/// The cut-off circle and the overlap differ only in the inverse time
+/// (1/horizon, 1/dt) and the threshold below which `tie` replaces the
+/// unit vector (0, 1e-9), and share their arithmetic.
+// `!(a > b)`, not `a <= b`: the same outcome as the branch it replaces,
+// NaN included.
+#[allow(clippy::too_many_arguments, clippy::neg_cmp_op_on_partial_ord)]
 #[inline]
 #[must_use]
 pub fn agent_line(
@@ -166,52 +301,109 @@ pub fn agent_line(
     let rel_vel = v - vn;
     let dist_sq = rel_pos.length_squared();
     let r_sq = r * r;
-    let direction;
-    let u;
-    if dist_sq > r_sq {
-        let inv_h = 1.0 / horizon;
-        // Vector from the cut-off circle's centre to the relative velocity.
-        let w = rel_vel - rel_pos * inv_h;
-        let w_len_sq = w.length_squared();
-        let dot1 = w.dot(rel_pos);
-        if dot1 < 0.0 && dot1 * dot1 > r_sq * w_len_sq {
-            // Project on the cut-off circle.
-            let w_len = w_len_sq.sqrt();
-            let unit_w = if w_len > 0.0 { w / w_len } else { tie };
-            direction = Vec2::new(unit_w.y, -unit_w.x);
-            u = unit_w * (r * inv_h - w_len);
-        } else {
-            // Project on a leg of the cone.
-            let leg = (dist_sq - r_sq).sqrt();
-            // Left leg: pass with the neighbour on one's right; a pair
-            // meeting head-on both keep right instead (the same choice seen
-            // from either side: det is symmetric under the swap).
-            direction = if det(rel_pos, w) > 0.0 && !keep_right {
-                Vec2::new(
-                    rel_pos.x * leg - rel_pos.y * r,
-                    rel_pos.x * r + rel_pos.y * leg,
-                ) / dist_sq
-            } else {
-                -Vec2::new(
-                    rel_pos.x * leg + rel_pos.y * r,
-                    -rel_pos.x * r + rel_pos.y * leg,
-                ) / dist_sq
-            };
-            u = direction * rel_vel.dot(direction) - rel_vel;
-        }
-    } else {
-        // Already overlapping: leave within one step.
-        let inv_dt = 1.0 / dt;
-        let w = rel_vel - rel_pos * inv_dt;
-        let w_len = w.length();
-        let unit_w = if w_len > 1e-9 { w / w_len } else { tie };
-        direction = Vec2::new(unit_w.y, -unit_w.x);
-        u = unit_w * (r * inv_dt - w_len);
-    }
+    let overlap = !(dist_sq > r_sq);
+    // Both inverse times, whatever the case (loop-invariant for a caller
+    // running over its neighbours).
+    let (inv_h, inv_dt) = (1.0 / horizon, 1.0 / dt);
+    let inv = pick(overlap, inv_dt, inv_h);
+    // Vector from the cut-off circle's centre to the relative velocity
+    // (overlapping: from the circle one step away).
+    let w = rel_vel - rel_pos * inv;
+    let w_len_sq = w.length_squared();
+    let dot1 = w.dot(rel_pos);
+    let cut = overlap | ((dot1 < 0.0) & (dot1 * dot1 > r_sq * w_len_sq));
+    // Project on the cut-off circle (overlapping: leave within one step).
+    let w_len = w_len_sq.sqrt();
+    let min_len = pick(overlap, 1e-9, 0.0);
+    let unit_w = pick2(w_len > min_len, w / w_len, tie);
+    let dir_cut = Vec2::new(unit_w.y, -unit_w.x);
+    let u_cut = unit_w * (r * inv - w_len);
+    // Project on a leg of the cone (NaN when overlapping: not selected).
+    let leg = (dist_sq - r_sq).sqrt();
+    // Left leg: pass with the neighbour on one's right; a pair meeting
+    // head-on both keep right instead (the same choice seen from either
+    // side: det is symmetric under the swap).
+    let left = Vec2::new(
+        rel_pos.x * leg - rel_pos.y * r,
+        rel_pos.x * r + rel_pos.y * leg,
+    ) / dist_sq;
+    let right = -Vec2::new(
+        rel_pos.x * leg + rel_pos.y * r,
+        -rel_pos.x * r + rel_pos.y * leg,
+    ) / dist_sq;
+    let dir_leg = pick2((det(rel_pos, w) > 0.0) & !keep_right, left, right);
+    let u_leg = dir_leg * rel_vel.dot(dir_leg) - rel_vel;
+    let direction = pick2(cut, dir_cut, dir_leg);
+    let u = pick2(cut, u_cut, u_leg);
     Line {
         point: v + u * share,
         direction,
     }
+}
+
+/// Four neighbours' inputs to [`agent_lines4`], one per lane: positions,
+/// velocities, the combined radius, the share, the tie direction and
+/// whether the pair keeps right.
+#[derive(Clone, Copy, Debug)]
+pub struct Pairs4 {
+    /// Neighbour positions.
+    pub pn: (Vec4, Vec4),
+    /// Neighbour velocities.
+    pub vn: (Vec4, Vec4),
+    /// Sum of radii.
+    pub r: Vec4,
+    /// Share of the avoidance.
+    pub share: Vec4,
+    /// Tie directions.
+    pub tie: (Vec4, Vec4),
+    /// Keep right (head on).
+    pub keep_right: BVec4A,
+}
+
+/// [`agent_line`] for four neighbours at once, lane by lane (SIMD where
+/// the target has it): the same operations on the same values in every
+/// lane, so the same bits as four calls, and every choice a lane mask (no
+/// branch). `inv_h` and `inv_dt` are `1 / horizon` and `1 / dt`. Returns
+/// the lines' points and directions, `(px, py, dx, dy)`.
+#[inline]
+#[must_use]
+pub fn agent_lines4(p: Vec2, v: Vec2, q: &Pairs4, inv_h: f32, inv_dt: f32) -> [Vec4; 4] {
+    let (rx, ry) = (q.pn.0 - Vec4::splat(p.x), q.pn.1 - Vec4::splat(p.y));
+    let (vx, vy) = (Vec4::splat(v.x) - q.vn.0, Vec4::splat(v.y) - q.vn.1);
+    let r = q.r;
+    let dist_sq = rx * rx + ry * ry;
+    let r_sq = r * r;
+    let overlap = !dist_sq.cmpgt(r_sq);
+    let inv = Vec4::select(overlap, Vec4::splat(inv_dt), Vec4::splat(inv_h));
+    let (wx, wy) = (vx - rx * inv, vy - ry * inv);
+    let w_len_sq = wx * wx + wy * wy;
+    let dot1 = wx * rx + wy * ry;
+    let cut = overlap | (dot1.cmplt(Vec4::ZERO) & (dot1 * dot1).cmpgt(r_sq * w_len_sq));
+    let w_len = w_len_sq.sqrt();
+    let min_len = Vec4::select(overlap, Vec4::splat(1e-9), Vec4::ZERO);
+    let unit = w_len.cmpgt(min_len);
+    let ux = Vec4::select(unit, wx / w_len, q.tie.0);
+    let uy = Vec4::select(unit, wy / w_len, q.tie.1);
+    let c = r * inv - w_len;
+    let leg = (dist_sq - r_sq).sqrt();
+    let left_x = (rx * leg - ry * r) / dist_sq;
+    let left_y = (rx * r + ry * leg) / dist_sq;
+    let right_x = -(rx * leg + ry * r) / dist_sq;
+    let right_y = -(-rx * r + ry * leg) / dist_sq;
+    let to_left = (rx * wy - ry * wx).cmpgt(Vec4::ZERO) & !q.keep_right;
+    let lx = Vec4::select(to_left, left_x, right_x);
+    let ly = Vec4::select(to_left, left_y, right_y);
+    let d = vx * lx + vy * ly;
+    let dx = Vec4::select(cut, uy, lx);
+    let dy = Vec4::select(cut, -ux, ly);
+    let u_x = Vec4::select(cut, ux * c, lx * d - vx);
+    let u_y = Vec4::select(cut, uy * c, ly * d - vy);
+    [
+        Vec4::splat(v.x) + u_x * q.share,
+        Vec4::splat(v.y) + u_y * q.share,
+        dx,
+        dy,
+    ]
 }
 
 /// The half-plane that keeps an agent at signed distance `dist` from an
@@ -235,8 +427,16 @@ pub fn obstacle_line(n: Vec2, dist: f32, r: f32, horizon: f32, dt: f32) -> Line 
 /// Linear program on line `i`: the point of line `i` admitted by lines
 /// `0..i` and the disc of radius `radius` that is nearest `opt` (or
 /// farthest along `opt` when `direction_opt`). `None` if there is none.
-fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
-    let li = lines[i];
+///
+/// RVO2's loop over the lines before `i`, four at a time: each line's
+/// bound on the parameter along line `i` is computed lane by lane, and the
+/// bounds are folded into the interval in the lines' order (the same
+/// min/max sequence, so the same bits; a line that bounds nothing folds
+/// in ±∞, which changes no finite bound). The early `None` of a line that
+/// empties the interval is taken at the end instead: the interval only
+/// shrinks, so it is empty at the end if it ever was.
+fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
+    let li = lines.get(i);
     let dot = li.point.dot(li.direction);
     let disc = dot * dot + radius * radius - li.point.length_squared();
     if disc < 0.0 {
@@ -245,24 +445,34 @@ fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) ->
     let sq = disc.sqrt();
     let mut t_left = -dot - sq;
     let mut t_right = -dot + sq;
-    for lj in &lines[..i] {
-        let denom = det(li.direction, lj.direction);
-        let numer = det(lj.direction, li.point - lj.point);
-        if denom.abs() <= EPS {
-            if numer < 0.0 {
-                return None;
-            }
-            continue;
-        }
-        let t = numer / denom;
-        if denom >= 0.0 {
-            t_right = t_right.min(t);
-        } else {
-            t_left = t_left.max(t);
-        }
-        if t_left > t_right {
+    let (ldx, ldy) = (Vec4::splat(li.direction.x), Vec4::splat(li.direction.y));
+    let (lpx, lpy) = (Vec4::splat(li.point.x), Vec4::splat(li.point.y));
+    let mut at = 0;
+    while at < i {
+        let [px, py, dx, dy] = lines.four(at);
+        // det(li.direction, lj.direction), det(lj.direction, li.point − lj.point).
+        let denom = ldx * dy - ldy * dx;
+        let numer = dx * (lpy - py) - dy * (lpx - px);
+        let parallel = denom.abs().cmple(Vec4::splat(EPS));
+        let lanes = lane_mask(0, i - at);
+        if (parallel & numer.cmplt(Vec4::ZERO)).bitmask() & lanes != 0 {
             return None;
         }
+        let t = numer / denom;
+        let right = denom.cmpge(Vec4::ZERO);
+        // Lanes past line i − 1 fold in ±∞ too: all four folded, always
+        // (no loop whose length varies, mispredicted at its end).
+        let bounds = !parallel & lanes_below(i - at);
+        let t_r = Vec4::select(bounds & right, t, Vec4::INFINITY).to_array();
+        let t_l = Vec4::select(bounds & !right, t, Vec4::NEG_INFINITY).to_array();
+        for k in 0..4 {
+            t_right = t_right.min(t_r[k]);
+            t_left = t_left.max(t_l[k]);
+        }
+        at += 4;
+    }
+    if t_left > t_right {
+        return None;
     }
     let t = if direction_opt {
         if opt.dot(li.direction) > 0.0 {
@@ -279,8 +489,9 @@ fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) ->
 /// Linear program in 2D: the velocity in the disc nearest `opt` that every
 /// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
 /// the index of the first line that could not be met (`result` then meets
-/// lines `0..n`).
-fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
+/// lines `0..n`). The lines the result already meets are skipped four at
+/// a time ([`Lines::first_violated`]).
+fn lp2(lines: &Lines, radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
     let mut result = if direction_opt {
         opt * radius
     } else if opt.length_squared() > radius * radius {
@@ -288,13 +499,13 @@ fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, us
     } else {
         opt
     };
-    for i in 0..lines.len() {
-        if det(lines[i].direction, lines[i].point - result) > 0.0 {
-            match lp1(lines, i, radius, opt, direction_opt) {
-                Some(r) => result = r,
-                None => return (result, i),
-            }
+    let mut from = 0;
+    while let Some(i) = lines.first_violated(from, result) {
+        match lp1(lines, i, radius, opt, direction_opt) {
+            Some(r) => result = r,
+            None => return (result, i),
         }
+        from = i + 1;
     }
     (result, lines.len())
 }
@@ -302,15 +513,18 @@ fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, us
 /// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
 /// lines (the first `n_obstacles`) and minimises the largest violation of
 /// the others, from line `begin` on.
-fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
+fn lp3(lines: &Lines, n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
     let mut distance = 0.0f32;
-    let mut proj = [Line::default(); MAX_LINES];
+    let mut proj = Lines::default();
     for i in begin..lines.len() {
-        let li = lines[i];
+        let li = lines.get(i);
         if det(li.direction, li.point - *result) > distance {
-            proj[..n_obstacles].copy_from_slice(&lines[..n_obstacles]);
-            let mut n = n_obstacles;
-            for lj in &lines[n_obstacles..i] {
+            proj.clear();
+            for j in 0..n_obstacles {
+                proj.push_agent(lines.get(j));
+            }
+            for j in n_obstacles..i {
+                let lj = lines.get(j);
                 let d = det(li.direction, lj.direction);
                 let point = if d.abs() <= EPS {
                     if li.direction.dot(lj.direction) > 0.0 {
@@ -321,17 +535,16 @@ fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &m
                     li.point + li.direction * (det(lj.direction, li.point - lj.point) / d)
                 };
                 let direction = (lj.direction - li.direction).normalize_or_zero();
-                proj[n] = Line { point, direction };
-                n += 1;
+                proj.push_agent(Line { point, direction });
             }
             let temp = *result;
             let (r, k) = lp2(
-                &proj[..n],
+                &proj,
                 radius,
                 Vec2::new(-li.direction.y, li.direction.x),
                 true,
             );
-            *result = if k < n { temp } else { r };
+            *result = if k < proj.len() { temp } else { r };
             distance = det(li.direction, li.point - *result);
         }
     }
@@ -342,21 +555,288 @@ fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &m
 /// and the largest violation of the agents' is minimised.
 #[must_use]
 pub fn solve(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
-    let ls = lines.as_slice();
-    let (mut result, k) = lp2(ls, max_speed, preferred, false);
+    let (mut result, k) = lp2(lines, max_speed, preferred, false);
     if k < lines.obstacles {
         // The obstacles' own half-planes have no common point (an agent
         // wedged in a corner deeper than its radius): all become soft.
-        lp3(ls, 0, k, max_speed, &mut result);
-    } else if k < ls.len() {
-        lp3(ls, lines.obstacles, k, max_speed, &mut result);
+        lp3(lines, 0, k, max_speed, &mut result);
+    } else if k < lines.len() {
+        lp3(lines, lines.obstacles, k, max_speed, &mut result);
     }
     result
+}
+
+/// The largest speed along the unit direction `u`, up to `cap`, that the
+/// upper bounds of every line admit (the lower ones, a neighbour closing
+/// from behind, are that neighbour's to meet): four lines at a time, each
+/// bounding line's cap `det(d, p) / det(d, u)` (`det(d, u) < −1e-6`) lane
+/// by lane, folded into the minimum in the lines' order. A line that does
+/// not bound the ray folds in −∞ / −1 = +∞.
+#[must_use]
+pub fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
+    let (ux, uy) = (Vec4::splat(u.x), Vec4::splat(u.y));
+    let mut hi = cap;
+    let mut at = 0;
+    while at < lines.len() {
+        let [px, py, dx, dy] = lines.four(at);
+        let a = dx * uy - dy * ux;
+        let b = dx * py - dy * px;
+        // Lanes past the last line bound nothing either: all four folded,
+        // always.
+        let bounds = a.cmplt(Vec4::splat(-1e-6))
+            & lanes_below(lines.len() - at);
+        let q = (Vec4::select(bounds, b, Vec4::NEG_INFINITY)
+            / Vec4::select(bounds, a, Vec4::NEG_ONE))
+        .to_array();
+        for x in q {
+            hi = hi.min(x);
+        }
+        at += 4;
+    }
+    hi.max(0.0)
 }
 
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// The linear programs and ray cap as they were before the lines were
+    /// read four at a time (one line at a time, branches): the reference
+    /// the new ones must match bit for bit.
+    mod reference {
+        use super::super::{det, Line, EPS, MAX_LINES};
+        use glam::Vec2;
+
+        /// Linear program on line `i`: the point of line `i` admitted by lines
+        /// `0..i` and the disc of radius `radius` that is nearest `opt` (or
+        /// farthest along `opt` when `direction_opt`). `None` if there is none.
+        fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
+            let li = lines[i];
+            let dot = li.point.dot(li.direction);
+            let disc = dot * dot + radius * radius - li.point.length_squared();
+            if disc < 0.0 {
+                return None;
+            }
+            let sq = disc.sqrt();
+            let mut t_left = -dot - sq;
+            let mut t_right = -dot + sq;
+            for lj in &lines[..i] {
+                let denom = det(li.direction, lj.direction);
+                let numer = det(lj.direction, li.point - lj.point);
+                if denom.abs() <= EPS {
+                    if numer < 0.0 {
+                        return None;
+                    }
+                    continue;
+                }
+                let t = numer / denom;
+                if denom >= 0.0 {
+                    t_right = t_right.min(t);
+                } else {
+                    t_left = t_left.max(t);
+                }
+                if t_left > t_right {
+                    return None;
+                }
+            }
+            let t = if direction_opt {
+                if opt.dot(li.direction) > 0.0 {
+                    t_right
+                } else {
+                    t_left
+                }
+            } else {
+                li.direction.dot(opt - li.point).clamp(t_left, t_right)
+            };
+            Some(li.point + li.direction * t)
+        }
+
+        /// Linear program in 2D: the velocity in the disc nearest `opt` that every
+        /// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
+        /// the index of the first line that could not be met (`result` then meets
+        /// lines `0..n`).
+        fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
+            let mut result = if direction_opt {
+                opt * radius
+            } else if opt.length_squared() > radius * radius {
+                opt.normalize_or_zero() * radius
+            } else {
+                opt
+            };
+            for i in 0..lines.len() {
+                if det(lines[i].direction, lines[i].point - result) > 0.0 {
+                    match lp1(lines, i, radius, opt, direction_opt) {
+                        Some(r) => result = r,
+                        None => return (result, i),
+                    }
+                }
+            }
+            (result, lines.len())
+        }
+
+        /// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
+        /// lines (the first `n_obstacles`) and minimises the largest violation of
+        /// the others, from line `begin` on.
+        fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
+            let mut distance = 0.0f32;
+            let mut proj = [Line::default(); MAX_LINES];
+            for i in begin..lines.len() {
+                let li = lines[i];
+                if det(li.direction, li.point - *result) > distance {
+                    proj[..n_obstacles].copy_from_slice(&lines[..n_obstacles]);
+                    let mut n = n_obstacles;
+                    for lj in &lines[n_obstacles..i] {
+                        let d = det(li.direction, lj.direction);
+                        let point = if d.abs() <= EPS {
+                            if li.direction.dot(lj.direction) > 0.0 {
+                                continue; // parallel, same direction
+                            }
+                            (li.point + lj.point) * 0.5
+                        } else {
+                            li.point + li.direction * (det(lj.direction, li.point - lj.point) / d)
+                        };
+                        let direction = (lj.direction - li.direction).normalize_or_zero();
+                        proj[n] = Line { point, direction };
+                        n += 1;
+                    }
+                    let temp = *result;
+                    let (r, k) = lp2(
+                        &proj[..n],
+                        radius,
+                        Vec2::new(-li.direction.y, li.direction.x),
+                        true,
+                    );
+                    *result = if k < n { temp } else { r };
+                    distance = det(li.direction, li.point - *result);
+                }
+            }
+        }
+
+        /// The former `solve`, on a slice with `obstacles` obstacle lines first.
+        pub fn solve_ref(ls: &[Line], obstacles: usize, max_speed: f32, preferred: Vec2) -> Vec2 {
+            let (mut result, k) = lp2(ls, max_speed, preferred, false);
+            if k < obstacles {
+                lp3(ls, 0, k, max_speed, &mut result);
+            } else if k < ls.len() {
+                lp3(ls, obstacles, k, max_speed, &mut result);
+            }
+            result
+        }
+
+        /// The former scalar ray cap.
+        pub fn ray_cap_ref(ls: &[Line], u: Vec2, cap: f32) -> f32 {
+            let mut hi = cap;
+            for l in ls {
+                let a = l.direction.x * u.y - l.direction.y * u.x;
+                let b = l.direction.x * l.point.y - l.direction.y * l.point.x;
+                let bounds = a < -1e-6;
+                let q = if bounds { b } else { f32::NEG_INFINITY } / if bounds { a } else { -1.0 };
+                hi = hi.min(q);
+            }
+            hi.max(0.0)
+        }
+
+    }
+
+    /// The four-lane lines are the scalar ones, bit for bit: seeded
+    /// pairs far, near, overlapping and coincident, with and without
+    /// keeping right.
+    #[test]
+    fn four_lanes_give_the_scalar_lines_bit_for_bit() {
+        let mut rng = crate::rng::Rng::new(18);
+        let (horizon, dt) = (2.0f32, 0.1f32);
+        for trial in 0..20_000 {
+            let p = Vec2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
+            let v = Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5));
+            let mut lanes = [(Vec2::ZERO, Vec2::ZERO, 0.0, 0.0, Vec2::ZERO, false); 4];
+            for (l, lane) in lanes.iter_mut().enumerate() {
+                let spread = [3.0, 1.0, 0.5, 0.0][(trial + l) % 4];
+                let pn = p + Vec2::new(rng.range(-spread, spread), rng.range(-spread, spread));
+                let vn = if rng.range(0.0, 1.0) < 0.2 {
+                    v
+                } else {
+                    Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5))
+                };
+                let r = [0.6, 0.9][l % 2];
+                let share = [0.5, 1.0][(trial / 2 + l) % 2];
+                let tie = if rng.range(0.0, 1.0) < 0.5 {
+                    Vec2::Y
+                } else {
+                    -Vec2::Y
+                };
+                *lane = (pn, vn, r, share, tie, rng.range(0.0, 1.0) < 0.3);
+            }
+            let col = |f: &dyn Fn(usize) -> f32| Vec4::new(f(0), f(1), f(2), f(3));
+            let q = Pairs4 {
+                pn: (col(&|l| lanes[l].0.x), col(&|l| lanes[l].0.y)),
+                vn: (col(&|l| lanes[l].1.x), col(&|l| lanes[l].1.y)),
+                r: col(&|l| lanes[l].2),
+                share: col(&|l| lanes[l].3),
+                tie: (col(&|l| lanes[l].4.x), col(&|l| lanes[l].4.y)),
+                keep_right: BVec4A::new(lanes[0].5, lanes[1].5, lanes[2].5, lanes[3].5),
+            };
+            let got = agent_lines4(p, v, &q, 1.0 / horizon, 1.0 / dt).map(|x| x.to_array());
+            for (l, &(pn, vn, r, share, tie, keep)) in lanes.iter().enumerate() {
+                let want = agent_line(p, v, pn, vn, r, horizon, dt, share, tie, keep);
+                let bits = |x: f32| x.to_bits();
+                assert_eq!(
+                    [got[0][l], got[1][l], got[2][l], got[3][l]].map(bits),
+                    [want.point.x, want.point.y, want.direction.x, want.direction.y].map(bits),
+                    "trial {trial} lane {l}"
+                );
+            }
+        }
+    }
+
+    /// The linear programs and the ray cap, four lines at a time, give the
+    /// former ones' bits: seeded line sets of every size, with obstacle
+    /// lines, feasible and not (the 3D program too), parallel lines
+    /// included.
+    #[test]
+    fn four_line_programs_give_the_former_bits() {
+        let mut rng = crate::rng::Rng::new(3);
+        let mut lp3_runs = 0;
+        for trial in 0..30_000 {
+            let n_obs = [0, 0, 1, 3][trial % 4];
+            let n = n_obs + (trial / 4) % (MAX_NEIGHBOURS + 1);
+            let mut set = Lines::default();
+            let mut flat = Vec::new();
+            for k in 0..n {
+                let a = rng.range(-3.2, 3.2);
+                // Some directions repeated exactly (parallel lines).
+                let a = if k > 0 && rng.range(0.0, 1.0) < 0.1 { flat.last().map_or(a, |l: &Line| l.direction.y.atan2(l.direction.x)) } else { a };
+                let l = Line {
+                    point: Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5)),
+                    direction: Vec2::new(a.cos(), a.sin()),
+                };
+                if k < n_obs {
+                    set.push_obstacle(l);
+                } else {
+                    set.push_agent(l);
+                }
+                flat.push(l);
+            }
+            let pref = Vec2::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
+            let cap = rng.range(0.5, 2.0);
+            let got = solve(&set, cap, pref);
+            let want = reference::solve_ref(&flat, n_obs, cap, pref);
+            assert_eq!(
+                (got.x.to_bits(), got.y.to_bits()),
+                (want.x.to_bits(), want.y.to_bits()),
+                "trial {trial}: {got} vs {want}"
+            );
+            if !set.admits(got, 1e-4) {
+                lp3_runs += 1;
+            }
+            let u = Vec2::new(rng.range(-1.0, 1.0), rng.range(-1.0, 1.0)).normalize_or_zero();
+            assert_eq!(
+                ray_cap(&set, u, cap).to_bits(),
+                reference::ray_cap_ref(&flat, u, cap).to_bits(),
+                "trial {trial}"
+            );
+        }
+        assert!(lp3_runs > 1000, "{lp3_runs} infeasible sets");
+    }
 
     #[test]
     fn no_lines_gives_the_preferred_velocity_within_the_disc() {
@@ -458,6 +938,6 @@ mod tests {
         ));
         let v = solve(&ls, 2.0, Vec2::X);
         assert!(v.is_finite());
-        assert!(ls.as_slice()[0].admits(v, 1e-4), "{v}");
+        assert!(ls.get(0).admits(v, 1e-4), "{v}");
     }
 }
