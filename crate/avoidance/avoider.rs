@@ -53,7 +53,7 @@ use glam::Vec2;
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, Lines, MAX_NEIGHBOURS};
-use crate::avoidance::passing::Passing;
+use crate::avoidance::passing::{self, Passing};
 use crate::avoidance::stalled;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
@@ -342,16 +342,37 @@ impl Avoider {
                             let q = &self.peers[sj as usize];
                             lane.see(q.pos - me.pos, q.fwd);
                         }
+                        // And ahead beyond reach ([`passing::LOOK_AHEAD`]):
+                        // the cells round a point further along the way,
+                        // so that lanes form before the groups meet.
+                        let (far, n_far) = self
+                            .grid
+                            .candidate_runs(me.pos + u_seek * passing::LOOK_AHEAD);
+                        for &(lo, hi) in &far[..n_far] {
+                            for q in &self.peers[lo as usize..hi as usize] {
+                                if q.index != me.index {
+                                    lane.see_far(q.pos - me.pos, q.fwd, q.v);
+                                }
+                            }
+                        }
                     }
                     let u_lane = lane.turn(u_seek);
                     let turned = unfinished
                         && !walled
                         && lane.active()
                         && lines.obstacles_admit(u_lane * s_pref.max(DODGE_SPEED), 0.0);
-                    let (h_pref, v_pref, u_seek) = if turned {
-                        (trig::atan2(u_lane.y, u_lane.x), lane.turn(v_pref), u_lane)
+                    // Turning into its lane with a mate beside it on that
+                    // side, it drops back to merge behind it.
+                    let (h_pref, v_pref, u_seek, s_pref) = if turned {
+                        let f = lane.merge_factor();
+                        (
+                            trig::atan2(u_lane.y, u_lane.x),
+                            lane.turn(v_pref) * f,
+                            u_lane,
+                            s_pref * f,
+                        )
                     } else {
-                        (h_pref, v_pref, u_seek)
+                        (h_pref, v_pref, u_seek, s_pref)
                     };
                     let mut oncoming = false;
                     let v_me = me.fwd * me.v;

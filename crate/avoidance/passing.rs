@@ -74,6 +74,42 @@ pub const LANE_MAX_TAN: f32 = 1.0;
 /// neighbour, seeing the same gap, makes up the other half).
 pub const LANE_SHARE: f32 = 0.5;
 
+/// The smallest turn, as its tangent, that an oncoming neighbour in the
+/// agent's lane asks for, however far ahead (0.2: 11°): the ask of a
+/// neighbour 8 m ahead is otherwise 3°, and the lane forms too late.
+pub const LANE_MIN_TAN: f32 = 0.2;
+
+/// The avoider also reads the neighbours round the point this far ahead
+/// along the agent's way, m (the grid's 3 × 3 cells round it): oncoming
+/// neighbours up to about [`PASS_REACH`] ask for a turn, not only those in
+/// the avoidance's reach (3 m, 1.2 s before contact at the corridor's
+/// closing speed).
+pub const LOOK_AHEAD: f32 = 5.0;
+
+/// Oncoming neighbours up to this far, m, ask for a turn.
+pub const PASS_REACH: f32 = 8.0;
+
+/// Beyond the avoidance's reach, only neighbours faster than this, m/s,
+/// ask (a group coming, not a queue at rest).
+pub const PASS_MOVING: f32 = 0.5;
+
+/// A neighbour whose heading makes a cosine above this with the agent's
+/// way goes the same way: a mate.
+pub const MATE_COS: f32 = 0.7;
+
+/// A mate counts as beside the agent on its right when its lateral
+/// offset is within this many clearances.
+pub const MERGE_SIDE: f32 = 2.0;
+
+/// … and it is no more than this many clearances behind (up to one
+/// ahead).
+pub const MERGE_BACK: f32 = 0.25;
+
+/// The share of the funnel's speed an agent keeps while it turns into its
+/// lane with a mate beside it on that side: it drops back and merges
+/// behind the mate (a block as wide as the corridor becomes a lane).
+pub const MERGE_SPEED: f32 = 0.5;
+
 /// One agent's keep-right turn, accumulated over every neighbour in reach.
 #[derive(Clone, Copy, Debug)]
 pub struct Passing {
@@ -81,6 +117,8 @@ pub struct Passing {
     left: Vec2,
     clear: f32,
     tan: f32,
+    /// A neighbour going the same way beside the agent on its right.
+    mate_right: bool,
 }
 
 impl Passing {
@@ -94,6 +132,7 @@ impl Passing {
             left: Vec2::new(-u.y, u.x),
             clear,
             tan: 0.0,
+            mate_right: false,
         }
     }
 
@@ -101,6 +140,16 @@ impl Passing {
     #[inline]
     pub fn see(&mut self, rel: Vec2, fwd: Vec2) {
         let ahead = rel.dot(self.u);
+        if fwd.dot(self.u) > MATE_COS {
+            // A mate beside on the right: level, or at most
+            // MERGE_BACK clearances behind, up to one ahead.
+            let lat = rel.dot(self.left);
+            self.mate_right |= (lat < 0.0)
+                & (lat > -MERGE_SIDE * self.clear)
+                & (ahead > -MERGE_BACK * self.clear)
+                & (ahead < self.clear);
+            return;
+        }
         if ahead <= 0.0 || fwd.dot(self.u) >= ONCOMING_COS {
             return;
         }
@@ -108,8 +157,19 @@ impl Passing {
         if lat >= self.clear || lat <= -self.clear {
             return;
         }
-        let ask = (self.clear - lat) * LANE_SHARE / ahead;
+        let ask = ((self.clear - lat) * LANE_SHARE / ahead).max(LANE_MIN_TAN);
         self.tan = self.tan.max(ask.min(LANE_MAX_TAN));
+    }
+
+    /// A neighbour found beyond reach, ahead ([`LOOK_AHEAD`]), at `rel`
+    /// heading along `fwd` at `v` m/s: seen as [`Passing::see`] does when
+    /// within [`PASS_REACH`] and moving (faster than [`PASS_MOVING`]: a
+    /// group coming the other way, not one standing in a queue).
+    #[inline]
+    pub fn see_far(&mut self, rel: Vec2, fwd: Vec2, v: f32) {
+        if (v > PASS_MOVING) & (rel.length_squared() < PASS_REACH * PASS_REACH) {
+            self.see(rel, fwd);
+        }
     }
 
     /// True when an oncoming neighbour asks for a turn.
@@ -117,6 +177,18 @@ impl Passing {
     #[must_use]
     pub fn active(&self) -> bool {
         self.tan > 0.0
+    }
+
+    /// The share of its speed an agent keeps while it turns right with a
+    /// mate beside it on that side: it drops back to merge behind it.
+    #[inline]
+    #[must_use]
+    pub fn merge_factor(&self) -> f32 {
+        if self.tan > 0.0 && self.mate_right {
+            MERGE_SPEED
+        } else {
+            1.0
+        }
     }
 
     /// `v` (along the agent's direction) turned right by the largest turn
