@@ -33,7 +33,12 @@
 //! [`ONCOMING_COS`]): a neighbour going the same way is followed; and
 //! *early*, against any oncoming neighbour in reach, not only the nearest
 //! ([`crate::avoidance::passing`]: the funnel's velocity turned right, so
-//! that two groups meeting head on pass in lanes). *Walls*:
+//! that two groups meeting head on pass in lanes), and moving ones up to
+//! [`crate::avoidance::passing::PASS_REACH`] ahead, read from the grid's
+//! cells round a point further along the way; an agent turning into its
+//! lane with a mate beside it on that side drops back to half speed and
+//! merges behind it (a block as wide as the corridor turned as a block,
+//! four abreast). *Walls*:
 //! when the funnel's heading runs into a wall (tested at a walking speed,
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own

@@ -62,6 +62,70 @@
 //! take more than 10 s to clear. Agents at rest in those jams now seek
 //! their goal's direction, with no keep-right bias into a wall
 //! ([`crate::avoidance::stalled`]).
+//!
+//! **Seen further ahead, and merging** (the second version). After the
+//! rule above and [`crate::avoidance::stalled`] the corridor still had 60
+//! deadlocked agents in 28 of the tune runs 1000–1099 (123 in 32 on
+//! 2000–2099). Classified (`examples/avoid_kinds.rs`, traced with
+//! `examples/avoid_trace.rs` and `examples/avoid_dump.rs`): 32 mid-corridor
+//! and 27 at a wall in their own lane, 1 in the other's; nearly all in
+//! the front columns — the inner rows that had to cross to their own half
+//! (agents 13 and 2) stood face to face with the other group's front in
+//! its lane, and the outer ones at the wall (agents 0 and 15) stood behind
+//! mates that cut in front of them. Two causes: (1) the turn came late:
+//! within the 3 m reach the ask of a neighbour ahead is at most a few
+//! degrees until 1.2 s before contact (agent 13 of seed 1021 was still
+//! 0.58 m on the wrong side at full speed 2.7 m from the other front);
+//! (2) a block as wide as the corridor cannot turn right as a block: an
+//! agent asked to move right with a mate level beside it on the right
+//! kept its speed (ORCA's nearest velocity slides along the mate), so the
+//! front stayed four abreast until it met the other.
+//!
+//! **Rules.** (1) The avoider also reads the neighbours round the point
+//! [`LOOK_AHEAD`] (5 m) along the agent's way (the grid's 3 × 3 cells
+//! round it), and every one within [`PASS_REACH`] (8 m) that moves faster
+//! than [`PASS_MOVING`] (a group coming, not a queue) asks as above
+//! ([`Passing::see_far`]); and any oncoming neighbour in the lane asks at
+//! least [`LANE_MIN_TAN`] (11°), however far (the ask falls as 1 /
+//! distance: 3° at 8 m). (2) While it turns right with a *mate* (heading
+//! cosine above [`MATE_COS`]) beside it on that side (lateral offset
+//! within [`MERGE_SIDE`] clearances, from [`MERGE_BACK`] clearances behind
+//! to one ahead), an agent keeps [`MERGE_SPEED`] (half) of the funnel's
+//! speed: it drops back and merges behind the mate, so the block's front
+//! becomes an echelon and then a lane ([`Passing::merge_factor`]). Both
+//! only change what the early keep-right already turned: no oncoming
+//! neighbour, the funnel's (γ, v_dt) as before, the same bits.
+//!
+//! **Measured** (tune seeds only: 1000–1099 and 2000–2099, `steer avoid
+//! --seeds 100 --seed 1000` / `2000`, ORCA, corridor, deadlocked agents
+//! (runs)): before 60 (28) / 123 (32); look-ahead alone (5 m, 8 m) 21
+//! (14) / 53 (19); with the merge (half speed, within 2 clearances, a
+//! quarter behind) 4 (4) / 11 (8); only moving neighbours beyond reach 9
+//! (7) / 18 (9); with the 11° least turn **7 (5) / 5 (4)** (kept), reach
+//! 99.96 / 99.92 %. A change moves these counts by half from chaos alone:
+//! differences of a few agents are not evidence. What is left on the tune
+//! seeds (`avoid_kinds -- 1000 100` and `2000 100`, 12 agents): 9 at a
+//! wall in their own lane (mostly the outer front agents, 0 and 15,
+//! turning on the spot 270°–900° in their 10 s while mates cut in ahead of
+//! them), 3 in a short jam mid-corridor; all 12 finish later. The report
+//! and held-out figures are in the README's figures table.
+//!
+//! **Tried and not kept** (corridor, deadlocked agents on tune seeds
+//! 1000–1099 plus 2000–2099, unless "on 1000"): a longer `reach` for everything
+//! (ORCA's neighbours too) 4 / 5 / 6 / 8 m: 112 / 89 / 93 / 23 on 1000;
+//! the grid's cell widened to the passing reach (every query scans ~7× the
+//! candidates) 5 / 6 / 8 / 10 m: 28 / 26 / 21 / 31 on 1000, so the cheaper
+//! point ahead; without the merge, the point 3 / 4.5 / 6 m ahead (reach 6
+//! / 7.5 or 9 / 9 m): 26 / 36 or 21 / 47 on 1000; with everything, the
+//! point 4 / 6 / 7 m (reach 7 / 9 / 10 m): 7+26 / 6+14 / 8+8; merge speed
+//! 0.7 / 0.3: 17+28 / 11+42; a mate within 1 / 1.5 / 2.5 / 3 clearances
+//! aside: 63+51 / 16+25 / 19+13 / 11+29; from 0 / 0.5 / 0.75 clearances
+//! behind: 45+70 / 7+5 (a corridor run with overlapping pairs, 65
+//! pair-steps: rejected) / 26+48; beyond reach, neighbours faster than
+//! 0.1 m/s: 8+15; the least turn 0.4 (22°): 8+10. The doorway has no
+//! oncoming group, but several variants still moved its chaos into 1 or
+//! 2 deadlocked agents at the wall end on a tune set (the kept one: 0 and
+//! 0).
 
 use glam::Vec2;
 
