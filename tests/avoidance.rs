@@ -86,16 +86,16 @@ fn walls_are_never_crossed_and_limits_hold() {
 
 #[test]
 fn corridor_groups_keep_right_early_and_pass_in_lanes() {
-    // Tune seeds 1000–1019 (the rule was tuned on 1000–1099). Before the
-    // early keep-right (`avoidance::passing`) the two blocks met at full
-    // width and locked mid-corridor: 90 deadlocked agents in 12 of these 20
-    // runs, reach 87.5 % (420 of 480). With it, 469 of 480 arrived and 22
-    // agents in 10 runs still waited 10 s or more at once; with agents at
-    // rest seeking their goal's direction and no keep-right bias into a
-    // wall (`avoidance::stalled`), all 480 arrive and 1 agent waits
-    // (issue 18's target, 0, is met on 19 of these 20 seeds, not all).
+    // Tune seeds 1000–1099. Before the early keep-right
+    // (`avoidance::passing`) the two blocks met at full width and locked
+    // mid-corridor: 394 deadlocked agents in 72 runs. With it and agents
+    // at rest seeking their goal's direction (`avoidance::stalled`), 60 in
+    // 28 runs, reach 2,397 of 2,400. With the keep-right seen from further
+    // ahead and mates merging behind each other into the lane, 7 agents in
+    // 5 runs wait 10 s or more at once, and 2,399 of 2,400 arrive (issue
+    // 18's target, 0, is met on 95 of these 100 seeds, not all).
     let t = table();
-    let runs: Vec<_> = steering::parallel::map_indices(20, |k| {
+    let runs: Vec<_> = steering::parallel::map_indices(100, |k| {
         run(
             &Bench::Corridor.scenario(1000 + k as u64, AvoidanceMethod::Orca),
             &t,
@@ -104,10 +104,13 @@ fn corridor_groups_keep_right_early_and_pass_in_lanes() {
     let agents: usize = runs.iter().map(|r| r.agents).sum();
     let reached: usize = runs.iter().map(|r| r.reached).sum();
     let deadlocks: usize = runs.iter().map(|r| r.deadlocks).sum();
-    println!("corridor 1000–1019: reach {reached}/{agents}, deadlocked {deadlocks}");
-    assert_eq!(agents, 480);
-    assert_eq!(reached, 480);
-    assert!(deadlocks <= 1, "{deadlocks}");
+    let jammed = runs.iter().filter(|r| r.deadlocks > 0).count();
+    println!(
+        "corridor 1000–1099: reach {reached}/{agents}, deadlocked {deadlocks} in {jammed} runs"
+    );
+    assert_eq!(agents, 2400);
+    assert!(reached >= 2399, "{reached}");
+    assert!(deadlocks <= 7 && jammed <= 5, "{deadlocks} in {jammed}");
     for r in &runs {
         assert_eq!((r.overlap_pair_steps, r.obstacle_contacts), (0, 0), "{r:?}");
         assert_eq!((r.violations, r.nan), (0, 0));

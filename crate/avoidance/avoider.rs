@@ -33,7 +33,12 @@
 //! [`ONCOMING_COS`]): a neighbour going the same way is followed; and
 //! *early*, against any oncoming neighbour in reach, not only the nearest
 //! ([`crate::avoidance::passing`]: the funnel's velocity turned right, so
-//! that two groups meeting head on pass in lanes). *Walls*:
+//! that two groups meeting head on pass in lanes), and moving ones up to
+//! [`crate::avoidance::passing::PASS_REACH`] ahead, read from the grid's
+//! cells round a point further along the way; an agent turning into its
+//! lane with a mate beside it on that side drops back to half speed and
+//! merges behind it (a block as wide as the corridor turned as a block,
+//! four abreast). *Walls*:
 //! when the funnel's heading runs into a wall (tested at a walking speed,
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own
@@ -73,7 +78,7 @@ use glam::{BVec4A, Vec2, Vec4};
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, ray_cap, Lines, MAX_NEIGHBOURS};
-use crate::avoidance::passing::Passing;
+use crate::avoidance::passing::{self, Passing};
 use crate::avoidance::stalled;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
@@ -419,16 +424,39 @@ impl Avoider {
                 },
                 AvoidanceMethod::Orca => {
                     let v_pref = v_seek0;
+                    if passing {
+                        // And ahead beyond reach ([`passing::LOOK_AHEAD`]):
+                        // the cells round a point further along the way,
+                        // so that lanes form before the groups meet.
+                        let (far, n_far) = self
+                            .grid
+                            .candidate_runs(me.pos + u_seek * passing::LOOK_AHEAD);
+                        for &(lo, hi) in &far[..n_far] {
+                            for q in &self.peers[lo as usize..hi as usize] {
+                                if q.index != me.index {
+                                    lane.see_far(q.pos - me.pos, q.fwd, q.v);
+                                }
+                            }
+                        }
+                    }
                     lane.settle();
                     let u_lane = lane.turn(u_seek);
                     let turned = unfinished
                         && !walled
                         && lane.active()
                         && lines.obstacles_admit(u_lane * s_pref.max(DODGE_SPEED), 0.0);
-                    let (h_pref, v_pref, u_seek) = if turned {
-                        (trig::atan2(u_lane.y, u_lane.x), lane.turn(v_pref), u_lane)
+                    // Turning into its lane with a mate beside it on that
+                    // side, it drops back to merge behind it.
+                    let (h_pref, v_pref, u_seek, s_pref) = if turned {
+                        let f = lane.merge_factor();
+                        (
+                            trig::atan2(u_lane.y, u_lane.x),
+                            lane.turn(v_pref) * f,
+                            u_lane,
+                            s_pref * f,
+                        )
                     } else {
-                        (h_pref, v_pref, u_seek)
+                        (h_pref, v_pref, u_seek, s_pref)
                     };
                     // The k nearest, lane by lane, four at a time (every
                     // test a lane mask: their outcomes flip from neighbour

@@ -7,7 +7,7 @@
 //! | [`config`] | — | the method (off, separation, ORCA), body radius and settings; disc and segment obstacles; their validation |
 //! | [`orca`] | van den Berg et al. 2011 (RVO2) | the agents' and obstacles' half-planes, the 2D and 3D linear programs; why not `dodgy_2d` |
 //! | [`avoider`] | — | one pass: neighbours through the crowd's grid, the method's velocity, turned into an admissible heading and speed of the forward-only unicycle |
-//! | [`passing`] | — | keep right early: the funnel's velocity turned right by oncoming neighbours anywhere in reach, so that groups meeting head on pass in lanes (the corridor's deadlocks) |
+//! | [`passing`] | — | keep right early: the funnel's velocity turned right by oncoming neighbours anywhere in reach and moving ones up to 8 m ahead, and an agent turning into its lane beside a mate drops back behind it, so that groups meeting head on pass in lanes (the corridor's deadlocks) |
 //! | [`stalled`] | — | agents at rest in a jam: they seek their goal's direction (the funnel's γ turns with them), and the keep-right bias never points into a wall (the corridor's remaining deadlocks) |
 //! | `world_step` | 000 §6 | the world's step with avoidance: plan every funnel, avoid, step |
 //! | [`proximity`] | — | metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |

@@ -62,6 +62,70 @@
 //! take more than 10 s to clear. Agents at rest in those jams now seek
 //! their goal's direction, with no keep-right bias into a wall
 //! ([`crate::avoidance::stalled`]).
+//!
+//! **Seen further ahead, and merging** (the second version). After the
+//! rule above and [`crate::avoidance::stalled`] the corridor still had 60
+//! deadlocked agents in 28 of the tune runs 1000–1099 (123 in 32 on
+//! 2000–2099). Classified (`examples/avoid_kinds.rs`, traced with
+//! `examples/avoid_trace.rs` and `examples/avoid_dump.rs`): 32 mid-corridor
+//! and 27 at a wall in their own lane, 1 in the other's; nearly all in
+//! the front columns — the inner rows that had to cross to their own half
+//! (agents 13 and 2) stood face to face with the other group's front in
+//! its lane, and the outer ones at the wall (agents 0 and 15) stood behind
+//! mates that cut in front of them. Two causes: (1) the turn came late:
+//! within the 3 m reach the ask of a neighbour ahead is at most a few
+//! degrees until 1.2 s before contact (agent 13 of seed 1021 was still
+//! 0.58 m on the wrong side at full speed 2.7 m from the other front);
+//! (2) a block as wide as the corridor cannot turn right as a block: an
+//! agent asked to move right with a mate level beside it on the right
+//! kept its speed (ORCA's nearest velocity slides along the mate), so the
+//! front stayed four abreast until it met the other.
+//!
+//! **Rules.** (1) The avoider also reads the neighbours round the point
+//! [`LOOK_AHEAD`] (5 m) along the agent's way (the grid's 3 × 3 cells
+//! round it), and every one within [`PASS_REACH`] (8 m) that moves faster
+//! than [`PASS_MOVING`] (a group coming, not a queue) asks as above
+//! ([`Passing::see_far`]); and any oncoming neighbour in the lane asks at
+//! least [`LANE_MIN_TAN`] (11°), however far (the ask falls as 1 /
+//! distance: 3° at 8 m). (2) While it turns right with a *mate* (heading
+//! cosine above [`MATE_COS`]) beside it on that side (lateral offset
+//! within [`MERGE_SIDE`] clearances, from [`MERGE_BACK`] clearances behind
+//! to one ahead), an agent keeps [`MERGE_SPEED`] (half) of the funnel's
+//! speed: it drops back and merges behind the mate, so the block's front
+//! becomes an echelon and then a lane ([`Passing::merge_factor`]). Both
+//! only change what the early keep-right already turned: no oncoming
+//! neighbour, the funnel's (γ, v_dt) as before, the same bits.
+//!
+//! **Measured** (tune seeds only: 1000–1099 and 2000–2099, `steer avoid
+//! --seeds 100 --seed 1000` / `2000`, ORCA, corridor, deadlocked agents
+//! (runs)): before 60 (28) / 123 (32); look-ahead alone (5 m, 8 m) 21
+//! (14) / 53 (19); with the merge (half speed, within 2 clearances, a
+//! quarter behind) 4 (4) / 11 (8); only moving neighbours beyond reach 9
+//! (7) / 18 (9); with the 11° least turn **7 (5) / 5 (4)** (kept), reach
+//! 99.96 / 99.92 %. A change moves these counts by half from chaos alone:
+//! differences of a few agents are not evidence. What is left on the tune
+//! seeds (`avoid_kinds -- 1000 100` and `2000 100`, 12 agents): 9 at a
+//! wall in their own lane (mostly the outer front agents, 0 and 15,
+//! turning on the spot 270°–900° in their 10 s while mates cut in ahead of
+//! them), 3 in a short jam mid-corridor; all 12 finish later. The report
+//! and held-out figures are in the README's figures table.
+//!
+//! **Tried and not kept** (corridor, deadlocked agents on tune seeds
+//! 1000–1099 plus 2000–2099, unless "on 1000"): a longer `reach` for everything
+//! (ORCA's neighbours too) 4 / 5 / 6 / 8 m: 112 / 89 / 93 / 23 on 1000;
+//! the grid's cell widened to the passing reach (every query scans ~7× the
+//! candidates) 5 / 6 / 8 / 10 m: 28 / 26 / 21 / 31 on 1000, so the cheaper
+//! point ahead; without the merge, the point 3 / 4.5 / 6 m ahead (reach 6
+//! / 7.5 or 9 / 9 m): 26 / 36 or 21 / 47 on 1000; with everything, the
+//! point 4 / 6 / 7 m (reach 7 / 9 / 10 m): 7+26 / 6+14 / 8+8; merge speed
+//! 0.7 / 0.3: 17+28 / 11+42; a mate within 1 / 1.5 / 2.5 / 3 clearances
+//! aside: 63+51 / 16+25 / 19+13 / 11+29; from 0 / 0.5 / 0.75 clearances
+//! behind: 45+70 / 7+5 (a corridor run with overlapping pairs, 65
+//! pair-steps: rejected) / 26+48; beyond reach, neighbours faster than
+//! 0.1 m/s: 8+15; the least turn 0.4 (22°): 8+10. The doorway has no
+//! oncoming group, but several variants still moved its chaos into 1 or
+//! 2 deadlocked agents at the wall end on a tune set (the kept one: 0 and
+//! 0).
 
 use glam::{BVec4A, Vec2, Vec4};
 
@@ -74,6 +138,42 @@ pub const LANE_MAX_TAN: f32 = 1.0;
 /// neighbour, seeing the same gap, makes up the other half).
 pub const LANE_SHARE: f32 = 0.5;
 
+/// The smallest turn, as its tangent, that an oncoming neighbour in the
+/// agent's lane asks for, however far ahead (0.2: 11°): the ask of a
+/// neighbour 8 m ahead is otherwise 3°, and the lane forms too late.
+pub const LANE_MIN_TAN: f32 = 0.2;
+
+/// The avoider also reads the neighbours round the point this far ahead
+/// along the agent's way, m (the grid's 3 × 3 cells round it): oncoming
+/// neighbours up to about [`PASS_REACH`] ask for a turn, not only those in
+/// the avoidance's reach (3 m, 1.2 s before contact at the corridor's
+/// closing speed).
+pub const LOOK_AHEAD: f32 = 5.0;
+
+/// Oncoming neighbours up to this far, m, ask for a turn.
+pub const PASS_REACH: f32 = 8.0;
+
+/// Beyond the avoidance's reach, only neighbours faster than this, m/s,
+/// ask (a group coming, not a queue at rest).
+pub const PASS_MOVING: f32 = 0.5;
+
+/// A neighbour whose heading makes a cosine above this with the agent's
+/// way goes the same way: a mate.
+pub const MATE_COS: f32 = 0.7;
+
+/// A mate counts as beside the agent on its right when its lateral
+/// offset is within this many clearances.
+pub const MERGE_SIDE: f32 = 2.0;
+
+/// … and it is no more than this many clearances behind (up to one
+/// ahead).
+pub const MERGE_BACK: f32 = 0.25;
+
+/// The share of the funnel's speed an agent keeps while it turns into its
+/// lane with a mate beside it on that side: it drops back and merges
+/// behind the mate (a block as wide as the corridor becomes a lane).
+pub const MERGE_SPEED: f32 = 0.5;
+
 /// One agent's keep-right turn, accumulated over every neighbour in reach.
 #[derive(Clone, Copy, Debug)]
 pub struct Passing {
@@ -83,6 +183,8 @@ pub struct Passing {
     tan: f32,
     /// [`Passing::see4`]'s asks, lane by lane (each ≥ 0).
     tan4: Vec4,
+    /// A neighbour going the same way beside the agent on its right.
+    mate_right: bool,
 }
 
 impl Passing {
@@ -97,6 +199,7 @@ impl Passing {
             clear,
             tan: 0.0,
             tan4: Vec4::ZERO,
+            mate_right: false,
         }
     }
 
@@ -114,19 +217,28 @@ impl Passing {
     pub fn see(&mut self, rel: Vec2, fwd: Vec2) {
         let ahead = rel.dot(self.u);
         let lat = rel.dot(self.left);
+        let along = fwd.dot(self.u);
+        // A mate beside on the right: level, or at most MERGE_BACK
+        // clearances behind, up to one ahead.
+        self.mate_right |= (along > MATE_COS)
+            & (lat < 0.0)
+            & (lat > -MERGE_SIDE * self.clear)
+            & (ahead > -MERGE_BACK * self.clear)
+            & (ahead < self.clear);
         let asks = !(ahead <= 0.0)
-            & !(fwd.dot(self.u) >= ONCOMING_COS)
+            & !(along >= ONCOMING_COS)
             & !(lat >= self.clear)
             & !(lat <= -self.clear);
-        let ask = (self.clear - lat) * LANE_SHARE / ahead;
+        let ask = ((self.clear - lat) * LANE_SHARE / ahead).max(LANE_MIN_TAN);
         let kept = self.tan.max(ask.min(LANE_MAX_TAN));
         self.tan = if asks { kept } else { self.tan };
     }
 
     /// [`Passing::see`] for four neighbours at once, lane by lane (those
     /// not in `lanes` are not read): the same tests and ask in every lane,
-    /// folded in by their maximum. The asks kept are positive and finite,
-    /// so the order they are folded in does not change the largest.
+    /// folded in by their maximum, and the mates by "any". The asks kept
+    /// are positive and finite, so the order they are folded in does not
+    /// change the largest.
     #[inline]
     pub fn see4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, lanes: BVec4A) {
         let (ux, uy) = (Vec4::splat(self.u.x), Vec4::splat(self.u.y));
@@ -134,12 +246,20 @@ impl Passing {
         let clear = Vec4::splat(self.clear);
         let ahead = rx * ux + ry * uy;
         let lat = rx * lx + ry * ly;
+        let along = fx * ux + fy * uy;
+        let mates = lanes
+            & along.cmpgt(Vec4::splat(MATE_COS))
+            & lat.cmplt(Vec4::ZERO)
+            & lat.cmpgt(Vec4::splat(-MERGE_SIDE * self.clear))
+            & ahead.cmpgt(Vec4::splat(-MERGE_BACK * self.clear))
+            & ahead.cmplt(clear);
+        self.mate_right |= mates.any();
         let asks = lanes
             & !ahead.cmple(Vec4::ZERO)
-            & !(fx * ux + fy * uy).cmpge(Vec4::splat(ONCOMING_COS))
+            & !along.cmpge(Vec4::splat(ONCOMING_COS))
             & !lat.cmpge(clear)
             & !lat.cmple(-clear);
-        let ask = (clear - lat) * Vec4::splat(LANE_SHARE) / ahead;
+        let ask = ((clear - lat) * Vec4::splat(LANE_SHARE) / ahead).max(Vec4::splat(LANE_MIN_TAN));
         let kept = Vec4::select(asks, ask.min(Vec4::splat(LANE_MAX_TAN)), Vec4::ZERO);
         // Lane by lane until read ([`Passing::settle`]).
         self.tan4 = self.tan4.max(kept);
@@ -153,11 +273,34 @@ impl Passing {
         self.tan4 = Vec4::ZERO;
     }
 
+    /// A neighbour found beyond reach, ahead ([`LOOK_AHEAD`]), at `rel`
+    /// heading along `fwd` at `v` m/s: seen as [`Passing::see`] does when
+    /// within [`PASS_REACH`] and moving (faster than [`PASS_MOVING`]: a
+    /// group coming the other way, not one standing in a queue).
+    #[inline]
+    pub fn see_far(&mut self, rel: Vec2, fwd: Vec2, v: f32) {
+        if (v > PASS_MOVING) & (rel.length_squared() < PASS_REACH * PASS_REACH) {
+            self.see(rel, fwd);
+        }
+    }
+
     /// True when an oncoming neighbour asks for a turn.
     #[inline]
     #[must_use]
     pub fn active(&self) -> bool {
         self.tan > 0.0
+    }
+
+    /// The share of its speed an agent keeps while it turns right with a
+    /// mate beside it on that side: it drops back to merge behind it.
+    #[inline]
+    #[must_use]
+    pub fn merge_factor(&self) -> f32 {
+        if self.tan > 0.0 && self.mate_right {
+            MERGE_SPEED
+        } else {
+            1.0
+        }
     }
 
     /// `v` (along the agent's direction) turned right by the largest turn

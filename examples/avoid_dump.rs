@@ -1,0 +1,51 @@
+//! All agents of an avoidance benchmark run (ORCA) at given times: pose,
+//! speed, goal, done, the command.
+//!
+//! `cargo run --release --example avoid_dump -- corridor 1015 12 20`
+//! (benchmark, seed, times in s).
+
+use steering::avoidance::benchmarks::Bench;
+use steering::avoidance::AvoidanceMethod;
+use steering::table::EtaTable;
+
+fn main() {
+    let args: Vec<String> = std::env::args().collect();
+    let bench = match args.get(1).map_or("corridor", String::as_str) {
+        "doorway" => Bench::Doorway,
+        "circle32" => Bench::CircleSwap(32),
+        "circle100" => Bench::CircleSwap(100),
+        _ => Bench::Corridor,
+    };
+    let seed: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
+    let times: Vec<f32> = args[3..].iter().filter_map(|s| s.parse().ok()).collect();
+    let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
+    let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
+    let sc = bench.scenario(seed, AvoidanceMethod::Orca);
+    let mut w = sc.world().expect("benchmark scenarios are valid");
+    w.plan(&table);
+    for step in 0..sc.steps() {
+        w.step(&table);
+        let t = (step + 1) as f32 * w.params.dt;
+        if !times.iter().any(|&x| (x - t).abs() < 0.5 * w.params.dt) {
+            continue;
+        }
+        println!("t={t:.2}");
+        for (i, a) in w.agents.iter().enumerate() {
+            let c = w.avoider.commands[i];
+            println!(
+                "  {i:2} ({:6.2},{:6.2}) θ={:4.0}° v={:.2} goal=({:.1},{:.1}) done={} γ={:4.0}° v_dt={:.2} cmd θ={:4.0}° v={:.2}",
+                a.state.pos.x,
+                a.state.pos.y,
+                a.state.theta.to_degrees(),
+                a.state.v,
+                a.goal_now.pos.x,
+                a.goal_now.pos.y,
+                a.done(),
+                a.internals.gamma.to_degrees(),
+                a.internals.v_dt,
+                c.heading.to_degrees(),
+                c.speed
+            );
+        }
+    }
+}
