@@ -160,7 +160,7 @@ pub struct Avoider {
     peers: Vec<Peer>,
     /// Their positions' and unit headings' x and y, in the same order,
     /// then four padding lanes: the candidates are read four at a time.
-    lanes: [Vec<f32>; 4],
+    lanes: [Vec<f32>; 5],
     /// One agent's k nearest, lane by lane (position x, y, heading x, y,
     /// speed, priority, tie x, y): kept between agents, its lanes past k
     /// are never read unmasked (nothing to clear per agent).
@@ -235,7 +235,7 @@ impl Avoider {
         }));
         for (f, lane) in self.lanes.iter_mut().enumerate() {
             lane.clear();
-            lane.extend(self.peers.iter().map(|q| [q.pos.x, q.pos.y, q.fwd.x, q.fwd.y][f]));
+            lane.extend(self.peers.iter().map(|q| [q.pos.x, q.pos.y, q.fwd.x, q.fwd.y, q.v][f]));
             lane.extend([0.0; 4]);
         }
         let r = cfg.radius + cfg.margin;
@@ -428,14 +428,40 @@ impl Avoider {
                         // And ahead beyond reach ([`passing::LOOK_AHEAD`]):
                         // the cells round a point further along the way,
                         // so that lanes form before the groups meet.
+                        // Four at a time from the lanes, as the gather
+                        // (the asks fold by their maximum and the mates by
+                        // "any": the order does not matter; the agent
+                        // itself, at distance 0, asks nothing and is no
+                        // mate, [`Passing::see4`]). Scalar, one peer at a
+                        // time, this scan cost more than the rest of the
+                        // keep-right rule.
                         let (far, n_far) = self
                             .grid
                             .candidate_runs(me.pos + u_seek * passing::LOOK_AHEAD);
+                        let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
+                        let reach2 = Vec4::splat(passing::PASS_REACH * passing::PASS_REACH);
+                        let moving = Vec4::splat(passing::PASS_MOVING);
+                        let [lx, ly, lfx, lfy, lv] = &self.lanes;
                         for &(lo, hi) in &far[..n_far] {
-                            for q in &self.peers[lo as usize..hi as usize] {
-                                if q.index != me.index {
-                                    lane.see_far(q.pos - me.pos, q.fwd, q.v);
-                                }
+                            let (lo, hi) = (lo as usize, hi as usize);
+                            let mut a = lo;
+                            while a < hi {
+                                let (rx, ry) = (
+                                    Vec4::from_slice(&lx[a..a + 4]) - mx,
+                                    Vec4::from_slice(&ly[a..a + 4]) - my,
+                                );
+                                let seen = Vec4::new(0.0, 1.0, 2.0, 3.0)
+                                    .cmplt(Vec4::splat((hi - a) as f32))
+                                    & Vec4::from_slice(&lv[a..a + 4]).cmpgt(moving)
+                                    & (rx * rx + ry * ry).cmplt(reach2);
+                                lane.see4(
+                                    rx,
+                                    ry,
+                                    Vec4::from_slice(&lfx[a..a + 4]),
+                                    Vec4::from_slice(&lfy[a..a + 4]),
+                                    seen,
+                                );
+                                a += 4;
                             }
                         }
                     }
