@@ -235,7 +235,11 @@ impl Avoider {
         }));
         for (f, lane) in self.lanes.iter_mut().enumerate() {
             lane.clear();
-            lane.extend(self.peers.iter().map(|q| [q.pos.x, q.pos.y, q.fwd.x, q.fwd.y, q.v][f]));
+            lane.extend(
+                self.peers
+                    .iter()
+                    .map(|q| [q.pos.x, q.pos.y, q.fwd.x, q.fwd.y, q.v][f]),
+            );
             lane.extend([0.0; 4]);
         }
         let r = cfg.radius + cfg.margin;

@@ -583,8 +583,7 @@ pub fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
         let b = dx * py - dy * px;
         // Lanes past the last line bound nothing either: all four folded,
         // always.
-        let bounds = a.cmplt(Vec4::splat(-1e-6))
-            & lanes_below(lines.len() - at);
+        let bounds = a.cmplt(Vec4::splat(-1e-6)) & lanes_below(lines.len() - at);
         let q = (Vec4::select(bounds, b, Vec4::NEG_INFINITY)
             / Vec4::select(bounds, a, Vec4::NEG_ONE))
         .to_array();
@@ -610,7 +609,13 @@ mod tests {
         /// Linear program on line `i`: the point of line `i` admitted by lines
         /// `0..i` and the disc of radius `radius` that is nearest `opt` (or
         /// farthest along `opt` when `direction_opt`). `None` if there is none.
-        fn lp1(lines: &[Line], i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
+        fn lp1(
+            lines: &[Line],
+            i: usize,
+            radius: f32,
+            opt: Vec2,
+            direction_opt: bool,
+        ) -> Option<Vec2> {
             let li = lines[i];
             let dot = li.point.dot(li.direction);
             let disc = dot * dot + radius * radius - li.point.length_squared();
@@ -735,7 +740,6 @@ mod tests {
             }
             hi.max(0.0)
         }
-
     }
 
     /// The four-lane lines are the scalar ones, bit for bit: seeded
@@ -781,7 +785,13 @@ mod tests {
                 let bits = |x: f32| x.to_bits();
                 assert_eq!(
                     [got[0][l], got[1][l], got[2][l], got[3][l]].map(bits),
-                    [want.point.x, want.point.y, want.direction.x, want.direction.y].map(bits),
+                    [
+                        want.point.x,
+                        want.point.y,
+                        want.direction.x,
+                        want.direction.y
+                    ]
+                    .map(bits),
                     "trial {trial} lane {l}"
                 );
             }
@@ -804,7 +814,12 @@ mod tests {
             for k in 0..n {
                 let a = rng.range(-3.2, 3.2);
                 // Some directions repeated exactly (parallel lines).
-                let a = if k > 0 && rng.range(0.0, 1.0) < 0.1 { flat.last().map_or(a, |l: &Line| l.direction.y.atan2(l.direction.x)) } else { a };
+                let a = if k > 0 && rng.range(0.0, 1.0) < 0.1 {
+                    flat.last()
+                        .map_or(a, |l: &Line| l.direction.y.atan2(l.direction.x))
+                } else {
+                    a
+                };
                 let l = Line {
                     point: Vec2::new(rng.range(-1.5, 1.5), rng.range(-1.5, 1.5)),
                     direction: Vec2::new(a.cos(), a.sin()),
