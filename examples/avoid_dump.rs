@@ -4,18 +4,14 @@
 //! `cargo run --release --example avoid_dump -- corridor 1015 12 20`
 //! (benchmark, seed, times in s).
 
-use steering::avoidance::benchmarks::Bench;
+#[path = "common/bench_arg.rs"]
+mod bench_arg;
 use steering::avoidance::AvoidanceMethod;
 use steering::table::EtaTable;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let bench = match args.get(1).map_or("corridor", String::as_str) {
-        "doorway" => Bench::Doorway,
-        "circle32" => Bench::CircleSwap(32),
-        "circle100" => Bench::CircleSwap(100),
-        _ => Bench::Corridor,
-    };
+    let bench = bench_arg::bench(args.get(1));
     let seed: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
     let times: Vec<f32> = args[3..].iter().filter_map(|s| s.parse().ok()).collect();
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");

@@ -7,23 +7,18 @@
 //! (benchmark `corridor` | `doorway` | `circle32` | `circle100`, first
 //! seed, seeds). Tune seeds are 1000–1019; the report seeds 0–99.
 
-use steering::avoidance::benchmarks::Bench;
+#[path = "common/bench_arg.rs"]
+mod bench_arg;
 use steering::avoidance::AvoidanceMethod;
 use steering::table::EtaTable;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let which = args.get(1).map_or("corridor", String::as_str);
     let s0: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
     let n: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(20);
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
-    let bench = match which {
-        "doorway" => Bench::Doorway,
-        "circle32" => Bench::CircleSwap(32),
-        "circle100" => Bench::CircleSwap(100),
-        _ => Bench::Corridor,
-    };
+    let bench = bench_arg::bench(args.get(1));
     for seed in s0..s0 + n {
         let sc = bench.scenario(seed, AvoidanceMethod::Orca);
         let mut w = sc.world().expect("benchmark scenarios are valid");

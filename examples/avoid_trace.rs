@@ -4,18 +4,14 @@
 //! `cargo run --release --example avoid_trace -- corridor 1008 0 18 24 0.2`
 //! (benchmark, seed, agent, from s, to s, every s).
 
-use steering::avoidance::benchmarks::Bench;
+#[path = "common/bench_arg.rs"]
+mod bench_arg;
 use steering::avoidance::AvoidanceMethod;
 use steering::table::EtaTable;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();
-    let bench = match args.get(1).map_or("corridor", String::as_str) {
-        "doorway" => Bench::Doorway,
-        "circle32" => Bench::CircleSwap(32),
-        "circle100" => Bench::CircleSwap(100),
-        _ => Bench::Corridor,
-    };
+    let bench = bench_arg::bench(args.get(1));
     let num = |k: usize, d: f32| args.get(k).and_then(|s| s.parse().ok()).unwrap_or(d);
     let seed = num(2, 1000.0) as u64;
     let i = num(3, 0.0) as usize;
