@@ -443,27 +443,20 @@ impl Avoider {
                             .grid
                             .candidate_runs(me.pos + u_seek * passing::LOOK_AHEAD);
                         let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
-                        let reach2 = Vec4::splat(passing::PASS_REACH * passing::PASS_REACH);
-                        let moving = Vec4::splat(passing::PASS_MOVING);
                         let [lx, ly, lfx, lfy, lv] = &self.lanes;
                         for &(lo, hi) in &far[..n_far] {
                             let (lo, hi) = (lo as usize, hi as usize);
                             let mut a = lo;
                             while a < hi {
-                                let (rx, ry) = (
+                                let in_run = Vec4::new(0.0, 1.0, 2.0, 3.0)
+                                    .cmplt(Vec4::splat((hi - a) as f32));
+                                lane.see_far4(
                                     Vec4::from_slice(&lx[a..a + 4]) - mx,
                                     Vec4::from_slice(&ly[a..a + 4]) - my,
-                                );
-                                let seen = Vec4::new(0.0, 1.0, 2.0, 3.0)
-                                    .cmplt(Vec4::splat((hi - a) as f32))
-                                    & Vec4::from_slice(&lv[a..a + 4]).cmpgt(moving)
-                                    & (rx * rx + ry * ry).cmplt(reach2);
-                                lane.see4(
-                                    rx,
-                                    ry,
                                     Vec4::from_slice(&lfx[a..a + 4]),
                                     Vec4::from_slice(&lfy[a..a + 4]),
-                                    seen,
+                                    Vec4::from_slice(&lv[a..a + 4]),
+                                    in_run,
                                 );
                                 a += 4;
                             }

@@ -85,7 +85,7 @@
 //! [`LOOK_AHEAD`] (5 m) along the agent's way (the grid's 3 × 3 cells
 //! round it), and every one within [`PASS_REACH`] (8 m) that moves faster
 //! than [`PASS_MOVING`] (a group coming, not a queue) asks as above
-//! ([`Passing::see_far`]); and any oncoming neighbour in the lane asks at
+//! ([`Passing::see_far4`]); and any oncoming neighbour in the lane asks at
 //! least [`LANE_MIN_TAN`] (11°), however far (the ask falls as 1 /
 //! distance: 3° at 8 m). (2) While it turns right with a *mate* (heading
 //! cosine above [`MATE_COS`]) beside it on that side (lateral offset
@@ -273,15 +273,17 @@ impl Passing {
         self.tan4 = Vec4::ZERO;
     }
 
-    /// A neighbour found beyond reach, ahead ([`LOOK_AHEAD`]), at `rel`
-    /// heading along `fwd` at `v` m/s: seen as [`Passing::see`] does when
-    /// within [`PASS_REACH`] and moving (faster than [`PASS_MOVING`]: a
-    /// group coming the other way, not one standing in a queue).
+    /// Four neighbours found beyond reach, ahead ([`LOOK_AHEAD`]), at
+    /// `(rx, ry)` heading along `(fx, fy)` at `v` m/s: seen as
+    /// [`Passing::see4`] does those within [`PASS_REACH`] and moving
+    /// (faster than [`PASS_MOVING`]: a group coming the other way, not one
+    /// standing in a queue). Lanes not in `lanes` are not read.
     #[inline]
-    pub fn see_far(&mut self, rel: Vec2, fwd: Vec2, v: f32) {
-        if (v > PASS_MOVING) & (rel.length_squared() < PASS_REACH * PASS_REACH) {
-            self.see(rel, fwd);
-        }
+    pub fn see_far4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, v: Vec4, lanes: BVec4A) {
+        let seen = lanes
+            & v.cmpgt(Vec4::splat(PASS_MOVING))
+            & (rx * rx + ry * ry).cmplt(Vec4::splat(PASS_REACH * PASS_REACH));
+        self.see4(rx, ry, fx, fy, seen);
     }
 
     /// True when an oncoming neighbour asks for a turn.

@@ -89,7 +89,7 @@ function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0
     src = dst;
     dst = next;
   }
-  return { stepMs: performance.now() - t0, owned, steps: s, indices: null, states: null };
+  return { stepMs: performance.now() - t0, owned, indices: null, states: null };
 }
 
 async function run(task: CrowdTask): Promise<CrowdReply> {
@@ -102,7 +102,7 @@ async function run(task: CrowdTask): Promise<CrowdReply> {
     shared = task.init.shared;
   }
   if (!lab) throw new Error("crowd worker used before its crowd was built");
-  if (task.steps === 0) return { stepMs: 0, owned: 0, steps: 0, indices: null, states: null };
+  if (task.steps === 0) return { stepMs: 0, owned: 0, indices: null, states: null };
   const t0 = performance.now();
   if (shared) return runShared(lab, shared, task, t0);
   const front = task.state;
@@ -111,7 +111,7 @@ async function run(task: CrowdTask): Promise<CrowdReply> {
   const owned = lab.stepStrip(task.lo, task.hi);
   const indices = lab.ownedIndices();
   const states = lab.ownedState();
-  return { stepMs: performance.now() - t0, owned, steps: 1, indices, states };
+  return { stepMs: performance.now() - t0, owned, indices, states };
 }
 
 self.onmessage = async (ev: MessageEvent<TaskMessage<CrowdTask>>) => {

@@ -56,8 +56,6 @@ export interface CrowdTask {
 export interface CrowdReply {
   stepMs: number;
   owned: number;
-  /** Steps the job ran. */
-  steps: number;
   /** Without shared memory: the stepped boids and their `[x, y, vx, vy]`. */
   indices: Uint32Array | null;
   states: Float32Array | null;
@@ -123,6 +121,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   count = 0;
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
+  /** Shared memory: the control words (`C`), a view of `sab[3]`. */
+  private ctrl: Int32Array | null = null;
   private frontIndex = 0;
   /** Shared memory: a job is in flight; its start step; its steps taken. */
   private running = false;
@@ -147,6 +147,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
       this.halt();
       // Three states, the control words, the step slots.
       ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4 * 8, 4 * 3 * SLOT_RING]));
+      this.ctrl = this.sab ? new Int32Array(this.sab[3] as SharedArrayBuffer) : null;
       this.frontIndex = 0;
       this.time = time;
       const init = { config, shared: this.sab };
@@ -167,8 +168,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
    *  so a worker slower than the frames never stops to wait for the page. */
   request(steps: number): void {
     const k = Math.min(MAX_STEPS_PER_FRAME, steps);
-    if (this.sab && this.running) {
-      const ctrl = new Int32Array(this.sab[3] as SharedArrayBuffer);
+    const ctrl = this.ctrl;
+    if (ctrl && this.running) {
       const target = Atomics.load(ctrl, C.target);
       Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.time + k + 1, target + steps)));
     } else this.owed = Math.min(k, this.owed + steps);
@@ -190,8 +191,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
       this.gen,
       () => {
         const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
-        if (this.sab) {
-          const ctrl = new Int32Array(this.sab[3] as SharedArrayBuffer);
+        const ctrl = this.ctrl;
+        if (ctrl) {
           ctrl.fill(0);
           Atomics.store(ctrl, C.target, this.time + steps);
           Atomics.store(ctrl, C.published, this.frontIndex);
@@ -216,8 +217,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
    *  state, which the workers then leave alone). Called every frame, before
    *  drawing. */
   poll(): void {
-    if (!this.sab || !this.running) return;
-    const ctrl = new Int32Array(this.sab[3] as SharedArrayBuffer);
+    const ctrl = this.ctrl;
+    if (!this.sab || !ctrl || !this.running) return;
     const p = Atomics.load(ctrl, C.published);
     const s = p >> 2;
     if (s <= this.seen) return;
@@ -240,7 +241,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
 
   /** Asks a continuing job to end after its present step. */
   private halt(): void {
-    if (this.sab) Atomics.store(new Int32Array(this.sab[3] as SharedArrayBuffer), C.stop, 1);
+    if (this.ctrl) Atomics.store(this.ctrl, C.stop, 1);
     this.running = false;
   }
 
@@ -254,11 +255,11 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
 
   /** A step job's replies: its last state becomes the front one. */
   private land(replies: CrowdReply[], t0: number): void {
-    if (this.sab) {
+    if (this.ctrl) {
       this.poll();
       this.running = false;
       // Steps a frame asked for after the workers' last decision.
-      const target = Atomics.load(new Int32Array(this.sab[3] as SharedArrayBuffer), C.target);
+      const target = Atomics.load(this.ctrl, C.target);
       this.owed = Math.max(this.owed, Math.min(MAX_STEPS_PER_FRAME, target - this.time));
       this.done.ms += performance.now() - t0;
     } else {
