@@ -57,15 +57,33 @@ export class PixelSprites {
     if (!l) return;
     const px = l.px;
     const W = l.canvas.width;
-    for (let dy = -r; dy <= r; dy++) {
-      const row = (sy + dy) * W + sx;
-      for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
+    // Issue 17 (the crowd's 150,000 boids stamped up to 40 times a
+    // second on the page's thread, beside two stepping workers): the
+    // usual 3 × 3 block written out, and rounding by `+ 0.5 | 0` (the
+    // caller keeps every pixel at a positive index): 3.7 → 2.2 ms per
+    // 150,000 stamps in Node, the same pixels.
+    if (r === 1) {
+      const o = sy * W + sx;
+      px[o - W - 1] = colour;
+      px[o - W] = colour;
+      px[o - W + 1] = colour;
+      px[o - 1] = colour;
+      px[o] = colour;
+      px[o + 1] = colour;
+      px[o + W - 1] = colour;
+      px[o + W] = colour;
+      px[o + W + 1] = colour;
+    } else {
+      for (let dy = -r; dy <= r; dy++) {
+        const row = (sy + dy) * W + sx;
+        for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
+      }
     }
     if (ux === 0 && uy === 0) return;
-    const nx = Math.round(sx + ux * nose);
-    const ny = Math.round(sy + uy * nose);
+    const nx = (sx + ux * nose + 0.5) | 0;
+    const ny = (sy + uy * nose + 0.5) | 0;
     px[ny * W + nx] = colour;
-    px[Math.round((sy + ny) / 2) * W + Math.round((sx + nx) / 2)] = colour;
+    px[(((sy + ny) / 2 + 0.5) | 0) * W + (((sx + nx) / 2 + 0.5) | 0)] = colour;
   }
 
   /** Puts the layer on `s` (CSS-pixel transform in force). */

@@ -327,7 +327,7 @@ try {
     const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
     await page.goto(new URL("crowd.html?workers=2", url).href);
     assert.equal(await waitCrowd(page), null);
-    await check("crowd in 2 workers (shared memory, 40,000 boids at Test IV density): runs, draws, its state equals one core's after 30 steps from step 0 and 24 more", async () => {
+    await check("crowd in 2 workers (shared memory, 40,000 boids at Test IV density): runs, draws, its strips rebalanced by speed, its state equals one core's after 30 steps from step 0 and 24 more", async () => {
       await pause(page);
       await page.evaluate(() => window.__crowd.loadScaled(40000));
       await owned(page);
@@ -337,6 +337,11 @@ try {
       assert.equal(r.info.mode, "shared");
       assert.equal(r.info.workers, 2);
       assert.equal(r.got, r.ref, "after 30 steps from step 0");
+      // The strips were rebalanced by the workers' speeds (their cuts
+      // moved step by step) and the state is still one core's.
+      const shares = r.info.shares;
+      assert.equal(shares.length, 2, `shares ${shares}`);
+      assert.ok(Math.abs(shares[0] + shares[1] - 1) < 1e-5 && shares.every((f) => f >= 0.05), `shares ${shares}`);
       await page.click("#play");
       const t0 = await page.evaluate(() => window.__crowd.time());
       await page.waitForFunction((t0) => window.__crowd.time() > t0 + 5, t0, { timeout: 30000 });

@@ -10,7 +10,7 @@
 
 import { CrowdLab, errorText, loadCore } from "../wasm";
 import type { ResultMessage, TaskMessage } from "../workers/pool";
-import { C, MAX_JOB_STEPS, SLOT_RING, stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
+import { BALANCE, C, MAX_JOB_STEPS, rebalance, SLOT_RING, stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
 
 let lab: CrowdLab | null = null;
 let shared: SharedArrayBuffer[] | null = null;
@@ -49,6 +49,7 @@ function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: nu
 function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0: number): CrowdReply {
   const ctrl = new Int32Array(shared[3] as SharedArrayBuffer);
   const slots = new Float32Array(shared[4] as SharedArrayBuffer);
+  const bal = new Float32Array(shared[5] as SharedArrayBuffer);
   let src = task.front;
   let dst = Atomics.load(ctrl, C.next);
   let owned = 0;
@@ -57,10 +58,14 @@ function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0
   for (;;) {
     const front = new Float32Array(shared[src] as SharedArrayBuffer);
     const back = new Float32Array(shared[dst] as SharedArrayBuffer);
-    const cuts = stripCuts(front, front.length >> 2, task.workers);
+    const cuts = stripCuts(front, front.length >> 2, task.workers, bal.subarray(BALANCE.share));
     // One worker owns every boid: after its first step the core already
     // holds the state it wrote (no load of the whole state per step).
+    const ta = performance.now();
     owned = stepInto(l, front, back, task.time + s, cuts[task.worker] ?? 0, cuts[task.worker + 1] ?? Infinity, s === 0 || task.workers > 1);
+    // Before the barrier: worker 0 reads them after it (rebalance).
+    bal[2 * task.worker + BALANCE.ms] = performance.now() - ta;
+    bal[2 * task.worker + BALANCE.boids] = owned;
     s++;
     Atomics.add(ctrl, C.arrived, 1);
     Atomics.notify(ctrl, C.arrived);
@@ -77,6 +82,7 @@ function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0
       Atomics.store(ctrl, C.published, (s << 2) | dst);
       const go = Atomics.load(ctrl, C.stop) === 0 && task.time + s < Atomics.load(ctrl, C.target) && s < MAX_JOB_STEPS;
       const drawing = Atomics.load(ctrl, C.drawing);
+      if (task.workers > 1) rebalance(bal, task.workers);
       next = go ? [0, 1, 2].find((b) => b !== dst && b !== drawing) ?? -1 : -1;
       Atomics.store(ctrl, C.next, next);
       Atomics.store(ctrl, C.decided, s);

@@ -28,6 +28,8 @@ export interface CrowdWorkersInfo {
   error: string | null;
   /** Boids each worker stepped in the last step. */
   owned: number[];
+  /** Shared memory, 2 workers or more: each strip's share of the boids, balanced by the workers' speeds (stepper.ts, `rebalance`). */
+  shares: number[];
   startMs: number;
 }
 

@@ -61,6 +61,7 @@ const hook: CrowdHook = {
       starting: on && st ? !st.ready : false,
       error: st?.error ?? null,
       owned: on && st ? st.owned : [],
+      shares: on && st ? st.shares() : [],
       startMs: st?.startMs ?? 0,
     };
   },

@@ -74,6 +74,44 @@ export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, dra
  *  ring (the page reads it every frame; a job runs at most a frame's worth
  *  and one step ahead of the drawn state, ≤ 21). */
 export const SLOT_RING = 32;
+/** `?workers=` goes up to this. */
+const MAX_CROWD_WORKERS = 16;
+/** Shared memory, `sab[5]` (Float32), the strips' balance: per worker its
+ *  last step's wall ms and boids, then each strip's share of the boids for
+ *  the next step (worker 0 sets them at every decision; all 0 at the
+ *  start: equal shares). */
+export const BALANCE = { ms: 0, boids: 1, share: 2 * MAX_CROWD_WORKERS } as const;
+const BALANCE_FLOATS = 3 * MAX_CROWD_WORKERS;
+/** Weight of the last step's rates in the new shares (the rest: the old). */
+const BALANCE_GAIN = 0.3;
+
+/** Issue 17, two workers beside the page's drawing on 2 cores: strips of
+ *  equal counts ended unequal (one worker waited 3–9 ms a step for the
+ *  other at 150,000 boids: unequal density, and the page or the compositor
+ *  taking a core from one of them). Each strip's next share of the boids
+ *  follows its worker's measured boids per ms (smoothed by BALANCE_GAIN,
+ *  at least a tenth of an equal share): the slower worker gets fewer. The
+ *  split never changes a bit of the state (strips step their boids as one
+ *  core would), only who waits. Writes the new shares into `bal`. */
+export function rebalance(bal: Float32Array, workers: number): void {
+  const rates: number[] = [];
+  for (let w = 0; w < workers; w++) {
+    const ms = bal[2 * w + BALANCE.ms] ?? 0;
+    const boids = bal[2 * w + BALANCE.boids] ?? 0;
+    rates.push(ms > 0 && boids > 0 ? boids / ms : 0);
+  }
+  const total = rates.reduce((a, b) => a + b, 0);
+  if (!(total > 0) || rates.some((r) => !(r > 0))) return;
+  const floor = 0.1 / workers;
+  const next = rates.map((r, w) => {
+    const old = bal[BALANCE.share + w] ?? 0;
+    const was = old > 0 ? old : 1 / workers;
+    return Math.max(floor, (1 - BALANCE_GAIN) * was + (BALANCE_GAIN * r) / total);
+  });
+  const sum = next.reduce((a, b) => a + b, 0);
+  next.forEach((v, w) => (bal[BALANCE.share + w] = v / sum));
+}
+
 /** A continuing job returns after this many steps (its counts stay small). */
 export const MAX_JOB_STEPS = 1 << 20;
 /** The page's "steps / frame" goes up to 20. */
@@ -89,13 +127,14 @@ export function crowdWorkersWanted(count: number, search = location.search): { n
   const raw = new URLSearchParams(search).get("workers");
   if (raw === null) return { n: auto, problem: null };
   const n = /^\d{1,2}$/.test(raw) ? Number(raw) : NaN;
-  if (!(n >= 0 && n <= 16)) return { n: auto, problem: `workers = ${raw} is not a whole number of workers in [0, 16]; using ${auto}` };
+  if (!(n >= 0 && n <= MAX_CROWD_WORKERS)) return { n: auto, problem: `workers = ${raw} is not a whole number of workers in [0, ${MAX_CROWD_WORKERS}]; using ${auto}` };
   return { n, problem: null };
 }
 
-/** Cuts of x into `k` strips of about equal counts, from a sample of `pos`
+/** Cuts of x into `k` strips of about equal counts (or of `shares` of
+ *  the boids, [`rebalance`], when given and set), from a sample of `pos`
  *  (flat x, y); the first is −∞ and the last +∞. */
-export function stripCuts(state: Float32Array, n: number, k: number): number[] {
+export function stripCuts(state: Float32Array, n: number, k: number, shares?: Float32Array): number[] {
   const cuts = [-Infinity];
   if (k > 1 && n > 0) {
     const stride = Math.max(1, Math.floor(n / 4096));
@@ -105,7 +144,12 @@ export function stripCuts(state: Float32Array, n: number, k: number): number[] {
       if (Number.isFinite(x)) xs.push(x);
     }
     xs.sort((a, b) => a - b);
-    for (let w = 1; w < k; w++) cuts.push(Math.fround(xs[Math.floor((w * xs.length) / k)] ?? 0));
+    const set = shares !== undefined && (shares[0] ?? 0) > 0;
+    let q = 0;
+    for (let w = 1; w < k; w++) {
+      q += set ? (shares[w - 1] ?? 0) : 1 / k;
+      cuts.push(Math.fround(xs[Math.min(xs.length - 1, Math.floor(q * xs.length))] ?? 0));
+    }
   } else {
     for (let w = 1; w < k; w++) cuts.push(0);
   }
@@ -121,6 +165,13 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   count = 0;
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
+  /** Shared memory: each strip's share of the boids (`rebalance`); empty
+   *  before the first balance or without shared memory. */
+  shares(): number[] {
+    if (!this.sab || this.workers < 2) return [];
+    const bal = new Float32Array(this.sab[5] as SharedArrayBuffer, 4 * BALANCE.share, this.workers);
+    return bal[0] ? Array.from(bal) : [];
+  }
   /** Shared memory: the control words (`C`), a view of `sab[3]`. */
   private ctrl: Int32Array | null = null;
   private frontIndex = 0;
@@ -145,8 +196,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
     return this.restart((gen) => {
       this.count = state.length >> 2;
       this.halt();
-      // Three states, the control words, the step slots.
-      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4 * 8, 4 * 3 * SLOT_RING]));
+      // Three states, the control words, the step slots, the balance.
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4 * 8, 4 * 3 * SLOT_RING, 4 * BALANCE_FLOATS]));
       this.ctrl = this.sab ? new Int32Array(this.sab[3] as SharedArrayBuffer) : null;
       this.frontIndex = 0;
       this.time = time;
