@@ -79,6 +79,7 @@ use glam::{BVec4A, Vec2, Vec4};
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, ray_cap, Lines, MAX_NEIGHBOURS};
 use crate::avoidance::passing::{self, Passing};
+use crate::avoidance::patience;
 use crate::avoidance::stalled;
 use crate::crowd::separation::NeighbourGrid;
 use crate::trig;
@@ -180,13 +181,19 @@ pub struct Avoider {
     /// agent's own heading, and turning on the spot against a wall the two
     /// chased each other for ever); empty: the funnel's heading.
     pub goals: Vec<Vec2>,
+    /// Per agent, its patience clock ([`crate::avoidance::patience`]): s
+    /// unfinished and at rest, kept from step to step by the world; its
+    /// margin from neighbours shrinks once it runs past
+    /// [`patience::PATIENCE_AFTER`]. Empty: every agent keeps its margin.
+    pub stalled: Vec<f32>,
 }
 
 /// Scratch buffers carry no state worth comparing: two worlds are equal
-/// whatever their avoiders hold.
+/// whatever their avoiders hold, but for the patience clocks (state kept
+/// from step to step).
 impl PartialEq for Avoider {
-    fn eq(&self, _: &Self) -> bool {
-        true
+    fn eq(&self, other: &Self) -> bool {
+        self.stalled == other.stalled
     }
 }
 
@@ -245,10 +252,6 @@ impl Avoider {
         let r = cfg.radius + cfg.margin;
         let r2 = cfg.reach * cfg.reach;
         let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
-        // A pair's combined reach: with the right of way, the bodies'
-        // clearance plus a sliver; otherwise the whole margin.
-        let reach_ahead = 2.0 * cfg.radius + PRIORITY_MARGIN.min(2.0 * cfg.margin);
-        let reach_yield = 2.0 * r;
         let mut lines = Lines::default();
         let no_lines = Lines::default();
         // Agents in the grid's bucket order: consecutive neighbour queries
@@ -266,6 +269,9 @@ impl Avoider {
             // way sought, along which the keep-right rule reads every
             // neighbour in reach while they are gathered.
             let orca = cfg.method == AvoidanceMethod::Orca;
+            // The margin kept from neighbours and obstacles: less once the
+            // agent has waited too long ([`patience`]).
+            let margin = patience::margin(cfg.margin, self.stalled.get(i).copied().unwrap_or(0.0));
             lines.clear();
             let unfinished = me.prio.is_finite();
             let mut walled = false;
@@ -277,7 +283,7 @@ impl Avoider {
                         lines.push_obstacle(orca::obstacle_line(
                             nrm,
                             dist,
-                            r,
+                            cfg.radius + margin,
                             cfg.obstacle_horizon,
                             p.dt,
                         ));
@@ -506,6 +512,11 @@ impl Avoider {
                     }
                     let mut oncoming = BVec4A::FALSE;
                     let v_me = me.fwd * me.v;
+                    // A pair's combined reach: with the right of way, the
+                    // bodies' clearance plus a sliver; otherwise the whole
+                    // margin (both less for an agent out of patience).
+                    let reach_ahead = 2.0 * cfg.radius + PRIORITY_MARGIN.min(2.0 * margin);
+                    let reach_yield = 2.0 * (cfg.radius + margin);
                     let (inv_h, inv_dt) = (1.0 / cfg.horizon, 1.0 / p.dt);
                     let splat = Vec4::splat;
                     let moving = BVec4A::splat(me.v >= STUCK_SPEED);

@@ -9,6 +9,7 @@
 //! | [`avoider`] | — | one pass: neighbours through the crowd's grid, the method's velocity, turned into an admissible heading and speed of the forward-only unicycle |
 //! | [`passing`] | — | keep right early: the funnel's velocity turned right by oncoming neighbours anywhere in reach and moving ones up to 8 m ahead, and an agent turning into its lane beside a mate drops back behind it, so that groups meeting head on pass in lanes (the corridor's deadlocks) |
 //! | [`stalled`] | — | agents at rest in a jam: they seek their goal's direction (the funnel's γ turns with them), and the keep-right bias never points into a wall (the corridor's remaining deadlocks) |
+//! | [`patience`] | — | an agent stalled in a jam for 3 s gives up its margin (keeps only the bodies' clearance) until it moves: the corridor's, doorway's and circle swap's last deadlocks |
 //! | `world_step` | 000 §6 | the world's step with avoidance: plan every funnel, avoid, step |
 //! | [`proximity`] | — | metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |
 //! | [`benchmarks`] | — | the benchmark scenarios (circle swap, corridor, doorway, paper figures with avoidance) and the seeded study behind `steer avoid` |
@@ -18,6 +19,7 @@ pub mod benchmarks;
 pub mod config;
 pub mod orca;
 pub mod passing;
+pub mod patience;
 pub mod proximity;
 pub mod stalled;
 mod world_step;

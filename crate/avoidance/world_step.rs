@@ -4,6 +4,7 @@
 
 use crate::angle::diff;
 use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
+use crate::avoidance::patience;
 use crate::seek::seek_step_committed;
 use crate::table::EtaTable;
 use crate::vehicle::ParamError;
@@ -61,6 +62,15 @@ impl World {
         self.avoider
             .goals
             .extend(self.agents.iter().map(|a| a.goal_now.pos));
+        // Patience clocks (`avoidance::patience`), on the states at the
+        // start of the step; all reset when agents come or go.
+        if self.avoider.stalled.len() != self.agents.len() {
+            self.avoider.stalled.clear();
+            self.avoider.stalled.resize(self.agents.len(), 0.0);
+        }
+        for (c, a) in self.avoider.stalled.iter_mut().zip(&self.agents) {
+            *c = patience::tick(*c, a.done(), a.state.v, p.dt);
+        }
         // 2. The avoidance, on the states at the start of the step.
         self.avoider.compute(
             &p,
