@@ -92,8 +92,11 @@ fn corridor_groups_keep_right_early_and_pass_in_lanes() {
     // at rest seeking their goal's direction (`avoidance::stalled`), 60 in
     // 28 runs, reach 2,397 of 2,400. With the keep-right seen from further
     // ahead and mates merging behind each other into the lane, 7 agents in
-    // 5 runs wait 10 s or more at once, and 2,399 of 2,400 arrive (issue
-    // 18's target, 0, is met on 95 of these 100 seeds, not all).
+    // 5 runs waited 10 s or more at once, and 2,399 of 2,400 arrived. With
+    // patience (`avoidance::patience`: a margin shrinking after 3 s at
+    // rest) none does (issue 18's target), and 2,397 arrive: 3 agents
+    // beyond the corridor, their targets behind two arrived ones, still
+    // creep towards them at the end.
     let t = table();
     let runs: Vec<_> = steering::parallel::map_indices(100, |k| {
         run(
@@ -109,8 +112,8 @@ fn corridor_groups_keep_right_early_and_pass_in_lanes() {
         "corridor 1000–1099: reach {reached}/{agents}, deadlocked {deadlocks} in {jammed} runs"
     );
     assert_eq!(agents, 2400);
-    assert!(reached >= 2399, "{reached}");
-    assert!(deadlocks <= 7 && jammed <= 5, "{deadlocks} in {jammed}");
+    assert!(reached >= 2397, "{reached}");
+    assert_eq!((deadlocks, jammed), (0, 0));
     for r in &runs {
         assert_eq!((r.overlap_pair_steps, r.obstacle_contacts), (0, 0), "{r:?}");
         assert_eq!((r.violations, r.nan), (0, 0));
