@@ -73,6 +73,14 @@
 //! `examples/avoid_icount.rs` under callgrind `--branch-sim=yes` (1,024
 //! agents, per agent update): ORCA 6,687 → 6,188 instructions, simulated
 //! mispredictions 43.8 → 20.8 (off: 1,714 and 3.5).
+//!
+//! The look-ahead scan ([`passing::LOOK_AHEAD`]) reads only the cells of
+//! its 3 × 3 block that meet the box where a neighbour it takes in can be
+//! and none within reach was ([`passing::FarBox`]: beyond reach ahead, in
+//! the lane), a third fewer candidates, when the grid's table gives every
+//! cell near the agent its own bucket (else the whole block): the same
+//! neighbours seen, the same bits. 7,564 → 7,421 instructions per ORCA
+//! update, mispredictions 26.1 → 25.1 (off 1,688 and 3.5).
 
 use glam::{BVec4A, Vec2, Vec4};
 
@@ -251,6 +259,15 @@ impl Avoider {
         let reach_yield = 2.0 * r;
         let mut lines = Lines::default();
         let no_lines = Lines::default();
+        // The look-ahead scan may skip the cells of its block that no
+        // neighbour it would take in lies in when every cell it could be
+        // in has a bucket of its own: the block's cells lie within one of
+        // the point ahead, those the far box meets within the box's size
+        // of the agent, LOOK_AHEAD from that point.
+        let far_cells =
+            ((passing::LOOK_AHEAD + Passing::far_box_size(2.0 * r)) / cfg.reach).ceil() + 2.0;
+        let far_trim = far_cells <= 32.0 && self.grid.buckets_distinct_within(far_cells as i32);
+        let far_box = passing::FarBox::new(2.0 * r, cfg.reach);
         // Agents in the grid's bucket order: consecutive neighbour queries
         // hit the same, already cached buckets (each agent's answer does
         // not depend on the order).
@@ -439,9 +456,27 @@ impl Avoider {
                         // mate, [`Passing::see4`]). Scalar, one peer at a
                         // time, this scan cost more than the rest of the
                         // keep-right rule.
-                        let (far, n_far) = self
-                            .grid
-                            .candidate_runs(me.pos + u_seek * passing::LOOK_AHEAD);
+                        // Only the cells that meet the agent's far box
+                        // ([`Passing::far_box`]; a third to a half of the
+                        // block's cells), when no other cell shares their
+                        // buckets: the same neighbours seen.
+                        let at = me.pos + u_seek * passing::LOOK_AHEAD;
+                        let (far, n_far) =
+                            if far_trim && me.pos.abs().max_element() < passing::FAR_BOX_LIMIT {
+                                let [fx, fy] = self.grid.cell_of(at);
+                                let (lo, hi) = lane.far_box(me.pos, &far_box);
+                                let ([x0, y0], [x1, y1]) =
+                                    (self.grid.cell_of(lo), self.grid.cell_of(hi));
+                                let (x0, y0) = (x0.max(fx - 1), y0.max(fy - 1));
+                                let (x1, y1) = (x1.min(fx + 1), y1.min(fy + 1));
+                                self.grid.cell_runs(
+                                    [x0, y0],
+                                    (x1 - x0 + 1).max(0) as u32,
+                                    (y1 - y0 + 1).max(0) as u32,
+                                )
+                            } else {
+                                self.grid.candidate_runs(at)
+                            };
                         let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
                         let [lx, ly, lfx, lfy, lv] = &self.lanes;
                         for &(lo, hi) in &far[..n_far] {

@@ -174,6 +174,55 @@ pub const MERGE_BACK: f32 = 0.25;
 /// behind the mate (a block as wide as the corridor becomes a lane).
 pub const MERGE_SPEED: f32 = 0.5;
 
+/// [`Passing::far_box`]'s margin, m: more than its corners' and the
+/// tests' rounding errors for positions within [`FAR_BOX_LIMIT`].
+pub const FAR_BOX_PAD: f32 = 0.01;
+
+/// Up to this far from the origin on either axis, m, an agent's
+/// [`Passing::far_box`] holds everything its look-ahead scan takes in
+/// (f32's spacing there is 0.001 m).
+pub const FAR_BOX_LIMIT: f32 = 1.0e4;
+
+/// Where the neighbours that [`Passing::see_far4`] takes in and
+/// [`Passing::see4`] on every neighbour within the avoidance's reach did
+/// not lie, in the agent's frame (a rectangle, ahead × aside, by its centre
+/// and half sides): an oncoming neighbour asks only up to [`PASS_REACH`]
+/// ahead and within ± the clearance aside, and those nearer ahead than
+/// `√(reach² − clearance²)` are in reach; a mate is from [`MERGE_BACK`]
+/// clearances behind to one ahead and up to [`MERGE_SIDE`] on the right,
+/// in reach too unless the clearance is nearly the reach (then the
+/// rectangle holds them). Padded against rounding: a thousandth of the
+/// reach on its tests, [`FAR_BOX_PAD`] on the corners.
+#[derive(Clone, Copy, Debug)]
+pub struct FarBox {
+    ahead: f32,
+    aside: f32,
+    half_ahead: f32,
+    half_aside: f32,
+    pad: Vec2,
+}
+
+impl FarBox {
+    /// The rectangle for a clearance `clear` and the avoidance's `reach`.
+    #[must_use]
+    pub fn new(clear: f32, reach: f32) -> Self {
+        let (c, r2) = (clear, reach * reach);
+        let (a0, l0) = if (1.0 + MERGE_SIDE * MERGE_SIDE) * c * c < 0.999 * r2 {
+            ((0.999 * r2 - c * c).sqrt(), -c)
+        } else {
+            (-MERGE_BACK * c, -MERGE_SIDE * c)
+        };
+        let (a1, l1) = (PASS_REACH, c);
+        Self {
+            ahead: 0.5 * (a0 + a1),
+            aside: 0.5 * (l0 + l1),
+            half_ahead: (0.5 * (a1 - a0)).max(0.0),
+            half_aside: 0.5 * (l1 - l0),
+            pad: Vec2::splat(FAR_BOX_PAD),
+        }
+    }
+}
+
 /// One agent's keep-right turn, accumulated over every neighbour in reach.
 #[derive(Clone, Copy, Debug)]
 pub struct Passing {
@@ -286,6 +335,25 @@ impl Passing {
         self.see4(rx, ry, fx, fy, seen);
     }
 
+    /// The box (lower, upper corner) round an agent at `pos` outside which
+    /// [`Passing::see_far4`] takes in nothing that the scan within reach
+    /// did not ([`FarBox`]). The look-ahead scan reads only the grid's
+    /// cells that meet it.
+    #[inline]
+    #[must_use]
+    pub fn far_box(&self, pos: Vec2, b: &FarBox) -> (Vec2, Vec2) {
+        let centre = pos + self.u * b.ahead + self.left * b.aside;
+        let half = self.u.abs() * b.half_ahead + self.left.abs() * b.half_aside + b.pad;
+        (centre - half, centre + half)
+    }
+
+    /// No point of [`Passing::far_box`] is further than this, m, on
+    /// either axis from the agent, for a clearance `clear`.
+    #[must_use]
+    pub fn far_box_size(clear: f32) -> f32 {
+        PASS_REACH + (1.0 + MERGE_BACK + MERGE_SIDE) * clear + FAR_BOX_PAD
+    }
+
     /// True when an oncoming neighbour asks for a turn.
     #[inline]
     #[must_use]
@@ -320,6 +388,45 @@ impl Passing {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every neighbour that [`Passing::see_far4`] takes in (an ask or a
+    /// mate) and [`Passing::see4`] within reach does not lies in the far
+    /// box: seeded agents and neighbours round the box's edges, for the
+    /// default clearance and reach, a clearance nearly the reach, a short
+    /// and a long reach.
+    #[test]
+    fn the_far_box_holds_what_only_the_look_ahead_sees() {
+        let mut rng = crate::rng::Rng::new(5);
+        for (clear, reach) in [(0.9, 3.0), (0.9, 1.0), (0.5, 2.0), (0.9, 6.0)] {
+            let fb = FarBox::new(clear, reach);
+            let mut taken = 0;
+            for _ in 0..200_000 {
+                let pos = Vec2::new(rng.range(-50.0, 50.0), rng.range(-50.0, 50.0));
+                let u = crate::trig::unit(rng.range(-3.2, 3.2));
+                let rel = Vec2::new(rng.range(-9.0, 9.0), rng.range(-9.0, 9.0));
+                let fwd = crate::trig::unit(rng.range(-3.2, 3.2));
+                let q = pos + rel;
+                let (rx, ry) = (Vec4::splat(q.x - pos.x), Vec4::splat(q.y - pos.y));
+                let (fx, fy) = (Vec4::splat(fwd.x), Vec4::splat(fwd.y));
+                let mut far = Passing::new(u, clear);
+                far.see_far4(rx, ry, fx, fy, Vec4::ONE, BVec4A::splat(true));
+                far.settle();
+                let d2 = (pos - q).length_squared();
+                let mut near = Passing::new(u, clear);
+                near.see4(rx, ry, fx, fy, BVec4A::splat(d2 < reach * reach));
+                near.settle();
+                if far.active() && !near.active() || far.mate_right && !near.mate_right {
+                    taken += 1;
+                    let (lo, hi) = far.far_box(pos, &fb);
+                    assert!(
+                        q.cmpge(lo).all() && q.cmple(hi).all(),
+                        "{clear} {reach} {pos} {u} {q} {lo} {hi}"
+                    );
+                }
+            }
+            assert!(taken > 300, "{clear} {reach} {taken}");
+        }
+    }
 
     #[test]
     fn a_head_on_pair_both_turn_right_by_the_same_angle() {
