@@ -200,6 +200,8 @@ pub struct FarBox {
     half_ahead: f32,
     half_aside: f32,
     pad: Vec2,
+    /// Mates may be beyond reach: [`Passing::see_far4`] looks for them.
+    mates: bool,
 }
 
 impl FarBox {
@@ -207,10 +209,11 @@ impl FarBox {
     #[must_use]
     pub fn new(clear: f32, reach: f32) -> Self {
         let (c, r2) = (clear, reach * reach);
-        let (a0, l0) = if (1.0 + MERGE_SIDE * MERGE_SIDE) * c * c < 0.999 * r2 {
-            ((0.999 * r2 - c * c).sqrt(), -c)
-        } else {
+        let mates = (1.0 + MERGE_SIDE * MERGE_SIDE) * c * c >= 0.999 * r2;
+        let (a0, l0) = if mates {
             (-MERGE_BACK * c, -MERGE_SIDE * c)
+        } else {
+            ((0.999 * r2 - c * c).sqrt(), -c)
         };
         let (a1, l1) = (PASS_REACH, c);
         Self {
@@ -219,6 +222,7 @@ impl FarBox {
             half_ahead: (0.5 * (a1 - a0)).max(0.0),
             half_aside: 0.5 * (l1 - l0),
             pad: Vec2::splat(FAR_BOX_PAD),
+            mates,
         }
     }
 }
@@ -290,19 +294,27 @@ impl Passing {
     /// change the largest.
     #[inline]
     pub fn see4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, lanes: BVec4A) {
+        self.see4_with(rx, ry, fx, fy, lanes, true);
+    }
+
+    /// [`Passing::see4`], the mates looked for only when `mates`.
+    #[inline]
+    fn see4_with(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, lanes: BVec4A, mates: bool) {
         let (ux, uy) = (Vec4::splat(self.u.x), Vec4::splat(self.u.y));
         let (lx, ly) = (Vec4::splat(self.left.x), Vec4::splat(self.left.y));
         let clear = Vec4::splat(self.clear);
         let ahead = rx * ux + ry * uy;
         let lat = rx * lx + ry * ly;
         let along = fx * ux + fy * uy;
-        let mates = lanes
-            & along.cmpgt(Vec4::splat(MATE_COS))
-            & lat.cmplt(Vec4::ZERO)
-            & lat.cmpgt(Vec4::splat(-MERGE_SIDE * self.clear))
-            & ahead.cmpgt(Vec4::splat(-MERGE_BACK * self.clear))
-            & ahead.cmplt(clear);
-        self.mate_right |= mates.any();
+        if mates {
+            let mates = lanes
+                & along.cmpgt(Vec4::splat(MATE_COS))
+                & lat.cmplt(Vec4::ZERO)
+                & lat.cmpgt(Vec4::splat(-MERGE_SIDE * self.clear))
+                & ahead.cmpgt(Vec4::splat(-MERGE_BACK * self.clear))
+                & ahead.cmplt(clear);
+            self.mate_right |= mates.any();
+        }
         let asks = lanes
             & !ahead.cmple(Vec4::ZERO)
             & !along.cmpge(Vec4::splat(ONCOMING_COS))
@@ -326,13 +338,26 @@ impl Passing {
     /// `(rx, ry)` heading along `(fx, fy)` at `v` m/s: seen as
     /// [`Passing::see4`] does those within [`PASS_REACH`] and moving
     /// (faster than [`PASS_MOVING`]: a group coming the other way, not one
-    /// standing in a queue). Lanes not in `lanes` are not read.
+    /// standing in a queue). Lanes not in `lanes` are not read. The mates
+    /// are looked for only where `b` says some may be beyond reach (they
+    /// are within a little over two clearances: in reach, the scan within
+    /// it saw them).
     #[inline]
-    pub fn see_far4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, v: Vec4, lanes: BVec4A) {
+    #[allow(clippy::too_many_arguments)]
+    pub fn see_far4(
+        &mut self,
+        rx: Vec4,
+        ry: Vec4,
+        fx: Vec4,
+        fy: Vec4,
+        v: Vec4,
+        lanes: BVec4A,
+        b: &FarBox,
+    ) {
         let seen = lanes
             & v.cmpgt(Vec4::splat(PASS_MOVING))
             & (rx * rx + ry * ry).cmplt(Vec4::splat(PASS_REACH * PASS_REACH));
-        self.see4(rx, ry, fx, fy, seen);
+        self.see4_with(rx, ry, fx, fy, seen, b.mates);
     }
 
     /// The box (lower, upper corner) round an agent at `pos` outside which
@@ -408,21 +433,28 @@ mod tests {
                 let q = pos + rel;
                 let (rx, ry) = (Vec4::splat(q.x - pos.x), Vec4::splat(q.y - pos.y));
                 let (fx, fy) = (Vec4::splat(fwd.x), Vec4::splat(fwd.y));
-                let mut far = Passing::new(u, clear);
-                far.see_far4(rx, ry, fx, fy, Vec4::ONE, BVec4A::splat(true));
-                far.settle();
+                // The look-ahead's tests with the mates always looked for.
                 let d2 = (pos - q).length_squared();
+                let mut far = Passing::new(u, clear);
+                far.see4(rx, ry, fx, fy, BVec4A::splat(d2 < PASS_REACH * PASS_REACH));
+                far.settle();
                 let mut near = Passing::new(u, clear);
                 near.see4(rx, ry, fx, fy, BVec4A::splat(d2 < reach * reach));
                 near.settle();
-                if far.active() && !near.active() || far.mate_right && !near.mate_right {
+                let far_mate = far.mate_right && !near.mate_right;
+                if far.active() && !near.active() || far_mate {
                     taken += 1;
                     let (lo, hi) = far.far_box(pos, &fb);
                     assert!(
-                        q.cmpge(lo).all() && q.cmple(hi).all(),
+                        q.cmpge(lo).all() && q.cmple(hi).all() && (fb.mates || !far_mate),
                         "{clear} {reach} {pos} {u} {q} {lo} {hi}"
                     );
                 }
+                // And see_far4 asks the same.
+                let mut look = Passing::new(u, clear);
+                look.see_far4(rx, ry, fx, fy, Vec4::ONE, BVec4A::splat(true), &fb);
+                look.settle();
+                assert_eq!(look.tan, far.tan);
             }
             assert!(taken > 300, "{clear} {reach} {taken}");
         }
