@@ -202,6 +202,10 @@ pub struct FarBox {
     pad: Vec2,
     /// Mates may be beyond reach: [`Passing::see_far4`] looks for them.
     mates: bool,
+    /// The largest ask of a neighbour beyond reach (∞ when mates may be
+    /// there too): it is beyond `√(reach² − clearance²)` ahead and less
+    /// than two clearances to the right of one asking to pass on the left.
+    max_ask: f32,
 }
 
 impl FarBox {
@@ -223,6 +227,11 @@ impl FarBox {
             half_aside: 0.5 * (l1 - l0),
             pad: Vec2::splat(FAR_BOX_PAD),
             mates,
+            max_ask: if mates {
+                f32::INFINITY
+            } else {
+                (2.0 * c * LANE_SHARE / a0 * 1.001).clamp(LANE_MIN_TAN, LANE_MAX_TAN)
+            },
         }
     }
 }
@@ -379,6 +388,16 @@ impl Passing {
         PASS_REACH + (1.0 + MERGE_BACK + MERGE_SIDE) * clear + FAR_BOX_PAD
     }
 
+    /// Folds the asks so far ([`Passing::settle`]); true when a neighbour
+    /// beyond reach may still change the turn: its ask may be larger than
+    /// the largest so far ([`FarBox`]), or a mate may be there. Otherwise
+    /// the look-ahead scan would change nothing.
+    #[inline]
+    pub fn far_may_ask(&mut self, b: &FarBox) -> bool {
+        self.settle();
+        self.tan < b.max_ask
+    }
+
     /// True when an oncoming neighbour asks for a turn.
     #[inline]
     #[must_use]
@@ -416,7 +435,7 @@ mod tests {
 
     /// Every neighbour that [`Passing::see_far4`] takes in (an ask or a
     /// mate) and [`Passing::see4`] within reach does not lies in the far
-    /// box: seeded agents and neighbours round the box's edges, for the
+    /// box, and asks no more than its bound: seeded agents and neighbours round the box's edges, for the
     /// default clearance and reach, a clearance nearly the reach, a short
     /// and a long reach.
     #[test]
@@ -448,6 +467,13 @@ mod tests {
                     assert!(
                         q.cmpge(lo).all() && q.cmple(hi).all() && (fb.mates || !far_mate),
                         "{clear} {reach} {pos} {u} {q} {lo} {hi}"
+                    );
+                    // Its ask is at most the bound beyond reach.
+                    assert!(
+                        near.active() || far.tan <= fb.max_ask,
+                        "{} {}",
+                        far.tan,
+                        fb.max_ask
                     );
                 }
                 // And see_far4 asks the same.
