@@ -96,6 +96,12 @@
 //! the default clearance and reach, a neighbour ahead in the lane within
 //! about 1.4 m): → 6,812 and 21.8. The lanes sliced to one length (one
 //! bounds check per four read, not one per lane array): → 6,767, 22.2.
+//! ORCA / off in instructions 4.48 → 4.01. Callgrind's simple predictor
+//! (2-bit counters indexed by the branch's address and the last few
+//! outcomes) still counts about one misprediction per agent update at the
+//! exit of loops of nearly constant length (the ranking's k nearest,
+//! ORCA's fours), and its counts move by a few tenths with the code's
+//! layout alone.
 
 use glam::{BVec4A, Mat4, Vec2, Vec4};
 
