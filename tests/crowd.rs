@@ -694,3 +694,42 @@ fn at_300_boids_the_weakest_parker_is_overwhelmed_by_separation() {
         "{strong:?}"
     );
 }
+
+#[test]
+fn part_of_a_block_of_cells_finds_exactly_its_cells_boids_when_buckets_are_distinct() {
+    // Boids on a lattice of 0.7 m (several per 3 m cell); every block of
+    // up to 3 × 3 cells read through `cell_runs` holds, among the boids
+    // binned in it, exactly those of its own cells when the table has a
+    // bucket per cell within the distance; the 64-bucket table shares
+    // buckets between cells 4 apart on both axes (−4, +4).
+    for (side, w, distinct) in [(4usize, 8, false), (4, 3, true), (40, 8, true)] {
+        let pos: Vec<f32> = (0..side * side)
+            .flat_map(|i| [(i % side) as f32 * 0.7, (i / side) as f32 * 0.7])
+            .collect();
+        let mut grid = NeighbourGrid::new();
+        grid.rebuild(&pos, 3.0);
+        assert_eq!(grid.buckets_distinct_within(w), distinct, "{side} {w}");
+        if !distinct {
+            continue;
+        }
+        let cells = (side as f32 * 0.7 / 3.0).ceil() as i32;
+        for (x0, y0) in (0..cells).flat_map(|x| (0..cells).map(move |y| (x - 1, y - 1))) {
+            for (nx, ny) in [(1u32, 1u32), (2, 3), (3, 2), (3, 3), (0, 3)] {
+                let (runs, n) = grid.cell_runs([x0, y0], nx, ny);
+                let mut got: Vec<usize> = runs[..n]
+                    .iter()
+                    .flat_map(|&(lo, hi)| lo as usize..hi as usize)
+                    .map(|k| grid.boid_in_bucket_order(k))
+                    .collect();
+                got.sort_unstable();
+                let want: Vec<usize> = (0..side * side)
+                    .filter(|&i| {
+                        let [cx, cy] = grid.cell_of(glam::Vec2::new(pos[2 * i], pos[2 * i + 1]));
+                        (x0..x0 + nx as i32).contains(&cx) && (y0..y0 + ny as i32).contains(&cy)
+                    })
+                    .collect();
+                assert_eq!(got, want, "{side} {x0} {y0} {nx} {ny}");
+            }
+        }
+    }
+}

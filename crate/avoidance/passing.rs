@@ -174,6 +174,68 @@ pub const MERGE_BACK: f32 = 0.25;
 /// behind the mate (a block as wide as the corridor becomes a lane).
 pub const MERGE_SPEED: f32 = 0.5;
 
+/// [`Passing::far_box`]'s margin, m: more than its corners' and the
+/// tests' rounding errors for positions within [`FAR_BOX_LIMIT`].
+pub const FAR_BOX_PAD: f32 = 0.01;
+
+/// Up to this far from the origin on either axis, m, an agent's
+/// [`Passing::far_box`] holds everything its look-ahead scan takes in
+/// (f32's spacing there is 0.001 m).
+pub const FAR_BOX_LIMIT: f32 = 1.0e4;
+
+/// Where the neighbours that [`Passing::see_far4`] takes in and
+/// [`Passing::see4`] on every neighbour within the avoidance's reach did
+/// not lie, in the agent's frame (a rectangle, ahead × aside, by its centre
+/// and half sides): an oncoming neighbour asks only up to [`PASS_REACH`]
+/// ahead and within ± the clearance aside, and those nearer ahead than
+/// `√(reach² − clearance²)` are in reach; a mate is from [`MERGE_BACK`]
+/// clearances behind to one ahead and up to [`MERGE_SIDE`] on the right,
+/// in reach too unless the clearance is nearly the reach (then the
+/// rectangle holds them). Padded against rounding: a thousandth of the
+/// reach on its tests, [`FAR_BOX_PAD`] on the corners.
+#[derive(Clone, Copy, Debug)]
+pub struct FarBox {
+    ahead: f32,
+    aside: f32,
+    half_ahead: f32,
+    half_aside: f32,
+    pad: Vec2,
+    /// Mates may be beyond reach: [`Passing::see_far4`] looks for them.
+    mates: bool,
+    /// The largest ask of a neighbour beyond reach (∞ when mates may be
+    /// there too): it is beyond `√(reach² − clearance²)` ahead and less
+    /// than two clearances to the right of one asking to pass on the left.
+    max_ask: f32,
+}
+
+impl FarBox {
+    /// The rectangle for a clearance `clear` and the avoidance's `reach`.
+    #[must_use]
+    pub fn new(clear: f32, reach: f32) -> Self {
+        let (c, r2) = (clear, reach * reach);
+        let mates = (1.0 + MERGE_SIDE * MERGE_SIDE) * c * c >= 0.999 * r2;
+        let (a0, l0) = if mates {
+            (-MERGE_BACK * c, -MERGE_SIDE * c)
+        } else {
+            ((0.999 * r2 - c * c).sqrt(), -c)
+        };
+        let (a1, l1) = (PASS_REACH, c);
+        Self {
+            ahead: 0.5 * (a0 + a1),
+            aside: 0.5 * (l0 + l1),
+            half_ahead: (0.5 * (a1 - a0)).max(0.0),
+            half_aside: 0.5 * (l1 - l0),
+            pad: Vec2::splat(FAR_BOX_PAD),
+            mates,
+            max_ask: if mates {
+                f32::INFINITY
+            } else {
+                (2.0 * c * LANE_SHARE / a0 * 1.001).clamp(LANE_MIN_TAN, LANE_MAX_TAN)
+            },
+        }
+    }
+}
+
 /// One agent's keep-right turn, accumulated over every neighbour in reach.
 #[derive(Clone, Copy, Debug)]
 pub struct Passing {
@@ -241,19 +303,27 @@ impl Passing {
     /// change the largest.
     #[inline]
     pub fn see4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, lanes: BVec4A) {
+        self.see4_with(rx, ry, fx, fy, lanes, true);
+    }
+
+    /// [`Passing::see4`], the mates looked for only when `mates`.
+    #[inline]
+    fn see4_with(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, lanes: BVec4A, mates: bool) {
         let (ux, uy) = (Vec4::splat(self.u.x), Vec4::splat(self.u.y));
         let (lx, ly) = (Vec4::splat(self.left.x), Vec4::splat(self.left.y));
         let clear = Vec4::splat(self.clear);
         let ahead = rx * ux + ry * uy;
         let lat = rx * lx + ry * ly;
         let along = fx * ux + fy * uy;
-        let mates = lanes
-            & along.cmpgt(Vec4::splat(MATE_COS))
-            & lat.cmplt(Vec4::ZERO)
-            & lat.cmpgt(Vec4::splat(-MERGE_SIDE * self.clear))
-            & ahead.cmpgt(Vec4::splat(-MERGE_BACK * self.clear))
-            & ahead.cmplt(clear);
-        self.mate_right |= mates.any();
+        if mates {
+            let mates = lanes
+                & along.cmpgt(Vec4::splat(MATE_COS))
+                & lat.cmplt(Vec4::ZERO)
+                & lat.cmpgt(Vec4::splat(-MERGE_SIDE * self.clear))
+                & ahead.cmpgt(Vec4::splat(-MERGE_BACK * self.clear))
+                & ahead.cmplt(clear);
+            self.mate_right |= mates.any();
+        }
         let asks = lanes
             & !ahead.cmple(Vec4::ZERO)
             & !along.cmpge(Vec4::splat(ONCOMING_COS))
@@ -277,13 +347,55 @@ impl Passing {
     /// `(rx, ry)` heading along `(fx, fy)` at `v` m/s: seen as
     /// [`Passing::see4`] does those within [`PASS_REACH`] and moving
     /// (faster than [`PASS_MOVING`]: a group coming the other way, not one
-    /// standing in a queue). Lanes not in `lanes` are not read.
+    /// standing in a queue). Lanes not in `lanes` are not read. The mates
+    /// are looked for only where `b` says some may be beyond reach (they
+    /// are within a little over two clearances: in reach, the scan within
+    /// it saw them).
     #[inline]
-    pub fn see_far4(&mut self, rx: Vec4, ry: Vec4, fx: Vec4, fy: Vec4, v: Vec4, lanes: BVec4A) {
+    #[allow(clippy::too_many_arguments)]
+    pub fn see_far4(
+        &mut self,
+        rx: Vec4,
+        ry: Vec4,
+        fx: Vec4,
+        fy: Vec4,
+        v: Vec4,
+        lanes: BVec4A,
+        b: &FarBox,
+    ) {
         let seen = lanes
             & v.cmpgt(Vec4::splat(PASS_MOVING))
             & (rx * rx + ry * ry).cmplt(Vec4::splat(PASS_REACH * PASS_REACH));
-        self.see4(rx, ry, fx, fy, seen);
+        self.see4_with(rx, ry, fx, fy, seen, b.mates);
+    }
+
+    /// The box (lower, upper corner) round an agent at `pos` outside which
+    /// [`Passing::see_far4`] takes in nothing that the scan within reach
+    /// did not ([`FarBox`]). The look-ahead scan reads only the grid's
+    /// cells that meet it.
+    #[inline]
+    #[must_use]
+    pub fn far_box(&self, pos: Vec2, b: &FarBox) -> (Vec2, Vec2) {
+        let centre = pos + self.u * b.ahead + self.left * b.aside;
+        let half = self.u.abs() * b.half_ahead + self.left.abs() * b.half_aside + b.pad;
+        (centre - half, centre + half)
+    }
+
+    /// No point of [`Passing::far_box`] is further than this, m, on
+    /// either axis from the agent, for a clearance `clear`.
+    #[must_use]
+    pub fn far_box_size(clear: f32) -> f32 {
+        PASS_REACH + (1.0 + MERGE_BACK + MERGE_SIDE) * clear + FAR_BOX_PAD
+    }
+
+    /// Folds the asks so far ([`Passing::settle`]); true when a neighbour
+    /// beyond reach may still change the turn: its ask may be larger than
+    /// the largest so far ([`FarBox`]), or a mate may be there. Otherwise
+    /// the look-ahead scan would change nothing.
+    #[inline]
+    pub fn far_may_ask(&mut self, b: &FarBox) -> bool {
+        self.settle();
+        self.tan < b.max_ask
     }
 
     /// True when an oncoming neighbour asks for a turn.
@@ -320,6 +432,59 @@ impl Passing {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// Every neighbour that [`Passing::see_far4`] takes in (an ask or a
+    /// mate) and [`Passing::see4`] within reach does not lies in the far
+    /// box, and asks no more than its bound: seeded agents and neighbours round the box's edges, for the
+    /// default clearance and reach, a clearance nearly the reach, a short
+    /// and a long reach.
+    #[test]
+    fn the_far_box_holds_what_only_the_look_ahead_sees() {
+        let mut rng = crate::rng::Rng::new(5);
+        for (clear, reach) in [(0.9, 3.0), (0.9, 1.0), (0.5, 2.0), (0.9, 6.0)] {
+            let fb = FarBox::new(clear, reach);
+            let mut taken = 0;
+            for _ in 0..200_000 {
+                let pos = Vec2::new(rng.range(-50.0, 50.0), rng.range(-50.0, 50.0));
+                let u = crate::trig::unit(rng.range(-3.2, 3.2));
+                let rel = Vec2::new(rng.range(-9.0, 9.0), rng.range(-9.0, 9.0));
+                let fwd = crate::trig::unit(rng.range(-3.2, 3.2));
+                let q = pos + rel;
+                let (rx, ry) = (Vec4::splat(q.x - pos.x), Vec4::splat(q.y - pos.y));
+                let (fx, fy) = (Vec4::splat(fwd.x), Vec4::splat(fwd.y));
+                // The look-ahead's tests with the mates always looked for.
+                let d2 = (pos - q).length_squared();
+                let mut far = Passing::new(u, clear);
+                far.see4(rx, ry, fx, fy, BVec4A::splat(d2 < PASS_REACH * PASS_REACH));
+                far.settle();
+                let mut near = Passing::new(u, clear);
+                near.see4(rx, ry, fx, fy, BVec4A::splat(d2 < reach * reach));
+                near.settle();
+                let far_mate = far.mate_right && !near.mate_right;
+                if far.active() && !near.active() || far_mate {
+                    taken += 1;
+                    let (lo, hi) = far.far_box(pos, &fb);
+                    assert!(
+                        q.cmpge(lo).all() && q.cmple(hi).all() && (fb.mates || !far_mate),
+                        "{clear} {reach} {pos} {u} {q} {lo} {hi}"
+                    );
+                    // Its ask is at most the bound beyond reach.
+                    assert!(
+                        near.active() || far.tan <= fb.max_ask,
+                        "{} {}",
+                        far.tan,
+                        fb.max_ask
+                    );
+                }
+                // And see_far4 asks the same.
+                let mut look = Passing::new(u, clear);
+                look.see_far4(rx, ry, fx, fy, Vec4::ONE, BVec4A::splat(true), &fb);
+                look.settle();
+                assert_eq!(look.tan, far.tan);
+            }
+            assert!(taken > 300, "{clear} {reach} {taken}");
+        }
+    }
 
     #[test]
     fn a_head_on_pair_both_turn_right_by_the_same_angle() {

@@ -336,28 +336,49 @@ impl NeighbourGrid {
     #[inline(always)]
     #[must_use]
     pub fn candidate_runs(&self, p: Vec2) -> ([(u32, u32); 9], usize) {
-        let ix = cell_coord(p.x, self.inv_cell);
-        let iy = cell_coord(p.y, self.inv_cell);
+        let [ix, iy] = self.cell_of(p);
+        self.cell_runs([ix.wrapping_sub(1), iy.wrapping_sub(1)], 3, 3)
+    }
+
+    /// The cell `[ix, iy]` a query at `p` is binned in.
+    #[inline]
+    #[must_use]
+    pub fn cell_of(&self, p: Vec2) -> [i32; 2] {
+        [
+            cell_coord(p.x, self.inv_cell),
+            cell_coord(p.y, self.inv_cell),
+        ]
+    }
+
+    /// The runs of bucket-order slots holding the boids of the `nx × ny`
+    /// cells (each at most 3) from `first` up, row by row, each bucket
+    /// once; [`NeighbourGrid::candidate_runs`] is the 3 × 3 block round a
+    /// point. Cells sharing a bucket with one of them add their boids, as
+    /// in any query.
+    #[inline(always)]
+    #[must_use]
+    pub fn cell_runs(&self, first: [i32; 2], nx: u32, ny: u32) -> ([(u32, u32); 9], usize) {
+        debug_assert!(nx <= 3 && ny <= 3);
         let buckets = self.mask + 1;
-        // Each row's three cells are buckets b, b+1, b+2 (mod buckets):
-        // at most two non-wrapping intervals per row.
+        // Each row's cells are buckets b..b+nx (mod buckets): at most two
+        // non-wrapping intervals per row.
         let mut ranges = [(0u32, 0u32); 9];
         let mut n_ranges = 0;
-        for dy in -1i32..=1 {
-            let b = bucket_of_cell(ix.wrapping_sub(1), iy.wrapping_add(dy), self.mask);
-            if b + 3 <= buckets {
-                ranges[n_ranges] = (b, b + 3);
+        for dy in 0..ny as i32 {
+            let b = bucket_of_cell(first[0], first[1].wrapping_add(dy), self.mask);
+            if b + nx <= buckets {
+                ranges[n_ranges] = (b, b + nx);
                 n_ranges += 1;
             } else {
                 ranges[n_ranges] = (b, buckets);
-                ranges[n_ranges + 1] = (0, b + 3 - buckets);
+                ranges[n_ranges + 1] = (0, b + nx - buckets);
                 n_ranges += 2;
             }
         }
         // Rows never land on overlapping buckets: the buckets of rows one
         // or two apart differ by `ROW_PITCH` or `2·ROW_PITCH` mod the table
         // size, ≡ 49 or 34 mod 64, so at least 15 apart round the table of
-        // ≥ 64 buckets (`rebuild_from`), and a row spans 3 (see
+        // ≥ 64 buckets (`rebuild_from`), and a row spans at most 3 (see
         // `rebuild_members`). Issue 17: the pairwise overlap test that
         // guarded a fallback here took a fifth of the crowd's step in wasm
         // (where this function is not inlined), for a fallback that never
@@ -368,6 +389,20 @@ impl NeighbourGrid {
             *r = (self.starts[r.0 as usize], self.starts[r.1 as usize]);
         }
         (ranges, n_ranges)
+    }
+
+    /// True when no two different cells at most `w` cells apart on each
+    /// axis share a bucket (the table is large enough): then a query over
+    /// part of a block of cells within that distance of each other finds
+    /// exactly the boids of those cells in it that the whole block's query
+    /// finds, no colliding cell's.
+    #[must_use]
+    pub fn buckets_distinct_within(&self, w: i32) -> bool {
+        // Buckets are linear in the cell mod the table size: two cells
+        // share one when their difference maps to bucket 0.
+        (0..=w).all(|dy| {
+            (-w..=w).all(|dx| (dy, dx) <= (0, 0) || bucket_of_cell(dx, dy, self.mask) != 0)
+        })
     }
 
     /// Adds `n` to [`NeighbourGrid::checks`] (candidate pairs a caller of
