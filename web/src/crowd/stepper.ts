@@ -86,13 +86,15 @@ const BALANCE_FLOATS = 3 * MAX_CROWD_WORKERS;
 const BALANCE_GAIN = 0.3;
 
 /** Issue 17, two workers beside the page's drawing on 2 cores: strips of
- *  equal counts ended unequal (one worker waited 3–9 ms a step for the
- *  other at 150,000 boids: unequal density, and the page or the compositor
- *  taking a core from one of them). Each strip's next share of the boids
- *  follows its worker's measured boids per ms (smoothed by BALANCE_GAIN,
- *  at least a tenth of an equal share): the slower worker gets fewer. The
- *  split never changes a bit of the state (strips step their boids as one
- *  core would), only who waits. Writes the new shares into `bal`. */
+ *  equal counts took unequal times (150,000 boids: one worker waited 1–3.5
+ *  ms a step for the other on a quiet machine, 3–9 ms on a loaded one:
+ *  unequal density, and the page or the compositor taking a core from one
+ *  of them). Each strip's next share of the boids follows its worker's
+ *  measured boids per ms (smoothed by BALANCE_GAIN, at least a tenth of an
+ *  equal share): the slower worker gets fewer (measured: 67,518 and 82,482
+ *  boids stepped in 23.15 and 23.33 ms). The split never changes a bit of
+ *  the state (strips step their boids as one core would), only who waits.
+ *  Writes the new shares into `bal`. */
 export function rebalance(bal: Float32Array, workers: number): void {
   const rates: number[] = [];
   for (let w = 0; w < workers; w++) {
