@@ -437,14 +437,7 @@ pub fn obstacle_line(n: Vec2, dist: f32, r: f32, horizon: f32, dt: f32) -> Line 
 /// shrinks, so it is empty at the end if it ever was.
 fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> Option<Vec2> {
     let li = lines.get(i);
-    let dot = li.point.dot(li.direction);
-    let disc = dot * dot + radius * radius - li.point.length_squared();
-    if disc < 0.0 {
-        return None;
-    }
-    let sq = disc.sqrt();
-    let mut t_left = -dot - sq;
-    let mut t_right = -dot + sq;
+    let (mut t_left, mut t_right) = disc_interval(li, radius)?;
     let (ldx, ldy) = (Vec4::splat(li.direction.x), Vec4::splat(li.direction.y));
     let (lpx, lpy) = (Vec4::splat(li.point.x), Vec4::splat(li.point.y));
     let mut at = 0;
@@ -474,6 +467,26 @@ fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> 
     if t_left > t_right {
         return None;
     }
+    Some(pick_on_line(li, opt, direction_opt, t_left, t_right))
+}
+
+/// The parameter interval of line `li` inside the disc of radius `radius`
+/// (`None`: the line misses it); [`lp1`]'s start.
+#[inline]
+fn disc_interval(li: Line, radius: f32) -> Option<(f32, f32)> {
+    let dot = li.point.dot(li.direction);
+    let disc = dot * dot + radius * radius - li.point.length_squared();
+    if disc < 0.0 {
+        return None;
+    }
+    let sq = disc.sqrt();
+    Some((-dot - sq, -dot + sq))
+}
+
+/// [`lp1`]'s answer on line `li` within `[t_left, t_right]`: the end
+/// farthest along `opt` when `direction_opt`, else the point nearest `opt`.
+#[inline]
+fn pick_on_line(li: Line, opt: Vec2, direction_opt: bool, t_left: f32, t_right: f32) -> Vec2 {
     let t = if direction_opt {
         if opt.dot(li.direction) > 0.0 {
             t_right
@@ -483,8 +496,25 @@ fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> 
     } else {
         li.direction.dot(opt - li.point).clamp(t_left, t_right)
     };
-    Some(li.point + li.direction * t)
+    li.point + li.direction * t
 }
+
+/// [`lp2`]'s first guess: `opt` scaled to the disc when `direction_opt`,
+/// else `opt` brought inside it.
+#[inline]
+fn lp2_start(opt: Vec2, radius: f32, direction_opt: bool) -> Vec2 {
+    if direction_opt {
+        opt * radius
+    } else if opt.length_squared() > radius * radius {
+        opt.normalize_or_zero() * radius
+    } else {
+        opt
+    }
+}
+
+/// A 2D linear program as [`lp2`] (the tests pass the former scalar one
+/// to [`solve_with`]).
+type Lp2 = fn(&Lines, f32, Vec2, bool) -> (Vec2, usize);
 
 /// Linear program in 2D: the velocity in the disc nearest `opt` that every
 /// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
@@ -492,13 +522,7 @@ fn lp1(lines: &Lines, i: usize, radius: f32, opt: Vec2, direction_opt: bool) -> 
 /// lines `0..n`). The lines the result already meets are skipped four at
 /// a time ([`Lines::first_violated`]).
 fn lp2(lines: &Lines, radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
-    let mut result = if direction_opt {
-        opt * radius
-    } else if opt.length_squared() > radius * radius {
-        opt.normalize_or_zero() * radius
-    } else {
-        opt
-    };
+    let mut result = lp2_start(opt, radius, direction_opt);
     let mut from = 0;
     while let Some(i) = lines.first_violated(from, result) {
         match lp1(lines, i, radius, opt, direction_opt) {
@@ -513,7 +537,7 @@ fn lp2(lines: &Lines, radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usi
 /// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
 /// lines (the first `n_obstacles`) and minimises the largest violation of
 /// the others, from line `begin` on.
-fn lp3(lines: &Lines, n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
+fn lp3(lines: &Lines, n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2, lp2: Lp2) {
     let mut distance = 0.0f32;
     let mut proj = Lines::default();
     for i in begin..lines.len() {
@@ -555,13 +579,19 @@ fn lp3(lines: &Lines, n_obstacles: usize, begin: usize, radius: f32, result: &mu
 /// and the largest violation of the agents' is minimised.
 #[must_use]
 pub fn solve(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
+    solve_with(lines, max_speed, preferred, lp2)
+}
+
+/// [`solve`] with the 2D linear program `lp2`.
+#[inline]
+fn solve_with(lines: &Lines, max_speed: f32, preferred: Vec2, lp2: Lp2) -> Vec2 {
     let (mut result, k) = lp2(lines, max_speed, preferred, false);
     if k < lines.obstacles {
         // The obstacles' own half-planes have no common point (an agent
         // wedged in a corner deeper than its radius): all become soft.
-        lp3(lines, 0, k, max_speed, &mut result);
+        lp3(lines, 0, k, max_speed, &mut result, lp2);
     } else if k < lines.len() {
-        lp3(lines, lines.obstacles, k, max_speed, &mut result);
+        lp3(lines, lines.obstacles, k, max_speed, &mut result, lp2);
     }
     result
 }
@@ -599,33 +629,29 @@ pub fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
 mod tests {
     use super::*;
 
-    /// The linear programs and ray cap as they were before the lines were
-    /// read four at a time (one line at a time, branches): the reference
-    /// the new ones must match bit for bit.
+    /// The 2D linear program and ray cap as they were before the lines
+    /// were read four at a time (one line at a time, branches): the
+    /// reference the new ones must match bit for bit. Their start and end
+    /// ([`disc_interval`], [`pick_on_line`], [`lp2_start`]) and the 3D
+    /// program round them ([`solve_with`]) are shared, not under test.
     mod reference {
-        use super::super::{det, Line, EPS, MAX_LINES};
+        use super::super::{
+            det, disc_interval, lp2_start, pick_on_line, solve_with, Line, Lines, EPS,
+        };
         use glam::Vec2;
 
-        /// Linear program on line `i`: the point of line `i` admitted by lines
-        /// `0..i` and the disc of radius `radius` that is nearest `opt` (or
-        /// farthest along `opt` when `direction_opt`). `None` if there is none.
+        /// Linear program on line `i`, one line before it at a time.
         fn lp1(
-            lines: &[Line],
+            lines: &Lines,
             i: usize,
             radius: f32,
             opt: Vec2,
             direction_opt: bool,
         ) -> Option<Vec2> {
-            let li = lines[i];
-            let dot = li.point.dot(li.direction);
-            let disc = dot * dot + radius * radius - li.point.length_squared();
-            if disc < 0.0 {
-                return None;
-            }
-            let sq = disc.sqrt();
-            let mut t_left = -dot - sq;
-            let mut t_right = -dot + sq;
-            for lj in &lines[..i] {
+            let li = lines.get(i);
+            let (mut t_left, mut t_right) = disc_interval(li, radius)?;
+            for j in 0..i {
+                let lj = lines.get(j);
                 let denom = det(li.direction, lj.direction);
                 let numer = det(lj.direction, li.point - lj.point);
                 if denom.abs() <= EPS {
@@ -644,32 +670,15 @@ mod tests {
                     return None;
                 }
             }
-            let t = if direction_opt {
-                if opt.dot(li.direction) > 0.0 {
-                    t_right
-                } else {
-                    t_left
-                }
-            } else {
-                li.direction.dot(opt - li.point).clamp(t_left, t_right)
-            };
-            Some(li.point + li.direction * t)
+            Some(pick_on_line(li, opt, direction_opt, t_left, t_right))
         }
 
-        /// Linear program in 2D: the velocity in the disc nearest `opt` that every
-        /// line admits. Returns `(result, n)`: `n == lines.len()` on success, else
-        /// the index of the first line that could not be met (`result` then meets
-        /// lines `0..n`).
-        fn lp2(lines: &[Line], radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
-            let mut result = if direction_opt {
-                opt * radius
-            } else if opt.length_squared() > radius * radius {
-                opt.normalize_or_zero() * radius
-            } else {
-                opt
-            };
+        /// Linear program in 2D, every line tested in turn.
+        fn lp2(lines: &Lines, radius: f32, opt: Vec2, direction_opt: bool) -> (Vec2, usize) {
+            let mut result = lp2_start(opt, radius, direction_opt);
             for i in 0..lines.len() {
-                if det(lines[i].direction, lines[i].point - result) > 0.0 {
+                let li = lines.get(i);
+                if det(li.direction, li.point - result) > 0.0 {
                     match lp1(lines, i, radius, opt, direction_opt) {
                         Some(r) => result = r,
                         None => return (result, i),
@@ -679,53 +688,9 @@ mod tests {
             (result, lines.len())
         }
 
-        /// Linear program in 3D, when the 2D one is infeasible: keeps the obstacle
-        /// lines (the first `n_obstacles`) and minimises the largest violation of
-        /// the others, from line `begin` on.
-        fn lp3(lines: &[Line], n_obstacles: usize, begin: usize, radius: f32, result: &mut Vec2) {
-            let mut distance = 0.0f32;
-            let mut proj = [Line::default(); MAX_LINES];
-            for i in begin..lines.len() {
-                let li = lines[i];
-                if det(li.direction, li.point - *result) > distance {
-                    proj[..n_obstacles].copy_from_slice(&lines[..n_obstacles]);
-                    let mut n = n_obstacles;
-                    for lj in &lines[n_obstacles..i] {
-                        let d = det(li.direction, lj.direction);
-                        let point = if d.abs() <= EPS {
-                            if li.direction.dot(lj.direction) > 0.0 {
-                                continue; // parallel, same direction
-                            }
-                            (li.point + lj.point) * 0.5
-                        } else {
-                            li.point + li.direction * (det(lj.direction, li.point - lj.point) / d)
-                        };
-                        let direction = (lj.direction - li.direction).normalize_or_zero();
-                        proj[n] = Line { point, direction };
-                        n += 1;
-                    }
-                    let temp = *result;
-                    let (r, k) = lp2(
-                        &proj[..n],
-                        radius,
-                        Vec2::new(-li.direction.y, li.direction.x),
-                        true,
-                    );
-                    *result = if k < n { temp } else { r };
-                    distance = det(li.direction, li.point - *result);
-                }
-            }
-        }
-
-        /// The former `solve`, on a slice with `obstacles` obstacle lines first.
-        pub fn solve_ref(ls: &[Line], obstacles: usize, max_speed: f32, preferred: Vec2) -> Vec2 {
-            let (mut result, k) = lp2(ls, max_speed, preferred, false);
-            if k < obstacles {
-                lp3(ls, 0, k, max_speed, &mut result);
-            } else if k < ls.len() {
-                lp3(ls, obstacles, k, max_speed, &mut result);
-            }
-            result
+        /// The former `solve`: the same 3D program round the former 2D one.
+        pub fn solve_ref(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
+            solve_with(lines, max_speed, preferred, lp2)
         }
 
         /// The former scalar ray cap.
@@ -834,7 +799,7 @@ mod tests {
             let pref = Vec2::new(rng.range(-2.0, 2.0), rng.range(-2.0, 2.0));
             let cap = rng.range(0.5, 2.0);
             let got = solve(&set, cap, pref);
-            let want = reference::solve_ref(&flat, n_obs, cap, pref);
+            let want = reference::solve_ref(&set, cap, pref);
             assert_eq!(
                 (got.x.to_bits(), got.y.to_bits()),
                 (want.x.to_bits(), want.y.to_bits()),
