@@ -18,14 +18,17 @@
 //! (`avoidance/passing.rs`, the corridor's deadlocks; separation unchanged,
 //! it does not keep right), and again for patience, a stalled agent's
 //! margin shrinking (`avoidance/patience.rs`: the corridor and the lattice
-//! changed; circle32, the doorway, Fig. 8 and separation did not). No
+//! changed; circle32, the doorway, Fig. 8 and separation did not), and
+//! again for plans every other step (`AvoidanceConfig::replan_every` 2,
+//! the new default: every hash changed; planning every step, the lattice
+//! keeps its former hash, checked beside the new one). No
 //! proptest and no file I/O, so it also runs under
 //! `wasm-pack test --headless --chrome`.
 
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-use steering::avoidance::AvoidanceMethod;
+use steering::avoidance::{AvoidanceConfig, AvoidanceMethod};
 use steering::scenario::Scenario;
 use steering::table::EtaTable;
 
@@ -44,14 +47,14 @@ const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
         include_str!("../scenarios/avoid_circle32.json"),
         None,
         1200,
-        0xb9d0_712e_5644_7aac,
+        0xf0c8_9e87_5c4b_a2ac,
     ),
     (
         "avoid_corridor",
         include_str!("../scenarios/avoid_corridor.json"),
         None,
         1200,
-        0x2b57_58c4_8140_1be1,
+        0x8c2f_082e_6ac9_a877,
     ),
     (
         "avoid_doorway",
@@ -65,24 +68,29 @@ const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
         include_str!("../scenarios/avoid_fig8.json"),
         None,
         900,
-        0xba2b_d8bc_5765_a4dc,
+        0xa74a_c626_daae_000f,
     ),
     (
         "avoid_corridor separation",
         include_str!("../scenarios/avoid_corridor.json"),
         Some(AvoidanceMethod::Separation),
         600,
-        0x15c1_8995_78e2_9a9b,
+        0x6dd5_dcac_e95a_9356,
     ),
 ];
 
 /// The doorway's golden hash. It once differed between native and wasm32:
 /// `unicycle`'s heading search (run by agents stuck at the door's walls)
 /// took `f32::cos`, the platform's libm; it now takes `steering::trig`.
-const DOORWAY: u64 = 0xb5e9_e926_a2a5_e752;
+const DOORWAY: u64 = 0xc135_74cd_328a_4ce0;
 
 /// The lattice world's golden hash (ORCA, 16 × 16 agents, 300 steps).
-const LATTICE: u64 = 0x2413_6082_0d54_be21;
+const LATTICE: u64 = 0x2e84_3d7b_146e_2ba5;
+
+/// The same with every agent planning every step (`replanEvery` 1): the
+/// lattice's hash before plans every other step became the default, so
+/// the every-step reading is still the same bits.
+const LATTICE_EVERY_STEP: u64 = 0x2413_6082_0d54_be21;
 
 #[test]
 #[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
@@ -111,4 +119,12 @@ fn the_cost_benchmark_lattice_matches_its_golden_hash() {
     let mut w = avoid_world::world(16, AvoidanceMethod::Orca);
     let h = world_hash(&table, &mut w, 300);
     assert_eq!(h, LATTICE, "lattice: got {h:#018x}");
+    let mut w = avoid_world::world(16, AvoidanceMethod::Orca);
+    let cfg = AvoidanceConfig {
+        replan_every: 1,
+        ..AvoidanceConfig::with_method(AvoidanceMethod::Orca)
+    };
+    w.set_avoidance(cfg, Vec::new()).unwrap();
+    let h = world_hash(&table, &mut w, 300);
+    assert_eq!(h, LATTICE_EVERY_STEP, "lattice, every step: got {h:#018x}");
 }

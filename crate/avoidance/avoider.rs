@@ -246,14 +246,20 @@ pub struct Avoider {
     /// margin from neighbours shrinks once it runs past
     /// [`patience::PATIENCE_AFTER`]. Empty: every agent keeps its margin.
     pub stalled: Vec<f32>,
+    /// Steps computed so far: with [`AvoidanceConfig::replan_every`] = e,
+    /// agent i plans on the steps where `(step + i) % e == 0`.
+    step: u32,
+    /// This step's planning agents, slots in `peers` (bucket order).
+    due: Vec<u32>,
 }
 
 /// Scratch buffers carry no state worth comparing: two worlds are equal
-/// whatever their avoiders hold, but for the patience clocks (state kept
-/// from step to step).
+/// whatever their avoiders hold, but for the state kept from step to step
+/// (the patience clocks, the step count and the commands that agents
+/// between plans keep).
 impl PartialEq for Avoider {
     fn eq(&self, other: &Self) -> bool {
-        self.stalled == other.stalled
+        self.stalled == other.stalled && self.step == other.step && self.commands == other.commands
     }
 }
 
@@ -281,12 +287,32 @@ impl Avoider {
         preferred: &[(f32, f32)],
     ) {
         let n = states.len();
+        let every = cfg.replan_every.max(1);
+        let step = self.step;
+        self.step = (step + 1) % every.max(1);
+        if self.commands.len() != n {
+            // Agents came or went: no plan is kept (each takes its
+            // funnel's command until it plans).
+            self.commands.clear();
+        }
         self.pos.clear();
         for s in states {
             self.pos.push(s.pos.x);
             self.pos.push(s.pos.y);
         }
         self.commands.resize(n, Command::default());
+        // Between its plans an agent keeps its last plan's command, or
+        // takes its funnel's when that plan left the funnel's alone.
+        for (c, &(heading, speed)) in self.commands.iter_mut().zip(preferred) {
+            if !c.active {
+                *c = Command {
+                    heading,
+                    speed,
+                    active: false,
+                    walls: false,
+                };
+            }
+        }
         self.grid.rebuild(&self.pos, cfg.reach);
         self.peers.clear();
         self.peers.extend((0..n).map(|slot| {
@@ -300,14 +326,21 @@ impl Avoider {
                 index: i as u32,
             }
         }));
-        for (f, lane) in self.lanes.iter_mut().enumerate() {
+        // One pass over the records (five passes read them five times).
+        let lanes = &mut self.lanes;
+        for lane in lanes.iter_mut() {
             lane.clear();
-            lane.extend(
-                self.peers
-                    .iter()
-                    .map(|q| [q.pos.x, q.pos.y, q.fwd.x, q.fwd.y, q.v][f]),
-            );
-            lane.extend([0.0; 4]);
+            lane.resize(n + 4, 0.0);
+        }
+        {
+            let [lx, ly, lfx, lfy, lv] = lanes.each_mut().map(|l| &mut l[..n]);
+            for (k, q) in self.peers.iter().enumerate() {
+                lx[k] = q.pos.x;
+                ly[k] = q.pos.y;
+                lfx[k] = q.fwd.x;
+                lfy[k] = q.fwd.y;
+                lv[k] = q.v;
+            }
         }
         let r = cfg.radius + cfg.margin;
         let r2 = cfg.reach * cfg.reach;
@@ -323,10 +356,20 @@ impl Avoider {
             ((passing::LOOK_AHEAD + Passing::far_box_size(2.0 * r)) / cfg.reach).ceil() + 2.0;
         let far_trim = far_cells <= 32.0 && self.grid.buckets_distinct_within(far_cells as i32);
         let far_box = passing::FarBox::new(2.0 * r, cfg.reach);
+        // This step's planning agents, in the grid's bucket order
+        // (compacted without a branch: whether an agent is due flips from
+        // slot to slot).
+        self.due.resize(n + 1, 0);
+        let mut n_due = 0usize;
+        for (slot, q) in self.peers.iter().enumerate() {
+            self.due[n_due] = slot as u32;
+            n_due += usize::from((q.index + step) % every == 0);
+        }
         // Agents in the grid's bucket order: consecutive neighbour queries
         // hit the same, already cached buckets (each agent's answer does
         // not depend on the order).
-        for slot in 0..n {
+        for d in 0..n_due {
+            let slot = self.due[d] as usize;
             let me = self.peers[slot];
             let i = me.index as usize;
             let (h_pref, s_pref) = preferred[i];

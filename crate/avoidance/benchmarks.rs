@@ -436,7 +436,9 @@ pub fn summarise(r: &[RunReport], base: &[RunReport]) -> CellSummary {
 }
 
 /// Runs `bench` with every method over `seeds` seeds from `seed0`
-/// (the paper figures once), in parallel, and summarises each method
+/// (the paper figures once), in parallel, each agent planning its
+/// avoidance every `replan_every` steps
+/// ([`AvoidanceConfig::replan_every`]), and summarises each method
 /// against `off`.
 #[must_use]
 pub fn study(
@@ -444,6 +446,7 @@ pub fn study(
     seeds: usize,
     seed0: u64,
     table: &EtaTable,
+    replan_every: u32,
 ) -> Vec<(AvoidanceMethod, CellSummary)> {
     let n = if bench.seeded() { seeds } else { 1 };
     let methods = [
@@ -453,7 +456,9 @@ pub fn study(
     ];
     let all = crate::parallel::map_indices(n * methods.len(), |k| {
         let (s, m) = (k / methods.len(), methods[k % methods.len()]);
-        run(&bench.scenario(seed0 + s as u64, m), table)
+        let mut sc = bench.scenario(seed0 + s as u64, m);
+        sc.avoidance.replan_every = replan_every;
+        run(&sc, table)
     });
     let per = |m: usize| -> Vec<RunReport> {
         all.iter().skip(m).step_by(methods.len()).copied().collect()

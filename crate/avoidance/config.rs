@@ -86,6 +86,13 @@ pub struct AvoidanceConfig {
     /// jams for good (circle swap: every agent deadlocked); a common side
     /// breaks the symmetry into a roundabout.
     pub bias_deg: f32,
+    /// Steps between one agent's avoidance plans (1–4; the agents take
+    /// turns, by index): in between it keeps the command of its last plan,
+    /// or takes its funnel's when that plan left the funnel's alone. At the
+    /// default 1/60 s step, 2 plans at 30 Hz, the rate game engines give
+    /// their avoidance; 1 plans every step (the cost per agent update about
+    /// halves from 1 to 2: [`crate::avoidance::avoider`]'s module doc).
+    pub replan_every: u32,
 }
 
 impl Default for AvoidanceConfig {
@@ -100,6 +107,7 @@ impl Default for AvoidanceConfig {
             max_neighbours: 10,
             separation_weight: 4.0,
             bias_deg: 90.0,
+            replan_every: 2,
         }
     }
 }
@@ -128,6 +136,7 @@ impl AvoidanceConfig {
         r::AVOID_NEIGHBOURS.check(self.max_neighbours as f32)?;
         r::AVOID_SEPARATION_WEIGHT.check(self.separation_weight)?;
         r::AVOID_BIAS.check(self.bias_deg)?;
+        r::AVOID_REPLAN_EVERY.check(self.replan_every as f32)?;
         if self.reach < 2.0 * (self.radius + self.margin) {
             return Err(ParamError::Inconsistent(
                 "avoidance.reach must be at least 2 × (avoidance.radius + avoidance.margin)",

@@ -443,10 +443,11 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
     }
     let table = load_table(&args.table)?;
     println!(
-        "avoidance benchmarks: {} seeded runs per benchmark and method from seed {} (paper figures once); radius {} m; deadlock = unfinished and < 0.05 m/s for 10 s",
+        "avoidance benchmarks: {} seeded runs per benchmark and method from seed {} (paper figures once); radius {} m; avoidance planned every {} step(s); deadlock = unfinished and < 0.05 m/s for 10 s",
         args.seeds,
         args.seed,
-        steering::avoidance::benchmarks::BODY_RADIUS
+        steering::avoidance::benchmarks::BODY_RADIUS,
+        args.replan_every
     );
     println!("| benchmark | method | runs | reach | oriented entries | runs finished | median finish s | length / off (median, max) | min distance m | runs with overlap | overlap pair-steps (max at once) | obstacle contacts | deadlocked agents (runs) | violations | NaN |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
@@ -454,7 +455,7 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
         let t0 = Instant::now();
         let cells = args
             .pool
-            .install(|| study(b, args.seeds, args.seed, &table))?;
+            .install(|| study(b, args.seeds, args.seed, &table, args.replan_every))?;
         for (m, c) in cells {
             println!(
                 "| {} | {} | {} | {:.2} % | {:.1} % ({}/{}) | {} | {:.1} | {:.3}, {:.3} | {:.3} | {} | {} ({}) | {} | {} ({}) | {} | {} |",

@@ -45,6 +45,9 @@ pub struct AvoidArgs {
     /// Only these benchmarks (comma-separated: circle8, circle32, circle100, corridor, doorway, fig6, fig8).
     #[arg(long, value_name = "NAMES")]
     pub only: Option<String>,
+    /// Steps between an agent's avoidance plans, 1 (every step) to 4.
+    #[arg(long, value_name = "N", default_value_t = crate::avoidance::AvoidanceConfig::default().replan_every, value_parser = parse_replan_every)]
+    pub replan_every: u32,
     /// Write the benchmark presets (seed `--seed`, ORCA) into DIR as `avoid_*.json` and stop.
     #[arg(long, value_name = "DIR")]
     pub write_presets: Option<PathBuf>,
@@ -62,6 +65,14 @@ pub struct AvoidArgs {
 /// See [`parse_bounded`].
 pub fn parse_seeds(s: &str) -> Result<usize, String> {
     parse_bounded(s, 1, 10_000).map(|v| v as usize)
+}
+
+/// Parses `steer avoid --replan-every`: 1 to 4.
+///
+/// # Errors
+/// See [`parse_bounded`].
+pub fn parse_replan_every(s: &str) -> Result<u32, String> {
+    parse_bounded(s, 1, 4).map(|v| v as u32)
 }
 
 impl AvoidArgs {

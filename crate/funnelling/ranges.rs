@@ -349,6 +349,14 @@ pub const AVOID_SEPARATION_WEIGHT: FieldRange = range(
 /// ORCA's keep-right turn of the sought velocity, degrees (a file's unit).
 pub const AVOID_BIAS: FieldRange =
     range("avoidance.biasDeg", 0.0, 90.0, "°", "ORCA keep-right bias");
+/// Steps between an agent's avoidance plans.
+pub const AVOID_REPLAN_EVERY: FieldRange = integer(range(
+    "avoidance.replanEvery",
+    1.0,
+    4.0,
+    "steps",
+    "steps between avoidance plans",
+));
 /// Centre or end point of a static obstacle.
 pub const OBSTACLE_X: FieldRange = range("obstacle.x", -WORLD, WORLD, "m", "obstacle x");
 /// Centre or end point of a static obstacle.
@@ -362,7 +370,7 @@ pub const OBSTACLE_RADIUS: FieldRange =
 const _: () = assert!(GOAL_SPEED.min <= V_MAX.min && GOAL_SPEED.max >= V_MAX.max);
 
 /// Every range, in the order above (exported to the page as `ranges()`).
-pub const ALL: [FieldRange; 46] = [
+pub const ALL: [FieldRange; 47] = [
     DT,
     V_MAX,
     ACCEL_MAX,
@@ -406,6 +414,7 @@ pub const ALL: [FieldRange; 46] = [
     AVOID_NEIGHBOURS,
     AVOID_SEPARATION_WEIGHT,
     AVOID_BIAS,
+    AVOID_REPLAN_EVERY,
     OBSTACLE_X,
     OBSTACLE_Y,
     OBSTACLE_RADIUS,
