@@ -19,7 +19,13 @@ fn main() {
     }
     let mut c = Crowd::new(&cfg).unwrap();
     c.set_metrics_enabled(false);
-    c.run(100);
+    let env = |k: &str, d: u32| {
+        std::env::var(k)
+            .ok()
+            .and_then(|v| v.parse().ok())
+            .unwrap_or(d)
+    };
+    c.run(env("SETTLE", 100));
     let t = std::time::Instant::now();
     c.run(steps);
     let dt = t.elapsed().as_secs_f64() / f64::from(steps);
@@ -63,10 +69,14 @@ fn main() {
     }
     if std::env::var("ONLY_REBUILD").is_ok() {
         let t = std::time::Instant::now();
-        for _ in 0..500 {
+        let reps = env("REBUILDS", 500);
+        for _ in 0..reps {
             grid.rebuild(&pos, 2.0 * cfg.boid_radius);
         }
-        println!("rebuild {:.3} ms", t.elapsed().as_secs_f64() * 2.0);
+        println!(
+            "rebuild {:.3} ms",
+            t.elapsed().as_secs_f64() * 1e3 / f64::from(reps)
+        );
         return;
     }
     let t = std::time::Instant::now();

@@ -37,6 +37,26 @@ impl Lab {
             .map_err(|e| js_err("avoidance", e))
     }
 
+    /// Steps between an agent's avoidance plans
+    /// ([`crate::avoidance::AvoidanceConfig::replan_every`]).
+    #[wasm_bindgen(js_name = avoidanceReplanEvery)]
+    pub fn avoidance_replan_every(&self) -> u32 {
+        self.world.avoidance.replan_every
+    }
+
+    /// Sets the steps between an agent's avoidance plans (the core's range,
+    /// `avoidance.replanEvery`); out of range is an error and changes
+    /// nothing.
+    #[wasm_bindgen(js_name = setAvoidanceReplanEvery)]
+    pub fn set_avoidance_replan_every(&mut self, every: u32) -> Result<(), JsError> {
+        let mut cfg = self.world.avoidance;
+        cfg.replan_every = every;
+        let obstacles = self.world.obstacles.clone();
+        self.world
+            .set_avoidance(cfg, obstacles)
+            .map_err(|e| js_err("avoidance", e))
+    }
+
     /// The agents' body radius, m (the lab draws the bodies with it).
     #[wasm_bindgen(js_name = avoidanceRadius)]
     pub fn avoidance_radius(&self) -> f32 {

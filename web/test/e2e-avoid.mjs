@@ -94,6 +94,19 @@ try {
     }
   });
 
+  await check("the plans select reaches the core and the link (every step, then back to every 2 steps)", async () => {
+    assert.equal(await page.evaluate(() => window.__lab.replanEvery()), 2);
+    assert.equal(await page.locator("#avoidance-plan").inputValue(), "2");
+    const options = await page.locator("#avoidance-plan option").evaluateAll((os) => os.map((o) => o.value));
+    assert.deepEqual(options, ["1", "2", "3", "4"]);
+    await page.selectOption("#avoidance-plan", "1");
+    assert.equal(await page.evaluate(() => window.__lab.replanEvery()), 1);
+    await page.waitForFunction(() => location.hash.includes("plan=1"), null, { timeout: 3000 });
+    await page.selectOption("#avoidance-plan", "2");
+    assert.equal(await page.evaluate(() => window.__lab.replanEvery()), 2);
+    await page.waitForFunction(() => location.hash.includes("plan=2"), null, { timeout: 3000 });
+  });
+
   await check("another preset brings its own method and obstacles (corridor: ORCA, two walls)", async () => {
     await page.selectOption("#preset", "avoid_corridor");
     await page.waitForFunction(() => window.__lab.state().preset === "avoid_corridor" && window.__lab.count() === 24, null, { timeout: 10000 });
@@ -102,7 +115,8 @@ try {
     const obs = await page.evaluate(() => window.__lab.obstacles());
     assert.equal(obs.length, 10);
     assert.deepEqual([obs[0], obs[5]], [1, 1]);
-    await page.waitForFunction(() => !location.hash.includes("avoid=") && !location.hash.includes("obs="), null, { timeout: 3000 });
+    await page.waitForFunction(() => !location.hash.includes("avoid=") && !location.hash.includes("obs=") && !location.hash.includes("plan="), null, { timeout: 3000 });
+    assert.equal(await page.evaluate(() => window.__lab.replanEvery()), 2);
   });
 
   await check("mouse: dragging a wall's middle moves it in the core; an end moves one end", async () => {
@@ -199,11 +213,13 @@ try {
   for (const viewport of [{ width: 1280, height: 800 }, { width: 390, height: 844 }]) {
     await check(`a malformed avoidance link is refused field by field with a message (${viewport.width} px)`, async () => {
       const p = await openPage(browser, viewport, 2);
-      await p.page.goto(`${base}#avoid=rvo&obs=d:1,2,0;s:0,0,0,0`);
+      await p.page.goto(`${base}#avoid=rvo&plan=9&obs=d:1,2,0;s:0,0,0,0`);
       assert.equal(await waitReady(p.page, 60000), null);
       const probs = await p.page.evaluate(() => window.__lab.problems);
       assert.ok(probs.some((m) => m.startsWith('avoid="rvo" is not one of off, separation, orca')), JSON.stringify(probs));
       assert.ok(probs.some((m) => m.startsWith("obs: obstacle 1: obstacle.radius")), JSON.stringify(probs));
+      assert.ok(probs.some((m) => m.startsWith('plan="9" is not a whole number of steps in [1, 4]')), JSON.stringify(probs));
+      assert.equal(await p.page.evaluate(() => window.__lab.replanEvery()), 2);
       assert.equal(await p.page.locator("#message").isVisible(), true);
       assert.equal(await p.page.evaluate(() => window.__lab.avoidance()), "off");
       assert.equal((await p.page.evaluate(() => window.__lab.obstacles())).length, 0);

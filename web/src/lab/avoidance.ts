@@ -15,6 +15,8 @@ export class LabAvoidance {
   method: AvoidKey = "off";
   /** The obstacles in force (lab/obstacles.ts layout). */
   obstacles: number[] = [];
+  /** Steps between an agent's avoidance plans in force in the core. */
+  replanEvery = 2;
   /** The agents' body radius, m. */
   radius = 0.3;
   /** Called after every change (redraw, URL, the panel's select). */
@@ -28,6 +30,7 @@ export class LabAvoidance {
     const { lab, st } = this;
     try {
       if (st.avoidance !== null) lab.setAvoidance(st.avoidance);
+      if (st.replanEvery !== null) lab.setAvoidanceReplanEvery(st.replanEvery);
       if (st.obstacles !== null) lab.setObstacles(new Float32Array(st.obstacles));
     } catch (e) {
       showMessage(`Avoidance settings rejected: ${errorText(e)}`, "warn");
@@ -41,6 +44,7 @@ export class LabAvoidance {
     this.method = (AVOID_KEYS as readonly string[]).includes(m) ? (m as AvoidKey) : "off";
     this.obstacles = Array.from(this.lab.obstacles());
     this.radius = this.lab.avoidanceRadius();
+    this.replanEvery = this.lab.avoidanceReplanEvery();
     this.onChange();
   }
 
@@ -50,6 +54,16 @@ export class LabAvoidance {
       this.st.avoidance = m;
     } catch (e) {
       showMessage(`Avoidance rejected: ${errorText(e)}`, "warn");
+    }
+    this.pull();
+  }
+
+  setReplanEvery(n: number): void {
+    try {
+      this.lab.setAvoidanceReplanEvery(n);
+      this.st.replanEvery = n;
+    } catch (e) {
+      showMessage(`Avoidance plan rate rejected: ${errorText(e)}`, "warn");
     }
     this.pull();
   }

@@ -1,9 +1,10 @@
 // The side panel's avoidance section (issue 18): the method (off,
 // separation, ORCA) for the world in force, a preset's own until changed;
-// buttons that add a disc or a wall at the view's centre and remove the
-// last obstacle. The obstacles themselves are dragged on the canvas.
+// the steps between an agent's plans (the core's range); buttons that add
+// a disc or a wall at the view's centre and remove the last obstacle. The obstacles themselves are dragged on the canvas.
 
 import { button, help, row, section, select } from "../controls";
+import { ranges } from "../wasm";
 import type { Vec } from "../view";
 import type { LabAvoidance } from "./avoidance";
 import { OBSTACLE_STRIDE } from "./obstacles";
@@ -22,6 +23,16 @@ export function avoidanceSection(panel: HTMLElement, avoid: LabAvoidance, centre
     onChange: (m) => { avoid.setMethod(m); changed(); },
   });
   method.el.title = "off: agents pass through each other; separation: paper 003's push, no guarantee; ORCA: reciprocal velocity obstacles for the forward-only vehicle";
+  // The core's range (`avoidance.replanEvery`, 1 to 4 steps).
+  const span = ranges().find((f) => f.key === "avoidance.replanEvery");
+  const plans: string[] = [];
+  for (let k = span?.min ?? 1; k <= (span?.max ?? 1); k++) plans.push(String(k));
+  const plan = select(box, {
+    id: "avoidance-plan", label: "plans", value: String(avoid.replanEvery),
+    options: plans.map((k) => ({ value: k, label: k === "1" ? "every step" : `every ${k} steps${k === "2" ? " (default)" : ""}` })),
+    onChange: (k) => { avoid.setReplanEvery(Number(k)); changed(); },
+  });
+  plan.el.title = "How often each agent plans its avoidance (agents take turns); in between it keeps its last plan's command. Every 2 steps is 30 Hz at the default step and costs about half as much as every step";
   const r = row(box);
   const add = (list: number[]): void => {
     avoid.setObstacles([...avoid.obstacles, ...list]);
@@ -49,6 +60,7 @@ export function avoidanceSection(panel: HTMLElement, avoid: LabAvoidance, centre
   avoid.onChange = () => {
     show();
     method.set(avoid.method);
+    plan.set(String(avoid.replanEvery));
     const n = avoid.obstacles.length / OBSTACLE_STRIDE;
     count.textContent = ` ${n} obstacle${n === 1 ? "" : "s"}`;
     remove.disabled = n === 0;

@@ -71,6 +71,8 @@ export interface LabHook {
   restart(): Promise<void>;
   /** Issue 18: the avoidance method in force in the core. */
   avoidance(): string | null;
+  /** Steps between an agent's avoidance plans in the core. */
+  replanEvery(): number;
   /** Pairs of agents whose bodies overlap now (the core's count). */
   overlaps(): number;
   /** The core's obstacles (lab/obstacles.ts layout). */
@@ -113,6 +115,7 @@ export function installHook(): LabHook {
     stepN: async () => {},
     restart: async () => {},
     avoidance: () => null,
+    replanEvery: () => 0,
     overlaps: () => 0,
     obstacles: () => [],
     obstacleKnobs: () => [],

@@ -98,6 +98,7 @@ async function start(): Promise<void> {
   hook.stepN = (k) => sim.stepN(k);
   hook.restart = () => sim.rebuild(false);
   hook.avoidance = () => lab.avoidance();
+  hook.replanEvery = () => lab.avoidanceReplanEvery();
   hook.overlaps = () => lab.overlaps();
   hook.obstacles = () => Array.from(lab.obstacles());
   hook.obstacleKnobs = (i) => obstacleKnobs(view, sim.avoid.obstacles, i);

@@ -88,6 +88,10 @@ export interface LabState {
   /** Avoidance method chosen in the panel or the link; null = the
    *  scenario's own (the playground's: off). A preset change resets it. */
   avoidance: AvoidKey | null;
+  /** Steps between an agent's avoidance plans (the core's
+   *  `avoidance.replanEvery`); null = the scenario's own. A preset change
+   *  resets it. */
+  replanEvery: number | null;
   /** Obstacles as edited (lab/obstacles.ts layout); null = the scenario's
    *  own. A preset change resets them. */
   obstacles: number[] | null;
@@ -116,6 +120,7 @@ export function defaultState(): LabState {
     overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false, ghost: true },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     avoidance: null,
+    replanEvery: null,
     obstacles: null,
     preset: "",
     agents: 0,

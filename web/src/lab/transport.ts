@@ -62,6 +62,7 @@ export function buildTransport(sim: LabSim): Transport {
     st.preset = name;
     // Issue 18: each scenario brings its own avoidance and obstacles.
     st.avoidance = null;
+    st.replanEvery = null;
     st.obstacles = null;
     presetSel.value = name;
     await sim.rebuild(true);

@@ -37,6 +37,7 @@ export function encodeState(s: LabState, ranges: RangeTable, d: LimitDefaults): 
   p.set("raim", s.funnel.relaxedAim);
   p.set("ov", OVERLAY_KEYS.filter((k) => s.overlays[k]).join(","));
   if (s.avoidance !== null) p.set("avoid", s.avoidance);
+  if (s.replanEvery !== null) p.set("plan", String(s.replanEvery));
   if (s.obstacles !== null) p.set("obs", encodeObstacles(s.obstacles));
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
@@ -67,7 +68,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["ov", "bound", "preset", "avoid", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
+  const known = new Set<string>(["ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
   const seen = new Set<string>();
   for (const key of p.keys()) {
     if (seen.has(key)) problems.push(`field "${clip(key)}" given twice; the first kept`);
@@ -125,6 +126,13 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   if (avoid !== null) {
     if ((AVOID_KEYS as readonly string[]).includes(avoid)) s.avoidance = avoid as AvoidKey;
     else problems.push(`avoid="${clip(avoid)}" is not one of ${AVOID_KEYS.join(", ")}; the scenario's own kept`);
+  }
+  const plan = p.get("plan");
+  if (plan !== null) {
+    const r = ranges.get("avoidance.replanEvery");
+    const v = /^\d{1,2}$/.test(plan) ? Number(plan) : NaN;
+    if (v >= r.min && v <= r.max) s.replanEvery = v;
+    else problems.push(`plan="${clip(plan)}" is not a whole number of steps in [${r.min}, ${r.max}]; the scenario's own kept`);
   }
   const obs = p.get("obs");
   if (obs !== null) {
