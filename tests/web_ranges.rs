@@ -174,7 +174,8 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
         | "avoidance.obstacleHorizon"
         | "avoidance.maxNeighbours"
         | "avoidance.separationWeight"
-        | "avoidance.biasDeg" => lab
+        | "avoidance.biasDeg"
+        | "avoidance.replanEvery" => lab
             .load_scenario(&avoid(format!(r#""{last}": {v}"#), ""))
             .map(|_| ()),
         "obstacle.x" => lab
