@@ -102,6 +102,14 @@
 //! exit of loops of nearly constant length (the ranking's k nearest,
 //! ORCA's fours), and its counts move by a few tenths with the code's
 //! layout alone.
+//!
+//! With [`AvoidanceConfig::replan_every`] = 2 (each agent plans every
+//! other step), per agent update: ORCA 4,446 instructions, 13.7
+//! conditional and 1.9 indirect mispredictions (off: 1,689, 3.5 and
+//! 0.75). The unit vectors of the agents' headings, the funnels' and the
+//! keep-right turn through [`trig::unit_any`] (the quadrant restored by
+//! bit operations, not a jump table whose target flips from agent to
+//! agent): 4,463 instructions, 13.4 + 0.7 mispredictions.
 
 use glam::{BVec4A, Mat4, Vec2, Vec4};
 
@@ -320,7 +328,9 @@ impl Avoider {
             let s = &states[i];
             Peer {
                 pos: s.pos,
-                fwd: s.forward(),
+                // `s.forward()`'s bits ([`trig::unit_any`]: no jump
+                // table, the headings' quadrants flip from agent to agent).
+                fwd: trig::unit_any(s.theta),
                 v: s.v,
                 prio: self.priority.get(i).copied().unwrap_or(f32::NAN),
                 index: i as u32,
@@ -374,7 +384,7 @@ impl Avoider {
             let i = me.index as usize;
             let (h_pref, s_pref) = preferred[i];
             let s = &states[i];
-            let u_pref = trig::unit(h_pref);
+            let u_pref = trig::unit_any(h_pref);
             let v_pref = u_pref * s_pref;
             // ORCA's view before the neighbours (none of it reads them):
             // the obstacles' half-planes, a way blocked by a wall, and the
@@ -741,7 +751,7 @@ impl Avoider {
                             stalled::bias_clear_of_walls(
                                 &lines,
                                 v_pref,
-                                v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow)),
+                                v_pref.rotate(trig::unit_any(-cfg.bias_deg.to_radians() * slow)),
                                 DODGE_SPEED,
                             )
                         } else {
