@@ -99,9 +99,9 @@
 //! ORCA / off in instructions 4.48 → 4.01. Callgrind's simple predictor
 //! (2-bit counters indexed by the branch's address and the last few
 //! outcomes) still counts about one misprediction per agent update at the
-//! exit of loops of nearly constant length (the ranking's k nearest,
-//! ORCA's fours), and its counts move by a few tenths with the code's
-//! layout alone.
+//! exit of loops of nearly constant length (ORCA's fours; the ranking's k
+//! nearest until copied out for all 16 slots, below), and its counts move
+//! by a few tenths with the code's layout alone.
 //!
 //! With [`AvoidanceConfig::replan_every`] = 2 (each agent plans every
 //! other step), per agent update: ORCA 4,446 instructions, 13.7
@@ -114,6 +114,16 @@
 //! and 12.8 + 0.7. The grid's rebuild keeps each agent's cell from the
 //! count to the placing pass instead of flooring its position again:
 //! 4,442 and 12.9 + 0.7 (the mispredictions within layout noise).
+//! Tried and dropped, no gain or a loss by these counts: one loop over all
+//! the gather's runs' fours (the run chosen by a counter: +159
+//! instructions, −0.4 mispredictions; by a select, which the compiler
+//! made a branch: worse), every run read as many fours as the longest,
+//! ORCA's fours written out behind tests of k (−11, −0.1), the keep-right
+//! fours written out, the linear program's violated lines found as one
+//! mask per solution (+22, −0.2), one linear program per `direction_opt`
+//! (−2, −0.1: the mispredictions moved to other branches), `f64` ranking
+//! keys (+81), and the vehicle's limits as bit-mask selects (the compiler
+//! turns a select round a division back into a branch).
 
 use glam::{BVec4A, Mat4, Vec2, Vec4};
 
