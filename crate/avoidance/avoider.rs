@@ -99,9 +99,9 @@
 //! ORCA / off in instructions 4.48 → 4.01. Callgrind's simple predictor
 //! (2-bit counters indexed by the branch's address and the last few
 //! outcomes) still counts about one misprediction per agent update at the
-//! exit of loops of nearly constant length (the ranking's k nearest,
-//! ORCA's fours), and its counts move by a few tenths with the code's
-//! layout alone.
+//! exit of loops of nearly constant length (ORCA's fours; the ranking's k
+//! nearest until copied out for all 16 slots, below), and its counts move
+//! by a few tenths with the code's layout alone.
 //!
 //! **Plans every other step** ([`AvoidanceConfig::replan_every`], default
 //! 2: 30 Hz at the default step of 1/60 s, agents taking turns by index).
@@ -125,6 +125,28 @@
 //! about 4,830, paid every other step. `replanEvery` 1 keeps the
 //! every-step reading, the same bits as before (its golden hash is
 //! checked beside the new one).
+//!
+//! Then, with [`AvoidanceConfig::replan_every`] = 2 (each agent plans every
+//! other step), per agent update: ORCA 4,446 instructions, 13.7
+//! conditional and 1.9 indirect mispredictions (off: 1,689, 3.5 and
+//! 0.75). The unit vectors of the agents' headings, the funnels' and the
+//! keep-right turn through [`trig::unit_any`] (the quadrant restored by
+//! bit operations, not a jump table whose target flips from agent to
+//! agent): 4,463 instructions, 13.4 + 0.7 mispredictions. The ranking's
+//! k nearest copied out for all 16 slots, not k (no loop exit): 4,465
+//! and 12.8 + 0.7. The grid's rebuild keeps each agent's cell from the
+//! count to the placing pass instead of flooring its position again:
+//! 4,442 and 12.9 + 0.7 (the mispredictions within layout noise).
+//! Tried and dropped, no gain or a loss by these counts: one loop over all
+//! the gather's runs' fours (the run chosen by a counter: +159
+//! instructions, −0.4 mispredictions; by a select, which the compiler
+//! made a branch: worse), every run read as many fours as the longest,
+//! ORCA's fours written out behind tests of k (−11, −0.1), the keep-right
+//! fours written out, the linear program's violated lines found as one
+//! mask per solution (+22, −0.2), one linear program per `direction_opt`
+//! (−2, −0.1: the mispredictions moved to other branches), `f64` ranking
+//! keys (+81), and the vehicle's limits as bit-mask selects (the compiler
+//! turns a select round a division back into a branch).
 
 use glam::{BVec4A, Mat4, Vec2, Vec4};
 
@@ -343,7 +365,9 @@ impl Avoider {
             let s = &states[i];
             Peer {
                 pos: s.pos,
-                fwd: s.forward(),
+                // `s.forward()`'s bits ([`trig::unit_any`]: no jump
+                // table, the headings' quadrants flip from agent to agent).
+                fwd: trig::unit_any(s.theta),
                 v: s.v,
                 prio: self.priority.get(i).copied().unwrap_or(f32::NAN),
                 index: i as u32,
@@ -397,7 +421,7 @@ impl Avoider {
             let i = me.index as usize;
             let (h_pref, s_pref) = preferred[i];
             let s = &states[i];
-            let u_pref = trig::unit(h_pref);
+            let u_pref = trig::unit_any(h_pref);
             let v_pref = u_pref * s_pref;
             // ORCA's view before the neighbours (none of it reads them):
             // the obstacles' half-planes, a way blocked by a wall, and the
@@ -535,10 +559,16 @@ impl Avoider {
                     sort_network::<RANKED>(&mut keys);
                     see_gathered::<4>(&mut lane, &self.peers, gathered, me.pos);
                 }
-                for (t, &key) in near[..k].iter_mut().zip(&keys) {
+                // All RANKED slots (those past k are not read), not the k
+                // nearest: no loop exit to mispredict (0.5 per agent
+                // update). A key past the m gathered indexes slot 15
+                // (read, not used).
+                const { assert!(RANKED == MAX_NEIGHBOURS && RANKED.is_power_of_two()) };
+                let slots = &self.cand_slot[..RANKED];
+                for (t, &key) in near.iter_mut().zip(&keys) {
                     *t = (
                         f32::from_bits((key >> 32) as u32),
-                        self.cand_slot[key as u32 as usize],
+                        slots[key as u32 as usize & (RANKED - 1)],
                     );
                 }
             } else {
@@ -764,7 +794,7 @@ impl Avoider {
                             stalled::bias_clear_of_walls(
                                 &lines,
                                 v_pref,
-                                v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow)),
+                                v_pref.rotate(trig::unit_any(-cfg.bias_deg.to_radians() * slow)),
                                 DODGE_SPEED,
                             )
                         } else {

@@ -30,8 +30,9 @@ use glam::Vec2;
 pub struct NeighbourGrid {
     inv_cell: f32,
     mask: u32,
-    /// Bucket of each boid.
-    bucket_of: Vec<u32>,
+    /// Cell of each boid, in the visiting order of the last rebuild (its
+    /// bucket follows): computed once, not again when placed.
+    cell_of: Vec<[i32; 2]>,
     /// Start of each bucket in `order`; `buckets + 1` entries.
     starts: Vec<u32>,
     /// Boid indices sorted by bucket (ascending index within a bucket).
@@ -237,7 +238,7 @@ impl NeighbourGrid {
         let buckets = (4 * n_all).next_power_of_two().max(64);
         self.mask = (buckets - 1) as u32;
         self.inv_cell = 1.0 / cell;
-        self.bucket_of.resize(m, 0);
+        self.cell_of.resize(m, [0, 0]);
         self.order.resize(m, 0);
         self.sorted.resize(m, Vec2::ZERO);
         self.cells.resize(m, [0, 0]);
@@ -248,7 +249,7 @@ impl NeighbourGrid {
             let ix = cell_coord(pos[2 * i], self.inv_cell);
             let iy = cell_coord(pos[2 * i + 1], self.inv_cell);
             let b = bucket_of_cell(ix, iy, self.mask);
-            self.bucket_of[k] = b;
+            self.cell_of[k] = [ix, iy];
             self.starts[b as usize] += 1;
         }
         let mut run = 0;
@@ -258,16 +259,17 @@ impl NeighbourGrid {
         }
         self.starts[buckets] = m as u32;
         for (k, i) in members.enumerate().rev() {
-            let b = self.bucket_of[k] as usize;
+            // The cell as counted (the same position: the same cell), its
+            // bucket recomputed (three operations, where the cell's floors
+            // took about twenty).
+            let [ix, iy] = self.cell_of[k];
+            let b = bucket_of_cell(ix, iy, self.mask) as usize;
             let slot = self.starts[b] - 1;
             self.starts[b] = slot;
             let p = Vec2::new(pos[2 * i], pos[2 * i + 1]);
             self.order[slot as usize] = i as u32;
             self.sorted[slot as usize] = p;
-            self.cells[slot as usize] = [
-                cell_coord(p.x, self.inv_cell),
-                cell_coord(p.y, self.inv_cell),
-            ];
+            self.cells[slot as usize] = [ix, iy];
         }
     }
 
