@@ -84,7 +84,12 @@ fn main() {
         grid.rebuild(&pos, 2.0 * cfg.boid_radius);
     }
     let dr = t.elapsed().as_secs_f64() / f64::from(steps);
-    println!("separate {:.2} ms (rebuild {:.2} ms), {:.1} candidates per boid", ds * 1e3, dr * 1e3, grid.checks() as f64 / (f64::from(steps) * n as f64));
+    println!(
+        "separate {:.2} ms (rebuild {:.2} ms), {:.1} candidates per boid",
+        ds * 1e3,
+        dr * 1e3,
+        grid.checks() as f64 / (f64::from(steps) * n as f64)
+    );
     println!(
         "{n} boids: {:.2} ms per step, {:.1} ns per boid; hash {h:016x}",
         dt * 1e3,
