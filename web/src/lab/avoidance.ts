@@ -49,32 +49,34 @@ export class LabAvoidance {
   }
 
   setMethod(m: AvoidKey): void {
-    try {
+    this.edit("Avoidance", () => {
       this.lab.setAvoidance(m);
       this.st.avoidance = m;
-    } catch (e) {
-      showMessage(`Avoidance rejected: ${errorText(e)}`, "warn");
-    }
-    this.pull();
+    });
   }
 
   setReplanEvery(n: number): void {
-    try {
+    this.edit("Avoidance plan rate", () => {
       this.lab.setAvoidanceReplanEvery(n);
       this.st.replanEvery = n;
-    } catch (e) {
-      showMessage(`Avoidance plan rate rejected: ${errorText(e)}`, "warn");
-    }
-    this.pull();
+    });
   }
 
   /** The whole list to the core (a drag sends every move). */
   setObstacles(list: number[]): void {
-    try {
+    this.edit("Obstacles", () => {
       this.lab.setObstacles(new Float32Array(list));
       this.st.obstacles = Array.from(this.lab.obstacles());
+    });
+  }
+
+  /** One edit to the core: a refusal (nothing changed there) is shown as
+   *  `what rejected: why`; either way the page reads the core back. */
+  private edit(what: string, f: () => void): void {
+    try {
+      f();
     } catch (e) {
-      showMessage(`Obstacles rejected: ${errorText(e)}`, "warn");
+      showMessage(`${what} rejected: ${errorText(e)}`, "warn");
     }
     this.pull();
   }
