@@ -130,9 +130,12 @@
 //! other step), per agent update: ORCA 4,446 instructions, 13.7
 //! conditional and 1.9 indirect mispredictions (off: 1,689, 3.5 and
 //! 0.75). The unit vectors of the agents' headings, the funnels' and the
-//! keep-right turn through [`trig::unit_any`] (the quadrant restored by
-//! bit operations, not a jump table whose target flips from agent to
-//! agent): 4,463 instructions, 13.4 + 0.7 mispredictions. The ranking's
+//! keep-right turn with the quadrant restored by bit operations, not a
+//! jump table whose target flips from agent to agent: 4,463 instructions,
+//! 13.4 + 0.7 mispredictions (first a second sine beside
+//! [`trig::sin_cos`]; then `sin_cos` itself, for every caller, the funnel
+//! and the vehicle model too: ORCA 4,448 and 12.9 + 0, off 1,696 and
+//! 4.0 + 0, same bits). The ranking's
 //! k nearest copied out for all 16 slots, not k (no loop exit): 4,465
 //! and 12.8 + 0.7. The grid's rebuild keeps each agent's cell from the
 //! count to the placing pass instead of flooring its position again:
@@ -334,7 +337,7 @@ impl Avoider {
         let n = states.len();
         let every = cfg.replan_every.max(1);
         let step = self.step;
-        self.step = (step + 1) % every.max(1);
+        self.step = (step + 1) % every;
         if self.commands.len() != n {
             // Agents came or went: no plan is kept (each takes its
             // funnel's command until it plans).
@@ -365,9 +368,7 @@ impl Avoider {
             let s = &states[i];
             Peer {
                 pos: s.pos,
-                // `s.forward()`'s bits ([`trig::unit_any`]: no jump
-                // table, the headings' quadrants flip from agent to agent).
-                fwd: trig::unit_any(s.theta),
+                fwd: s.forward(),
                 v: s.v,
                 prio: self.priority.get(i).copied().unwrap_or(f32::NAN),
                 index: i as u32,
@@ -421,7 +422,7 @@ impl Avoider {
             let i = me.index as usize;
             let (h_pref, s_pref) = preferred[i];
             let s = &states[i];
-            let u_pref = trig::unit_any(h_pref);
+            let u_pref = trig::unit(h_pref);
             let v_pref = u_pref * s_pref;
             // ORCA's view before the neighbours (none of it reads them):
             // the obstacles' half-planes, a way blocked by a wall, and the
@@ -794,7 +795,7 @@ impl Avoider {
                             stalled::bias_clear_of_walls(
                                 &lines,
                                 v_pref,
-                                v_pref.rotate(trig::unit_any(-cfg.bias_deg.to_radians() * slow)),
+                                v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow)),
                                 DODGE_SPEED,
                             )
                         } else {

@@ -16,28 +16,17 @@ use core::f64::consts::{FRAC_2_PI, FRAC_PI_2};
 
 /// `(sin x, cos x)`, bit-identical on every target; absolute error < 1e-6
 /// for `|x| < 1e4`. NaN in, NaN out.
-#[must_use]
-pub fn sin_cos(x: f32) -> (f32, f32) {
-    let (k, s, c) = reduced(x);
-    // `as` saturates (and maps NaN to 0, whose r is NaN anyway).
-    let (s, c) = match k & 3 {
-        0 => (s, c),
-        1 => (c, -s),
-        2 => (-s, -c),
-        _ => (-c, s),
-    };
-    (s as f32, c as f32)
-}
-
-/// [`sin_cos`], the same bits, with the quadrant restored by bit
-/// operations (a swap by integer selects, the signs by xor) instead of the
-/// `match`'s jump table: for callers whose angles fall in any quadrant
-/// from one call to the next (agents' headings, one after another), where
-/// the table's indirect jump was mispredicted about two times in three
-/// (the avoidance, 1.2 of its 1.9 indirect jumps per agent update).
+///
+/// The quadrant is restored by bit operations (a swap by selects, the
+/// signs by xor), not by a `match` on it: its jump table's indirect jump
+/// was mispredicted about two times in three where the angles fall in any
+/// quadrant from one call to the next (agents' headings, one after
+/// another: 1.2 of the avoidance's 1.9 indirect mispredictions per agent
+/// update, callgrind). The same bits as the `match` (the tests compare
+/// them over every quadrant, NaN and the saturated extremes).
 #[inline]
 #[must_use]
-pub fn sin_cos_any(x: f32) -> (f32, f32) {
+pub fn sin_cos(x: f32) -> (f32, f32) {
     let (k, s, c) = reduced(x);
     let (s, c) = (s.to_bits(), c.to_bits());
     // Quadrants 1 and 3 swap sine and cosine; the sine is negated in 2
@@ -51,14 +40,6 @@ pub fn sin_cos_any(x: f32) -> (f32, f32) {
         f64::from_bits(a ^ neg_s) as f32,
         f64::from_bits(b ^ neg_c) as f32,
     )
-}
-
-/// [`unit`] through [`sin_cos_any`]: the same bits.
-#[inline]
-#[must_use]
-pub fn unit_any(a: f32) -> glam::Vec2 {
-    let (s, c) = sin_cos_any(a);
-    glam::Vec2::new(c, s)
 }
 
 /// The quadrant `k` (as `i64`, `as` saturating) and the sine and cosine of
@@ -182,11 +163,23 @@ mod tests {
             }
         }
         assert!(sin(f32::NAN).is_nan());
-        // The selects give the match's bits, every quadrant, both signs,
-        // NaN and the saturated extremes included.
+        // The selects give the bits of the quadrant restored by a `match`
+        // (the former form), every quadrant, both signs, NaN and the
+        // saturated extremes included.
+        let sin_cos_match = |x: f32| {
+            let (k, s, c) = reduced(x);
+            // `as` saturates (and maps NaN to 0, whose r is NaN anyway).
+            let (s, c) = match k & 3 {
+                0 => (s, c),
+                1 => (c, -s),
+                2 => (-s, -c),
+                _ => (-c, s),
+            };
+            (s as f32, c as f32)
+        };
         for i in -40_000..40_000 {
             for x in [i as f32 * 0.000_37, i as f32 * 0.0173, i as f32 * 3.7] {
-                let (a, b) = (sin_cos(x), sin_cos_any(x));
+                let (a, b) = (sin_cos_match(x), sin_cos(x));
                 assert_eq!(
                     (a.0.to_bits(), a.1.to_bits()),
                     (b.0.to_bits(), b.1.to_bits()),
@@ -203,7 +196,7 @@ mod tests {
             0.0,
             -0.0,
         ] {
-            let (a, b) = (sin_cos(x), sin_cos_any(x));
+            let (a, b) = (sin_cos_match(x), sin_cos(x));
             assert_eq!(
                 (a.0.to_bits(), a.1.to_bits()),
                 (b.0.to_bits(), b.1.to_bits()),

@@ -25,8 +25,9 @@ export function avoidanceSection(panel: HTMLElement, avoid: LabAvoidance, centre
   method.el.title = "off: agents pass through each other; separation: paper 003's push, no guarantee; ORCA: reciprocal velocity obstacles for the forward-only vehicle";
   // The core's range (`avoidance.replanEvery`, 1 to 4 steps).
   const span = ranges().find((f) => f.key === "avoidance.replanEvery");
+  if (!span) throw new Error("the core exports no range for avoidance.replanEvery");
   const plans: string[] = [];
-  for (let k = span?.min ?? 1; k <= (span?.max ?? 1); k++) plans.push(String(k));
+  for (let k = span.min; k <= span.max; k++) plans.push(String(k));
   const plan = select(box, {
     id: "avoidance-plan", label: "plans", value: String(avoid.replanEvery),
     options: plans.map((k) => ({ value: k, label: k === "1" ? "every step" : `every ${k} steps${k === "2" ? " (default)" : ""}` })),
