@@ -342,10 +342,16 @@ try {
       const shares = r.info.shares;
       assert.equal(shares.length, 2, `shares ${shares}`);
       assert.ok(Math.abs(shares[0] + shares[1] - 1) < 1e-5 && shares.every((f) => f >= 0.05), `shares ${shares}`);
+      const skipped0 = await page.evaluate(() => window.__crowd.skippedSteps());
       await page.click("#play");
       const t0 = await page.evaluate(() => window.__crowd.time());
       await page.waitForFunction((t0) => window.__crowd.time() > t0 + 5, t0, { timeout: 30000 });
       await page.waitForTimeout(300);
+      // One step per frame: every state drawn, in order (the page draws the
+      // oldest new one; drawing only the newest passed some).
+      const played = (await page.evaluate(() => window.__crowd.time())) - t0;
+      assert.ok(played > 5, `played ${played}`);
+      assert.equal(await page.evaluate(() => window.__crowd.skippedSteps()), skipped0, `steps passed undrawn in ${played} steps`);
       assert.ok((await inked(page, "#crowd")) > 0.01, "canvas drawn");
       const w = await page.evaluate(() => window.__crowd.workers());
       assert.equal(w.owned.length, 2);

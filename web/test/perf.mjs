@@ -217,7 +217,7 @@ try {
         console.log(
           `crowd n=${n} ${w === "N" ? `N=${cores}` : w} (${info.mode === "main" ? "page's thread" : `${info.mode}, ${info.workers} workers`}, drawn as ${how}): ` +
             `${Math.round(drawn)} boids stepped + drawn per 16.7 ms (${Math.round(s.updates / frame)} stepped), ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
-            `${((s.drawnFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms`,
+            `${((s.drawnFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s (${s.skippedSteps} steps passed undrawn), page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms`,
         );
         if (round === 0 && w === "N") await page.screenshot({ path: resolve(artifacts, `perf-crowd-${n}.png`) });
         if (problems.length) { bad++; console.log(problems.join("\n")); }

@@ -10,7 +10,7 @@
 
 import { CrowdLab, errorText, loadCore } from "../wasm";
 import type { ResultMessage, TaskMessage } from "../workers/pool";
-import { BALANCE, C, MAX_JOB_STEPS, rebalance, SLOT_RING, stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
+import { BALANCE, C, MAX_JOB_STEPS, rebalance, SAB, SLOT, SLOT_RING, STATES, stripCuts, TARGET_WAIT_MS, type CrowdReply, type CrowdTask } from "./stepper";
 
 let lab: CrowdLab | null = null;
 let shared: SharedArrayBuffer[] | null = null;
@@ -42,14 +42,15 @@ function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: nu
 
 /** Shared memory: steps from buffer `task.front` while the page asks for
  *  more (stepper.ts, "continuing jobs"): after every step (the workers
- *  meet at a barrier) worker 0 publishes it, notes the traced boid and the
- *  step's wall ms, and decides the next step's buffer (neither the one just
- *  written nor the one the page draws) or the end of the job; the others
- *  follow its decision. */
+ *  meet at a barrier) worker 0 notes the traced boid, the step's wall ms
+ *  and buffer, publishes it, waits (at most TARGET_WAIT_MS) while the page
+ *  asks for no further step, and decides the next step's buffer (neither
+ *  the one just written, nor the one stepped from, nor the one the page
+ *  draws) or the end of the job; the others follow its decision. */
 function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0: number): CrowdReply {
-  const ctrl = new Int32Array(shared[3] as SharedArrayBuffer);
-  const slots = new Float32Array(shared[4] as SharedArrayBuffer);
-  const bal = new Float32Array(shared[5] as SharedArrayBuffer);
+  const ctrl = new Int32Array(shared[SAB.ctrl] as SharedArrayBuffer);
+  const slots = new Float32Array(shared[SAB.slots] as SharedArrayBuffer);
+  const bal = new Float32Array(shared[SAB.balance] as SharedArrayBuffer);
   let src = task.front;
   let dst = Atomics.load(ctrl, C.next);
   let owned = 0;
@@ -73,17 +74,20 @@ function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0
     for (let v = Atomics.load(ctrl, C.arrived); v < want; v = Atomics.load(ctrl, C.arrived)) Atomics.wait(ctrl, C.arrived, v, 1000);
     let next: number;
     if (task.worker === 0) {
-      const slot = 3 * ((s - 1) % SLOT_RING);
+      const slot = SLOT * ((s - 1) % SLOT_RING);
       slots[slot] = back[2 * task.traced] ?? 0;
       slots[slot + 1] = back[2 * task.traced + 1] ?? 0;
       const now = performance.now();
       slots[slot + 2] = now - ts;
-      ts = now;
+      slots[slot + 3] = dst;
       Atomics.store(ctrl, C.published, (s << 2) | dst);
-      const go = Atomics.load(ctrl, C.stop) === 0 && task.time + s < Atomics.load(ctrl, C.target) && s < MAX_JOB_STEPS;
+      const go = waitForTarget(ctrl, task.time + s) && s < MAX_JOB_STEPS;
+      // Read after publishing (and waiting): the page's poll relies on it.
       const drawing = Atomics.load(ctrl, C.drawing);
       if (task.workers > 1) rebalance(bal, task.workers);
-      next = go ? [0, 1, 2].find((b) => b !== dst && b !== drawing) ?? -1 : -1;
+      next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== drawing) ?? -1 : -1;
+      // The wait is not the step's: the next step's ms start here.
+      ts = performance.now();
       Atomics.store(ctrl, C.next, next);
       Atomics.store(ctrl, C.decided, s);
       Atomics.notify(ctrl, C.decided);
@@ -96,6 +100,20 @@ function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0
     dst = next;
   }
   return { stepMs: performance.now() - t0, owned, indices: null, states: null };
+}
+
+/** True once the page asks for a step beyond `time` (false: the job is to
+ *  stop, or no step was asked for within TARGET_WAIT_MS). */
+function waitForTarget(ctrl: Int32Array, time: number): boolean {
+  const until = performance.now() + TARGET_WAIT_MS;
+  for (;;) {
+    if (Atomics.load(ctrl, C.stop) !== 0) return false;
+    const target = Atomics.load(ctrl, C.target);
+    if (time < target) return true;
+    const left = until - performance.now();
+    if (left <= 0) return false;
+    Atomics.wait(ctrl, C.target, target, left);
+  }
 }
 
 async function run(task: CrowdTask): Promise<CrowdReply> {

@@ -48,6 +48,9 @@ export interface CrowdPerf {
   updates: number;
   /** Frames that drew a new state. */
   drawnFrames: number;
+  /** Workers with shared memory: steps taken but not drawn (the page
+   *  drew a newer state instead). */
+  skippedSteps: number;
   meanIntervalMs: number;
   meanWorkMs: number;
   p95WorkMs: number;
@@ -96,6 +99,8 @@ export interface CrowdHook {
   runSteps(n: number): Promise<void>;
   /** No step in flight. */
   idle(): boolean;
+  /** Workers with shared memory: steps taken but not drawn since they started. */
+  skippedSteps(): number;
   /** Test IV Parker 10 % with `n` boids at Test IV's density (pathway scaled by n / 300). */
   loadScaled(n: number): void;
   perfReset(): void;

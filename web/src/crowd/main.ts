@@ -99,13 +99,14 @@ const hook: CrowdHook = {
     s.dirty = true;
   },
   idle: () => !s.stepper?.active || (s.stepper.ready && s.stepper.idle),
+  skippedSteps: () => s.stepper?.skipped ?? 0,
   loadScaled: (n) => {
     const c = scaledConfig(presets, n);
     if (c) s.load(c, true);
   },
   perfReset: () => {
     hook.workMs = [];
-    perfAt = { t: performance.now(), frames: hook.frames, updates: hook.workerUpdates, drawn: hook.drawnFrames, steps: hook.workerSteps, jobMs: hook.workerJobMs, stepMs: hook.workerStepMs };
+    perfAt = { t: performance.now(), frames: hook.frames, updates: hook.workerUpdates, drawn: hook.drawnFrames, skipped: hook.skippedSteps(), steps: hook.workerSteps, jobMs: hook.workerJobMs, stepMs: hook.workerStepMs };
   },
   perfStats: () => {
     const now = performance.now();
@@ -116,6 +117,7 @@ const hook: CrowdHook = {
       spanMs: now - perfAt.t,
       updates: hook.workerUpdates - perfAt.updates,
       drawnFrames: hook.drawnFrames - perfAt.drawn,
+      skippedSteps: hook.skippedSteps() - perfAt.skipped,
       meanIntervalMs: (now - perfAt.t) / Math.max(1, frames),
       meanWorkMs: w.reduce((a, b) => a + b, 0) / Math.max(1, w.length),
       p95WorkMs: w[Math.min(w.length - 1, Math.floor(0.95 * w.length))] ?? 0,
@@ -124,7 +126,7 @@ const hook: CrowdHook = {
     };
   },
 };
-let perfAt = { t: 0, frames: 0, updates: 0, drawn: 0, steps: 0, jobMs: 0, stepMs: 0 };
+let perfAt = { t: 0, frames: 0, updates: 0, drawn: 0, skipped: 0, steps: 0, jobMs: 0, stepMs: 0 };
 window.__crowd = hook;
 
 const transport = $("transport");

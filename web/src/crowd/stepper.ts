@@ -12,17 +12,24 @@
 // - The page records the traced boid's lap from every complete state
 //   (`CrowdLab.observeStep`).
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
-//   three state buffers and "continuing jobs". A job steps for as long as
+//   four state buffers and "continuing jobs". A job steps for as long as
 //   the page asks: each frame raises a shared target step (at most a
 //   frame's worth and one step beyond the drawn state), and the workers,
 //   meeting at a barrier (Atomics) after every step, go on while the target
-//   is ahead. Worker 0 publishes every complete state (its buffer and step),
-//   which the page draws at its next frame, and writes the next step into
-//   the buffer that is neither the one just written nor the one the page
-//   draws. Before, a job ended with every step and the next began only
-//   when the page had handled the answer, after its drawing: at 100,000
-//   boids the worker idled a few ms per step. The page never waits for a
-//   worker.
+//   is ahead (and wait a while for it to rise when it is not). Worker 0
+//   publishes every complete state (its buffer and step) and writes the
+//   next step into a buffer that is neither the one just written, nor the
+//   one before it, nor the one the page draws. Before, a job ended with
+//   every step and the next began only when the page had handled the
+//   answer, after its drawing: at 100,000 boids the worker idled a few ms
+//   per step. The page never waits for a worker.
+// - The page draws the states in order, one frame behind at most
+//   (`poll`): the oldest state it has not drawn when a newer one is
+//   already there, so two states landing between two frames are both
+//   drawn, one per frame. Drawing only the newest skipped one of them:
+//   at 100,000 boids one worker stepped 99,161 boids per frame but the
+//   page drew 62,599, since steps about a frame long landed two in one
+//   frame and none in the next (issue 17).
 // - Else one step per job: the front state goes to each worker by message
 //   and the stepped boids come back with their indices (transferred),
 //   copied here into the back buffer, then the two swap.
@@ -65,18 +72,29 @@ export interface CrowdReply {
  *  (measured, README: below it the page's thread keeps 60 fps). */
 export const AUTO_WORKERS_FROM = 20_000;
 
-/** The shared control words (Int32, `sab[3]`): barrier arrivals; the
+/** Shared memory: the state buffers (`sab[0..STATES)`), then the control
+ *  words, the step slots and the balance (`SAB`). Four: the state the
+ *  page draws, the one it draws next, the newest and the one being
+ *  written. */
+export const STATES = 4;
+export const SAB = { ctrl: STATES, slots: STATES + 1, balance: STATES + 2 } as const;
+/** The shared control words (Int32, `sab[SAB.ctrl]`): barrier arrivals; the
  *  step the page asks the job to reach; the latest complete state
  *  (`steps in the job << 2 | buffer`); decisions made (steps); the next
  *  step's buffer (−1: the job ends); the buffer the page draws; stop. */
 export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6 } as const;
-/** Per step `[x, y, ms]` of the traced boid and the step's wall time, a
- *  ring (the page reads it every frame; a job runs at most a frame's worth
- *  and one step ahead of the drawn state, ≤ 21). */
+/** Per step `[x, y, ms, buffer]` of the traced boid, the step's wall time
+ *  and the buffer it was written to, a ring (the page reads it every
+ *  frame; a job runs at most a frame's worth and one step ahead of the
+ *  drawn state, ≤ 21). */
 export const SLOT_RING = 32;
+export const SLOT = 4;
+/** A continuing job whose target stays reached this long (ms: the page
+ *  paused, or it is hidden) ends. */
+export const TARGET_WAIT_MS = 250;
 /** `?workers=` goes up to this. */
 const MAX_CROWD_WORKERS = 16;
-/** Shared memory, `sab[5]` (Float32), the strips' balance: per worker its
+/** Shared memory, `sab[SAB.balance]` (Float32), the strips' balance: per worker its
  *  last step's wall ms and boids, then each strip's share of the boids for
  *  the next step (worker 0 sets them at every decision; all 0 at the
  *  start: equal shares). */
@@ -171,21 +189,26 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
    *  before the first balance or without shared memory. */
   shares(): number[] {
     if (!this.sab || this.workers < 2) return [];
-    const bal = new Float32Array(this.sab[5] as SharedArrayBuffer, 4 * BALANCE.share, this.workers);
+    const bal = new Float32Array(this.sab[SAB.balance] as SharedArrayBuffer, 4 * BALANCE.share, this.workers);
     return bal[0] ? Array.from(bal) : [];
   }
-  /** Shared memory: the control words (`C`), a view of `sab[3]`. */
+  /** Shared memory: the control words (`C`), a view of `sab[SAB.ctrl]`. */
   private ctrl: Int32Array | null = null;
   private frontIndex = 0;
   /** Shared memory: a job is in flight; its start step; its steps taken. */
   private running = false;
   private jobTime = 0;
   private seen = 0;
+  /** Steps a frame asks for (the last `request`). */
+  private perFrame = 1;
   /** Called when a job's last step is the front state (the traced boid:
    *  read it there); before that `onTraced` with its position after each
    *  earlier step of the job. */
   onStep: (state: Float32Array) => void = () => {};
   onTraced: (x: number, y: number) => void = () => {};
+  /** Shared memory: steps taken but never drawn (the page passed them
+   *  for a newer state; none at one step per frame, `poll`). */
+  skipped = 0;
   /** Boids per worker in the last step. */
   owned: number[] = [];
 
@@ -198,9 +221,9 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
     return this.restart((gen) => {
       this.count = state.length >> 2;
       this.halt();
-      // Three states, the control words, the step slots, the balance.
-      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, 3, [4 * 8, 4 * 3 * SLOT_RING, 4 * BALANCE_FLOATS]));
-      this.ctrl = this.sab ? new Int32Array(this.sab[3] as SharedArrayBuffer) : null;
+      // The states, the control words, the step slots, the balance.
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, STATES, [4 * 8, 4 * SLOT * SLOT_RING, 4 * BALANCE_FLOATS]));
+      this.ctrl = this.sab ? new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer) : null;
       this.frontIndex = 0;
       this.time = time;
       const init = { config, shared: this.sab };
@@ -225,7 +248,10 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
     if (ctrl && this.running) {
       const target = Atomics.load(ctrl, C.target);
       Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.time + k + 1, target + steps)));
+      // Worker 0 may be waiting for it to rise.
+      Atomics.notify(ctrl, C.target);
     } else this.owed = Math.min(k, this.owed + steps);
+    this.perFrame = k;
   }
 
   /** Starts a step if none is in flight and one is owed; never waits. */
@@ -250,7 +276,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
           Atomics.store(ctrl, C.target, this.time + steps);
           Atomics.store(ctrl, C.published, this.frontIndex);
           Atomics.store(ctrl, C.drawing, this.frontIndex);
-          Atomics.store(ctrl, C.next, this.frontIndex === 0 ? 1 : 0);
+          Atomics.store(ctrl, C.next, (this.frontIndex + 1) % STATES);
           this.jobTime = this.time;
           this.seen = 0;
           this.running = true;
@@ -265,36 +291,61 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
     );
   }
 
-  /** Shared memory: takes the states the job in flight has published since
-   *  the last call (the traced boid of each, the newest becomes the front
-   *  state, which the workers then leave alone). Called every frame, before
-   *  drawing. */
-  poll(): void {
+  /** Shared memory: takes the state to draw among those the job in flight
+   *  has published since the last call: the oldest not drawn when a newer
+   *  one is there and a frame's worth of steps lies before it (so states
+   *  are drawn one per frame, one frame behind at most), else the newest
+   *  (`newest`: always; a job that ended leaves none behind). The traced
+   *  boid of each step it passes goes to `onTraced`, the drawn state to
+   *  `onStep`; the workers then leave its buffer alone. Called every
+   *  frame, before drawing.
+   *
+   *  Worker 0 picks the buffer of a step after publishing the one before,
+   *  avoiding the two newest states and the buffer the page draws. The
+   *  page says which buffer it draws, then reads the newest step again:
+   *  when that moved on by two or more, a choice made meanwhile may not
+   *  have seen it, so it takes one of the two newest (both avoided). */
+  poll(newest = false): void {
     const ctrl = this.ctrl;
     if (!this.sab || !ctrl || !this.running) return;
-    const p = Atomics.load(ctrl, C.published);
-    const s = p >> 2;
-    if (s <= this.seen) return;
-    const slots = new Float32Array(this.sab[4] as SharedArrayBuffer);
+    const slots = new Float32Array(this.sab[SAB.slots] as SharedArrayBuffer);
+    const bufferOf = (k: number): number => slots[SLOT * ((k - 1) % SLOT_RING) + 3] ?? 0;
+    let p = Atomics.load(ctrl, C.published);
+    let c = this.seen;
+    let buf = this.frontIndex;
+    for (;;) {
+      const s = p >> 2;
+      if (s <= this.seen) return;
+      const older = !newest && s - 1 > this.seen && s - 1 >= this.seen + this.perFrame;
+      c = older ? s - 1 : s;
+      buf = older ? bufferOf(c) : p & 3;
+      Atomics.store(ctrl, C.drawing, buf);
+      const again = Atomics.load(ctrl, C.published);
+      if (c >= (again >> 2) - 1) break;
+      p = again;
+    }
     let ms = 0;
-    for (let k = this.seen + 1; k <= s; k++) {
-      const slot = 3 * ((k - 1) % SLOT_RING);
-      if (k < s) this.onTraced(slots[slot] ?? 0, slots[slot + 1] ?? 0);
+    for (let k = this.seen + 1; k <= c; k++) {
+      const slot = SLOT * ((k - 1) % SLOT_RING);
+      if (k < c) this.onTraced(slots[slot] ?? 0, slots[slot + 1] ?? 0);
       ms += slots[slot + 2] ?? 0;
     }
-    this.frontIndex = p & 3;
-    Atomics.store(ctrl, C.drawing, this.frontIndex);
-    this.state = new Float32Array(this.sab[this.frontIndex] as SharedArrayBuffer);
-    this.time = this.jobTime + s;
-    this.done.steps += s - this.seen;
+    this.frontIndex = buf;
+    this.state = new Float32Array(this.sab[buf] as SharedArrayBuffer);
+    this.time = this.jobTime + c;
+    this.done.steps += c - this.seen;
     this.done.workerMs += ms;
-    this.seen = s;
+    this.skipped += c - this.seen - 1;
+    this.seen = c;
     this.onStep(this.state);
   }
 
   /** Asks a continuing job to end after its present step. */
   private halt(): void {
-    if (this.ctrl) Atomics.store(this.ctrl, C.stop, 1);
+    if (this.ctrl) {
+      Atomics.store(this.ctrl, C.stop, 1);
+      Atomics.notify(this.ctrl, C.target);
+    }
     this.running = false;
   }
 
@@ -309,7 +360,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   /** A step job's replies: its last state becomes the front one. */
   private land(replies: CrowdReply[], t0: number): void {
     if (this.ctrl) {
-      this.poll();
+      this.poll(true);
       this.running = false;
       // Steps a frame asked for after the workers' last decision.
       const target = Atomics.load(this.ctrl, C.target);
