@@ -139,9 +139,11 @@ const MAX_STEPS_PER_FRAME = 20;
 
 /** `?workers=N` (0 = page's thread) or, unset, from AUTO_WORKERS_FROM boids
  *  a worker per core but one (at least one): the page's drawing keeps a
- *  core (measured on 2 cores, 100,000 boids at Test IV density, stepped +
- *  drawn per frame: 1 worker 85,126, 2 workers 66,608; 200,000: 78,735 and
- *  79,835; README). A bad value is reported. */
+ *  core (measured on 2 cores at Test IV density, stepped + drawn per
+ *  frame, 1 worker / 2 workers: 100,000 boids 99,839 / 99,847, both every
+ *  frame; 150,000 120,612 / 131,481; 200,000 118,654 / 133,888; the page's
+ *  work per frame 3.0–3.8 against 4.3–5.6 ms; README). A bad value is
+ *  reported. */
 export function crowdWorkersWanted(count: number, search = location.search): { n: number; problem: string | null } {
   const auto = count >= AUTO_WORKERS_FROM ? Math.max(1, Math.min(8, (navigator.hardwareConcurrency || 2) - 1)) : 0;
   const raw = new URLSearchParams(search).get("workers");
