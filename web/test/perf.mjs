@@ -30,7 +30,7 @@ const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
 const onlyFirst = sizes.length === 0;
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
 // ONLY_CROWD=1: the crowd page's rows alone (issue 17, crowd boids per frame).
-// CROWD_SIZES (30000,100000,200000), CROWD_ROUNDS (3), CROWD_MODES (0,1,N: page's thread, 1 worker, a worker per core).
+// CROWD_SIZES (30000,100000,150000,200000), CROWD_ROUNDS (3), CROWD_MODES (0,1,N: page's thread, 1 worker, a worker per core).
 const onlyCrowd = process.env.ONLY_CROWD === "1";
 const { server, url } = await serve();
 const bases = [];
@@ -189,7 +189,7 @@ try {
   // same run, alternating order by round; medians of CROWD_ROUNDS (3)
   // rounds. Per frame = boids of the states drawn (each a complete new
   // step of every boid) / (sampled wall time / 16.7 ms).
-  const csizes = onlyWorkers || (onlyFirst && !onlyCrowd) ? [] : (process.env.CROWD_SIZES ?? "30000,100000,200000").split(",").filter(Boolean).map(Number);
+  const csizes = onlyWorkers || (onlyFirst && !onlyCrowd) ? [] : (process.env.CROWD_SIZES ?? "30000,100000,150000,200000").split(",").filter(Boolean).map(Number);
   const crounds = Number(process.env.CROWD_ROUNDS ?? 3);
   // CROWD_MODES (default "0,1,N"): page's thread, 1 worker, one per core.
   const crowdModes = (process.env.CROWD_MODES ?? "0,1,N").split(",");
