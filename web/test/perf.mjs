@@ -144,7 +144,7 @@ try {
   for (let round = 0; round < rounds; round++) {
     for (const n of wsizes) {
       // Alternating order by round, so a drift in the host's load does not favour one mode.
-      for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => crowdModes.includes(m))) {
+      for (const w of round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]) {
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
         // "N": as many workers as navigator.hardwareConcurrency (read on the first load).
         const nq = `?workers=${w === "N" ? cores || 2 : w}`;
