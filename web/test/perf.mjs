@@ -12,8 +12,8 @@ import { loadavg } from "node:os";
 
 const args = process.argv.slice(2);
 // `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
-// into /tmp) is served beside this one and the first-frame loads
-// alternate between them, in rotating order.
+// into /tmp) is served beside this one and the first-frame loads and the
+// crowd rows alternate between them, in rotating order.
 const baseDirs = [];
 for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) baseDirs.push(args.splice(at, 2)[1]);
 const loadsAt = args.indexOf("--loads");
@@ -193,13 +193,18 @@ try {
   const crounds = Number(process.env.CROWD_ROUNDS ?? 3);
   // CROWD_MODES (default "0,1,N"): page's thread, 1 worker, one per core.
   const crowdModes = (process.env.CROWD_MODES ?? "0,1,N").split(",");
+  // With `--base DIR`: every row for each build too, this one and the
+  // bases in rotating order (the same-run baseline of a change).
+  const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
   const crows = new Map();
   if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (before)`);
   for (let round = 0; round < crounds; round++) {
     for (const n of csizes) {
       for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => crowdModes.includes(m))) {
+      for (let b = 0; b < builds.length; b++) {
+        const [build, at] = builds[(b + round) % builds.length];
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
-        await page.goto(`${url.replace(/\/?$/, "/")}crowd.html?workers=${w === "N" ? cores || 2 : w}`);
+        await page.goto(`${at.replace(/\/?$/, "/")}crowd.html?workers=${w === "N" ? cores || 2 : w}`);
         await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 60000 });
         cores = await page.evaluate(() => navigator.hardwareConcurrency);
         await page.evaluate((n) => window.__crowd.loadScaled(n), n);
@@ -211,24 +216,32 @@ try {
         const info = await page.evaluate(() => window.__crowd.workers());
         const frame = s.spanMs / (1000 / 60);
         const drawn = (s.drawnFrames * n) / frame;
-        const key = `${n}|${w}`;
+        const key = `${build}|${n}|${w}`;
         crows.set(key, [...(crows.get(key) ?? []), drawn]);
         const how = await page.$eval("#crowd", (c) => c.dataset.agents);
         console.log(
-          `crowd n=${n} ${w === "N" ? `N=${cores}` : w} (${info.mode === "main" ? "page's thread" : `${info.mode}, ${info.workers} workers`}, drawn as ${how}): ` +
+          `crowd ${builds.length > 1 ? `[${build}] ` : ""}n=${n} ${w === "N" ? `N=${cores}` : w} (${info.mode === "main" ? "page's thread" : `${info.mode}, ${info.workers} workers`}, drawn as ${how}): ` +
             `${Math.round(drawn)} boids stepped + drawn per 16.7 ms (${Math.round(s.updates / frame)} stepped), ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
-            `${((s.drawnFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s (${s.skippedSteps} steps passed undrawn), page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms`,
+            `${((s.drawnFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s (${s.skippedSteps ?? "—"} steps passed undrawn), page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms`,
         );
-        if (round === 0 && w === "N") await page.screenshot({ path: resolve(artifacts, `perf-crowd-${n}.png`) });
+        if (round === 0 && w === "N" && build === "this") await page.screenshot({ path: resolve(artifacts, `perf-crowd-${n}.png`) });
         if (problems.length) { bad++; console.log(problems.join("\n")); }
         await context.close();
+      }
       }
     }
   }
   if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (after); navigator.hardwareConcurrency = ${cores}; boids stepped + drawn per 16.7 ms frame, median of ${crounds} round(s):`);
-  for (const n of csizes) {
-    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${n}|${w}`) ?? [NaN]));
-    console.log(`crowd summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ${cores} workers / page's thread ${(mn / m0).toFixed(2)}×`);
+  for (const [build] of builds) {
+    for (const n of csizes) {
+      const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${build}|${n}|${w}`) ?? [NaN]));
+      const runs = ["0", "1", "N"].map((w) => crows.get(`${build}|${n}|${w}`) ?? []);
+      const range = (a) => (a.length > 1 ? ` (${Math.round(Math.min(...a))}–${Math.round(Math.max(...a))})` : "");
+      console.log(
+        `crowd summary ${builds.length > 1 ? `[${build}] ` : ""}n=${n}: page's thread ${Math.round(m0)}${range(runs[0])}, 1 worker ${Math.round(m1)}${range(runs[1])}, ` +
+          `${cores} workers ${Math.round(mn)}${range(runs[2])}; ${cores} workers / page's thread ${(mn / m0).toFixed(2)}×`,
+      );
+    }
   }
 } finally {
   await browser.close();
