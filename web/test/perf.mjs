@@ -141,6 +141,7 @@ try {
   const rounds = Number(process.env.WORKER_ROUNDS ?? 1);
   let cores = 0;
   const rows = new Map();
+  const drawnRows = new Map();
   for (let round = 0; round < rounds; round++) {
     for (const n of wsizes) {
       // Alternating order by round, so a drift in the host's load does not favour one mode.
@@ -159,11 +160,16 @@ try {
         const s = await page.evaluate(() => window.__lab.perfStats());
         const info = await page.evaluate(() => window.__lab.workers());
         const perFrame = s.updates / (s.spanMs / (1000 / 60));
+        // As the crowd's rows count: the agents of the new states drawn
+        // (frames that drew one; the world keeps real time, so a state
+        // may hold several steps).
+        const drawnPerFrame = (s.steppedFrames * (n + 1)) / (s.spanMs / (1000 / 60));
         const key = `${n}|${w}`;
         rows.set(key, [...(rows.get(key) ?? []), perFrame]);
+        drawnRows.set(key, [...(drawnRows.get(key) ?? []), drawnPerFrame]);
         console.log(
           `workers n=${n} ${w === "N" ? `N=${cores}` : w} (${info ? `${info.mode}, ${info.workers} slices` : "page's thread"}): ` +
-            `${Math.round(perFrame)} agents stepped per 16.7 ms, ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
+            `${Math.round(perFrame)} agents stepped per 16.7 ms (${Math.round(drawnPerFrame)} stepped + drawn), ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
             `${((s.steppedFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
             (info ? `slowest worker ${info.usPerUpdate.toFixed(3)} µs per agent update of the world, workers started in ${info.startMs.toFixed(0)} ms` : `core ${s.usPerUpdate.toFixed(3)} µs per agent update`),
         );
@@ -176,9 +182,11 @@ try {
   const med = (a) => [...a].sort((x, y) => x - y)[a.length >> 1];
   for (const n of wsizes) {
     const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(rows.get(`${n}|${w}`)));
+    const [d0, d1, dn] = ["0", "1", "N"].map((w) => med(drawnRows.get(`${n}|${w}`)));
     console.log(
       `workers summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ` +
-        `${cores} workers / 1 worker ${(mn / m1).toFixed(2)}×, / page's thread ${(mn / m0).toFixed(2)}×`,
+        `${cores} workers / 1 worker ${(mn / m1).toFixed(2)}×, / page's thread ${(mn / m0).toFixed(2)}×; ` +
+        `stepped + drawn (new states' agents): ${Math.round(d0)}, ${Math.round(d1)}, ${Math.round(dn)}`,
     );
   }
 
