@@ -142,14 +142,20 @@ try {
   let cores = 0;
   const rows = new Map();
   const drawnRows = new Map();
+  // With `--base DIR`: every row for each build, this one and the bases,
+  // in rotating order (the crowd's rows too).
+  const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
+  const workerModes = (process.env.WORKER_MODES ?? "0,1,N").split(",");
   for (let round = 0; round < rounds; round++) {
     for (const n of wsizes) {
       // Alternating order by round, so a drift in the host's load does not favour one mode.
-      for (const w of round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]) {
+      for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => workerModes.includes(m))) {
+      for (let b = 0; b < builds.length; b++) {
+        const [build, at] = builds[(b + round) % builds.length];
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
         // "N": as many workers as navigator.hardwareConcurrency (read on the first load).
         const nq = `?workers=${w === "N" ? cores || 2 : w}`;
-        await page.goto(`${url.replace(/\/?$/, "/")}${nq}#n=${n}&ov=`);
+        await page.goto(`${at.replace(/\/?$/, "/")}${nq}#n=${n}&ov=`);
         const err = await waitReady(page, 120000);
         if (err) throw new Error(err);
         cores = await page.evaluate(() => navigator.hardwareConcurrency);
@@ -164,11 +170,11 @@ try {
         // (frames that drew one; the world keeps real time, so a state
         // may hold several steps).
         const drawnPerFrame = (s.steppedFrames * (n + 1)) / (s.spanMs / (1000 / 60));
-        const key = `${n}|${w}`;
+        const key = `${build}|${n}|${w}`;
         rows.set(key, [...(rows.get(key) ?? []), perFrame]);
         drawnRows.set(key, [...(drawnRows.get(key) ?? []), drawnPerFrame]);
         console.log(
-          `workers n=${n} ${w === "N" ? `N=${cores}` : w} (${info ? `${info.mode}, ${info.workers} slices` : "page's thread"}): ` +
+          `workers ${builds.length > 1 ? `[${build}] ` : ""}n=${n} ${w === "N" ? `N=${cores}` : w} (${info ? `${info.mode}, ${info.workers} slices` : "page's thread"}): ` +
             `${Math.round(perFrame)} agents stepped per 16.7 ms (${Math.round(drawnPerFrame)} stepped + drawn), ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
             `${((s.steppedFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
             (info ? `slowest worker ${info.usPerUpdate.toFixed(3)} µs per agent update of the world, workers started in ${info.startMs.toFixed(0)} ms` : `core ${s.usPerUpdate.toFixed(3)} µs per agent update`),
@@ -176,15 +182,16 @@ try {
         if (problems.length) { bad++; console.log(problems.join("\n")); }
         await context.close();
       }
+      }
     }
   }
   if (wsizes.length) console.log(`workers: navigator.hardwareConcurrency = ${cores}; agents stepped per 16.7 ms frame (median of ${rounds} round(s)), ratios in the same run:`);
-  const med = (a) => [...a].sort((x, y) => x - y)[a.length >> 1];
-  for (const n of wsizes) {
-    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(rows.get(`${n}|${w}`)));
-    const [d0, d1, dn] = ["0", "1", "N"].map((w) => med(drawnRows.get(`${n}|${w}`)));
+  const med = (a) => [...(a ?? [NaN])].sort((x, y) => x - y)[(a ?? [NaN]).length >> 1];
+  for (const [build] of builds) for (const n of wsizes) {
+    const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(rows.get(`${build}|${n}|${w}`)));
+    const [d0, d1, dn] = ["0", "1", "N"].map((w) => med(drawnRows.get(`${build}|${n}|${w}`)));
     console.log(
-      `workers summary n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ` +
+      `workers summary ${builds.length > 1 ? `[${build}] ` : ""}n=${n}: page's thread ${Math.round(m0)}, 1 worker ${Math.round(m1)}, ${cores} workers ${Math.round(mn)}; ` +
         `${cores} workers / 1 worker ${(mn / m1).toFixed(2)}×, / page's thread ${(mn / m0).toFixed(2)}×; ` +
         `stepped + drawn (new states' agents): ${Math.round(d0)}, ${Math.round(d1)}, ${Math.round(dn)}`,
     );
@@ -202,8 +209,7 @@ try {
   // CROWD_MODES (default "0,1,N"): page's thread, 1 worker, one per core.
   const crowdModes = (process.env.CROWD_MODES ?? "0,1,N").split(",");
   // With `--base DIR`: every row for each build too, this one and the
-  // bases in rotating order (the same-run baseline of a change).
-  const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
+  // bases in rotating order (the same-run baseline of a change; `builds`).
   const crows = new Map();
   if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (before)`);
   for (let round = 0; round < crounds; round++) {
