@@ -10,7 +10,8 @@
 
 import { CrowdLab, errorText, loadCore } from "../wasm";
 import type { ResultMessage, TaskMessage } from "../workers/pool";
-import { BALANCE, C, MAX_JOB_STEPS, rebalance, SAB, SLOT, SLOT_RING, STATES, stripCuts, TARGET_WAIT_MS, type CrowdReply, type CrowdTask } from "./stepper";
+import { runContinuing, SLOT_RING } from "../workers/continuing";
+import { BALANCE, rebalance, SAB, SLOT, stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
 
 let lab: CrowdLab | null = null;
 let shared: SharedArrayBuffer[] | null = null;
@@ -41,79 +42,45 @@ function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: nu
 }
 
 /** Shared memory: steps from buffer `task.front` while the page asks for
- *  more (stepper.ts, "continuing jobs"): after every step (the workers
- *  meet at a barrier) worker 0 notes the traced boid, the step's wall ms
- *  and buffer, publishes it, waits (at most TARGET_WAIT_MS) while the page
- *  asks for no further step, and decides the next step's buffer (neither
- *  the one just written, nor the one stepped from, nor the one the page
- *  draws) or the end of the job; the others follow its decision. */
+ *  more (../workers/continuing.ts): worker 0 notes the traced boid, the
+ *  step's wall ms and buffer in the step's slot, and rebalances the strips
+ *  between steps. */
 function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0: number): CrowdReply {
   const ctrl = new Int32Array(shared[SAB.ctrl] as SharedArrayBuffer);
   const slots = new Float32Array(shared[SAB.slots] as SharedArrayBuffer);
   const bal = new Float32Array(shared[SAB.balance] as SharedArrayBuffer);
-  let src = task.front;
-  let dst = Atomics.load(ctrl, C.next);
   let owned = 0;
-  let s = 0;
-  let ts = t0;
-  for (;;) {
-    const front = new Float32Array(shared[src] as SharedArrayBuffer);
-    const back = new Float32Array(shared[dst] as SharedArrayBuffer);
-    const cuts = stripCuts(front, front.length >> 2, task.workers, bal.subarray(BALANCE.share));
-    // One worker owns every boid: after its first step the core already
-    // holds the state it wrote (no load of the whole state per step).
-    const ta = performance.now();
-    owned = stepInto(l, front, back, task.time + s, cuts[task.worker] ?? 0, cuts[task.worker + 1] ?? Infinity, s === 0 || task.workers > 1);
-    // Before the barrier: worker 0 reads them after it (rebalance).
-    bal[2 * task.worker + BALANCE.ms] = performance.now() - ta;
-    bal[2 * task.worker + BALANCE.boids] = owned;
-    s++;
-    Atomics.add(ctrl, C.arrived, 1);
-    Atomics.notify(ctrl, C.arrived);
-    const want = s * task.workers;
-    for (let v = Atomics.load(ctrl, C.arrived); v < want; v = Atomics.load(ctrl, C.arrived)) Atomics.wait(ctrl, C.arrived, v, 1000);
-    let next: number;
-    if (task.worker === 0) {
+  runContinuing({
+    ctrl,
+    worker: task.worker,
+    workers: task.workers,
+    front: task.front,
+    time: task.time,
+    step: (src, dst, s) => {
+      const front = new Float32Array(shared[src] as SharedArrayBuffer);
+      const back = new Float32Array(shared[dst] as SharedArrayBuffer);
+      const cuts = stripCuts(front, front.length >> 2, task.workers, bal.subarray(BALANCE.share));
+      // One worker owns every boid: after its first step the core already
+      // holds the state it wrote (no load of the whole state per step).
+      const ta = performance.now();
+      owned = stepInto(l, front, back, task.time + s - 1, cuts[task.worker] ?? 0, cuts[task.worker + 1] ?? Infinity, s === 1 || task.workers > 1);
+      // Before the barrier: worker 0 reads them after it (rebalance).
+      bal[2 * task.worker + BALANCE.ms] = performance.now() - ta;
+      bal[2 * task.worker + BALANCE.boids] = owned;
+    },
+    note: (s, dst, ms) => {
+      const back = new Float32Array(shared[dst] as SharedArrayBuffer);
       const slot = SLOT * ((s - 1) % SLOT_RING);
       slots[slot] = back[2 * task.traced] ?? 0;
       slots[slot + 1] = back[2 * task.traced + 1] ?? 0;
-      const now = performance.now();
-      slots[slot + 2] = now - ts;
+      slots[slot + 2] = ms;
       slots[slot + 3] = dst;
-      Atomics.store(ctrl, C.published, (s << 2) | dst);
-      const go = waitForTarget(ctrl, task.time + s) && s < MAX_JOB_STEPS;
-      // Read after publishing (and waiting): the page's poll relies on it.
-      const drawing = Atomics.load(ctrl, C.drawing);
+    },
+    between: () => {
       if (task.workers > 1) rebalance(bal, task.workers);
-      next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== drawing) ?? -1 : -1;
-      // The wait is not the step's: the next step's ms start here.
-      ts = performance.now();
-      Atomics.store(ctrl, C.next, next);
-      Atomics.store(ctrl, C.decided, s);
-      Atomics.notify(ctrl, C.decided);
-    } else {
-      for (let v = Atomics.load(ctrl, C.decided); v < s; v = Atomics.load(ctrl, C.decided)) Atomics.wait(ctrl, C.decided, v, 1000);
-      next = Atomics.load(ctrl, C.next);
-    }
-    if (next < 0) break;
-    src = dst;
-    dst = next;
-  }
+    },
+  });
   return { stepMs: performance.now() - t0, owned, indices: null, states: null };
-}
-
-/** True once the page asks for a step beyond `time` (false: the job is to
- *  stop, or no step was asked for within TARGET_WAIT_MS). */
-function waitForTarget(ctrl: Int32Array, time: number): boolean {
-  const until = performance.now() + TARGET_WAIT_MS;
-  for (;;) {
-    if (Atomics.load(ctrl, C.stop) !== 0) return false;
-    const target = Atomics.load(ctrl, C.target);
-    if (time < target) return true;
-    const left = until - performance.now();
-    if (left <= 0) return false;
-    Atomics.wait(ctrl, C.target, target, left);
-  }
 }
 
 async function run(task: CrowdTask): Promise<CrowdReply> {

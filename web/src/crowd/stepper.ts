@@ -12,24 +12,12 @@
 // - The page records the traced boid's lap from every complete state
 //   (`CrowdLab.observeStep`).
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
-//   four state buffers and "continuing jobs". A job steps for as long as
-//   the page asks: each frame raises a shared target step (at most a
-//   frame's worth and one step beyond the drawn state), and the workers,
-//   meeting at a barrier (Atomics) after every step, go on while the target
-//   is ahead (and wait a while for it to rise when it is not). Worker 0
-//   publishes every complete state (its buffer and step) and writes the
-//   next step into a buffer that is neither the one just written, nor the
-//   one before it, nor the one the page draws. Before, a job ended with
-//   every step and the next began only when the page had handled the
-//   answer, after its drawing: at 100,000 boids the worker idled a few ms
-//   per step. The page never waits for a worker.
-// - The page draws the states in order, one frame behind at most
-//   (`poll`): the oldest state it has not drawn when a newer one is
-//   already there, so two states landing between two frames are both
-//   drawn, one per frame. Drawing only the newest skipped one of them:
-//   at 100,000 boids one worker stepped 99,161 boids per frame but the
-//   page drew 62,599, since steps about a frame long landed two in one
-//   frame and none in the next (issue 17).
+//   continuing jobs (../workers/continuing.ts: the workers step on while
+//   the page asks, meeting at a barrier after every step, and the page
+//   draws every state in order, one frame behind at most). Before, a job
+//   ended with every step and the next began only when the page had
+//   handled the answer, after its drawing: at 100,000 boids the worker
+//   idled a few ms per step. The page never waits for a worker.
 // - Else one step per job: the front state goes to each worker by message
 //   and the stepped boids come back with their indices (transferred),
 //   copied here into the back buffer, then the two swap.
@@ -39,6 +27,7 @@
 
 import type { CrowdConfig } from "../wasm";
 import { stateBuffers } from "../workers/buffers";
+import { beginJob, C, CTRL_BYTES, endJob, pickState, raiseTarget, SLOT_RING, STATES } from "../workers/continuing";
 import { SteppingJobs } from "../workers/jobs";
 import { WorkerPool } from "../workers/pool";
 
@@ -72,26 +61,12 @@ export interface CrowdReply {
  *  (measured, README: below it the page's thread keeps 60 fps). */
 export const AUTO_WORKERS_FROM = 20_000;
 
-/** Shared memory: the state buffers (`sab[0..STATES)`), then the control
- *  words, the step slots and the balance (`SAB`). Four: the state the
- *  page draws, the one it draws next, the newest and the one being
- *  written. */
-export const STATES = 4;
+/** Shared memory: the state buffers (`sab[0..STATES)`, continuing.ts),
+ *  then the control words, the step slots and the balance. */
 export const SAB = { ctrl: STATES, slots: STATES + 1, balance: STATES + 2 } as const;
-/** The shared control words (Int32, `sab[SAB.ctrl]`): barrier arrivals; the
- *  step the page asks the job to reach; the latest complete state
- *  (`steps in the job << 2 | buffer`); decisions made (steps); the next
- *  step's buffer (−1: the job ends); the buffer the page draws; stop. */
-export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6 } as const;
 /** Per step `[x, y, ms, buffer]` of the traced boid, the step's wall time
- *  and the buffer it was written to, a ring (the page reads it every
- *  frame; a job runs at most a frame's worth and one step ahead of the
- *  drawn state, ≤ 21). */
-export const SLOT_RING = 32;
+ *  and the buffer it was written to (a ring of SLOT_RING). */
 export const SLOT = 4;
-/** A continuing job whose target stays reached this long (ms: the page
- *  paused, or it is hidden) ends. */
-export const TARGET_WAIT_MS = 250;
 /** `?workers=` goes up to this. */
 const MAX_CROWD_WORKERS = 16;
 /** Shared memory, `sab[SAB.balance]` (Float32), the strips' balance: per worker its
@@ -132,8 +107,6 @@ export function rebalance(bal: Float32Array, workers: number): void {
   next.forEach((v, w) => (bal[BALANCE.share + w] = v / sum));
 }
 
-/** A continuing job returns after this many steps (its counts stay small). */
-export const MAX_JOB_STEPS = 1 << 20;
 /** The page's "steps / frame" goes up to 20. */
 const MAX_STEPS_PER_FRAME = 20;
 
@@ -224,7 +197,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
       this.count = state.length >> 2;
       this.halt();
       // The states, the control words, the step slots, the balance.
-      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, STATES, [4 * 8, 4 * SLOT * SLOT_RING, 4 * BALANCE_FLOATS]));
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, STATES, [CTRL_BYTES, 4 * SLOT * SLOT_RING, 4 * BALANCE_FLOATS]));
       this.ctrl = this.sab ? new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer) : null;
       this.frontIndex = 0;
       this.time = time;
@@ -247,12 +220,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   request(steps: number): void {
     const k = Math.min(MAX_STEPS_PER_FRAME, steps);
     const ctrl = this.ctrl;
-    if (ctrl && this.running) {
-      const target = Atomics.load(ctrl, C.target);
-      Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.time + k + 1, target + steps)));
-      // Worker 0 may be waiting for it to rise.
-      Atomics.notify(ctrl, C.target);
-    } else this.owed = Math.min(k, this.owed + steps);
+    if (ctrl && this.running) raiseTarget(ctrl, this.time, k, steps);
+    else this.owed = Math.min(k, this.owed + steps);
     this.perFrame = k;
   }
 
@@ -274,11 +243,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
         const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
         const ctrl = this.ctrl;
         if (ctrl) {
-          ctrl.fill(0);
-          Atomics.store(ctrl, C.target, this.time + steps);
-          Atomics.store(ctrl, C.published, this.frontIndex);
-          Atomics.store(ctrl, C.drawing, this.frontIndex);
-          Atomics.store(ctrl, C.next, (this.frontIndex + 1) % STATES);
+          beginJob(ctrl, this.frontIndex, this.time + steps);
           this.jobTime = this.time;
           this.seen = 0;
           this.running = true;
@@ -294,38 +259,17 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   }
 
   /** Shared memory: takes the state to draw among those the job in flight
-   *  has published since the last call: the oldest not drawn when a newer
-   *  one is there and a frame's worth of steps lies before it (so states
-   *  are drawn one per frame, one frame behind at most), else the newest
-   *  (`newest`: always; a job that ended leaves none behind). The traced
-   *  boid of each step it passes goes to `onTraced`, the drawn state to
-   *  `onStep`; the workers then leave its buffer alone. Called every
-   *  frame, before drawing.
-   *
-   *  Worker 0 picks the buffer of a step after publishing the one before,
-   *  avoiding the two newest states and the buffer the page draws. The
-   *  page says which buffer it draws, then reads the newest step again:
-   *  when that moved on by two or more, a choice made meanwhile may not
-   *  have seen it, so it takes one of the two newest (both avoided). */
+   *  has published since the last call (`pickState`: in order, one frame
+   *  behind at most; `newest`: the newest, a job that ended leaves none
+   *  behind). The traced boid of each step it passes goes to `onTraced`,
+   *  the drawn state to `onStep`. Called every frame, before drawing. */
   poll(newest = false): void {
     const ctrl = this.ctrl;
     if (!this.sab || !ctrl || !this.running) return;
     const slots = new Float32Array(this.sab[SAB.slots] as SharedArrayBuffer);
-    const bufferOf = (k: number): number => slots[SLOT * ((k - 1) % SLOT_RING) + 3] ?? 0;
-    let p = Atomics.load(ctrl, C.published);
-    let c = this.seen;
-    let buf = this.frontIndex;
-    for (;;) {
-      const s = p >> 2;
-      if (s <= this.seen) return;
-      const older = !newest && s - 1 > this.seen && s - 1 >= this.seen + this.perFrame;
-      c = older ? s - 1 : s;
-      buf = older ? bufferOf(c) : p & 3;
-      Atomics.store(ctrl, C.drawing, buf);
-      const again = Atomics.load(ctrl, C.published);
-      if (c >= (again >> 2) - 1) break;
-      p = again;
-    }
+    const picked = pickState(ctrl, this.seen, this.perFrame, newest, (k) => slots[SLOT * ((k - 1) % SLOT_RING) + 3] ?? 0);
+    if (!picked) return;
+    const { step: c, buffer: buf } = picked;
     let ms = 0;
     for (let k = this.seen + 1; k <= c; k++) {
       const slot = SLOT * ((k - 1) % SLOT_RING);
@@ -344,10 +288,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
 
   /** Asks a continuing job to end after its present step. */
   private halt(): void {
-    if (this.ctrl) {
-      Atomics.store(this.ctrl, C.stop, 1);
-      Atomics.notify(this.ctrl, C.target);
-    }
+    if (this.ctrl) endJob(this.ctrl);
     this.running = false;
   }
 
