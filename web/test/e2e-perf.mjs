@@ -139,7 +139,8 @@ try {
       await l.restart();
       const h0 = l.stateHash();
       await l.stepN(k);
-      return { h0, h: l.stateHash(), count: l.count() };
+      // The shown agent's internals too (workers: noted per step in shared memory).
+      return { h0, h: l.stateHash(), count: l.count(), internals: l.internals() };
     }, k);
   const K = 120;
   const oneCore = new Map();

@@ -487,6 +487,9 @@ export class LabSim {
    *  since the last frame; never waits (the last complete state is drawn). */
   private advanceInWorkers(k: number): { updates: number; ms: number } {
     const s = this.stepper as WorldStepper;
+    // Shared memory: this frame's state first (before asking for more: the
+    // workers then leave its buffer alone).
+    s.poll();
     if (k > 0) s.request(k);
     s.pump(this.shown);
     return this.takeFromWorkers();

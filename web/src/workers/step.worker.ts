@@ -8,7 +8,9 @@
 // Driven by `WorldStepper` (stepping.ts) through `WorkerPool.each`.
 
 import { errorText, fetchTable, Lab, loadCore, type Internals } from "../wasm";
+import { runContinuing, SLOT_RING } from "./continuing";
 import type { ResultMessage, TaskMessage } from "./pool";
+import { SAB, SLOT, writeNote } from "./slicebuffers";
 import type { StepReply, StepTask, TableSource } from "./stepping";
 
 let lab: Lab | null = null;
@@ -82,12 +84,14 @@ async function run(task: StepTask): Promise<StepReply> {
         break;
     }
   }
+  const local = task.shown - range.start;
+  const mine = local >= 0 && local < range.end - range.start;
+  if (shared && task.continuing) return runShared(lab, shared, task, mine ? local : -1);
   const t0 = performance.now();
   if (task.steps > 0) lab.step(task.steps);
   const stepMs = performance.now() - t0;
-  const local = task.shown - range.start;
   let internals: Internals | null = null;
-  if (local >= 0 && local < range.end - range.start) internals = lab.internals(local);
+  if (mine) internals = lab.internals(local);
   if (shared) {
     // Straight from the core's memory into this worker's slice of the
     // shared buffer (one copy; `state()` made three: 4 MB each at 50,000 agents).
@@ -96,6 +100,37 @@ async function run(task: StepTask): Promise<StepReply> {
     return { time: lab.time(), internals, state: null, stepMs };
   }
   return { time: lab.time(), internals, state: lab.state(), stepMs };
+}
+
+/** Shared memory: a continuing job (continuing.ts). Each step: this
+ *  worker's slice one step on, its states into the step's buffer, and (the
+ *  worker owning the shown agent, `local` ≥ 0) its internals into the
+ *  step's note; worker 0 notes the step's wall ms and buffer. */
+function runShared(l: Lab, sab: SharedArrayBuffer[], task: StepTask, local: number): StepReply {
+  const ctrl = new Int32Array(sab[SAB.ctrl] as SharedArrayBuffer);
+  const slots = new Float32Array(sab[SAB.slots] as SharedArrayBuffer);
+  const notes = sab[SAB.notes] as SharedArrayBuffer;
+  let stepMs = 0;
+  runContinuing({
+    ctrl,
+    worker: task.worker,
+    workers: task.workers,
+    front: task.buffer,
+    time: 0,
+    step: (_src, dst, s) => {
+      const t0 = performance.now();
+      l.step(1);
+      stepMs += performance.now() - t0;
+      l.stateInto(new Float32Array(sab[dst] as SharedArrayBuffer, range.start * stride * 4, l.count() * stride));
+      if (local >= 0) writeNote(notes, s, l.internals(local));
+    },
+    note: (s, dst, ms) => {
+      const slot = SLOT * ((s - 1) % SLOT_RING);
+      slots[slot] = ms;
+      slots[slot + 1] = dst;
+    },
+  });
+  return { time: l.time(), internals: local >= 0 ? l.internals(local) : null, state: null, stepMs };
 }
 
 self.onmessage = async (ev: MessageEvent<TaskMessage<StepTask>>) => {
