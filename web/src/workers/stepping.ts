@@ -13,22 +13,24 @@
 //   scenario whole, then `retainRange`; the playground's random crowd only
 //   its range (`spawnRandomRange`). Edits (drags, settings, a new table)
 //   follow in the next task.
-// - Double buffer: workers write into the back buffer while the page draws
-//   the front one (the last complete state); when every worker has
-//   answered, the two swap. The page never waits for a worker: a frame
-//   with a job in flight draws the last complete state again.
+// - The page never waits for a worker: a frame with no new complete state
+//   draws the last one again.
 // - Shared memory where the page is cross-origin isolated (COOP/COEP, see
-//   vite.config.ts): the buffers are SharedArrayBuffers each worker writes
-//   its slice into, and steps run as continuing jobs (continuing.ts, as
-//   the crowd's): the workers step on while the page asks, meeting at a
-//   barrier after every step, the worker owning the shown agent leaves its
-//   internals in the step's slot, and the page draws every state in
-//   order, one frame behind at most. Edits end the job in flight; the next
-//   one carries them. Issue 17: a job of the steps owed, handed over and
-//   back every frame, cost 4–10 ms per step at 100,000 agents in 2 workers,
-//   so jobs of two steps followed and the page drew 30 new states per
-//   second. Elsewhere the states come back by message (transferred, no
-//   copy), a job per frame, and the page copies them into the back buffer.
+//   vite.config.ts): four SharedArrayBuffers each worker writes its slice
+//   into, and steps run as continuing jobs (continuing.ts, as the crowd's):
+//   the workers step on while the page asks, meeting at a barrier after
+//   every step, the worker owning the shown agent leaves its internals in
+//   the step's note (slicebuffers.ts), and the page draws every state in
+//   order, one frame behind at most. A host that cannot keep up runs the
+//   world slower than real time instead of stepping states it never draws.
+//   Edits and a newly shown agent end the job in flight; the next one
+//   carries them. Issue 17: a job of the steps owed, handed over and back
+//   every frame, cost 4–10 ms per step at 100,000 agents in 2 workers, so
+//   jobs of two steps followed and the page drew 30–47 new states per
+//   second; now 52–56, every one of them (README).
+// - Elsewhere the states come back by message (transferred, no copy), a
+//   job of the steps owed per frame (at most MAX_STEPS_PER_JOB, the world
+//   in real time), into the back buffer; then the two swap.
 
 import type { AgentConfig, FunnelConfig, GoalConfig, Internals, Lab, RelaxedConfig, VehicleParams } from "../wasm";
 import { stateBuffers } from "./buffers";
