@@ -82,7 +82,6 @@ export interface StepTask {
   workers: number;
 }
 
-
 export interface StepReply {
   time: number;
   internals: Internals | null;
@@ -220,8 +219,9 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
     void this.dispatch(steps, shown);
   }
 
-  /** Runs exactly `steps` steps (and the pending edits) as one job; resolves
-   *  when its state is the front one (tests, single steps). */
+  /** Runs `steps` steps (and the pending edits) as one job; resolves when
+   *  its state is the front one (tests, single steps; paused, exactly
+   *  `steps`: a continuing job also takes the steps frames ask meanwhile). */
   run(steps: number, shown: number): Promise<void> {
     return this.dispatch(steps, shown);
   }
