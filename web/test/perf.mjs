@@ -186,7 +186,7 @@ try {
     }
   }
   if (wsizes.length) console.log(`workers: navigator.hardwareConcurrency = ${cores}; agents stepped per 16.7 ms frame (median of ${rounds} round(s)), ratios in the same run:`);
-  const med = (a) => [...(a ?? [NaN])].sort((x, y) => x - y)[(a ?? [NaN]).length >> 1];
+  const med = (a = [NaN]) => [...a].sort((x, y) => x - y)[a.length >> 1];
   for (const [build] of builds) for (const n of wsizes) {
     const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(rows.get(`${build}|${n}|${w}`)));
     const [d0, d1, dn] = ["0", "1", "N"].map((w) => med(drawnRows.get(`${build}|${n}|${w}`)));
@@ -248,7 +248,7 @@ try {
   if (csizes.length) console.log(`crowd: host load average ${loadavg().map((x) => x.toFixed(2)).join(" ")} (after); navigator.hardwareConcurrency = ${cores}; boids stepped + drawn per 16.7 ms frame, median of ${crounds} round(s):`);
   for (const [build] of builds) {
     for (const n of csizes) {
-      const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${build}|${n}|${w}`) ?? [NaN]));
+      const [m0, m1, mn] = ["0", "1", "N"].map((w) => med(crows.get(`${build}|${n}|${w}`)));
       const runs = ["0", "1", "N"].map((w) => crows.get(`${build}|${n}|${w}`) ?? []);
       const range = (a) => (a.length > 1 ? ` (${Math.round(Math.min(...a))}–${Math.round(Math.max(...a))})` : "");
       console.log(

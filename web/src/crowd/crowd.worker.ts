@@ -55,7 +55,6 @@ function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0
     worker: task.worker,
     workers: task.workers,
     front: task.front,
-    time: task.time,
     step: (src, dst, s) => {
       const front = new Float32Array(shared[src] as SharedArrayBuffer);
       const back = new Float32Array(shared[dst] as SharedArrayBuffer);

@@ -27,7 +27,7 @@
 
 import type { CrowdConfig } from "../wasm";
 import { stateBuffers } from "../workers/buffers";
-import { beginJob, C, CTRL_BYTES, endJob, pickState, raiseTarget, SLOT_RING, STATES } from "../workers/continuing";
+import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "../workers/continuing";
 import { SteppingJobs } from "../workers/jobs";
 import { WorkerPool } from "../workers/pool";
 
@@ -167,23 +167,20 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
     const bal = new Float32Array(this.sab[SAB.balance] as SharedArrayBuffer, 4 * BALANCE.share, this.workers);
     return bal[0] ? Array.from(bal) : [];
   }
-  /** Shared memory: the control words (`C`), a view of `sab[SAB.ctrl]`. */
-  private ctrl: Int32Array | null = null;
+  /** Shared memory: the continuing jobs (over `sab[SAB.ctrl]`). */
+  private jobs: ContinuingJobs | null = null;
   private frontIndex = 0;
-  /** Shared memory: a job is in flight; its start step; its steps taken. */
-  private running = false;
+  /** The step the job in flight started from. */
   private jobTime = 0;
-  private seen = 0;
-  /** Steps a frame asks for (the last `request`). */
-  private perFrame = 1;
   /** Called when a job's last step is the front state (the traced boid:
    *  read it there); before that `onTraced` with its position after each
    *  earlier step of the job. */
   onStep: (state: Float32Array) => void = () => {};
   onTraced: (x: number, y: number) => void = () => {};
-  /** Shared memory: steps taken but never drawn (the page passed them
-   *  for a newer state; none at one step per frame, `poll`). */
-  skipped = 0;
+  /** Shared memory: steps taken but never drawn (none at one step per frame). */
+  get skipped(): number {
+    return this.jobs?.skipped ?? 0;
+  }
   /** Boids per worker in the last step. */
   owned: number[] = [];
 
@@ -195,10 +192,10 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   start(config: CrowdConfig, state: Float32Array, time: number): Promise<void> {
     return this.restart((gen) => {
       this.count = state.length >> 2;
-      this.halt();
+      this.jobs?.drop();
       // The states, the control words, the step slots, the balance.
       ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(state, this.shared, STATES, [CTRL_BYTES, 4 * SLOT * SLOT_RING, 4 * BALANCE_FLOATS]));
-      this.ctrl = this.sab ? new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer) : null;
+      this.jobs = this.sab ? new ContinuingJobs(new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer)) : null;
       this.frontIndex = 0;
       this.time = time;
       const init = { config, shared: this.sab };
@@ -219,10 +216,10 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
    *  so a worker slower than the frames never stops to wait for the page. */
   request(steps: number): void {
     const k = Math.min(MAX_STEPS_PER_FRAME, steps);
-    const ctrl = this.ctrl;
-    if (ctrl && this.running) raiseTarget(ctrl, this.time, k, steps);
+    const jobs = this.jobs;
+    if (jobs) jobs.perFrame = k;
+    if (jobs?.running) jobs.raise(k, steps);
     else this.owed = Math.min(k, this.owed + steps);
-    this.perFrame = k;
   }
 
   /** Starts a step if none is in flight and one is owed; never waits. */
@@ -241,12 +238,9 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
       this.gen,
       () => {
         const cuts = this.sab ? [] : stripCuts(this.state, this.count, this.workers);
-        const ctrl = this.ctrl;
-        if (ctrl) {
-          beginJob(ctrl, this.frontIndex, this.time + steps);
+        if (this.jobs) {
+          this.jobs.begin(this.frontIndex, steps);
           this.jobTime = this.time;
-          this.seen = 0;
-          this.running = true;
         }
         const traced = this.traced();
         return Array.from({ length: this.workers }, (_, w) => ({
@@ -264,36 +258,29 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
    *  behind). The traced boid of each step it passes goes to `onTraced`,
    *  the drawn state to `onStep`. Called every frame, before drawing. */
   poll(newest = false): void {
-    const ctrl = this.ctrl;
-    if (!this.sab || !ctrl || !this.running) return;
-    const slots = new Float32Array(this.sab[SAB.slots] as SharedArrayBuffer);
-    const picked = pickState(ctrl, this.seen, this.perFrame, newest, (k) => slots[SLOT * ((k - 1) % SLOT_RING) + 3] ?? 0);
+    const sab = this.sab;
+    if (!sab || !this.jobs) return;
+    const slots = new Float32Array(sab[SAB.slots] as SharedArrayBuffer);
+    const picked = this.jobs.take(newest, (k) => slots[SLOT * ((k - 1) % SLOT_RING) + 3] ?? 0);
     if (!picked) return;
-    const { step: c, buffer: buf } = picked;
+    const { from, step: c, buffer: buf } = picked;
     let ms = 0;
-    for (let k = this.seen + 1; k <= c; k++) {
+    for (let k = from + 1; k <= c; k++) {
       const slot = SLOT * ((k - 1) % SLOT_RING);
       if (k < c) this.onTraced(slots[slot] ?? 0, slots[slot + 1] ?? 0);
       ms += slots[slot + 2] ?? 0;
     }
     this.frontIndex = buf;
-    this.state = new Float32Array(this.sab[buf] as SharedArrayBuffer);
+    this.state = new Float32Array(sab[buf] as SharedArrayBuffer);
     this.time = this.jobTime + c;
-    this.done.steps += c - this.seen;
+    this.done.steps += c - from;
     this.done.workerMs += ms;
-    this.skipped += c - this.seen - 1;
-    this.seen = c;
     this.onStep(this.state);
   }
 
-  /** Asks a continuing job to end after its present step. */
-  private halt(): void {
-    if (this.ctrl) endJob(this.ctrl);
-    this.running = false;
-  }
 
   override stop(): void {
-    this.halt();
+    this.jobs?.drop();
     super.stop();
   }
 
@@ -302,12 +289,10 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
 
   /** A step job's replies: its last state becomes the front one. */
   private land(replies: CrowdReply[], t0: number): void {
-    if (this.ctrl) {
+    if (this.jobs) {
       this.poll(true);
-      this.running = false;
       // Steps a frame asked for after the workers' last decision.
-      const target = Atomics.load(this.ctrl, C.target);
-      this.owed = Math.max(this.owed, Math.min(MAX_STEPS_PER_FRAME, target - this.time));
+      this.owed = Math.max(this.owed, this.jobs.finish(MAX_STEPS_PER_FRAME));
       this.done.ms += performance.now() - t0;
     } else {
       const back = this.back;

@@ -14,10 +14,11 @@
 //   buffers (the state drawn, the one drawn next, the newest, the one
 //   being written).
 // - The page draws the states in order, one frame behind at most
-//   (`pickState`): the oldest it has not drawn when a newer one is already
-//   there, so two states landing between two frames are drawn one per
-//   frame. Drawing only the newest skipped one of them: at 100,000 boids
-//   one crowd worker stepped 99,161 boids per frame, the page drew 62,599.
+//   (`ContinuingJobs.take`): the oldest it has not drawn when a newer one
+//   is already there, so two states landing between two frames are drawn
+//   one per frame. Drawing only the newest skipped one of them: at 100,000
+//   boids one crowd worker stepped 99,161 boids per frame, the page drew
+//   62,599.
 // - The page says which buffer it draws, then reads the newest step again:
 //   when that moved on by two or more, a choice of worker 0 made meanwhile
 //   may not have seen it, so it takes one of the two newest (both avoided).
@@ -47,8 +48,6 @@ export interface ContinuingWork {
   workers: number;
   /** The buffer the job steps from first (the state drawn when it started). */
   front: number;
-  /** The step count the target is counted from. */
-  time: number;
   /** This worker's share of step `s` (1 for the job's first) from buffer
    *  `src` into `dst`; runs before the barrier. */
   step(src: number, dst: number, s: number): void;
@@ -60,8 +59,9 @@ export interface ContinuingWork {
   between?(): void;
 }
 
-/** True once the page asks for a step beyond `time` (false: the job is to
- *  stop, or no step was asked for within TARGET_WAIT_MS). */
+/** True once the page asks for a step beyond `time` (steps in the job;
+ *  false: the job is to stop, or no step was asked for within
+ *  TARGET_WAIT_MS). */
 function waitForTarget(ctrl: Int32Array, time: number): boolean {
   const until = performance.now() + TARGET_WAIT_MS;
   for (;;) {
@@ -92,8 +92,8 @@ export function runContinuing(w: ContinuingWork): number {
     if (w.worker === 0) {
       w.note(s, dst, performance.now() - ts);
       Atomics.store(ctrl, C.published, (s << 2) | dst);
-      const go = waitForTarget(ctrl, w.time + s) && s < MAX_JOB_STEPS;
-      // Read after publishing (and waiting): `pickState` relies on it.
+      const go = waitForTarget(ctrl, s) && s < MAX_JOB_STEPS;
+      // Read after publishing (and waiting): `ContinuingJobs.take` relies on it.
       const drawing = Atomics.load(ctrl, C.drawing);
       w.between?.();
       next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== drawing) ?? -1 : -1;
@@ -112,48 +112,88 @@ export function runContinuing(w: ContinuingWork): number {
   }
 }
 
-/** Page side: a new job from buffer `front`, asked to reach `target`. */
-export function beginJob(ctrl: Int32Array, front: number, target: number): void {
-  ctrl.fill(0);
-  Atomics.store(ctrl, C.target, target);
-  Atomics.store(ctrl, C.published, front);
-  Atomics.store(ctrl, C.drawing, front);
-  Atomics.store(ctrl, C.next, (front + 1) % STATES);
-}
+/** The page's side of one stepper's continuing jobs (the crowd's and the
+ *  lab's): whether a job is in flight, its steps the page has taken, the
+ *  steps a frame asks for; targets count steps from the job's start. */
+export class ContinuingJobs {
+  running = false;
+  /** Steps of the job in flight the page has taken (the drawn state's). */
+  seen = 0;
+  /** Steps a frame asks for (the last request). */
+  perFrame = 1;
+  /** Steps taken but never drawn (the page passed them for a newer state;
+   *  none at one step per frame). */
+  skipped = 0;
 
-/** Page side: a frame asks for `steps` more, the drawn state at `drawn`
- *  (`k` a frame's worth): the target rises at most to one step beyond a
- *  frame's worth ahead of it, so a host that cannot keep up runs slower
- *  than real time rather than stepping states the page would never draw. */
-export function raiseTarget(ctrl: Int32Array, drawn: number, k: number, steps: number): void {
-  const target = Atomics.load(ctrl, C.target);
-  Atomics.store(ctrl, C.target, Math.max(target, Math.min(drawn + k + 1, target + steps)));
-  // Worker 0 may be waiting for it to rise.
-  Atomics.notify(ctrl, C.target);
-}
+  constructor(readonly ctrl: Int32Array) {}
 
-/** Page side: asks the job to end after its present step. */
-export function endJob(ctrl: Int32Array): void {
-  Atomics.store(ctrl, C.stop, 1);
-  Atomics.notify(ctrl, C.target);
-}
+  /** A new job from buffer `front`, asked for `steps`. */
+  begin(front: number, steps: number): void {
+    const ctrl = this.ctrl;
+    ctrl.fill(0);
+    Atomics.store(ctrl, C.target, steps);
+    Atomics.store(ctrl, C.published, front);
+    Atomics.store(ctrl, C.drawing, front);
+    Atomics.store(ctrl, C.next, (front + 1) % STATES);
+    this.seen = 0;
+    this.running = true;
+  }
 
-/** Page side: the state to draw among those published after step `seen`
- *  (steps in the job), or null: the oldest not drawn when a newer one is
- *  there and `perFrame` steps lie before it, else the newest (`newest`:
- *  always). `bufferOf(k)` is the buffer of step k (the job's slots). Says
- *  which buffer it takes (module notes). */
-export function pickState(ctrl: Int32Array, seen: number, perFrame: number, newest: boolean, bufferOf: (k: number) => number): { step: number; buffer: number } | null {
-  let p = Atomics.load(ctrl, C.published);
-  for (;;) {
-    const s = p >> 2;
-    if (s <= seen) return null;
-    const older = !newest && s - 1 > seen && s - 1 >= seen + perFrame;
-    const step = older ? s - 1 : s;
-    const buffer = older ? bufferOf(step) : p & 3;
-    Atomics.store(ctrl, C.drawing, buffer);
-    const again = Atomics.load(ctrl, C.published);
-    if (step >= (again >> 2) - 1) return { step, buffer };
-    p = again;
+  /** A frame asks for `steps` more (`k`: a frame's worth): the target
+   *  rises at most to one step beyond a frame's worth ahead of the drawn
+   *  state, so a host that cannot keep up runs slower than real time
+   *  rather than stepping states the page would never draw. */
+  raise(k: number, steps: number): void {
+    const ctrl = this.ctrl;
+    const target = Atomics.load(ctrl, C.target);
+    Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.seen + k + 1, target + steps)));
+    // Worker 0 may be waiting for it to rise.
+    Atomics.notify(ctrl, C.target);
+  }
+
+  /** Asks the job to end after its present step. */
+  end(): void {
+    Atomics.store(this.ctrl, C.stop, 1);
+    Atomics.notify(this.ctrl, C.target);
+  }
+
+  /** Ends the job in flight and drops its states (a new world). */
+  drop(): void {
+    if (this.running) this.end();
+    this.running = false;
+  }
+
+  /** The job has ended: the steps asked for beyond the last taken (at
+   *  most `cap`), owed to the next job. */
+  finish(cap: number): number {
+    this.running = false;
+    return Math.max(0, Math.min(cap, Atomics.load(this.ctrl, C.target) - this.seen));
+  }
+
+  /** Takes the state to draw among those published since the last take,
+   *  or null: the oldest not drawn when a newer one is there and a frame's
+   *  worth of steps lies before it, else the newest (`newest`: always).
+   *  `bufferOf(k)` is the buffer of step k (the stepper's slots). Says
+   *  which buffer it takes (module notes); `from` is the step drawn before. */
+  take(newest: boolean, bufferOf: (k: number) => number): { from: number; step: number; buffer: number } | null {
+    if (!this.running) return null;
+    const ctrl = this.ctrl;
+    let p = Atomics.load(ctrl, C.published);
+    for (;;) {
+      const s = p >> 2;
+      if (s <= this.seen) return null;
+      const older = !newest && s - 1 > this.seen && s - 1 >= this.seen + this.perFrame;
+      const step = older ? s - 1 : s;
+      const buffer = older ? bufferOf(step) : p & 3;
+      Atomics.store(ctrl, C.drawing, buffer);
+      const again = Atomics.load(ctrl, C.published);
+      if (step >= (again >> 2) - 1) {
+        const from = this.seen;
+        this.skipped += step - from - 1;
+        this.seen = step;
+        return { from, step, buffer };
+      }
+      p = again;
+    }
   }
 }

@@ -116,7 +116,6 @@ function runShared(l: Lab, sab: SharedArrayBuffer[], task: StepTask, local: numb
     worker: task.worker,
     workers: task.workers,
     front: task.buffer,
-    time: 0,
     step: (_src, dst, s) => {
       const t0 = performance.now();
       l.step(1);

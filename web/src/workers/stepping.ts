@@ -34,7 +34,7 @@
 
 import type { AgentConfig, FunnelConfig, GoalConfig, Internals, Lab, RelaxedConfig, VehicleParams } from "../wasm";
 import { stateBuffers } from "./buffers";
-import { beginJob, C, CTRL_BYTES, endJob, pickState, raiseTarget, SLOT_RING, STATES } from "./continuing";
+import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "./continuing";
 import { NOTE_BYTES, readNote, SAB, SLOT } from "./slicebuffers";
 import { SteppingJobs } from "./jobs";
 import { WorkerPool } from "./pool";
@@ -146,14 +146,10 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
   private frontIndex = 0;
-  /** Shared memory: the control words; a continuing job is in flight, the
-   *  steps of it taken (drawn), the agent whose internals it notes. */
-  private ctrl: Int32Array | null = null;
-  private running = false;
-  private seen = 0;
+  /** Shared memory: the continuing jobs (over `sab[SAB.ctrl]`), and the
+   *  agent whose internals the one in flight notes. */
+  private jobs: ContinuingJobs | null = null;
   private jobShown = 0;
-  /** Steps a frame asks for (the last `request`). */
-  private perFrame = 1;
   private edits: Edit[] = [];
   private shown = 0;
   /** Called with the new front state when the buffers swap (the page
@@ -180,9 +176,9 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
       const ranges: Array<[number, number]> = [];
       for (let k = 0; k + 1 < flat.length; k += 2) ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
       this.ranges = ranges;
-      this.halt();
+      this.jobs?.drop();
       ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(initial, this.shared, this.shared ? STATES : 2, [CTRL_BYTES, 4 * SLOT * SLOT_RING, NOTE_BYTES * SLOT_RING]));
-      this.ctrl = this.sab ? new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer) : null;
+      this.jobs = this.sab ? new ContinuingJobs(new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer)) : null;
       this.frontIndex = 0;
       const sab = this.sab;
       return this.swapJob(gen, (buffer) =>
@@ -196,8 +192,9 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
    *  (`raiseTarget`: a host that cannot keep up runs slower than real time
    *  rather than stepping states the page never draws). */
   request(steps: number): void {
-    if (steps > 0) this.perFrame = Math.min(MAX_STEPS_PER_JOB, steps);
-    if (this.ctrl && this.running) raiseTarget(this.ctrl, this.seen, this.perFrame, steps);
+    const jobs = this.jobs;
+    if (jobs && steps > 0) jobs.perFrame = Math.min(MAX_STEPS_PER_JOB, steps);
+    if (jobs?.running) jobs.raise(jobs.perFrame, steps);
     else this.owed = Math.min(MAX_STEPS_PER_JOB, this.owed + steps);
   }
 
@@ -205,14 +202,14 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
    *  the next one carries it). */
   edit(e: Edit): void {
     this.edits.push(e);
-    if (this.ctrl && this.running) endJob(this.ctrl);
+    if (this.jobs?.running) this.jobs.end();
   }
 
   /** Starts a job if none is in flight and something is owed; never waits.
    *  A continuing job noting another agent's internals ends. */
   pump(shown: number): void {
     this.shown = shown;
-    if (this.ctrl && this.running && shown !== this.jobShown) endJob(this.ctrl);
+    if (this.jobs?.running && shown !== this.jobShown) this.jobs.end();
     if (!this.ready || !this.idle || (this.owed === 0 && this.edits.length === 0)) return;
     const steps = this.owed;
     this.owed = 0;
@@ -230,31 +227,27 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
     const edits = this.edits;
     this.edits = [];
     const workers = this.ranges.length;
-    if (this.ctrl && steps > 0) return this.continuingJob(steps, shown, edits);
+    if (this.jobs && steps > 0) return this.continuingJob(this.jobs, steps, shown, edits);
     return this.swapJob(this.gen, (buffer) => this.ranges.map((_, k) => ({ init: null, edits, steps, buffer, shown, continuing: false, worker: k, workers })), steps);
   }
 
   /** Shared memory: a continuing job from the drawn state, asked for
    *  `steps` (more as frames ask); resolves when it has ended and its last
    *  state is the front one. */
-  private continuingJob(steps: number, shown: number, edits: Edit[]): Promise<void> {
-    const ctrl = this.ctrl as Int32Array;
+  private continuingJob(jobs: ContinuingJobs, steps: number, shown: number, edits: Edit[]): Promise<void> {
     const workers = this.ranges.length;
     return this.job(
       this.gen,
       () => {
-        beginJob(ctrl, this.frontIndex, steps);
-        this.seen = 0;
-        this.running = true;
+        jobs.begin(this.frontIndex, steps);
         this.jobShown = shown;
         return this.ranges.map((_, k) => ({ init: null, edits, steps, buffer: this.frontIndex, shown, continuing: true, worker: k, workers }));
       },
       // The internals come with each state's note (`poll`), not the replies.
       (_replies, t0) => {
         this.poll(true);
-        this.running = false;
         // Steps a frame asked for after the workers' last decision.
-        this.owed = Math.max(this.owed, Math.min(MAX_STEPS_PER_JOB, Atomics.load(ctrl, C.target) - this.seen));
+        this.owed = Math.max(this.owed, jobs.finish(MAX_STEPS_PER_JOB));
         this.done.ms += performance.now() - t0;
       },
     );
@@ -265,20 +258,18 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
    *  behind at most; `newest`: the newest), with the shown agent's
    *  internals noted for it. Called every frame, before drawing. */
   poll(newest = false): void {
-    const ctrl = this.ctrl;
     const sab = this.sab;
-    if (!sab || !ctrl || !this.running) return;
+    if (!sab || !this.jobs) return;
     const slots = new Float32Array(sab[SAB.slots] as SharedArrayBuffer);
-    const picked = pickState(ctrl, this.seen, this.perFrame, newest, (k) => slots[SLOT * ((k - 1) % SLOT_RING) + 1] ?? 0);
+    const picked = this.jobs.take(newest, (k) => slots[SLOT * ((k - 1) % SLOT_RING) + 1] ?? 0);
     if (!picked) return;
-    const { step: c, buffer } = picked;
+    const { from, step: c, buffer } = picked;
     let ms = 0;
-    for (let k = this.seen + 1; k <= c; k++) ms += slots[SLOT * ((k - 1) % SLOT_RING)] ?? 0;
+    for (let k = from + 1; k <= c; k++) ms += slots[SLOT * ((k - 1) % SLOT_RING)] ?? 0;
     this.internals = readNote(sab[SAB.notes] as SharedArrayBuffer, c) ?? this.internals;
     this.frontIndex = buffer;
     this.state = new Float32Array(sab[buffer] as SharedArrayBuffer);
-    const steps = c - this.seen;
-    this.seen = c;
+    const steps = c - from;
     this.done.steps += steps;
     this.done.workerMs += ms;
     this.workerMs += ms;
@@ -287,11 +278,6 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
     this.onSwap(this.state);
   }
 
-  /** Ends the continuing job in flight (its states are dropped: a new world). */
-  private halt(): void {
-    if (this.ctrl && this.running) endJob(this.ctrl);
-    this.running = false;
-  }
 
   /** One job on every worker writing the back buffer (`buffer`), then the
    *  two swap (a worker answers in order, and `each` hands each answer to
@@ -353,7 +339,7 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   /** Stops stepping (a newer world, or back to the page's thread); the
    *  workers are kept for the next start. */
   override stop(): void {
-    this.halt();
+    this.jobs?.drop();
     super.stop();
     this.edits = [];
   }
