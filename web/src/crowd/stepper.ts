@@ -253,7 +253,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   }
 
   /** Shared memory: takes the state to draw among those the job in flight
-   *  has published since the last call (`pickState`: in order, one frame
+   *  has published since the last call (`ContinuingJobs.take`: in order, one frame
    *  behind at most; `newest`: the newest, a job that ended leaves none
    *  behind). The traced boid of each step it passes goes to `onTraced`,
    *  the drawn state to `onStep`. Called every frame, before drawing. */

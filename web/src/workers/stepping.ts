@@ -189,7 +189,7 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
 
   /** `steps` more steps are owed (at most a job's worth wait: a slow host
    *  drops the rest). Shared memory: the target of the job in flight rises
-   *  (`raiseTarget`: a host that cannot keep up runs slower than real time
+   *  (`ContinuingJobs.raise`: a host that cannot keep up runs slower than real time
    *  rather than stepping states the page never draws). */
   request(steps: number): void {
     const jobs = this.jobs;
@@ -254,7 +254,7 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   }
 
   /** Shared memory: takes the state to draw among those the continuing job
-   *  has published since the last call (`pickState`: in order, one frame
+   *  has published since the last call (`ContinuingJobs.take`: in order, one frame
    *  behind at most; `newest`: the newest), with the shown agent's
    *  internals noted for it. Called every frame, before drawing. */
   poll(newest = false): void {
