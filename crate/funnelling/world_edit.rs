@@ -130,6 +130,7 @@ impl World {
         let others: Vec<VehicleState> = self.agents.iter().map(|a| a.state).collect();
         let a = &mut self.agents[i];
         a.current = 0;
+        a.refresh_spec();
         a.goal_now = a
             .goals
             .first()
@@ -179,6 +180,8 @@ impl World {
             g.validate(&self.params)?;
         }
         precision::check_agent(&self.params, self.agents[i].state.pos, &goals, None)?;
+        self.facing -= usize::from(super::world::faces(&self.agents[i].goals));
+        self.facing += usize::from(super::world::faces(&goals));
         self.agents[i].goals = goals;
         self.restart(i);
         Ok(())

@@ -182,7 +182,13 @@ impl World {
                     };
                 }
             }
+            a.refresh_spec();
         }
+        self.facing = self
+            .agents
+            .iter()
+            .filter(|a| super::world::faces(&a.goals))
+            .count();
         Ok(())
     }
 }
