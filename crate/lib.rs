@@ -33,7 +33,7 @@ pub mod wander;
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
 
-pub use base::{angle, dubins, metrics, parallel, range, rng, trig};
+pub use base::{angle, dubins, metrics, minmax, parallel, range, rng, trig};
 pub use funnelling::{
     funnel, ghost, ranges, region_study, relaxed, scenario, seek, study, table, vehicle, world,
     world_edit,

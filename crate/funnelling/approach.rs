@@ -16,6 +16,7 @@
 //! speed `v_dt`), and, when an orientation correction is needed, the bounded
 //! modulation μ of Fig. 4 around the aim direction ([`Approach::funnel`]).
 
+use crate::minmax::MinMax;
 use core::cell::Cell;
 use core::ops::ControlFlow;
 
@@ -32,7 +33,7 @@ use crate::vehicle::{VehicleParams, VehicleState};
 #[inline]
 #[must_use]
 pub fn halting_speed(p: &VehicleParams, d: f32) -> f32 {
-    (2.0 * 0.8 * p.accel_max * d.max(0.0)).sqrt()
+    (2.0 * 0.8 * p.accel_max * d.at_least(0.0)).sqrt()
 }
 
 /// Distance the vehicle still travels when it brakes to rest from speed
@@ -58,7 +59,7 @@ pub fn braking_distance(p: &VehicleParams, v: f32) -> f32 {
 #[must_use]
 pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
     let w = omega.abs();
-    let w1 = w.min(p.omega_accel_max / p.kd);
+    let w1 = w.at_most(p.omega_accel_max / p.kd);
     let turn = (w * w - w1 * w1) / (2.0 * p.omega_accel_max) + w1 / p.kd + 0.5 * w * p.dt;
     turn.copysign(omega)
 }
@@ -265,8 +266,8 @@ pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
         return v_d;
     }
     let sc = crate::table::generate::VehicleScale::of(p);
-    let floor = v_d.min((0.5 * sc.speed).max(2.0 * g.vel.length()));
-    (v_d / (1.0 + 0.5 * f32::from(laps))).max(floor)
+    let floor = v_d.at_most((0.5 * sc.speed).at_least(2.0 * g.vel.length()));
+    (v_d / (1.0 + 0.5 * f32::from(laps))).at_least(floor)
 }
 
 /// The terminal line pursuit: the last stretch before the tolerance disk,
@@ -308,7 +309,7 @@ impl Terminal {
         // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
         // the vehicle (×1 for the pedestrian; issue 14).
         let sc = crate::table::generate::VehicleScale::of(p);
-        self.lookahead * sc.time() * s.v.max(g.speed).max(0.5 * sc.speed)
+        self.lookahead * sc.time() * s.v.at_least(g.speed).at_least(0.5 * sc.speed)
     }
 }
 
@@ -343,7 +344,7 @@ pub fn lead(g: &Goal, s: &VehicleState, v: f32) -> Goal {
         return *g;
     }
     let r = g.pos - s.pos;
-    let v = v.max(0.1);
+    let v = v.at_least(0.1);
     let a = v * v - g.vel.length_squared();
     let rv = r.dot(g.vel);
     let rr = r.length_squared();
@@ -469,7 +470,7 @@ impl<'a> Approach<'a> {
         let (d, bearing, alpha) = seen_from(s, g.pos);
         let mut v_d = g.speed;
         if g.halting {
-            v_d = v_d.min(halting_speed(p, d - 0.9 * g.d_tol));
+            v_d = v_d.at_most(halting_speed(p, d - 0.9 * g.d_tol));
         }
         let mut out = Internals {
             d,
@@ -568,7 +569,7 @@ impl<'a> Approach<'a> {
     #[inline]
     #[must_use]
     pub fn entry_depth(&self, g: &Goal) -> f32 {
-        (g.d_tol - self.table.params().reach_radius).max(0.0)
+        (g.d_tol - self.table.params().reach_radius).at_least(0.0)
     }
 
     /// How far before the centre to aim with the entry aim: the entry
@@ -590,7 +591,7 @@ impl<'a> Approach<'a> {
         let entry = self.entry_depth(g);
         match t {
             Some(t) if g.vel != Vec2::ZERO => {
-                entry.max(g.d_tol + 0.75 * self.terminal_range(t) * t.look(self.p, self.s, g))
+                entry.at_least(g.d_tol + 0.75 * self.terminal_range(t) * t.look(self.p, self.s, g))
             }
             _ => entry,
         }
@@ -681,7 +682,7 @@ impl<'a> Approach<'a> {
         let look = t.look(self.p, s, g);
         if along >= 0.0
             || -along - g.d_tol >= self.terminal_range(t) * look
-            || lateral.abs() >= 0.5 * (-along).max(g.d_tol)
+            || lateral.abs() >= 0.5 * (-along).at_least(g.d_tol)
         {
             return false;
         }
@@ -698,7 +699,7 @@ impl<'a> Approach<'a> {
     #[inline]
     #[must_use]
     pub fn v_query(&self) -> f32 {
-        self.v_d.max(self.table.axis(4)[0])
+        self.v_d.at_least(self.table.axis(4)[0])
     }
 
     /// The full table lookup for an aim point at distance `dist` and radial

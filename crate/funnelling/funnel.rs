@@ -20,6 +20,7 @@
 //! default and 2–4 with the literal bound, against the paper's "in the
 //! worst case two interpolations" (paper 000 §7).
 
+use crate::minmax::MinMax;
 use core::f32::consts::FRAC_PI_2;
 use core::ops::ControlFlow;
 
@@ -329,8 +330,8 @@ impl FunnelMemory {
 #[inline]
 #[must_use]
 pub fn orbit_free_speed(p: &VehicleParams, d: f32, alpha: f32) -> f32 {
-    let r = d / (2.0 * crate::trig::sin(alpha).abs()).max(1e-3);
-    (p.omega_max * r).min((p.normal_accel_max * r).sqrt())
+    let r = d / (2.0 * crate::trig::sin(alpha).abs()).at_least(1e-3);
+    (p.omega_max * r).at_most((p.normal_accel_max * r).sqrt())
 }
 
 impl FunnelConfig {
@@ -391,14 +392,14 @@ impl FunnelConfig {
         match self.bound {
             MuBound::Literal => table.straight_abs_eta_at(lk, delta_eta).unwrap_or(0.0),
             MuBound::ScaledLiteral { gain } => {
-                (gain * table.straight_abs_eta_at(lk, delta_eta).unwrap_or(0.0)).min(FRAC_PI_2)
+                (gain * table.straight_abs_eta_at(lk, delta_eta).unwrap_or(0.0)).at_most(FRAC_PI_2)
             }
             MuBound::TurningRadius { factor } => {
                 // The floor is the pedestrian's metres, scaled with the
                 // vehicle's turning radius (×1 for the pedestrian; issue 14).
                 let floor = self.min_bound_radius * VehicleScale::of(p).length;
-                let r = factor * p.min_turn_radius(lk.v_dt.max(v)).max(floor);
-                crate::trig::atan2(r, d).min(FRAC_PI_2)
+                let r = factor * p.min_turn_radius(lk.v_dt.at_least(v)).at_least(floor);
+                crate::trig::atan2(r, d).at_most(FRAC_PI_2)
             }
             MuBound::Constant => FRAC_PI_2,
         }
@@ -451,7 +452,9 @@ impl FunnelConfig {
             // least twice the goal's (issue 13, tune seed 1: 32 of 2,000
             // moving goals were ridden alongside for good, 6 with this).
             let floor = 2.0 * g.vel.length();
-            out.v_dt = out.v_dt.min(orbit_free_speed(a.p, d, alpha).max(floor));
+            out.v_dt = out
+                .v_dt
+                .at_most(orbit_free_speed(a.p, d, alpha).at_least(floor));
             out.mode = Mode::PositionOnly;
             return out;
         }

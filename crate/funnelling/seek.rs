@@ -9,6 +9,7 @@
 //! `v_dr = min(v_d, A/|ω|)` so that the normal acceleration stays bounded;
 //! the vehicle model ([`VehicleParams::integrate`]) enforces every limit.
 
+use crate::minmax::MinMax;
 use glam::Vec2;
 
 use crate::angle::{diff, wrap};
@@ -198,7 +199,7 @@ pub fn simulate_reach_traced(
             && s.omega.abs() < 1e-3
             && diff(bearing, s.theta).abs() < 1e-3
         {
-            let rest = (dist - lim.reach_radius) / s.v.max(1e-3);
+            let rest = (dist - lim.reach_radius) / s.v.at_least(1e-3);
             visit(s.pos + d * ((dist - lim.reach_radius) / dist));
             return ReachOutcome::Reached {
                 eta: wrap(bearing - radial0),

@@ -8,6 +8,7 @@
 //! choose the commanded accelerations; [`VehicleParams::integrate`] clamps
 //! them into the admissible set, so no controller bug can break a limit.
 
+use crate::minmax::MinMax;
 use core::fmt;
 
 use glam::Vec2;
@@ -202,7 +203,7 @@ impl VehicleParams {
         let w1 = (w0 + a * dt).clamp(-wl, wl);
         let dv = self.accel_max * dt;
         let vcap = self.speed_limit(w1);
-        let v1 = v_des.clamp(v0 - dv, v0 + dv).min(vcap).max(0.0);
+        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
         match self.integrator {
             Integrator::Euler => {
                 s.pos += crate::trig::unit(s.theta) * (v0 * dt);

@@ -18,6 +18,7 @@
 //! sample. An axis too uneven for the bucket cap falls back to a binary
 //! search (correct, slower; no committed table has one).
 
+use crate::minmax::MinMax;
 use core::f32::consts::TAU;
 
 /// Most buckets per axis (guards the allocation for odd axes).
@@ -213,7 +214,7 @@ impl Axis {
         let t = if c >= hi {
             1.0
         } else {
-            ((c - seg.x0) * seg.inv_dx).min(1.0)
+            ((c - seg.x0) * seg.inv_dx).at_most(1.0)
         };
         let p = AxisPos {
             i0: seg.i0,

@@ -14,6 +14,7 @@
 use super::format::{BuildParams, TableError, AXES, FLAG_ETA_VALID, FLAG_REACHABLE};
 use super::grid::{Axis, AxisPos};
 use crate::angle::wrap;
+use crate::minmax::MinMax;
 use crate::trig;
 use glam::Vec4;
 
@@ -257,7 +258,7 @@ impl EtaTable {
     #[inline]
     #[must_use]
     pub fn omega_fraction(&self, omega: f32, v: f32) -> f32 {
-        omega / self.params.vehicle.omega_limit(v.max(0.0))
+        omega / self.params.vehicle.omega_limit(v.at_least(0.0))
     }
 
     #[inline(always)]
@@ -475,7 +476,7 @@ impl EtaTable {
         let (v_dt, eta) = if reachable {
             (v_d, self.eta_at(&pos, b))
         } else {
-            let v_dt = (b[2] * v_d + b[3]).min(v_d).max(0.0);
+            let v_dt = (b[2] * v_d + b[3]).at_most(v_d).at_least(0.0);
             if v_dt > 0.0 {
                 pos[4] = self.grid[4].locate(v_dt, &mut false);
                 (
