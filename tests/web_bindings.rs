@@ -156,6 +156,33 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
     assert_eq!(lab.count(), 501);
     lab.step(10).map_err(message).unwrap();
     assert_eq!(lab.state().len(), 501 * stride);
+    // A stepping worker's one pass (issue 17): `stepInto` gives the bits of
+    // `step(1)` then `stateInto`; a wrong length steps nothing.
+    let mut other = lab.fork().map_err(message).unwrap();
+    lab = lab.fork().map_err(message).unwrap();
+    for l in [&mut lab, &mut other] {
+        l.spawn_random(500.0, 3.0, 20.0, 1.3)
+            .map_err(message)
+            .unwrap();
+    }
+    let (a, b) = (
+        js_sys::Float32Array::new_with_length(500 * stride as u32),
+        js_sys::Float32Array::new_with_length(500 * stride as u32),
+    );
+    for _ in 0..30 {
+        lab.step_into(&a).map_err(message).unwrap();
+        other.step(1).map_err(message).unwrap();
+        other.state_into(&b).map_err(message).unwrap();
+        let bits = |x: &js_sys::Float32Array| -> Vec<u32> {
+            x.to_vec().iter().map(|f| f.to_bits()).collect()
+        };
+        assert_eq!(bits(&a), bits(&b));
+    }
+    let t = lab.time();
+    let short = js_sys::Float32Array::new_with_length(stride as u32);
+    let e = message(lab.step_into(&short).unwrap_err());
+    assert!(e.contains("stepInto"), "{e}");
+    assert_eq!(lab.time(), t);
 }
 
 #[wasm_bindgen_test]

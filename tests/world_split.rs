@@ -162,3 +162,38 @@ fn avoidance_keeps_the_world_whole() {
             .is_empty()
     );
 }
+
+/// What a stepping worker calls (`Lab::stepInto`): one pass that steps and
+/// writes each agent's record gives the floats of a step, then
+/// `write_state`; the same with facing goals (the snapshot taken) and with
+/// avoidance on (its own step, then the write).
+#[test]
+fn stepping_and_writing_in_one_pass_equals_a_step_then_the_state() {
+    let t = table();
+    let mut crowd = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    crowd.spawn_random(400, 5, 25.0, 1.3).unwrap();
+    let fig6 = preset(include_str!("../scenarios/p000_fig6_face_to_face.json"));
+    let mut avoiding = crowd.clone();
+    avoiding
+        .set_avoidance(
+            AvoidanceConfig {
+                method: AvoidanceMethod::Orca,
+                ..AvoidanceConfig::default()
+            },
+            Vec::new(),
+        )
+        .unwrap();
+    for w in [crowd, fig6, avoiding] {
+        let (mut a, mut b) = (w.clone(), w);
+        let mut buf = Vec::new();
+        for _ in 0..150 {
+            a.step_writing(&t, &mut buf);
+            b.step(&t);
+            assert_eq!(
+                buf.iter().map(|f| f.to_bits()).collect::<Vec<_>>(),
+                states(&b)
+            );
+        }
+        assert_eq!(a, b);
+    }
+}

@@ -561,6 +561,34 @@ impl Lab {
         Ok(())
     }
 
+    /// One step ([`Lab::step`] of 1), then [`Lab::state`] written into
+    /// `out` as [`Lab::state_into`] writes it: each agent's record as soon
+    /// as it has stepped (issue 17: a stepping worker's step and copy in one
+    /// pass over its agents; `World::step_writing`).
+    ///
+    /// # Errors
+    /// No η table yet, or `out` not exactly [`Lab::count`] ×
+    /// [`STATE_STRIDE`] floats long (nothing stepped, nothing written).
+    #[wasm_bindgen(js_name = stepInto)]
+    pub fn step_into(&mut self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+        let want = self.world.agents.len() * STATE_STRIDE;
+        if out.length() as usize != want {
+            return Err(JsError::new(&format!(
+                "stepInto: the array holds {} floats, the state {want} ({} agents × {STATE_STRIDE})",
+                out.length(),
+                self.world.agents.len()
+            )));
+        }
+        let Some(t) = &self.table else {
+            return Err(JsError::new(
+                "η table: not loaded yet, the clock holds at t = 0",
+            ));
+        };
+        self.world.step_writing(t, &mut self.buf);
+        out.copy_from(&self.buf);
+        Ok(())
+    }
+
     /// Floats per agent in [`Lab::state`].
     #[wasm_bindgen(js_name = stateStride)]
     #[must_use]
