@@ -176,7 +176,8 @@ try {
         console.log(
           `workers ${builds.length > 1 ? `[${build}] ` : ""}n=${n} ${w === "N" ? `N=${cores}` : w} (${info ? `${info.mode}, ${info.workers} slices` : "page's thread"}): ` +
             `${Math.round(perFrame)} agents stepped per 16.7 ms (${Math.round(drawnPerFrame)} stepped + drawn), ${(1000 / s.meanIntervalMs).toFixed(1)} fps, ` +
-            `${((s.steppedFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms, ` +
+            `${((s.steppedFrames * 1000) / s.spanMs).toFixed(1)} states drawn/s, page's work/frame mean ${s.meanWorkMs.toFixed(2)} ms p95 ${s.p95WorkMs.toFixed(2)} ms ` +
+            `(per state drawn ${((s.meanWorkMs * s.frames) / Math.max(1, s.steppedFrames)).toFixed(2)} ms, of which drawing ${((s.meanDrawMs * s.frames) / Math.max(1, s.steppedFrames)).toFixed(2)}), ` +
             (info ? `slowest worker ${info.usPerUpdate.toFixed(3)} µs per agent update of the world, workers started in ${info.startMs.toFixed(0)} ms` : `core ${s.usPerUpdate.toFixed(3)} µs per agent update`),
         );
         if (problems.length) { bad++; console.log(problems.join("\n")); }
