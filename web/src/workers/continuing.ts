@@ -12,7 +12,11 @@
 //   writes the next step into a buffer that is neither the one just
 //   written, nor the one before it, nor the one the page draws: four
 //   buffers (the state drawn, the one drawn next, the newest, the one
-//   being written).
+//   being written). That is the crowd's protocol (`runContinuing`): its
+//   strips read each other's boids, so they meet after every step. The
+//   lab's slices never do, and step on without a barrier
+//   (`runIndependent`: the last worker to finish a step publishes it; one
+//   step more in flight, so five buffers).
 // - The page draws the states in order, one frame behind at most
 //   (`ContinuingJobs.take`): the oldest it has not drawn when a newer one
 //   is already there, so two states landing between two frames are drawn
@@ -25,14 +29,32 @@
 //   Worker 0 reads the drawn buffer only after publishing, so every choice
 //   after the page's second read sees the page's.
 
-/** State buffers of a continuing job (`sab[0..STATES)`). */
-export const STATES = 4;
+/** State buffers of a continuing job (`sab[0..STATES)`): four for the
+ *  barrier's protocol, five for the independent one (`runIndependent`). */
+export const STATES = 5;
+/** Per-step words of the independent protocol are rings this long. */
+const RING = 4;
 /** The control words (Int32): barrier arrivals; the step the page asks the
- *  job to reach; the latest complete state (`steps in the job << 2 |
- *  buffer`); decisions made (steps); the next step's buffer (−1: the job
- *  ends); the buffer the page draws; stop. */
-export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6 } as const;
-export const CTRL_BYTES = 4 * 8;
+ *  job to reach; the latest complete state (`pack(steps in the job,
+ *  buffer)`); decisions made (steps); the next step's buffer (−1: the job
+ *  ends); the buffer the page draws; stop. The independent protocol's
+ *  rings, indexed by step % RING: arrivals, go / end, buffer; and the last
+ *  step whose buffer is chosen. */
+export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6, arrivals: 8, choice: 12, buffers: 16, ahead: 20 } as const;
+export const CTRL_BYTES = 4 * 24;
+
+/** A published state: its step (in the job) and its buffer in one word. */
+export function pack(step: number, buffer: number): number {
+  return (step << 3) | buffer;
+}
+/** The step of a published word. */
+export function stepOf(p: number): number {
+  return p >> 3;
+}
+/** The buffer of a published word. */
+export function bufferOf(p: number): number {
+  return p & 7;
+}
 /** Per-step slots are a ring this long (a job runs at most a frame's worth
  *  and one step ahead of the drawn state: ≤ 21 steps). */
 export const SLOT_RING = 32;
@@ -91,7 +113,7 @@ export function runContinuing(w: ContinuingWork): number {
     let next: number;
     if (w.worker === 0) {
       w.note(s, dst, performance.now() - ts);
-      Atomics.store(ctrl, C.published, (s << 2) | dst);
+      Atomics.store(ctrl, C.published, pack(s, dst));
       const go = waitForTarget(ctrl, s) && s < MAX_JOB_STEPS;
       // Read after publishing (and waiting): `ContinuingJobs.take` relies on it.
       const drawing = Atomics.load(ctrl, C.drawing);
@@ -109,6 +131,66 @@ export function runContinuing(w: ContinuingWork): number {
     if (next < 0) return s;
     src = dst;
     dst = next;
+  }
+}
+
+/** Waits until `ctrl[at]` is at least `v`. */
+function waitAtLeast(ctrl: Int32Array, at: number, v: number): void {
+  for (let x = Atomics.load(ctrl, at); x < v; x = Atomics.load(ctrl, at)) Atomics.wait(ctrl, at, x, 1000);
+}
+
+/** Runs one worker's part of a continuing job whose workers never read
+ *  each other's state (the lab's slices: no facing link crosses a cut,
+ *  crate/funnelling/world_split.rs); returns its steps.
+ *
+ *  No barrier: a worker steps on as soon as its next step's buffer is
+ *  chosen, up to two steps ahead of the published state, so a worker the
+ *  page's thread (or the other worker) kept off its core does not idle the
+ *  others. With the barrier, 2 workers at 100,000 agents left a quarter of
+ *  the two cores idle (issue 17: 174 % of 200 % busy, /proc per thread).
+ *  - The last worker to finish step s publishes it, notes it (`ms`: its own
+ *    stepping time, the slowest's) and chooses the buffer of step s + 2:
+ *    not the one the page draws, nor those of steps s − 1 and s (the page
+ *    may take either next), nor that of s + 1 (being written): five buffers.
+ *    It reads the drawn buffer after publishing, so `ContinuingJobs.take`'s
+ *    check holds as with the barrier.
+ *  - Whether step s + 1 runs is decided once, by the first worker to reach
+ *    it (compare-and-swap): go when the target rises beyond s within
+ *    TARGET_WAIT_MS, else end. Every worker obeys that word, so all end
+ *    after the same step, and the last published state is it. */
+export function runIndependent(w: ContinuingWork): number {
+  const { ctrl, workers } = w;
+  const GO = 1;
+  const END = 2;
+  let s = 0;
+  for (;;) {
+    const n = s + 1;
+    waitAtLeast(ctrl, C.ahead, n);
+    const dst = Atomics.load(ctrl, C.buffers + (n % RING));
+    let choice = Atomics.load(ctrl, C.choice + (n % RING));
+    if (choice === 0) {
+      const mine = waitForTarget(ctrl, s) && n <= MAX_JOB_STEPS ? GO : END;
+      const was = Atomics.compareExchange(ctrl, C.choice + (n % RING), 0, mine);
+      choice = was === 0 ? mine : was;
+    }
+    if (choice === END) return s;
+    const t0 = performance.now();
+    w.step(-1, dst, n);
+    const ms = performance.now() - t0;
+    s = n;
+    if (Atomics.add(ctrl, C.arrivals + (s % RING), 1) + 1 < workers) continue;
+    // Every worker has stepped s (none can reach s + 4, which reuses the
+    // arrival word, before s + 2 is published).
+    Atomics.store(ctrl, C.arrivals + (s % RING), 0);
+    w.note(s, dst, ms);
+    Atomics.store(ctrl, C.published, pack(s, dst));
+    const used = [Atomics.load(ctrl, C.drawing), Atomics.load(ctrl, C.buffers + ((s - 1) % RING)), dst, Atomics.load(ctrl, C.buffers + ((s + 1) % RING))];
+    const next = Array.from({ length: STATES }, (_, b) => b).find((b) => !used.includes(b)) ?? 0;
+    // The ring's words for s + 2 held step s − 2's, long passed by all.
+    Atomics.store(ctrl, C.choice + ((s + 2) % RING), 0);
+    Atomics.store(ctrl, C.buffers + ((s + 2) % RING), next);
+    Atomics.store(ctrl, C.ahead, s + 2);
+    Atomics.notify(ctrl, C.ahead);
   }
 }
 
@@ -135,6 +217,9 @@ export class ContinuingJobs {
     Atomics.store(ctrl, C.published, front);
     Atomics.store(ctrl, C.drawing, front);
     Atomics.store(ctrl, C.next, (front + 1) % STATES);
+    // The independent protocol: steps 0 (drawn), 1 and 2 have their buffers.
+    for (let k = 0; k < 3; k++) Atomics.store(ctrl, C.buffers + k, (front + k) % STATES);
+    Atomics.store(ctrl, C.ahead, 2);
     this.seen = 0;
     this.running = true;
   }
@@ -173,21 +258,21 @@ export class ContinuingJobs {
   /** Takes the state to draw among those published since the last take,
    *  or null: the oldest not drawn when a newer one is there and a frame's
    *  worth of steps lies before it, else the newest (`newest`: always).
-   *  `bufferOf(k)` is the buffer of step k (the stepper's slots). Says
+   *  `bufferAt(k)` is the buffer of step k (the stepper's slots). Says
    *  which buffer it takes (module notes); `from` is the step drawn before. */
-  take(newest: boolean, bufferOf: (k: number) => number): { from: number; step: number; buffer: number } | null {
+  take(newest: boolean, bufferAt: (k: number) => number): { from: number; step: number; buffer: number } | null {
     if (!this.running) return null;
     const ctrl = this.ctrl;
     let p = Atomics.load(ctrl, C.published);
     for (;;) {
-      const s = p >> 2;
+      const s = stepOf(p);
       if (s <= this.seen) return null;
       const older = !newest && s - 1 > this.seen && s - 1 >= this.seen + this.perFrame;
       const step = older ? s - 1 : s;
-      const buffer = older ? bufferOf(step) : p & 3;
+      const buffer = older ? bufferAt(step) : bufferOf(p);
       Atomics.store(ctrl, C.drawing, buffer);
       const again = Atomics.load(ctrl, C.published);
-      if (step >= (again >> 2) - 1) {
+      if (step >= stepOf(again) - 1) {
         const from = this.seen;
         this.skipped += step - from - 1;
         this.seen = step;

@@ -8,7 +8,7 @@
 // Driven by `WorldStepper` (stepping.ts) through `WorkerPool.each`.
 
 import { errorText, fetchTable, Lab, loadCore, type Internals } from "../wasm";
-import { runContinuing, SLOT_RING } from "./continuing";
+import { runIndependent, SLOT_RING } from "./continuing";
 import type { ResultMessage, TaskMessage } from "./pool";
 import { SAB, SLOT, writeNote } from "./slicebuffers";
 import type { StepReply, StepTask, TableSource } from "./stepping";
@@ -105,13 +105,15 @@ async function run(task: StepTask): Promise<StepReply> {
 /** Shared memory: a continuing job (continuing.ts). Each step: this
  *  worker's slice one step on, its states into the step's buffer, and (the
  *  worker owning the shown agent, `local` ≥ 0) its internals into the
- *  step's note; worker 0 notes the step's wall ms and buffer. */
+ *  step's note; the last worker to finish a step notes its stepping ms and
+ *  the step's buffer (`runIndependent`). */
 function runShared(l: Lab, sab: SharedArrayBuffer[], task: StepTask, local: number): StepReply {
   const ctrl = new Int32Array(sab[SAB.ctrl] as SharedArrayBuffer);
   const slots = new Float32Array(sab[SAB.slots] as SharedArrayBuffer);
   const notes = sab[SAB.notes] as SharedArrayBuffer;
   let stepMs = 0;
-  runContinuing({
+  // Slices never read each other's agents: no barrier (`runIndependent`).
+  runIndependent({
     ctrl,
     worker: task.worker,
     workers: task.workers,
