@@ -194,3 +194,24 @@ fn the_random_crowd_refuses_bad_squares_and_too_many_agents() {
     assert_eq!(w.agents.len(), 1);
     assert!(w.check_room(MAX_AGENTS - 1).is_ok());
 }
+
+/// A queue changed directly (public fields), then `queues_changed`: the
+/// step plans towards the new current goal, here one facing another agent
+/// (issue 17: the world keeps a copy of each current goal and a count of
+/// facing queues; debug builds, as the tests run, check both at each plan).
+#[test]
+fn queues_changed_directly_are_picked_up() {
+    let t = table();
+    let mut w = world();
+    w.spawn_random(2, 3, 10.0, 1.3).unwrap();
+    let c = w.agents[1].current;
+    w.agents[1].goals[c].motion = GoalMotion::FaceAgent {
+        agent: 0,
+        distance: 2.0,
+    };
+    w.queues_changed();
+    let s0 = w.agents[0].state;
+    w.step(&t);
+    assert_eq!(w.agents[1].current, c);
+    assert_eq!(w.agents[1].goal_now.pos, s0.pos + s0.forward() * 2.0);
+}

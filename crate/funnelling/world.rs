@@ -19,9 +19,11 @@ pub use crate::funnelling::goals::{GoalMotion, GoalSpec, SwitchRule, MOVING_HALT
 pub struct Agent {
     /// Kinematic state.
     pub state: VehicleState,
-    /// Goal queue.
+    /// Goal queue (changed directly, not through the world's edits: call
+    /// [`World::queues_changed`] before the next step).
     pub goals: Vec<GoalSpec>,
-    /// Index of the current goal (== `goals.len()` when all are done).
+    /// Index of the current goal (== `goals.len()` when all are done; as
+    /// `goals` for direct changes).
     pub current: usize,
     /// Mode-logic memory for the current goal.
     pub memory: FunnelMemory,
@@ -43,7 +45,8 @@ pub struct Agent {
     /// miss per agent per step in a big world (`perf` at 50,000 agents:
     /// `GoalSpec::at` 22 % of the native world step, nearly all the load
     /// of the spec). Same bits. Every change of `goals` or `current` goes
-    /// through [`Agent::refresh_spec`]; debug builds check it at each plan.
+    /// through [`Agent::refresh_spec`] ([`World::queues_changed`] for
+    /// direct changes); debug builds check it at each plan.
     pub(crate) spec: GoalSpec,
 }
 
@@ -236,6 +239,17 @@ impl World {
                 planner.plan(a, false);
             }
         }
+    }
+
+    /// What the world keeps about its agents' goal queues, recomputed after
+    /// `agents[i].goals` or `.current` were changed directly (the world's
+    /// own edits keep it): each agent's current goal (`Agent::spec`'s
+    /// copy) and the count of queues facing an agent (`World::facing`).
+    pub fn queues_changed(&mut self) {
+        for a in &mut self.agents {
+            a.refresh_spec();
+        }
+        self.facing = self.agents.iter().filter(|a| faces(&a.goals)).count();
     }
 
     /// Advances every agent by one time step. Agents see each other's

@@ -182,13 +182,8 @@ impl World {
                     };
                 }
             }
-            a.refresh_spec();
         }
-        self.facing = self
-            .agents
-            .iter()
-            .filter(|a| super::world::faces(&a.goals))
-            .count();
+        self.queues_changed();
         Ok(())
     }
 }

@@ -96,6 +96,11 @@ function waitForTarget(ctrl: Int32Array, time: number): boolean {
   }
 }
 
+/** Waits until `ctrl[at]` is at least `v`. */
+function waitAtLeast(ctrl: Int32Array, at: number, v: number): void {
+  for (let x = Atomics.load(ctrl, at); x < v; x = Atomics.load(ctrl, at)) Atomics.wait(ctrl, at, x, 1000);
+}
+
 /** Runs one worker's part of a continuing job; returns its steps. */
 export function runContinuing(w: ContinuingWork): number {
   const { ctrl, workers } = w;
@@ -108,8 +113,7 @@ export function runContinuing(w: ContinuingWork): number {
     s++;
     Atomics.add(ctrl, C.arrived, 1);
     Atomics.notify(ctrl, C.arrived);
-    const want = s * workers;
-    for (let v = Atomics.load(ctrl, C.arrived); v < want; v = Atomics.load(ctrl, C.arrived)) Atomics.wait(ctrl, C.arrived, v, 1000);
+    waitAtLeast(ctrl, C.arrived, s * workers);
     let next: number;
     if (w.worker === 0) {
       w.note(s, dst, performance.now() - ts);
@@ -125,18 +129,13 @@ export function runContinuing(w: ContinuingWork): number {
       Atomics.store(ctrl, C.decided, s);
       Atomics.notify(ctrl, C.decided);
     } else {
-      for (let v = Atomics.load(ctrl, C.decided); v < s; v = Atomics.load(ctrl, C.decided)) Atomics.wait(ctrl, C.decided, v, 1000);
+      waitAtLeast(ctrl, C.decided, s);
       next = Atomics.load(ctrl, C.next);
     }
     if (next < 0) return s;
     src = dst;
     dst = next;
   }
-}
-
-/** Waits until `ctrl[at]` is at least `v`. */
-function waitAtLeast(ctrl: Int32Array, at: number, v: number): void {
-  for (let x = Atomics.load(ctrl, at); x < v; x = Atomics.load(ctrl, at)) Atomics.wait(ctrl, at, x, 1000);
 }
 
 /** Runs one worker's part of a continuing job whose workers never read
