@@ -137,7 +137,25 @@ pub struct Lab {
     ghost: Vec<Vec2>,
 }
 
+/// What stepping before the η table has arrived says ([`Lab::step`],
+/// [`Lab::step_into`]).
+const NO_TABLE_CLOCK: &str = "η table: not loaded yet, the clock holds at t = 0";
+
 impl Lab {
+    /// Refuses an array that is not [`Lab::count`] × [`STATE_STRIDE`]
+    /// floats long (`call`: the method that was given it).
+    fn check_state_array(&self, out: &js_sys::Float32Array, call: &str) -> Result<(), JsError> {
+        let n = self.world.agents.len();
+        if out.length() as usize == n * STATE_STRIDE {
+            return Ok(());
+        }
+        Err(JsError::new(&format!(
+            "{call}: the array holds {} floats, the state {} ({n} agents × {STATE_STRIDE})",
+            out.length(),
+            n * STATE_STRIDE
+        )))
+    }
+
     /// The table, or the error every table-bound call gives before it arrives.
     fn table(&self) -> Result<&EtaTable, JsError> {
         self.table
@@ -519,9 +537,7 @@ impl Lab {
             return if n == 0 {
                 Ok(())
             } else {
-                Err(JsError::new(
-                    "η table: not loaded yet, the clock holds at t = 0",
-                ))
+                Err(JsError::new(NO_TABLE_CLOCK))
             };
         };
         for _ in 0..n.min(MAX_STEPS_PER_CALL) {
@@ -548,15 +564,8 @@ impl Lab {
     /// (nothing written).
     #[wasm_bindgen(js_name = stateInto)]
     pub fn state_into(&mut self, out: &js_sys::Float32Array) -> Result<(), JsError> {
+        self.check_state_array(out, "stateInto")?;
         self.world.write_state(&mut self.buf);
-        if out.length() as usize != self.buf.len() {
-            return Err(JsError::new(&format!(
-                "stateInto: the array holds {} floats, the state {} ({} agents × {STATE_STRIDE})",
-                out.length(),
-                self.buf.len(),
-                self.world.agents.len()
-            )));
-        }
         out.copy_from(&self.buf);
         Ok(())
     }
@@ -571,18 +580,9 @@ impl Lab {
     /// [`STATE_STRIDE`] floats long (nothing stepped, nothing written).
     #[wasm_bindgen(js_name = stepInto)]
     pub fn step_into(&mut self, out: &js_sys::Float32Array) -> Result<(), JsError> {
-        let want = self.world.agents.len() * STATE_STRIDE;
-        if out.length() as usize != want {
-            return Err(JsError::new(&format!(
-                "stepInto: the array holds {} floats, the state {want} ({} agents × {STATE_STRIDE})",
-                out.length(),
-                self.world.agents.len()
-            )));
-        }
+        self.check_state_array(out, "stepInto")?;
         let Some(t) = &self.table else {
-            return Err(JsError::new(
-                "η table: not loaded yet, the clock holds at t = 0",
-            ));
+            return Err(JsError::new(NO_TABLE_CLOCK));
         };
         self.world.step_writing(t, &mut self.buf);
         out.copy_from(&self.buf);

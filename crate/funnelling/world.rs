@@ -255,10 +255,6 @@ impl World {
     /// Advances every agent by one time step. Agents see each other's
     /// states from the start of the step, so the order does not matter.
     pub fn step(&mut self, table: &EtaTable) {
-        if self.avoidance.method != AvoidanceMethod::Off {
-            self.step_avoiding(table);
-            return;
-        }
         self.step_each(table, |_, _| {});
     }
 
@@ -267,21 +263,23 @@ impl World {
     /// memory is at hand (issue 17: a stepping worker's step and state in
     /// one pass over the agents instead of two; the same floats).
     pub fn step_writing(&mut self, table: &EtaTable, out: &mut Vec<f32>) {
-        if self.avoidance.method != AvoidanceMethod::Off {
-            self.step_avoiding(table);
-            self.write_state(out);
-            return;
-        }
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
         self.step_each(table, |i, a| {
             write_record(a, &mut out[i * STATE_STRIDE..(i + 1) * STATE_STRIDE]);
         });
     }
 
-    /// The step's per-agent loop without avoidance; `after(i, agent)` once
-    /// agent `i` has stepped.
+    /// One step; `after(i, agent)` once agent `i` has stepped (with the
+    /// avoidance on, once every agent has: its step is whole-world).
     #[inline(always)]
     fn step_each(&mut self, table: &EtaTable, mut after: impl FnMut(usize, &Agent)) {
+        if self.avoidance.method != AvoidanceMethod::Off {
+            self.step_avoiding(table);
+            for (i, a) in self.agents.iter().enumerate() {
+                after(i, a);
+            }
+            return;
+        }
         let (planner, agents) = self.planning(table);
         let (p, t) = (*planner.p, planner.t);
         for (i, a) in agents.iter_mut().enumerate() {

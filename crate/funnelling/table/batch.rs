@@ -34,6 +34,7 @@
 use glam::Vec2;
 
 use crate::angle::{diff, wrap};
+use crate::minmax::MinMax;
 use crate::table::{FLAG_ETA_VALID, FLAG_REACHABLE};
 use crate::trig;
 use crate::vehicle::{Integrator, VehicleParams, VehicleState};
@@ -157,12 +158,8 @@ impl Lane {
         let w1 = (w0 + a * dt).clamp(-wl, wl);
         let dv = p.accel_max * dt;
         let vcap = p.speed_limit(w1);
-        // `.min(vcap).max(0.0)` as comparisons: equal for these operands
-        // (finite, `vcap` > 0, no signed zeros to order), and no `fminf` /
-        // `fmaxf` library calls in wasm.
-        let v = self.v_d.clamp(v0 - dv, v0 + dv);
-        let v = if vcap < v { vcap } else { v };
-        let v1 = if v < 0.0 { 0.0 } else { v };
+        // As `VehicleParams::integrate` (no `fminf` / `fmaxf` calls in wasm).
+        let v1 = self.v_d.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
         (w0, w1, v0, v1)
     }
 }
