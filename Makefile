@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid
+	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol
 
 setup: setup-rust setup-browser setup-web
 
@@ -80,6 +80,10 @@ test-urlfuzz: setup-web wasm
 test-tsc: setup-web wasm
 	cd web && npx tsc --noEmit -p tsconfig.json
 
+# The workers' continuing-jobs protocol on real threads in Node (~12 s).
+test-protocol: setup-web
+	cd web && node test/protocol.mjs
+
 # Playwright (playwright-core + Debian's chromium) against the built page.
 test-e2e: setup-browser web-build
 	node web/test/e2e.mjs
@@ -137,7 +141,7 @@ bench-wasm-native: setup-web wasm
 	node web/test/wasmnative.mjs 10000
 	node web/test/wasmnative.mjs 100000
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf test-e2e-avoid
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf test-e2e-avoid
 	@echo "make test: all suites passed"
 
 demo: setup web-build

@@ -14,7 +14,7 @@
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
 //   continuing jobs (../workers/continuing.ts: the workers step on while
 //   the page asks, meeting at a barrier after every step, and the page
-//   draws every state in order, one frame behind at most). Before, a job
+//   draws every state in order, up to DEPTH states behind the newest). Before, a job
 //   ended with every step and the next began only when the page had
 //   handled the answer, after its drawing: at 100,000 boids the worker
 //   idled a few ms per step. The page never waits for a worker.
@@ -253,8 +253,8 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   }
 
   /** Shared memory: takes the state to draw among those the job in flight
-   *  has published since the last call (`ContinuingJobs.take`: in order, one frame
-   *  behind at most; `newest`: the newest, a job that ended leaves none
+   *  has published since the last call (`ContinuingJobs.take`: in order, up to
+   *  DEPTH behind the newest; `newest`: the newest, a job that ended leaves none
    *  behind). The traced boid of each step it passes goes to `onTraced`,
    *  the drawn state to `onStep`. Called every frame, before drawing. */
   poll(newest = false): void {

@@ -2,36 +2,45 @@
 // crowd's strips (../crowd/stepper.ts) and the lab's slices (stepping.ts).
 //
 // - A job steps for as long as the page asks: each frame raises a shared
-//   target step (at most a frame's worth and one step beyond the drawn
-//   state), and the workers, meeting at a barrier (Atomics) after every
-//   step, go on while the target is ahead, and wait up to TARGET_WAIT_MS
-//   for it to rise when it is not (then the job ends: the page paused, or
-//   is hidden). No step waits for the page's answer to the one before:
-//   handing a job over and back cost 4–10 ms per step at 100,000 agents.
-// - Worker 0 publishes every complete state (its step and buffer) and
-//   writes the next step into a buffer that is neither the one just
-//   written, nor the one before it, nor the one the page draws: four
-//   buffers (the state drawn, the one drawn next, the newest, the one
-//   being written). That is the crowd's protocol (`runContinuing`): its
-//   strips read each other's boids, so they meet after every step. The
-//   lab's slices never do, and step on without a barrier
-//   (`runIndependent`: the last worker to finish a step publishes it; one
-//   step more in flight, so five buffers).
-// - The page draws the states in order, one frame behind at most
-//   (`ContinuingJobs.take`): the oldest it has not drawn when a newer one
-//   is already there, so two states landing between two frames are drawn
-//   one per frame. Drawing only the newest skipped one of them: at 100,000
-//   boids one crowd worker stepped 99,161 boids per frame, the page drew
-//   62,599.
+//   target step (at most a frame's worth and DEPTH steps beyond the drawn
+//   state), and the workers go on while the target is ahead, and wait up
+//   to TARGET_WAIT_MS for it to rise when it is not (then the job ends:
+//   the page paused, or is hidden). No step waits for the page's answer to
+//   the one before: handing a job over and back cost 4–10 ms per step at
+//   100,000 agents.
+// - The page draws the states in order (`ContinuingJobs.take`): a frame's
+//   worth beyond the one drawn, but no more than DEPTH behind the newest,
+//   so states landing between two frames are drawn one per frame. Drawing
+//   only the newest skipped some: at 100,000 boids one crowd worker
+//   stepped 99,161 boids per frame, the page drew 62,599.
+// - The crowd's protocol (`runContinuing`): its strips read each other's
+//   boids, so they meet at a barrier (Atomics) after every step. Worker 0
+//   publishes every complete state (its step and buffer) and writes the
+//   next step into a buffer that is none of the DEPTH + 1 newest and not
+//   the one the page draws: DEPTH + 3 buffers.
+// - The lab's protocol (`runIndependent`): its slices never read each
+//   other's agents, so there is no barrier. The last worker to finish a
+//   step publishes it; one step more is in flight: DEPTH + 4 buffers.
 // - The page says which buffer it draws, then reads the newest step again:
-//   when that moved on by two or more, a choice of worker 0 made meanwhile
-//   may not have seen it, so it takes one of the two newest (both avoided).
-//   Worker 0 reads the drawn buffer only after publishing, so every choice
-//   after the page's second read sees the page's.
+//   when that moved on by more than DEPTH beyond the step it took, a
+//   choice made meanwhile may not have seen it (a choice protects the
+//   steps down to its own newest − DEPTH), so it takes again. The chooser
+//   reads the drawn buffer only after publishing, so every choice after
+//   the page's second read sees the page's.
 
-/** State buffers of a continuing job (`sab[0..STATES)`): four for the
- *  barrier's protocol, five for the independent one (`runIndependent`). */
-export const STATES = 5;
+/** How far the workers may run beyond a frame's worth ahead of the drawn
+ *  state, and how far behind the newest state the page may take one.
+ *  Issue 17: with 1, two lab workers at 100,000 agents waited for the
+ *  page's target 19–26 % of the wall time (instrumented, 3 runs: the
+ *  page's frames come late while the workers hold both cores); with 2,
+ *  2–3 %, and 83,430–91,717 → 89,449–98,900 agents stepped + drawn per
+ *  frame (4 rounds, same run). The crowd's 150,000 boids, 2 workers:
+ *  88,908–93,120 → 90,343–98,098 (3 rounds). */
+export const DEPTH = 2; // The buffer choices below are written out for 2 (RING holds no more).
+
+/** State buffers of a continuing job (`sab[0..STATES)`): DEPTH + 3 for the
+ *  barrier's protocol, DEPTH + 4 for the independent one. */
+export const STATES = DEPTH + 4;
 /** Per-step words of the independent protocol are rings this long. */
 const RING = 4;
 /** The control words (Int32): barrier arrivals; the step the page asks the
@@ -56,7 +65,7 @@ export function bufferOf(p: number): number {
   return p & 7;
 }
 /** Per-step slots are a ring this long (a job runs at most a frame's worth
- *  and one step ahead of the drawn state: ≤ 21 steps). */
+ *  and DEPTH steps ahead of the drawn state: ≤ 22 steps). */
 export const SLOT_RING = 32;
 /** A job whose target stays reached this long (ms) ends. */
 export const TARGET_WAIT_MS = 250;
@@ -105,6 +114,8 @@ function waitAtLeast(ctrl: Int32Array, at: number, v: number): void {
 export function runContinuing(w: ContinuingWork): number {
   const { ctrl, workers } = w;
   let src = w.front;
+  // Step s − 2's buffer: the page may take it (DEPTH 2).
+  let old = w.front;
   let dst = Atomics.load(ctrl, C.next);
   let s = 0;
   let ts = performance.now();
@@ -122,7 +133,7 @@ export function runContinuing(w: ContinuingWork): number {
       // Read after publishing (and waiting): `ContinuingJobs.take` relies on it.
       const drawing = Atomics.load(ctrl, C.drawing);
       w.between?.();
-      next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== drawing) ?? -1 : -1;
+      next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== old && b !== drawing) ?? -1 : -1;
       // The wait is not the step's: the next step's ms start here.
       ts = performance.now();
       Atomics.store(ctrl, C.next, next);
@@ -133,6 +144,7 @@ export function runContinuing(w: ContinuingWork): number {
       next = Atomics.load(ctrl, C.next);
     }
     if (next < 0) return s;
+    old = src;
     src = dst;
     dst = next;
   }
@@ -147,14 +159,15 @@ export function runContinuing(w: ContinuingWork): number {
  *  page's thread (or the other worker) kept off its core does not hold the
  *  others at a barrier. Issue 17, 2 workers at 100,000 agents, same run:
  *  67,226 → 74,589 agents stepped + drawn per frame (3 rounds). The cores
- *  stay 173–179 % busy of 200 % either way (/proc per thread): what idles
- *  the workers now is the page's target, one step beyond the drawn state.
+ *  stay 173–179 % busy of 200 % either way (/proc per thread): what idled
+ *  the workers then was the page's target, one step beyond the drawn
+ *  state (now DEPTH steps: 184–187 % busy).
  *  - The last worker to finish step s publishes it, notes it (`ms`: that
  *    worker's own stepping time) and chooses the buffer of step s + 2:
- *    not the one the page draws, nor those of steps s − 1 and s (the page
- *    may take either next), nor that of s + 1 (being written): five buffers.
- *    It reads the drawn buffer after publishing, so `ContinuingJobs.take`'s
- *    check holds as with the barrier.
+ *    not the one the page draws, nor those of steps s − DEPTH … s (the
+ *    page may take any of them next), nor that of s + 1 (being written):
+ *    DEPTH + 4 buffers. It reads the drawn buffer after publishing, so
+ *    `ContinuingJobs.take`'s check holds as with the barrier.
  *  - Whether step s + 1 runs is decided once, by the first worker to reach
  *    it (compare-and-swap): go when the target rises beyond s within
  *    TARGET_WAIT_MS, else end. Every worker obeys that word, so all end
@@ -185,7 +198,10 @@ export function runIndependent(w: ContinuingWork): number {
     Atomics.store(ctrl, C.arrivals + (s % RING), 0);
     w.note(s, dst, ms);
     Atomics.store(ctrl, C.published, pack(s, dst));
-    const used = [Atomics.load(ctrl, C.drawing), Atomics.load(ctrl, C.buffers + ((s - 1) % RING)), dst, Atomics.load(ctrl, C.buffers + ((s + 1) % RING))];
+    // Steps s − 2 … s + 1 (DEPTH = 2): s + 2's ring word still
+    // holds s − 2's buffer until it is chosen below (`begin` fills step −1's).
+    const used = [Atomics.load(ctrl, C.drawing), dst];
+    for (const k of [s - 2, s - 1, s + 1]) used.push(Atomics.load(ctrl, C.buffers + ((k + RING) % RING)));
     const next = Array.from({ length: STATES }, (_, b) => b).find((b) => !used.includes(b)) ?? 0;
     // The ring's words for s + 2 held step s − 2's, long passed by all.
     Atomics.store(ctrl, C.choice + ((s + 2) % RING), 0);
@@ -218,21 +234,23 @@ export class ContinuingJobs {
     Atomics.store(ctrl, C.published, front);
     Atomics.store(ctrl, C.drawing, front);
     Atomics.store(ctrl, C.next, (front + 1) % STATES);
-    // The independent protocol: steps 0 (drawn), 1 and 2 have their buffers.
+    // The independent protocol: steps 0 (drawn), 1 and 2 have their
+    // buffers; "step −1"'s word (read as s − 2's when step 1 is published) the drawn one.
     for (let k = 0; k < 3; k++) Atomics.store(ctrl, C.buffers + k, (front + k) % STATES);
+    Atomics.store(ctrl, C.buffers + RING - 1, front);
     Atomics.store(ctrl, C.ahead, 2);
     this.seen = 0;
     this.running = true;
   }
 
   /** A frame asks for `steps` more (`k`: a frame's worth): the target
-   *  rises at most to one step beyond a frame's worth ahead of the drawn
-   *  state, so a host that cannot keep up runs slower than real time
+   *  rises at most to DEPTH steps beyond a frame's worth ahead of the
+   *  drawn state, so a host that cannot keep up runs slower than real time
    *  rather than stepping states the page would never draw. */
   raise(k: number, steps: number): void {
     const ctrl = this.ctrl;
     const target = Atomics.load(ctrl, C.target);
-    Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.seen + k + 1, target + steps)));
+    Atomics.store(ctrl, C.target, Math.max(target, Math.min(this.seen + k + DEPTH, target + steps)));
     // Worker 0 may be waiting for it to rise.
     Atomics.notify(ctrl, C.target);
   }
@@ -257,10 +275,11 @@ export class ContinuingJobs {
   }
 
   /** Takes the state to draw among those published since the last take,
-   *  or null: the oldest not drawn when a newer one is there and a frame's
-   *  worth of steps lies before it, else the newest (`newest`: always).
-   *  `bufferAt(k)` is the buffer of step k (the stepper's slots). Says
-   *  which buffer it takes (module notes); `from` is the step drawn before. */
+   *  or null: a frame's worth of steps beyond the drawn one when that is
+   *  published, but no more than DEPTH behind the newest, else the
+   *  newest (`newest`: always). `bufferAt(k)` is the buffer of step k (the
+   *  stepper's slots). Says which buffer it takes (module notes); `from` is
+   *  the step drawn before. */
   take(newest: boolean, bufferAt: (k: number) => number): { from: number; step: number; buffer: number } | null {
     if (!this.running) return null;
     const ctrl = this.ctrl;
@@ -268,12 +287,13 @@ export class ContinuingJobs {
     for (;;) {
       const s = stepOf(p);
       if (s <= this.seen) return null;
-      const older = !newest && s - 1 > this.seen && s - 1 >= this.seen + this.perFrame;
-      const step = older ? s - 1 : s;
-      const buffer = older ? bufferAt(step) : bufferOf(p);
+      const step = newest ? s : Math.min(s, Math.max(this.seen + this.perFrame, s - DEPTH));
+      const buffer = step < s ? bufferAt(step) : bufferOf(p);
       Atomics.store(ctrl, C.drawing, buffer);
+      // A choice made before this store protects steps down to its own
+      // published step − DEPTH (module notes).
       const again = Atomics.load(ctrl, C.published);
-      if (step >= stepOf(again) - 1) {
+      if (step >= stepOf(again) - DEPTH) {
         const from = this.seen;
         this.skipped += step - from - 1;
         this.seen = step;

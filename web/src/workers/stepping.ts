@@ -23,7 +23,7 @@
 //   the last to finish a step publishing it; the worker owning the shown
 //   agent leaves its internals in
 //   the step's note (slicebuffers.ts), and the page draws every state in
-//   order, one frame behind at most. A host that cannot keep up runs the
+//   order, up to DEPTH states behind the newest. A host that cannot keep up runs the
 //   world slower than real time instead of stepping states it never draws.
 //   Edits and a newly shown agent end the job in flight; the next one
 //   carries them. Issue 17: a job of the steps owed, handed over and back
@@ -256,8 +256,8 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   }
 
   /** Shared memory: takes the state to draw among those the continuing job
-   *  has published since the last call (`ContinuingJobs.take`: in order, one frame
-   *  behind at most; `newest`: the newest), with the shown agent's
+   *  has published since the last call (`ContinuingJobs.take`: in order, up to
+   *  DEPTH behind the newest; `newest`: the newest), with the shown agent's
    *  internals noted for it. Called every frame, before drawing. */
   poll(newest = false): void {
     const sab = this.sab;
