@@ -26,12 +26,21 @@ const here = new URL(".", import.meta.url).pathname;
 const dir = mkdtempSync(join(tmpdir(), "protocol-"));
 const src = readFileSync(join(here, "../src/workers/continuing.ts"), "utf8");
 const { code: js } = await transformWithOxc(src, "continuing.ts", { lang: "ts" });
-const mod = join(dir, "continuing.mjs");
-writeFileSync(mod, js);
-const P = await import(mod);
+
+/** The module as committed (`null`), or with other DEPTH and LEAD. */
+function moduleFor(depth, lead) {
+  let code = js;
+  if (depth !== null) {
+    code = code.replace(/export const DEPTH = \d+;/, `export const DEPTH = ${depth};`).replace(/export const LEAD = \d+;/, `export const LEAD = ${lead};`);
+    if (!code.includes(`DEPTH = ${depth};`) || !code.includes(`LEAD = ${lead};`)) throw new Error("protocol.mjs: DEPTH / LEAD not found in continuing.ts");
+  }
+  const path = join(dir, `continuing-${depth ?? "committed"}-${lead ?? ""}.mjs`);
+  writeFileSync(path, code);
+  return path;
+}
 
 const SLICE = 4096;
-const FRAMES = Number(process.env.PROTOCOL_FRAMES ?? 300);
+const FRAMES = Number(process.env.PROTOCOL_FRAMES ?? 200);
 
 // The worker: its slice of each step's buffer set to the step number, in
 // random time (0–3 ms busy); the note keeps the step's buffer.
@@ -39,8 +48,8 @@ writeFileSync(
   join(dir, "worker.mjs"),
   `
 import { workerData, parentPort } from "node:worker_threads";
-const P = await import(${JSON.stringify(mod)});
-const { protocol, ctrl: cb, slots: sb, states, worker, workers, front, seed } = workerData;
+const { mod, protocol, ctrl: cb, slots: sb, states, worker, workers, front, seed } = workerData;
+const P = await import(mod);
 const ctrl = new Int32Array(cb);
 const slots = new Int32Array(sb);
 const bufs = states.map((b) => new Float64Array(b));
@@ -71,7 +80,8 @@ function sleep(ms) {
   Atomics.wait(new Int32Array(new SharedArrayBuffer(4)), 0, 0, ms);
 }
 
-async function run(protocol, workers, seed, speeds) {
+async function run(mod, protocol, workers, seed, speeds) {
+  const P = await import(mod);
   const ctrlBuf = new SharedArrayBuffer(P.CTRL_BYTES);
   const slotBuf = new SharedArrayBuffer(4 * P.SLOT_RING);
   const states = Array.from({ length: P.STATES }, () => new SharedArrayBuffer(8 * SLICE * workers));
@@ -82,7 +92,7 @@ async function run(protocol, workers, seed, speeds) {
   const front = 0;
   jobs.begin(front, 1);
   const done = Array.from({ length: workers }, (_, worker) => {
-    const w = new Worker(join(dir, "worker.mjs"), { workerData: { protocol, ctrl: ctrlBuf, slots: slotBuf, states, worker, workers, front, seed: seed * 31 + worker } });
+    const w = new Worker(join(dir, "worker.mjs"), { workerData: { mod, protocol, ctrl: ctrlBuf, slots: slotBuf, states, worker, workers, front, seed: seed * 31 + worker } });
     return new Promise((res, rej) => {
       w.once("message", (m) => { res(m); void w.terminate(); });
       w.once("error", rej);
@@ -127,13 +137,17 @@ async function run(protocol, workers, seed, speeds) {
   if (new Set(ends).size !== 1) errors.push(`${protocol} ×${workers}: workers ended after steps ${ends.join(", ")}`);
   if (!speeds && jobs.skipped !== 0) errors.push(`${protocol} ×${workers}: ${jobs.skipped} states skipped at a step per frame`);
   if (drawn < FRAMES / 4) errors.push(`${protocol} ×${workers}: only ${drawn} states drawn in ${FRAMES} frames`);
-  console.log(`${protocol} ×${workers}${speeds ? ", 1–3 steps a frame" : ""}: ${drawn} states drawn in order of ${ends[0]} stepped, ${FRAMES} frames; ${errors.length ? "FAILED" : "ok"}`);
+  console.log(`DEPTH ${P.DEPTH} LEAD ${P.LEAD}, ${protocol} ×${workers}${speeds ? ", 1–3 steps a frame" : ""}: ${drawn} states drawn in order of ${ends[0]} stepped, ${FRAMES} frames; ${errors.length ? "FAILED" : "ok"}`);
   return errors;
 }
 
 const errors = [];
-for (const [protocol, workers, seed] of [["independent", 2, 1], ["independent", 3, 2], ["barrier", 2, 3], ["barrier", 3, 4]]) {
-  for (const speeds of [false, true]) errors.push(...(await run(protocol, workers, seed, speeds)));
+// The committed DEPTH and LEAD, then others (the protocol is written for any).
+for (const [depth, lead] of [[null, null], [1, 1], [2, 2]]) {
+  const mod = moduleFor(depth, lead);
+  for (const [protocol, workers, seed] of [["independent", 2, 1], ["independent", 3, 2], ["barrier", 2, 3], ["barrier", 3, 4]]) {
+    for (const speeds of [false, true]) errors.push(...(await run(mod, protocol, workers, seed, speeds)));
+  }
 }
 if (errors.length) {
   console.error(errors.slice(0, 20).join("\n"));

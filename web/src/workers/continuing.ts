@@ -20,7 +20,8 @@
 //   the one the page draws: DEPTH + 3 buffers.
 // - The lab's protocol (`runIndependent`): its slices never read each
 //   other's agents, so there is no barrier. The last worker to finish a
-//   step publishes it; one step more is in flight: DEPTH + 4 buffers.
+//   step publishes it; up to LEAD steps more are in flight: DEPTH + LEAD
+//   + 2 buffers.
 // - The page says which buffer it draws, then reads the newest step again:
 //   when that moved on by more than DEPTH beyond the step it took, a
 //   choice made meanwhile may not have seen it (a choice protects the
@@ -30,27 +31,38 @@
 
 /** How far the workers may run beyond a frame's worth ahead of the drawn
  *  state, and how far behind the newest state the page may take one.
- *  Issue 17: with 1, two lab workers at 100,000 agents waited for the
- *  page's target 19–26 % of the wall time (instrumented, 3 runs: the
+ *  Issue 17, 2 lab workers at 100,000 agents: with 1, a worker waited for
+ *  the page's target 19–26 % of the wall time (instrumented, 3 runs: the
  *  page's frames come late while the workers hold both cores); with 2,
  *  2–3 %, and 83,430–91,717 → 89,449–98,900 agents stepped + drawn per
- *  frame (4 rounds, same run). The crowd's 150,000 boids, 2 workers:
- *  88,908–93,120 → 90,343–98,098 (3 rounds). */
-export const DEPTH = 2; // The buffer choices below are written out for 2 (RING holds no more).
+ *  frame (4 rounds, same run); the crowd's 150,000 boids in 2 workers
+ *  88,908–93,120 → 90,343–98,098 (3 rounds). With 3 (and LEAD 3), against
+ *  2 (LEAD 2), same run, 4 rounds, each won: 68,337–76,671 →
+ *  73,484–86,115. */
+export const DEPTH = 3;
+
+/** The independent protocol: how many steps beyond the newest published
+ *  one a worker may step (the buffers of those steps are chosen). With 2,
+ *  a worker waited 4–8 % of the wall time for the other to publish. */
+export const LEAD = 3;
 
 /** State buffers of a continuing job (`sab[0..STATES)`): DEPTH + 3 for the
- *  barrier's protocol, DEPTH + 4 for the independent one. */
-export const STATES = DEPTH + 4;
-/** Per-step words of the independent protocol are rings this long. */
-const RING = 4;
+ *  barrier's protocol, DEPTH + LEAD + 2 for the independent one (at most
+ *  8: `pack`). */
+export const STATES = DEPTH + LEAD + 2;
+if (STATES > 8) throw new Error("continuing.ts: more than 8 state buffers do not fit `pack`");
+/** Per-step words of the independent protocol are rings this long (more
+ *  than DEPTH + LEAD: a step's buffer word is read until step + DEPTH is
+ *  published). */
+const RING = 8;
 /** The control words (Int32): barrier arrivals; the step the page asks the
  *  job to reach; the latest complete state (`pack(steps in the job,
  *  buffer)`); decisions made (steps); the next step's buffer (−1: the job
  *  ends); the buffer the page draws; stop. The independent protocol's
  *  rings, indexed by step % RING: arrivals, go / end, buffer; and the last
  *  step whose buffer is chosen. */
-export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6, arrivals: 8, choice: 12, buffers: 16, ahead: 20 } as const;
-export const CTRL_BYTES = 4 * 24;
+export const C = { arrived: 0, target: 1, published: 2, decided: 3, next: 4, drawing: 5, stop: 6, arrivals: 8, choice: 8 + RING, buffers: 8 + 2 * RING, ahead: 8 + 3 * RING } as const;
+export const CTRL_BYTES = 4 * (C.ahead + 1);
 
 /** A published state: its step (in the job) and its buffer in one word. */
 export function pack(step: number, buffer: number): number {
@@ -114,8 +126,8 @@ function waitAtLeast(ctrl: Int32Array, at: number, v: number): void {
 export function runContinuing(w: ContinuingWork): number {
   const { ctrl, workers } = w;
   let src = w.front;
-  // Step s − 2's buffer: the page may take it (DEPTH 2).
-  let old = w.front;
+  // The buffers of steps s − DEPTH … s − 2: the page may take them.
+  const older: number[] = [];
   let dst = Atomics.load(ctrl, C.next);
   let s = 0;
   let ts = performance.now();
@@ -133,7 +145,7 @@ export function runContinuing(w: ContinuingWork): number {
       // Read after publishing (and waiting): `ContinuingJobs.take` relies on it.
       const drawing = Atomics.load(ctrl, C.drawing);
       w.between?.();
-      next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== old && b !== drawing) ?? -1 : -1;
+      next = go ? Array.from({ length: STATES }, (_, b) => b).find((b) => b !== dst && b !== src && b !== drawing && !older.includes(b)) ?? -1 : -1;
       // The wait is not the step's: the next step's ms start here.
       ts = performance.now();
       Atomics.store(ctrl, C.next, next);
@@ -144,7 +156,8 @@ export function runContinuing(w: ContinuingWork): number {
       next = Atomics.load(ctrl, C.next);
     }
     if (next < 0) return s;
-    old = src;
+    older.push(src);
+    if (older.length > DEPTH - 1) older.shift();
     src = dst;
     dst = next;
   }
@@ -155,7 +168,7 @@ export function runContinuing(w: ContinuingWork): number {
  *  crate/funnelling/world_split.rs); returns its steps.
  *
  *  No barrier: a worker steps on as soon as its next step's buffer is
- *  chosen, up to two steps ahead of the published state, so a worker the
+ *  chosen, up to LEAD steps ahead of the published state, so a worker the
  *  page's thread (or the other worker) kept off its core does not hold the
  *  others at a barrier. Issue 17, 2 workers at 100,000 agents, same run:
  *  67,226 → 74,589 agents stepped + drawn per frame (3 rounds). The cores
@@ -163,10 +176,10 @@ export function runContinuing(w: ContinuingWork): number {
  *  the workers then was the page's target, one step beyond the drawn
  *  state (now DEPTH steps: 184–187 % busy).
  *  - The last worker to finish step s publishes it, notes it (`ms`: that
- *    worker's own stepping time) and chooses the buffer of step s + 2:
+ *    worker's own stepping time) and chooses the buffer of step s + LEAD:
  *    not the one the page draws, nor those of steps s − DEPTH … s (the
- *    page may take any of them next), nor that of s + 1 (being written):
- *    DEPTH + 4 buffers. It reads the drawn buffer after publishing, so
+ *    page may take any of them next), nor those of s + 1 … s + LEAD − 1
+ *    (in flight): DEPTH + LEAD + 2 buffers. It reads the drawn buffer after publishing, so
  *    `ContinuingJobs.take`'s check holds as with the barrier.
  *  - Whether step s + 1 runs is decided once, by the first worker to reach
  *    it (compare-and-swap): go when the target rises beyond s within
@@ -193,20 +206,19 @@ export function runIndependent(w: ContinuingWork): number {
     const ms = performance.now() - t0;
     s = n;
     if (Atomics.add(ctrl, C.arrivals + (s % RING), 1) + 1 < workers) continue;
-    // Every worker has stepped s (none can reach s + 4, which reuses the
-    // arrival word, before s + 2 is published).
+    // Every worker has stepped s (none can reach s + RING, which reuses
+    // the arrival word, before s + RING − LEAD is published).
     Atomics.store(ctrl, C.arrivals + (s % RING), 0);
     w.note(s, dst, ms);
     Atomics.store(ctrl, C.published, pack(s, dst));
-    // Steps s − 2 … s + 1 (DEPTH = 2): s + 2's ring word still
-    // holds s − 2's buffer until it is chosen below (`begin` fills step −1's).
-    const used = [Atomics.load(ctrl, C.drawing), dst];
-    for (const k of [s - 2, s - 1, s + 1]) used.push(Atomics.load(ctrl, C.buffers + ((k + RING) % RING)));
+    // Steps s − DEPTH … s + LEAD − 1 (`begin` fills those before step 0).
+    const used = [Atomics.load(ctrl, C.drawing)];
+    for (let k = s - DEPTH; k < s + LEAD; k++) used.push(Atomics.load(ctrl, C.buffers + ((k + RING) % RING)));
     const next = Array.from({ length: STATES }, (_, b) => b).find((b) => !used.includes(b)) ?? 0;
-    // The ring's words for s + 2 held step s − 2's, long passed by all.
-    Atomics.store(ctrl, C.choice + ((s + 2) % RING), 0);
-    Atomics.store(ctrl, C.buffers + ((s + 2) % RING), next);
-    Atomics.store(ctrl, C.ahead, s + 2);
+    // The ring's words for s + LEAD held step s + LEAD − RING's, long passed by all.
+    Atomics.store(ctrl, C.choice + ((s + LEAD) % RING), 0);
+    Atomics.store(ctrl, C.buffers + ((s + LEAD) % RING), next);
+    Atomics.store(ctrl, C.ahead, s + LEAD);
     Atomics.notify(ctrl, C.ahead);
   }
 }
@@ -234,11 +246,11 @@ export class ContinuingJobs {
     Atomics.store(ctrl, C.published, front);
     Atomics.store(ctrl, C.drawing, front);
     Atomics.store(ctrl, C.next, (front + 1) % STATES);
-    // The independent protocol: steps 0 (drawn), 1 and 2 have their
-    // buffers; "step −1"'s word (read as s − 2's when step 1 is published) the drawn one.
-    for (let k = 0; k < 3; k++) Atomics.store(ctrl, C.buffers + k, (front + k) % STATES);
-    Atomics.store(ctrl, C.buffers + RING - 1, front);
-    Atomics.store(ctrl, C.ahead, 2);
+    // The independent protocol: steps 0 (drawn) … LEAD have their buffers;
+    // the words of "steps" −DEPTH … −1 (read when the first are published) the drawn one.
+    for (let k = 0; k <= LEAD; k++) Atomics.store(ctrl, C.buffers + k, (front + k) % STATES);
+    for (let k = 1; k <= DEPTH; k++) Atomics.store(ctrl, C.buffers + RING - k, front);
+    Atomics.store(ctrl, C.ahead, LEAD);
     this.seen = 0;
     this.running = true;
   }
