@@ -14,10 +14,10 @@
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
 //   continuing jobs (../workers/continuing.ts: the workers step on while
 //   the page asks, meeting at a barrier after every step, and the page
-//   draws every state in order, up to DEPTH states behind the newest). Before, a job
-//   ended with every step and the next began only when the page had
-//   handled the answer, after its drawing: at 100,000 boids the worker
-//   idled a few ms per step. The page never waits for a worker.
+//   draws every state in order, up to DEPTH states behind the newest).
+//   Before, a job ended with every step and the next began only when the
+//   page had handled the answer, after its drawing: at 100,000 boids the
+//   worker idled a few ms per step. The page never waits for a worker.
 // - Else one step per job: the front state goes to each worker by message
 //   and the stepped boids come back with their indices (transferred),
 //   copied here into the back buffer, then the two swap.

@@ -77,7 +77,7 @@ export function bufferOf(p: number): number {
   return p & 7;
 }
 /** Per-step slots are a ring this long (a job runs at most a frame's worth
- *  and DEPTH steps ahead of the drawn state: ≤ 22 steps). */
+ *  and DEPTH steps ahead of the drawn state: ≤ 23 steps, the crowd's). */
 export const SLOT_RING = 32;
 /** A job whose target stays reached this long (ms) ends. */
 export const TARGET_WAIT_MS = 250;
@@ -174,13 +174,14 @@ export function runContinuing(w: ContinuingWork): number {
  *  67,226 → 74,589 agents stepped + drawn per frame (3 rounds). The cores
  *  stay 173–179 % busy of 200 % either way (/proc per thread): what idled
  *  the workers then was the page's target, one step beyond the drawn
- *  state (now DEPTH steps: 184–187 % busy).
+ *  state (DEPTH steps now: 184–187 % busy with 2, 188–195 % with 3).
  *  - The last worker to finish step s publishes it, notes it (`ms`: that
  *    worker's own stepping time) and chooses the buffer of step s + LEAD:
  *    not the one the page draws, nor those of steps s − DEPTH … s (the
  *    page may take any of them next), nor those of s + 1 … s + LEAD − 1
- *    (in flight): DEPTH + LEAD + 2 buffers. It reads the drawn buffer after publishing, so
- *    `ContinuingJobs.take`'s check holds as with the barrier.
+ *    (in flight): DEPTH + LEAD + 2 buffers. It reads the drawn buffer
+ *    after publishing, so `ContinuingJobs.take`'s check holds as with the
+ *    barrier.
  *  - Whether step s + 1 runs is decided once, by the first worker to reach
  *    it (compare-and-swap): go when the target rises beyond s within
  *    TARGET_WAIT_MS, else end. Every worker obeys that word, so all end

@@ -23,8 +23,9 @@
 //   the last to finish a step publishing it; the worker owning the shown
 //   agent leaves its internals in
 //   the step's note (slicebuffers.ts), and the page draws every state in
-//   order, up to DEPTH states behind the newest. A host that cannot keep up runs the
-//   world slower than real time instead of stepping states it never draws.
+//   order, up to DEPTH states behind the newest. A host that cannot keep
+//   up runs the world slower than real time instead of stepping states it
+//   never draws.
 //   Edits and a newly shown agent end the job in flight; the next one
 //   carries them. Issue 17: a job of the steps owed, handed over and back
 //   every frame, cost 4–10 ms per step at 100,000 agents in 2 workers, so
