@@ -80,7 +80,7 @@ test-urlfuzz: setup-web wasm
 test-tsc: setup-web wasm
 	cd web && npx tsc --noEmit -p tsconfig.json
 
-# The workers' continuing-jobs protocol on real threads in Node (~12 s).
+# The workers' continuing-jobs protocol on real threads in Node (~25 s).
 test-protocol: setup-web
 	cd web && node test/protocol.mjs
 

@@ -4,8 +4,8 @@
 //
 // Each worker writes step s into its slice of the step's buffer; the
 // "page" raises the target every frame, takes a state (`take`), checks
-// that every float of its buffer holds that step, draws for a while, and
-// checks it again: a buffer handed to a later step while drawn would show
+// that its buffer holds that step (every 61st float, all slices), draws
+// for a while, and checks it again: a buffer handed to a later step while drawn would show
 // there (the issue 17 DEPTH change: the page may take a state DEPTH
 // behind the newest, so the workers protect that many more buffers).
 // Then: states drawn in order, none skipped at a step per frame (at 1–3
@@ -14,9 +14,9 @@
 // (`runIndependent`, 2 and 3 workers) and the crowd's (`runContinuing`,
 // its barrier; a worker also checks that the step it reads from is whole).
 //
-// Usage: node test/protocol.mjs   (about 10 s; exits 1 on a failure)
+// Usage: node test/protocol.mjs   (about 25 s; exits 1 on a failure)
 
-import { mkdtempSync, readFileSync, writeFileSync } from "node:fs";
+import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { Worker } from "node:worker_threads";
@@ -149,6 +149,7 @@ for (const [depth, lead] of [[null, null], [1, 1], [2, 2]]) {
     for (const speeds of [false, true]) errors.push(...(await run(mod, protocol, workers, seed, speeds)));
   }
 }
+rmSync(dir, { recursive: true, force: true });
 if (errors.length) {
   console.error(errors.slice(0, 20).join("\n"));
   process.exit(1);
