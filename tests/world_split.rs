@@ -56,11 +56,28 @@ fn preset(json: &str) -> World {
     Scenario::from_json(json).unwrap().world().unwrap()
 }
 
+/// `n` random agents in a square of side `extent` at 1.3 m/s (the lab's
+/// performance world's recipe).
+fn crowd(n: usize, seed: u64, extent: f32) -> World {
+    let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    w.spawn_random(n, seed, extent, 1.3).unwrap();
+    w
+}
+
+/// `w` with the ORCA avoidance on (a whole-world step).
+fn with_orca(mut w: World) -> World {
+    let cfg = AvoidanceConfig {
+        method: AvoidanceMethod::Orca,
+        ..Default::default()
+    };
+    w.set_avoidance(cfg, Vec::new()).unwrap();
+    w
+}
+
 #[test]
 fn random_crowd_in_two_three_and_seven_slices_equals_one_world() {
     let t = table();
-    let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
-    w.spawn_random(1000, 7, 40.0, 1.3).unwrap();
+    let w = crowd(1000, 7, 40.0);
     for parts in [2, 3, 7] {
         let r = whole_equals_slices(&t, &w, parts, 300);
         assert_eq!(r.len(), parts);
@@ -75,8 +92,7 @@ fn random_crowd_in_two_three_and_seven_slices_equals_one_world() {
 #[test]
 fn a_slice_of_the_random_crowd_is_spawned_alone_bit_for_bit() {
     let t = table();
-    let mut whole = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
-    whole.spawn_random(500, 11, 30.0, 1.3).unwrap();
+    let whole = crowd(500, 11, 30.0);
     let mut kept = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
     kept.spawn_random_kept(500, 11, 30.0, 1.3, 200..350)
         .unwrap();
@@ -114,8 +130,7 @@ fn facing_agents_stay_in_one_slice_and_step_as_in_one_world() {
 fn a_long_link_moves_the_cut() {
     let t = table();
     // Agent 1 faces agent 7 of ten: no cut between 2 and 7.
-    let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
-    w.spawn_random(10, 3, 20.0, 1.3).unwrap();
+    let mut w = crowd(10, 3, 20.0);
     let fig6 = preset(include_str!("../scenarios/p000_fig6_face_to_face.json"));
     let mut g = fig6.agents[0].goals.clone();
     if let steering::world::GoalMotion::FaceAgent { agent, .. } = &mut g[0].motion {
@@ -144,13 +159,7 @@ fn a_long_link_moves_the_cut() {
 
 #[test]
 fn avoidance_keeps_the_world_whole() {
-    let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
-    w.spawn_random(100, 1, 20.0, 1.3).unwrap();
-    let cfg = AvoidanceConfig {
-        method: AvoidanceMethod::Orca,
-        ..Default::default()
-    };
-    w.set_avoidance(cfg, Vec::new()).unwrap();
+    let mut w = with_orca(crowd(100, 1, 20.0));
     assert_eq!(w.split_ranges(4), vec![0..100]);
     let before = w.clone();
     assert_eq!(w.retain_range(0..50), Err(SplitError::Coupled));
@@ -170,20 +179,10 @@ fn avoidance_keeps_the_world_whole() {
 #[test]
 fn stepping_and_writing_in_one_pass_equals_a_step_then_the_state() {
     let t = table();
-    let mut crowd = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
-    crowd.spawn_random(400, 5, 25.0, 1.3).unwrap();
+    let random = crowd(400, 5, 25.0);
     let fig6 = preset(include_str!("../scenarios/p000_fig6_face_to_face.json"));
-    let mut avoiding = crowd.clone();
-    avoiding
-        .set_avoidance(
-            AvoidanceConfig {
-                method: AvoidanceMethod::Orca,
-                ..AvoidanceConfig::default()
-            },
-            Vec::new(),
-        )
-        .unwrap();
-    for w in [crowd, fig6, avoiding] {
+    let avoiding = with_orca(random.clone());
+    for w in [random, fig6, avoiding] {
         let (mut a, mut b) = (w.clone(), w);
         let mut buf = Vec::new();
         for _ in 0..150 {

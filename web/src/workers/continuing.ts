@@ -92,10 +92,13 @@ export interface ContinuingWork {
   /** The buffer the job steps from first (the state drawn when it started). */
   front: number;
   /** This worker's share of step `s` (1 for the job's first) from buffer
-   *  `src` into `dst`; runs before the barrier. */
+   *  `src` into `dst`; runs before the barrier (the independent protocol:
+   *  `src` is −1, each worker steps from its own memory). */
   step(src: number, dst: number, s: number): void;
-  /** Worker 0, every worker's step `s` done: fills the step's slot (`ms`:
-   *  its wall time since the last decision) before it is published. */
+  /** Every worker's step `s` done, before it is published: fills the
+   *  step's slot. The barrier's: worker 0, `ms` its wall time since the
+   *  last decision; the independent: the last worker to finish, `ms` its
+   *  own stepping time. */
   note(s: number, dst: number, ms: number): void;
   /** Worker 0, after the wait, before the next step's decision (the
    *  crowd's strips rebalance here). */

@@ -16,14 +16,14 @@
 // - The page never waits for a worker: a frame with no new complete state
 //   draws the last one again.
 // - Shared memory where the page is cross-origin isolated (COOP/COEP, see
-//   vite.config.ts): five SharedArrayBuffers each worker writes its slice
-//   into, and steps run as continuing jobs (continuing.ts, as the crowd's):
-//   the workers step on while the page asks, each at its own pace, without
-//   the crowd's barrier (`runIndependent`: slices never read each other),
-//   the last to finish a step publishing it; the worker owning the shown
-//   agent leaves its internals in
-//   the step's note (slicebuffers.ts), and the page draws every state in
-//   order, up to DEPTH states behind the newest. A host that cannot keep
+//   vite.config.ts): STATES SharedArrayBuffers (continuing.ts: eight) each
+//   worker writes its slice into, and steps run as continuing jobs
+//   (continuing.ts, as the crowd's): the workers step on while the page
+//   asks, each at its own pace, without the crowd's barrier
+//   (`runIndependent`: slices never read each other), the last to finish a
+//   step publishing it; the worker owning the shown agent leaves its
+//   internals in the step's note (slicebuffers.ts), and the page draws
+//   every state in order, up to DEPTH states behind the newest. A host that cannot keep
 //   up runs the world slower than real time instead of stepping states it
 //   never draws.
 //   Edits and a newly shown agent end the job in flight; the next one
