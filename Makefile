@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol
+	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget
 
 setup: setup-rust setup-browser setup-web
 
@@ -127,6 +127,12 @@ test-e2e-perf: setup-browser web-build
 BENCH_WEB_ARGS ?=
 bench-web: setup-browser web-build bench-wasm-native
 	node web/test/perf.mjs 1000,10000 $(BENCH_WEB_ARGS)
+
+# Issue 17: CPU per drawn state per thread group (the workers, the page's
+# thread, the rest; Linux /proc) on the lab at 100,000 agents and the crowd
+# at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need.
+bench-budget: setup-browser web-build
+	node web/test/budget.mjs
 
 # Issue 14: η table build in Chromium's Web Workers and the cached reload,
 # per reference vehicle, REPS fresh contexts each (median, max, host load).
