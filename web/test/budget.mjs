@@ -92,7 +92,8 @@ function sample(root) {
   return out;
 }
 
-const { server, url } = await serve();
+// DIST: another build's dist (e.g. a baseline built into /tmp).
+const { server, url } = await serve(process.env.DIST);
 const browser = await launch();
 // Playwright starts the browser as this process's child: its processes are
 // our descendants whose command line names Chromium.
@@ -130,6 +131,10 @@ async function measure(what, n) {
     const pct = { workers: 0, page: 0, other: 0 };
     for (const [id, v] of b) pct[v.group] += ((v.ticks - (a.get(id)?.ticks ?? 0)) * TICK_MS) / (10 * secs);
     const busy = pct.workers + pct.page + pct.other;
+    // The groups come from thread names: fail loudly if they stop matching.
+    if (info?.workers > 0 && !(pct.workers > 1)) throw new Error(`${what} n=${n}: ${info.workers} workers, but no CPU in threads named DedicatedWorker (/proc)`);
+    if (!(pct.page > 1)) throw new Error(`${what} n=${n}: no CPU in the renderer's main thread (/proc)`);
+    if (!(states > 0)) throw new Error(`${what} n=${n}: no state drawn in ${SAMPLE_MS} ms`);
     const per = (p) => (p * 10) / states; // ms of CPU per drawn state
     const need = (TARGET * 60) / n; // states a second for 100,000 per frame
     const row = { what, n, states, perFrame: (states * n) / 60, pct, busy, ms: per(busy), need, needPct: (busy / states) * need, cores, mode: info?.mode, workers: info?.workers };
