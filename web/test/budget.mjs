@@ -4,8 +4,8 @@
 // The frame counts of `perf.mjs` say how far a page is from the target;
 // they do not say why. This samples every thread of the browser it launched
 // (Linux /proc: user + system ticks per thread, over SAMPLE_MS) while a page
-// steps in `hardwareConcurrency` workers, and divides by the states drawn
-// meanwhile:
+// steps in WORKERS workers (default one per core), and divides by the states
+// drawn meanwhile (DIST: serve another build's dist instead of web/dist):
 // - per drawn state, the CPU ms of the stepping workers, of the page's
 //   thread (drawing, Chromium's frame), and of every other thread (the
 //   compositor, the GPU process's display compositor, I/O);
@@ -34,7 +34,6 @@ const list = (v, d) => (v ?? d).split(",").filter(Boolean).map(Number);
 const labSizes = list(process.env.LAB_SIZES, "100000");
 const crowdSizes = list(process.env.CROWD_SIZES, "150000,200000");
 const rounds = Number(process.env.ROUNDS ?? 2);
-// Workers per page (`?workers=`): WORKERS, else one per core.
 const workers = Number(process.env.WORKERS ?? cpus().length);
 const TICK_MS = 1000 / 100; // USER_HZ: Linux reports ticks of 10 ms
 
@@ -92,7 +91,6 @@ function sample(root) {
   return out;
 }
 
-// DIST: another build's dist (e.g. a baseline built into /tmp).
 const { server, url } = await serve(process.env.DIST);
 const browser = await launch();
 // Playwright starts the browser as this process's child: its processes are
