@@ -22,7 +22,7 @@
 // Usage: node web/test/budget.mjs  (after `make web-build`; `make bench-budget`)
 import { existsSync, readdirSync, readFileSync } from "node:fs";
 import { cpus } from "node:os";
-import { serve, launch, openPage, waitReady } from "./harness.mjs";
+import { serve, launch, openPage, waitReady, loadCrowd } from "./harness.mjs";
 
 if (!existsSync("/proc/self/task")) {
   console.error("budget.mjs: needs Linux's /proc (per-thread CPU time)");
@@ -109,9 +109,7 @@ async function measure(what, n) {
       const err = await waitReady(page, 120000);
       if (err) throw new Error(err);
     } else {
-      await page.goto(`${base}crowd.html?workers=${workers}`);
-      await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 60000 });
-      await page.evaluate((k) => window.__crowd.loadScaled(k), n);
+      await loadCrowd(page, base, workers, n);
     }
     cores = await page.evaluate(() => navigator.hardwareConcurrency);
     await page.waitForFunction((h) => !window[h].workers()?.starting, hook, { timeout: 120000 });
@@ -167,7 +165,9 @@ try {
       const need = med(rs.map((x) => x.needPct));
       console.log(
         `budget ${what} n=${n}: ${Math.round(med(rs.map((x) => x.perFrame)))} per frame, ${med(rs.map((x) => x.ms)).toFixed(2)} CPU ms per drawn state, busy ${med(rs.map((x) => x.busy)).toFixed(0)} % of ${cap}; ` +
-          `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(0)} % of ${cap}: ${need > cap ? "more than the machine has (cheaper states needed)" : "within the machine (the idle time is the lever)"}`,
+          (n < TARGET
+            ? `below ${TARGET.toLocaleString("en")} the world (at most a state per 60 Hz frame) cannot give ${TARGET.toLocaleString("en")} per frame`
+            : `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(0)} % of ${cap}: ${need > cap ? "more than the machine has (cheaper states needed)" : "within the machine (the idle time is the lever)"}`),
       );
     }
   }

@@ -80,6 +80,16 @@ export async function waitReady(page, timeout = 20000) {
   return page.evaluate(() => window.__lab.error);
 }
 
+/** The crowd page at `at` (a served dist's URL) in `workers` workers
+ *  (`?workers=`), loaded with `n` boids at Test IV density, its workers
+ *  started (perf.mjs, budget.mjs). */
+export async function loadCrowd(page, at, workers, n) {
+  await page.goto(`${at.replace(/\/?$/, "/")}crowd.html?workers=${workers}`);
+  await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 60000 });
+  await page.evaluate((k) => window.__crowd.loadScaled(k), n);
+  await page.waitForFunction(() => !window.__crowd.workers().starting, null, { timeout: 120000 });
+}
+
 /** Resolves after the page has run two animation frames: whatever an input
  *  changed has then been drawn, however slow the host (a fixed sleep is not
  *  enough on a loaded CI machine). */

@@ -6,7 +6,7 @@
 // mean and p95 work per frame (core step + drawing) and core step time.
 // Issue 18: the largest N again with each avoidance method of AVOID
 // (default separation,orca; the second argument), beside the same run's avoidance-off figures.
-import { serve, serveChild, launch, openPage, waitReady, artifacts } from "./harness.mjs";
+import { serve, serveChild, launch, openPage, waitReady, artifacts, loadCrowd } from "./harness.mjs";
 import { resolve } from "node:path";
 import { loadavg } from "node:os";
 
@@ -219,11 +219,8 @@ try {
       for (let b = 0; b < builds.length; b++) {
         const [build, at] = builds[(b + round) % builds.length];
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
-        await page.goto(`${at.replace(/\/?$/, "/")}crowd.html?workers=${w === "N" ? cores || 2 : w}`);
-        await page.waitForFunction(() => window.__crowd && (window.__crowd.error !== null || window.__crowd.frames > 2), null, { timeout: 60000 });
+        await loadCrowd(page, at, w === "N" ? cores || 2 : w, n);
         cores = await page.evaluate(() => navigator.hardwareConcurrency);
-        await page.evaluate((n) => window.__crowd.loadScaled(n), n);
-        await page.waitForFunction(() => !window.__crowd.workers().starting, null, { timeout: 120000 });
         await page.waitForTimeout(700);
         await page.evaluate(() => window.__crowd.perfReset());
         await page.waitForTimeout(3000);
