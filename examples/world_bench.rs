@@ -39,6 +39,9 @@ fn main() {
     // As the page computes it (f64, then f32 at the binding).
     let extent = 10f64.max((n as f64).sqrt() * 1.5) as f32;
     w.spawn_random(n, 1, extent, 1.3).expect("room");
+    // As the lab's page: it never reads the agents' path metrics
+    // (`METRICS=1` keeps them, for a same-run comparison).
+    w.set_metrics(std::env::var_os("METRICS").is_some());
     for _ in 0..steps {
         w.step(&table);
     }

@@ -196,3 +196,23 @@ fn stepping_and_writing_in_one_pass_equals_a_step_then_the_state() {
         assert_eq!(a, b);
     }
 }
+
+/// The lab's worlds keep no path metrics (`World::set_metrics(false)`, the
+/// lab binding's `lab_world`): the states stay the same bits as with them,
+/// plain and avoiding, and the metrics stay empty.
+#[test]
+fn a_world_without_metrics_steps_to_the_same_bits() {
+    let t = table();
+    for w in [crowd(400, 5, 25.0), with_orca(crowd(200, 9, 20.0))] {
+        let (mut on, mut off) = (w.clone(), w);
+        off.set_metrics(false);
+        assert!(on.metrics_on() && !off.metrics_on());
+        for step in 0..200 {
+            on.step(&t);
+            off.step(&t);
+            assert_eq!(states(&on), states(&off), "step {step}");
+        }
+        assert!(on.agents.iter().all(|a| a.metrics.steps == 200));
+        assert!(off.agents.iter().all(|a| a.metrics == Default::default()));
+    }
+}

@@ -80,6 +80,7 @@ impl World {
             &self.preferred,
         );
         // 3. Every agent steps with its command; goals switch as usual.
+        let metrics_on = self.metrics_on;
         for (a, c) in self.agents.iter_mut().zip(&self.avoider.commands) {
             let prev = a.state;
             if c.active && c.walls {
@@ -94,7 +95,9 @@ impl World {
             } else {
                 a.internals.gamma = a.state.theta;
             }
-            a.metrics.add(&p, &prev, &a.state);
+            if metrics_on {
+                a.metrics.add(&p, &prev, &a.state);
+            }
         }
         self.time += p.dt;
     }

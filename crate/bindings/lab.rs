@@ -28,7 +28,7 @@ use crate::scenario::Scenario;
 use crate::seek::ReachLimits;
 use crate::table::generate::TableSpec;
 use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::world::{provisional_plan, World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
@@ -192,7 +192,7 @@ impl Lab {
     pub fn new(table: &[u8]) -> Result<Lab, JsError> {
         let table = EtaTable::from_bytes(table).map_err(|e| js_err("η table", e))?;
         let params = table.params().vehicle;
-        let world = World::new(params, FunnelConfig::default())
+        let world = lab_world(params, FunnelConfig::default())
             .map_err(|e| js_err("η table parameters", e))?;
         Ok(Lab {
             expected: Self::expected_of(&table),
@@ -215,7 +215,7 @@ impl Lab {
     /// (`tests/web_bindings.rs`).
     #[wasm_bindgen(js_name = withoutTable)]
     pub fn without_table() -> Result<Lab, JsError> {
-        let world = World::new(VehicleParams::default(), FunnelConfig::default())
+        let world = lab_world(VehicleParams::default(), FunnelConfig::default())
             .map_err(|e| js_err("vehicle parameters", e))?;
         Ok(Lab {
             table: None,
@@ -240,7 +240,7 @@ impl Lab {
             .table
             .as_ref()
             .map_or_else(VehicleParams::default, |t| t.params().vehicle);
-        let world = World::new(params, FunnelConfig::default())
+        let world = lab_world(params, FunnelConfig::default())
             .map_err(|e| js_err("η table parameters", e))?;
         Ok(Lab {
             table: self.table.clone(),
@@ -413,6 +413,15 @@ impl Lab {
     }
 }
 
+/// The lab's world: as `World::new`, without the agents' path metrics,
+/// which no binding reads (issue 17: about a twentieth of an update; the
+/// states are the same bits, `World::set_metrics`).
+fn lab_world(params: VehicleParams, config: FunnelConfig) -> Result<World, ParamError> {
+    let mut world = World::new(params, config)?;
+    world.set_metrics(false);
+    Ok(world)
+}
+
 /// Steps a single call may ask for (a frame needs a handful).
 const MAX_STEPS_PER_CALL: u32 = 10_000;
 #[wasm_bindgen]
@@ -420,7 +429,7 @@ impl Lab {
     /// Removes every agent and restarts the clock.
     pub fn clear(&mut self) -> Result<(), JsError> {
         self.world =
-            World::new(self.world.params, self.world.config).map_err(|e| js_err("world", e))?;
+            lab_world(self.world.params, self.world.config).map_err(|e| js_err("world", e))?;
         Ok(())
     }
 
@@ -771,6 +780,7 @@ impl Lab {
     pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;
         let mut world = sc.world().map_err(|e| js_err("scenario", e))?;
+        world.set_metrics(false);
         if let Some(t) = &self.table {
             world.plan(t);
         }

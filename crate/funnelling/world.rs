@@ -119,6 +119,9 @@ pub struct World {
     pub(crate) preferred: Vec<(f32, f32)>,
     /// The avoidance's buffers and this step's commands.
     pub avoider: Avoider,
+    /// Whether a step adds to every agent's [`Agent::metrics`] (on unless
+    /// set with [`World::set_metrics`]).
+    pub(crate) metrics_on: bool,
 }
 
 impl World {
@@ -142,7 +145,26 @@ impl World {
             facing: 0,
             preferred: Vec::new(),
             avoider: Avoider::default(),
+            metrics_on: true,
         })
+    }
+
+    /// Keeps (`true`, the default) or stops keeping every agent's path
+    /// metrics ([`Agent::metrics`]: length, curvature, limit checks), which
+    /// only studies, the command line and tests read.
+    ///
+    /// Issue 17: the lab's page never reads them, and adding them was about
+    /// a twentieth of its update (a square root, an angle difference and the
+    /// limit checks per agent per step). The states are the same bits
+    /// either way: nothing in a step reads the metrics.
+    pub fn set_metrics(&mut self, on: bool) {
+        self.metrics_on = on;
+    }
+
+    /// Whether steps keep the agents' path metrics ([`World::set_metrics`]).
+    #[must_use]
+    pub fn metrics_on(&self) -> bool {
+        self.metrics_on
     }
 
     /// Chooses the controller (paper 001: standard or relaxed funnelling).
@@ -280,6 +302,7 @@ impl World {
             }
             return;
         }
+        let metrics_on = self.metrics_on;
         let (planner, agents) = self.planning(table);
         let (p, t) = (*planner.p, planner.t);
         for (i, a) in agents.iter_mut().enumerate() {
@@ -295,7 +318,9 @@ impl World {
                 seek_step_committed(&p, &mut a.state, a.internals.gamma, a.internals.v_dt);
                 advance_queue(a, &spec, t);
             }
-            a.metrics.add(&p, &prev, &a.state);
+            if metrics_on {
+                a.metrics.add(&p, &prev, &a.state);
+            }
             after(i, a);
         }
         self.time += p.dt;

@@ -57,6 +57,8 @@ interface Layer {
  *  `present` (one putImageData, one drawImage). One per canvas. */
 export class PixelSprites {
   private layer: Layer | null = null;
+  /** {@link PixelSprites.noses}' last table, its nose length and width. */
+  private noseTable = { nose: NaN, w: -1, at: new Int32Array(2 * HEADINGS) };
 
   /** Clears the layer, sized to `s`'s backing store; false when the browser gives no 2D context. */
   begin(s: Surface): boolean {
@@ -118,6 +120,59 @@ export class PixelSprites {
     const ny = (sy + uy * nose + 0.5) | 0;
     px[ny * W + nx] = colour;
     px[(((sy + ny) / 2 + 0.5) | 0) * W + (((sx + nx) / 2 + 0.5) | 0)] = colour;
+  }
+
+  /** Per table heading (indexed as [`HEADING_UNITS`], by [`headingAt`]):
+   *  the offsets from a sprite's centre pixel, in this layer's rows, of the
+   *  two nose pixels `stamp` writes for that heading and `nose`: the tip,
+   *  then the midpoint. Issue 17: the nose's float arithmetic per agent
+   *  was about a third of stamping 100,000 funnelling agents (Node, the
+   *  lab's loop: 2.5–3.9 → 1.6–3.0 ms a frame, the same pixels); a sprite
+   *  at integer (sx, sy) has its tip at sx + ⌊ux·nose + ½⌋ (likewise y),
+   *  the midpoint at sx + ⌊(dx + 1) / 2⌋. Kept until the width or `nose`
+   *  changes. Call after `begin`. */
+  noses(nose: number): Int32Array {
+    const t = this.noseTable;
+    const w = this.layer?.w ?? 0;
+    if (t.nose !== nose || t.w !== w) {
+      for (let j = 0; j < 2 * HEADINGS; j += 2) {
+        const dx = Math.floor(HEADING_UNITS[j]! * nose + 0.5);
+        const dy = Math.floor(HEADING_UNITS[j + 1]! * nose + 0.5);
+        t.at[j] = dy * w + dx;
+        t.at[j + 1] = Math.floor((dy + 1) / 2) * w + Math.floor((dx + 1) / 2);
+      }
+      t.nose = nose;
+      t.w = w;
+    }
+    return t.at;
+  }
+
+  /** `stamp` with the nose given as the two pixel offsets of [`noses`]
+   *  (`tip`, `mid`): the same pixels, no float arithmetic. */
+  stampNosed(sx: number, sy: number, r: number, colour: number, tip: number, mid: number): void {
+    const l = this.layer;
+    if (!l) return;
+    const px = l.px;
+    const W = l.w;
+    const o = sy * W + sx;
+    if (r === 1) {
+      px[o - W - 1] = colour;
+      px[o - W] = colour;
+      px[o - W + 1] = colour;
+      px[o - 1] = colour;
+      px[o] = colour;
+      px[o + 1] = colour;
+      px[o + W - 1] = colour;
+      px[o + W] = colour;
+      px[o + W + 1] = colour;
+    } else {
+      for (let dy = -r; dy <= r; dy++) {
+        const row = o + dy * W;
+        for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
+      }
+    }
+    px[o + tip] = colour;
+    px[o + mid] = colour;
   }
 
   /** Puts the layer on `s` (CSS-pixel transform in force). */

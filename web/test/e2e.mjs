@@ -87,6 +87,40 @@ try {
     assert.ok(st.vehicle);
   });
 
+  await check("the HUD: running numbers rewritten at most 15 times a second (issue 17), a pause at once, a step within 1/15 s", async () => {
+    await page.evaluate(() => window.__lab.setPaused(false));
+    const seen = await page.evaluate(
+      () =>
+        new Promise((done) => {
+          const el = document.getElementById("hud");
+          let writes = 0;
+          let frames = 0;
+          const mo = new MutationObserver((m) => (writes += m.length));
+          mo.observe(el, { childList: true, characterData: true, subtree: true });
+          const t0 = performance.now();
+          const tick = () => {
+            frames++;
+            if (performance.now() - t0 < 1000) requestAnimationFrame(tick);
+            else (mo.disconnect(), done({ writes, frames }));
+          };
+          requestAnimationFrame(tick);
+        }),
+    );
+    assert.ok(seen.writes >= 4 && seen.writes <= 16, `HUD writes in 1 s: ${JSON.stringify(seen)}`);
+    await page.evaluate(() => window.__lab.setPaused(true));
+    await settle(page);
+    assert.match(await page.locator("#hud").textContent(), /paused/);
+    const t = (text) => Number(/t (\d+\.\d+) s/.exec(text)[1]);
+    const before = t(await page.locator("#hud").textContent());
+    await page.locator("#lab").click({ position: { x: 5, y: 5 } });
+    await page.keyboard.press("s");
+    await page.waitForFunction((b) => Number(/t (\d+\.\d+) s/.exec(document.getElementById("hud").textContent)[1]) > b, before, { timeout: 1000 });
+    assert.ok(t(await page.locator("#hud").textContent()) > before);
+    // As the keyboard check left it: paused, reset.
+    await page.keyboard.press("r");
+    await settle(page);
+  });
+
   await check("dragging the target onto the vehicle turns it blue (Orientation_only), out again red", async () => {
     await page.evaluate(() => window.__lab.setPaused(true));
     let h = await page.evaluate(() => window.__lab.handles());

@@ -28,10 +28,14 @@ function deg(a: number): string {
   return Number.isFinite(a) ? `${(a * DEG).toFixed(1).padStart(7)}°` : "      —";
 }
 
-export function renderHud(el: HTMLElement, h: HudData): void {
+/** The HUD's text, and its settled part: everything but the numbers that
+ *  change while the world runs (mode, table, stepping, agents, pause). */
+function hudText(h: HudData): { text: string; key: string } {
   const mode = h.mode === null ? "—" : (MODE_NAMES[h.mode] ?? `mode ${h.mode}`);
+  const reach = h.reachable ? "" : " (unreachable: v_dt)";
+  const flags = `${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`;
   const lines = [
-    `mode   ${mode}${h.reachable ? "" : " (unreachable: v_dt)"}`,
+    `mode   ${mode}${reach}`,
     `D      ${Number.isFinite(h.d) ? h.d.toFixed(3).padStart(7) : "      —"} m`,
     `α      ${deg(h.alpha)}`,
     `η      ${deg(h.eta)}`,
@@ -43,7 +47,56 @@ export function renderHud(el: HTMLElement, h: HudData): void {
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,
     `table  ${h.table}`,
     ...(h.stepping ? [`step   ${h.stepping}`] : []),
-    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`,
+    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${flags}`,
   ];
-  el.textContent = lines.join("\n");
+  return { text: lines.join("\n"), key: [mode, reach, h.table, h.stepping ?? "", h.agents, flags].join("\u0000") };
+}
+
+/** Writes the HUD once (the first frame's HUD, before the loop runs). */
+export function renderHud(el: HTMLElement, h: HudData): void {
+  el.textContent = hudText(h).text;
+}
+
+/** At most this often, ms, the HUD's running numbers are rewritten. */
+export const HUD_MS = 1000 / 15;
+
+/** The loop's HUD. Issue 17: rewriting its text costs the page a layout,
+ *  a paint and a raster of its box, about 1.1 ms of the page's thread per
+ *  frame and 0.3 ms of the compositor's at 100,000 agents (`make
+ *  bench-budget`, same run: 5.80–6.24 against 4.85–4.94 ms per drawn state
+ *  without it), where the stepping workers need every core. Numbers that
+ *  change 60 times a second cannot be read anyway, so while only they
+ *  change the text is rewritten at most every {@link HUD_MS} (15 Hz); any
+ *  change of its settled part (mode, table, stepping, agents, pause) shows
+ *  at once, a held-back text shows once due even if no frame is drawn, and
+ *  an unchanged text is not written at all. */
+export class Hud {
+  private shown = "";
+  private key = "";
+  private at = -Infinity;
+  private pending: string | null = null;
+
+  constructor(private readonly el: HTMLElement) {}
+
+  /** The HUD of the frame drawn at `now` (ms). */
+  show(h: HudData, now: number): void {
+    const { text, key } = hudText(h);
+    if (key !== this.key || now - this.at >= HUD_MS) this.write(text, key, now);
+    else this.pending = text;
+  }
+
+  /** A frame at `now`: writes the held-back text once it is due. */
+  flush(now: number): void {
+    if (this.pending !== null && now - this.at >= HUD_MS) this.write(this.pending, this.key, now);
+  }
+
+  private write(text: string, key: string, now: number): void {
+    this.pending = null;
+    this.key = key;
+    this.at = now;
+    if (text !== this.shown) {
+      this.el.textContent = text;
+      this.shown = text;
+    }
+  }
 }

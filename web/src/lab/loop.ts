@@ -5,7 +5,7 @@
 import { beginFrame, type Surface } from "../canvas";
 import type { View } from "../view";
 import type { LabHook, Perf } from "./hook";
-import { renderHud } from "./hud";
+import { Hud } from "./hud";
 import { COLOURS, drawScene } from "./render";
 import type { SceneBuilder } from "./scene";
 import type { LabSim } from "./sim";
@@ -14,6 +14,7 @@ import type { LabSim } from "./sim";
 export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, view: View, hudEl: HTMLElement, hook: LabHook, perf: Perf, since: number): void {
   let lastFrame = since;
   let frameMsEma = 0;
+  const hud = new Hud(hudEl);
   const frame = (now: number): void => {
     const interval = now - lastFrame;
     lastFrame = now;
@@ -30,12 +31,13 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
       const d0 = performance.now();
       drawScene(surface, view, scene);
       drawMs = performance.now() - d0;
-      renderHud(hudEl, scenes.hud(inter, frameMsEma));
+      hud.show(scenes.hud(inter, frameMsEma), now);
       sim.dirty = false;
       hook.frames++;
       if (hook.frames === 1) performance.mark("lab:loop");
       if (Number.isNaN(hook.firstFrameMs) && sim.count > 0) hook.firstFrameMs = performance.now();
     }
+    hud.flush(now);
     const work = performance.now() - t0;
     frameMsEma = frameMsEma === 0 ? work : 0.95 * frameMsEma + 0.05 * work;
     perf.frame(interval, work, stepped.ms, drawMs);

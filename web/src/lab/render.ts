@@ -4,7 +4,7 @@
 
 import type { Surface } from "../canvas";
 import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
-import { abgr, headingAt, HEADING_UNITS, PixelSprites, triangle } from "../sprites";
+import { abgr, headingAt, PixelSprites, triangle } from "../sprites";
 import type { View } from "../view";
 import { FIELD_STRIDE, Mode, StateField } from "../wasm";
 import { drawObstacles } from "./obstacles";
@@ -299,7 +299,7 @@ function drawCrowd(s: Surface, v: View, sc: Scene): void {
   const r = Math.max(1, Math.round(k));
   const nose = 3 * k;
   const { X, Y, Theta } = StateField;
-  const unit = HEADING_UNITS;
+  const noses = sprites.noses(nose);
   // Rounded by `+ 0.5 | 0`: `Math.round` for every pixel kept (the rest,
   // negative ones included, are left out by the bounds test).
   for (let i = 0; i < sc.count; i++) {
@@ -309,7 +309,7 @@ function drawCrowd(s: Surface, v: View, sc: Scene): void {
     if (sx < r + 4 * k || sy < r + 4 * k || sx >= W - r - 4 * k || sy >= H - r - 4 * k) continue;
     const c = colour[sc.state[o + StateField.Mode]! | 0] ?? colour[3]!;
     const j = headingAt(sc.state[o + Theta]!);
-    sprites.stamp(sx, sy, r, c, unit[j]!, unit[j + 1]!, nose);
+    sprites.stampNosed(sx, sy, r, c, noses[j]!, noses[j + 1]!);
   }
   sprites.present(s);
 }

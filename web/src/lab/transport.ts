@@ -27,6 +27,8 @@ export function buildTransport(sim: LabSim): Transport {
 
   const setPaused = (p: boolean): void => {
     sim.paused = p;
+    // A frame for the HUD's "paused" (a paused world draws only edits).
+    sim.dirty = true;
     playBtn.textContent = p ? "▶ Play" : "Pause";
     playBtn.setAttribute("aria-pressed", String(p));
   };
