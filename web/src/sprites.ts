@@ -53,6 +53,31 @@ interface Layer {
   w: number;
 }
 
+/** The (2r+1)² block of `colour` centred on pixel offset `o` of `px`, a
+ *  layer `W` pixels wide. Issue 17 (the crowd's 150,000 boids stamped up
+ *  to 40 times a second on the page's thread, beside two stepping
+ *  workers): the usual 3 × 3 block written out, and the caller's rounding
+ *  by `+ 0.5 | 0` (every pixel kept at a positive index): 3.7 → 2.2 ms per
+ *  150,000 stamps in Node, the same pixels. */
+function block(px: Uint32Array, W: number, o: number, r: number, colour: number): void {
+  if (r === 1) {
+    px[o - W - 1] = colour;
+    px[o - W] = colour;
+    px[o - W + 1] = colour;
+    px[o - 1] = colour;
+    px[o] = colour;
+    px[o + 1] = colour;
+    px[o + W - 1] = colour;
+    px[o + W] = colour;
+    px[o + W + 1] = colour;
+  } else {
+    for (let dy = -r; dy <= r; dy++) {
+      const row = o + dy * W;
+      for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
+    }
+  }
+}
+
 /** An offscreen layer of backing-store pixels: `begin`, `stamp` each agent,
  *  `present` (one putImageData, one drawImage). One per canvas. */
 export class PixelSprites {
@@ -93,28 +118,7 @@ export class PixelSprites {
     if (!l) return;
     const px = l.px;
     const W = l.w;
-    // Issue 17 (the crowd's 150,000 boids stamped up to 40 times a
-    // second on the page's thread, beside two stepping workers): the
-    // usual 3 × 3 block written out, and rounding by `+ 0.5 | 0` (the
-    // caller keeps every pixel at a positive index): 3.7 → 2.2 ms per
-    // 150,000 stamps in Node, the same pixels.
-    if (r === 1) {
-      const o = sy * W + sx;
-      px[o - W - 1] = colour;
-      px[o - W] = colour;
-      px[o - W + 1] = colour;
-      px[o - 1] = colour;
-      px[o] = colour;
-      px[o + 1] = colour;
-      px[o + W - 1] = colour;
-      px[o + W] = colour;
-      px[o + W + 1] = colour;
-    } else {
-      for (let dy = -r; dy <= r; dy++) {
-        const row = (sy + dy) * W + sx;
-        for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
-      }
-    }
+    block(px, W, sy * W + sx, r, colour);
     if (ux === 0 && uy === 0) return;
     const nx = (sx + ux * nose + 0.5) | 0;
     const ny = (sy + uy * nose + 0.5) | 0;
@@ -127,10 +131,13 @@ export class PixelSprites {
    *  two nose pixels `stamp` writes for that heading and `nose`: the tip,
    *  then the midpoint. Issue 17: the nose's float arithmetic per agent
    *  was about a third of stamping 100,000 funnelling agents (Node, the
-   *  lab's loop: 2.5–3.9 → 1.6–3.0 ms a frame, the same pixels); a sprite
-   *  at integer (sx, sy) has its tip at sx + ⌊ux·nose + ½⌋ (likewise y),
-   *  the midpoint at sx + ⌊(dx + 1) / 2⌋. Kept until the width or `nose`
-   *  changes. Call after `begin`. */
+   *  lab's loop: 2.5–3.9 → 1.6–3.0 ms a frame, the same pixels for a
+   *  random 100,000); a sprite at integer (sx, sy) has its tip at
+   *  sx + ⌊ux·nose + ½⌋ (likewise y), the midpoint at sx + ⌊(dx + 1) / 2⌋.
+   *  `stamp` rounds sx + ux·nose + ½ as one sum, which can round the other
+   *  way within an ulp of an integer: 54 of 12 million (heading, nose,
+   *  position) cases checked, a nose pixel one over. Kept until the width
+   *  or `nose` changes. Call after `begin`. */
   noses(nose: number): Int32Array {
     const t = this.noseTable;
     const w = this.layer?.w ?? 0;
@@ -155,22 +162,7 @@ export class PixelSprites {
     const px = l.px;
     const W = l.w;
     const o = sy * W + sx;
-    if (r === 1) {
-      px[o - W - 1] = colour;
-      px[o - W] = colour;
-      px[o - W + 1] = colour;
-      px[o - 1] = colour;
-      px[o] = colour;
-      px[o + 1] = colour;
-      px[o + W - 1] = colour;
-      px[o + W] = colour;
-      px[o + W + 1] = colour;
-    } else {
-      for (let dy = -r; dy <= r; dy++) {
-        const row = o + dy * W;
-        for (let dx = -r; dx <= r; dx++) px[row + dx] = colour;
-      }
-    }
+    block(px, W, o, r, colour);
     px[o + tip] = colour;
     px[o + mid] = colour;
   }
