@@ -35,7 +35,8 @@ pub struct Agent {
     pub relaxed: RelaxedInternals,
     /// The current goal as it was last evaluated (moving goals move).
     pub goal_now: Goal,
-    /// Path metrics since the start.
+    /// Path metrics since the start (left empty while the world keeps
+    /// none, [`World::set_metrics`]).
     pub metrics: PathMetrics,
     /// Time at which the last goal was completed, s.
     pub finished_at: Option<f32>,
