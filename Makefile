@@ -130,9 +130,10 @@ bench-web: setup-browser web-build bench-wasm-native
 
 # Issue 17: CPU per drawn state per thread group (the workers, the page's
 # thread, the rest; Linux /proc) on the lab at 100,000 agents and the crowd
-# at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need.
+# at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need
+# (BENCH_BUDGET_ARGS="--base DIR": against another build's dist, same run).
 bench-budget: setup-browser web-build
-	node web/test/budget.mjs
+	node web/test/budget.mjs $(BENCH_BUDGET_ARGS)
 
 # Issue 14: η table build in Chromium's Web Workers and the cached reload,
 # per reference vehicle, REPS fresh contexts each (median, max, host load).

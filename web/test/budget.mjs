@@ -19,7 +19,11 @@
 // The lab at LAB_SIZES agents (default 100,000, the page's maximum: 60 states
 // a second), the crowd at CROWD_SIZES boids (Test IV density; 150,000: 40 a
 // second), ROUNDS rounds each (default 2), one line per round.
-// Usage: node web/test/budget.mjs  (after `make web-build`; `make bench-budget`)
+// `--base DIR` (repeatable): a previous build's dist measured in the same
+// run, the builds in rotating order each round; the summary then gives each
+// build's medians and, per base, the paired ratios of this build's rounds to
+// the base's (agents per frame, CPU per drawn state, the page's thread).
+// Usage: node web/test/budget.mjs [--base DIR]...  (after `make web-build`; `make bench-budget`)
 import { existsSync, readdirSync, readFileSync } from "node:fs";
 import { cpus } from "node:os";
 import { serve, launch, openPage, waitReady, loadCrowd } from "./harness.mjs";
@@ -91,15 +95,26 @@ function sample(root) {
   return out;
 }
 
+const args = process.argv.slice(2);
+const baseDirs = [];
+for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) baseDirs.push(args.splice(at, 2)[1]);
+if (args.length) {
+  console.error(`budget.mjs: unknown argument(s) ${args.join(" ")} (usage: node web/test/budget.mjs [--base DIR]...)`);
+  process.exit(2);
+}
 const { server, url } = await serve(process.env.DIST);
+const bases = [];
+for (const d of baseDirs) bases.push({ dir: d, ...(await serve(d)) });
+/** [name, URL] of every build measured: this one, then the bases. */
+const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
 const browser = await launch();
 // Playwright starts the browser as this process's child: its processes are
 // our descendants whose command line names Chromium.
 const root = process.pid;
-const base = url.replace(/\/?$/, "/");
 const rows = [];
 
-async function measure(what, n) {
+async function measure(what, n, build, at, round) {
+  const base = at.replace(/\/?$/, "/");
   const { page, context, problems } = await openPage(browser, { width: 1280, height: 800 }, 1);
   const hook = what === "lab" ? "__lab" : "__crowd";
   let cores = 0;
@@ -133,10 +148,10 @@ async function measure(what, n) {
     if (!(states > 0)) throw new Error(`${what} n=${n}: no state drawn in ${SAMPLE_MS} ms`);
     const per = (p) => (p * 10) / states; // ms of CPU per drawn state
     const need = (TARGET * 60) / n; // states a second for 100,000 per frame
-    const row = { what, n, states, perFrame: (states * n) / 60, pct, busy, ms: per(busy), need, needPct: (busy / states) * need, cores, mode: info?.mode, workers: info?.workers };
+    const row = { build, round, what, n, states, perFrame: (states * n) / 60, pct, busy, ms: per(busy), need, needPct: (busy / states) * need, cores, mode: info?.mode, workers: info?.workers };
     rows.push(row);
     console.log(
-      `${what} n=${n} (${row.mode}, ${row.workers} workers, hardwareConcurrency ${cores}): ${states.toFixed(1)} states drawn/s = ${Math.round(row.perFrame)} per 16.7 ms frame; ` +
+      `${what}${builds.length > 1 ? ` [${build}]` : ""} n=${n} (${row.mode}, ${row.workers} workers, hardwareConcurrency ${cores}): ${states.toFixed(1)} states drawn/s = ${Math.round(row.perFrame)} per 16.7 ms frame; ` +
         `busy ${busy.toFixed(0)} % of ${100 * cores} (workers ${pct.workers.toFixed(0)}, page ${pct.page.toFixed(0)}, other ${pct.other.toFixed(0)}); ` +
         `CPU ms per drawn state: workers ${per(pct.workers).toFixed(2)}, page ${per(pct.page).toFixed(2)}, other ${per(pct.other).toFixed(2)}, all ${row.ms.toFixed(2)}; ` +
         `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(1)} states/s = ${row.needPct.toFixed(0)} % of ${100 * cores}`,
@@ -149,8 +164,10 @@ async function measure(what, n) {
 
 try {
   for (let r = 0; r < rounds; r++) {
-    for (const n of labSizes) await measure("lab", n);
-    for (const n of crowdSizes) await measure("crowd", n);
+    // Rotating order by round, so a drift in the host's speed favours no build.
+    const order = builds.map((_, k) => builds[(k + r) % builds.length]);
+    for (const n of labSizes) for (const [b, at] of order) await measure("lab", n, b, at, r);
+    for (const n of crowdSizes) for (const [b, at] of order) await measure("crowd", n, b, at, r);
   }
   const med = (xs) => {
     const a = [...xs].sort((x, y) => x - y);
@@ -159,20 +176,40 @@ try {
   console.log(`budget summary (medians of ${rounds} round(s); CPU as % of one core):`);
   for (const [what, sizes] of [["lab", labSizes], ["crowd", crowdSizes]]) {
     for (const n of sizes) {
-      const rs = rows.filter((x) => x.what === what && x.n === n);
-      if (!rs.length) continue;
-      const cap = 100 * rs[0].cores;
-      const need = med(rs.map((x) => x.needPct));
-      console.log(
-        `budget ${what} n=${n}: ${Math.round(med(rs.map((x) => x.perFrame)))} per frame, ${med(rs.map((x) => x.ms)).toFixed(2)} CPU ms per drawn state, busy ${med(rs.map((x) => x.busy)).toFixed(0)} % of ${cap}; ` +
-          (n < TARGET
-            ? `below ${TARGET.toLocaleString("en")} the world (at most a state per 60 Hz frame) cannot give ${TARGET.toLocaleString("en")} per frame`
-            : `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(0)} % of ${cap}: ${need > cap ? "more than the machine has (cheaper states needed)" : "within the machine (the idle time is the lever)"}`),
-      );
+      for (const [build] of builds) {
+        const rs = rows.filter((x) => x.what === what && x.n === n && x.build === build);
+        if (!rs.length) continue;
+        const cap = 100 * rs[0].cores;
+        const need = med(rs.map((x) => x.needPct));
+        console.log(
+          `budget ${what}${builds.length > 1 ? ` [${build}]` : ""} n=${n}: ${Math.round(med(rs.map((x) => x.perFrame)))} per frame, ${med(rs.map((x) => x.ms)).toFixed(2)} CPU ms per drawn state (page's thread ${med(rs.map((x) => (x.pct.page * 10) / x.states)).toFixed(2)}), busy ${med(rs.map((x) => x.busy)).toFixed(0)} % of ${cap}; ` +
+            (n < TARGET
+              ? `below ${TARGET.toLocaleString("en")} the world (at most a state per 60 Hz frame) cannot give ${TARGET.toLocaleString("en")} per frame`
+              : `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(0)} % of ${cap}: ${need > cap ? "more than the machine has (cheaper states needed)" : "within the machine (the idle time is the lever)"}`),
+        );
+      }
+      // This build against each base, round by round (the same minutes).
+      for (const [build] of builds.slice(1)) {
+        const pairs = [];
+        for (let r = 0; r < rounds; r++) {
+          const at = (b) => rows.find((x) => x.what === what && x.n === n && x.build === b && x.round === r);
+          const [a, b] = [at("this"), at(build)];
+          if (a && b) pairs.push({ frame: a.perFrame / b.perFrame, cpu: a.ms / b.ms, page: (a.pct.page * 10) / a.states - (b.pct.page * 10) / b.states });
+        }
+        if (!pairs.length) continue;
+        // Ahead or behind by more than half a per cent (a state in 200).
+        const ahead = pairs.filter((p) => p.frame > 1.005).length;
+        const behind = pairs.filter((p) => p.frame < 0.995).length;
+        console.log(
+          `budget ${what} n=${n} this / [${build}], ${pairs.length} paired round(s), medians: per frame ${med(pairs.map((p) => p.frame)).toFixed(3)}× (this ahead in ${ahead}, behind in ${behind}), ` +
+            `CPU per drawn state ${med(pairs.map((p) => p.cpu)).toFixed(3)}×, page's thread ${med(pairs.map((p) => p.page)) >= 0 ? "+" : ""}${med(pairs.map((p) => p.page)).toFixed(2)} ms per drawn state`,
+        );
+      }
     }
   }
 } finally {
   await browser.close();
   await server.close();
+  for (const b of bases) await b.server.close();
 }
 process.exit(0);
