@@ -28,7 +28,7 @@ use crate::scenario::Scenario;
 use crate::seek::ReachLimits;
 use crate::table::generate::TableSpec;
 use crate::table::EtaTable;
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::vehicle::{VehicleParams, VehicleState};
 use crate::world::{provisional_plan, World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
@@ -192,8 +192,10 @@ impl Lab {
     pub fn new(table: &[u8]) -> Result<Lab, JsError> {
         let table = EtaTable::from_bytes(table).map_err(|e| js_err("η table", e))?;
         let params = table.params().vehicle;
-        let world = lab_world(params, FunnelConfig::default())
-            .map_err(|e| js_err("η table parameters", e))?;
+        let world = lab_world(
+            World::new(params, FunnelConfig::default())
+                .map_err(|e| js_err("η table parameters", e))?,
+        );
         Ok(Lab {
             expected: Self::expected_of(&table),
             table: Some(Rc::new(table)),
@@ -215,8 +217,10 @@ impl Lab {
     /// (`tests/web_bindings.rs`).
     #[wasm_bindgen(js_name = withoutTable)]
     pub fn without_table() -> Result<Lab, JsError> {
-        let world = lab_world(VehicleParams::default(), FunnelConfig::default())
-            .map_err(|e| js_err("vehicle parameters", e))?;
+        let world = lab_world(
+            World::new(VehicleParams::default(), FunnelConfig::default())
+                .map_err(|e| js_err("vehicle parameters", e))?,
+        );
         Ok(Lab {
             table: None,
             expected: Self::expected_default(),
@@ -240,8 +244,10 @@ impl Lab {
             .table
             .as_ref()
             .map_or_else(VehicleParams::default, |t| t.params().vehicle);
-        let world = lab_world(params, FunnelConfig::default())
-            .map_err(|e| js_err("η table parameters", e))?;
+        let world = lab_world(
+            World::new(params, FunnelConfig::default())
+                .map_err(|e| js_err("η table parameters", e))?,
+        );
         Ok(Lab {
             table: self.table.clone(),
             expected: self.expected.clone(),
@@ -413,13 +419,13 @@ impl Lab {
     }
 }
 
-/// The lab's world: as `World::new`, without the agents' path metrics,
-/// which no binding reads (issue 17: about a twentieth of an update; the
-/// states are the same bits, `World::set_metrics`).
-fn lab_world(params: VehicleParams, config: FunnelConfig) -> Result<World, ParamError> {
-    let mut world = World::new(params, config)?;
+/// Every world the lab holds (new, forked, cleared, a scenario's) goes
+/// through here: without the agents' path metrics, which no binding reads
+/// (issue 17: about a twentieth of an update; the states are the same
+/// bits, `World::set_metrics`).
+fn lab_world(mut world: World) -> World {
     world.set_metrics(false);
-    Ok(world)
+    world
 }
 
 /// Steps a single call may ask for (a frame needs a handful).
@@ -428,8 +434,9 @@ const MAX_STEPS_PER_CALL: u32 = 10_000;
 impl Lab {
     /// Removes every agent and restarts the clock.
     pub fn clear(&mut self) -> Result<(), JsError> {
-        self.world =
-            lab_world(self.world.params, self.world.config).map_err(|e| js_err("world", e))?;
+        self.world = lab_world(
+            World::new(self.world.params, self.world.config).map_err(|e| js_err("world", e))?,
+        );
         Ok(())
     }
 
@@ -779,8 +786,7 @@ impl Lab {
     #[wasm_bindgen(js_name = loadScenario, unchecked_return_type = "ScenarioInfo")]
     pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;
-        let mut world = sc.world().map_err(|e| js_err("scenario", e))?;
-        world.set_metrics(false);
+        let mut world = lab_world(sc.world().map_err(|e| js_err("scenario", e))?);
         if let Some(t) = &self.table {
             world.plan(t);
         }

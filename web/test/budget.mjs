@@ -26,7 +26,7 @@
 // Usage: node web/test/budget.mjs [--base DIR]...  (after `make web-build`; `make bench-budget`)
 import { existsSync, readdirSync, readFileSync } from "node:fs";
 import { cpus } from "node:os";
-import { serve, launch, openPage, waitReady, loadCrowd } from "./harness.mjs";
+import { serveBuilds, launch, openPage, waitReady, loadCrowd, takeBases, rotated } from "./harness.mjs";
 
 if (!existsSync("/proc/self/task")) {
   console.error("budget.mjs: needs Linux's /proc (per-thread CPU time)");
@@ -96,17 +96,12 @@ function sample(root) {
 }
 
 const args = process.argv.slice(2);
-const baseDirs = [];
-for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) baseDirs.push(args.splice(at, 2)[1]);
+const baseDirs = takeBases(args);
 if (args.length) {
   console.error(`budget.mjs: unknown argument(s) ${args.join(" ")} (usage: node web/test/budget.mjs [--base DIR]...)`);
   process.exit(2);
 }
-const { server, url } = await serve(process.env.DIST);
-const bases = [];
-for (const d of baseDirs) bases.push({ dir: d, ...(await serve(d)) });
-/** [name, URL] of every build measured: this one, then the bases. */
-const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
+const { builds, close } = await serveBuilds(baseDirs, process.env.DIST);
 const browser = await launch();
 // Playwright starts the browser as this process's child: its processes are
 // our descendants whose command line names Chromium.
@@ -148,7 +143,7 @@ async function measure(what, n, build, at, round) {
     if (!(states > 0)) throw new Error(`${what} n=${n}: no state drawn in ${SAMPLE_MS} ms`);
     const per = (p) => (p * 10) / states; // ms of CPU per drawn state
     const need = (TARGET * 60) / n; // states a second for 100,000 per frame
-    const row = { build, round, what, n, states, perFrame: (states * n) / 60, pct, busy, ms: per(busy), need, needPct: (busy / states) * need, cores, mode: info?.mode, workers: info?.workers };
+    const row = { build, round, what, n, states, perFrame: (states * n) / 60, pct, busy, ms: per(busy), pageMs: per(pct.page), need, needPct: (busy / states) * need, cores, mode: info?.mode, workers: info?.workers };
     rows.push(row);
     console.log(
       `${what}${builds.length > 1 ? ` [${build}]` : ""} n=${n} (${row.mode}, ${row.workers} workers, hardwareConcurrency ${cores}): ${states.toFixed(1)} states drawn/s = ${Math.round(row.perFrame)} per 16.7 ms frame; ` +
@@ -164,10 +159,8 @@ async function measure(what, n, build, at, round) {
 
 try {
   for (let r = 0; r < rounds; r++) {
-    // Rotating order by round, so a drift in the host's speed favours no build.
-    const order = builds.map((_, k) => builds[(k + r) % builds.length]);
-    for (const n of labSizes) for (const [b, at] of order) await measure("lab", n, b, at, r);
-    for (const n of crowdSizes) for (const [b, at] of order) await measure("crowd", n, b, at, r);
+    for (const n of labSizes) for (const [b, at] of rotated(builds, r)) await measure("lab", n, b, at, r);
+    for (const n of crowdSizes) for (const [b, at] of rotated(builds, r)) await measure("crowd", n, b, at, r);
   }
   const med = (xs) => {
     const a = [...xs].sort((x, y) => x - y);
@@ -182,7 +175,7 @@ try {
         const cap = 100 * rs[0].cores;
         const need = med(rs.map((x) => x.needPct));
         console.log(
-          `budget ${what}${builds.length > 1 ? ` [${build}]` : ""} n=${n}: ${Math.round(med(rs.map((x) => x.perFrame)))} per frame, ${med(rs.map((x) => x.ms)).toFixed(2)} CPU ms per drawn state (page's thread ${med(rs.map((x) => (x.pct.page * 10) / x.states)).toFixed(2)}), busy ${med(rs.map((x) => x.busy)).toFixed(0)} % of ${cap}; ` +
+          `budget ${what}${builds.length > 1 ? ` [${build}]` : ""} n=${n}: ${Math.round(med(rs.map((x) => x.perFrame)))} per frame, ${med(rs.map((x) => x.ms)).toFixed(2)} CPU ms per drawn state (page's thread ${med(rs.map((x) => x.pageMs)).toFixed(2)}), busy ${med(rs.map((x) => x.busy)).toFixed(0)} % of ${cap}; ` +
             (n < TARGET
               ? `below ${TARGET.toLocaleString("en")} the world (at most a state per 60 Hz frame) cannot give ${TARGET.toLocaleString("en")} per frame`
               : `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(0)} % of ${cap}: ${need > cap ? "more than the machine has (cheaper states needed)" : "within the machine (the idle time is the lever)"}`),
@@ -194,7 +187,7 @@ try {
         for (let r = 0; r < rounds; r++) {
           const at = (b) => rows.find((x) => x.what === what && x.n === n && x.build === b && x.round === r);
           const [a, b] = [at("this"), at(build)];
-          if (a && b) pairs.push({ frame: a.perFrame / b.perFrame, cpu: a.ms / b.ms, page: (a.pct.page * 10) / a.states - (b.pct.page * 10) / b.states });
+          if (a && b) pairs.push({ frame: a.perFrame / b.perFrame, cpu: a.ms / b.ms, page: a.pageMs - b.pageMs });
         }
         if (!pairs.length) continue;
         // Ahead or behind by more than half a per cent (a state in 200).
@@ -209,7 +202,6 @@ try {
   }
 } finally {
   await browser.close();
-  await server.close();
-  for (const b of bases) await b.server.close();
+  await close();
 }
 process.exit(0);

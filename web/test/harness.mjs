@@ -37,6 +37,35 @@ export async function serve(outDir) {
   return { server, url };
 }
 
+/** Takes every `--base DIR` (repeatable) out of `args` (in place): the
+ *  dists of other builds to measure beside this one in the same run. */
+export function takeBases(args) {
+  const dirs = [];
+  for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) dirs.push(args.splice(at, 2)[1]);
+  return dirs;
+}
+
+/** Serves this build (web/dist, or `outDir`) and each base dist: `url`,
+ *  `bases` ({ dir, url, server }), `builds` ([name, url], "this" first) and
+ *  `close()` for every server. The benches' same-run baselines. */
+export async function serveBuilds(baseDirs, outDir) {
+  const { server, url } = await serve(outDir);
+  const bases = [];
+  for (const dir of baseDirs) bases.push({ dir, ...(await serve(dir)) });
+  const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
+  const close = async () => {
+    await server.close();
+    for (const b of bases) await b.server.close();
+  };
+  return { url, bases, builds, close };
+}
+
+/** `builds` in round `round`'s order: rotated by one each round, so a drift
+ *  in the host's speed favours no build. */
+export function rotated(builds, round) {
+  return builds.map((_, k) => builds[(k + round) % builds.length]);
+}
+
 /** As serve, but from a child process (test/serve.mjs): the server's work
  *  then does not wait on the harness's own (issue 17, perf.mjs --child). */
 export function serveChild(outDir) {

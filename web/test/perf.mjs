@@ -6,7 +6,7 @@
 // mean and p95 work per frame (core step + drawing) and core step time.
 // Issue 18: the largest N again with each avoidance method of AVOID
 // (default separation,orca; the second argument), beside the same run's avoidance-off figures.
-import { serve, serveChild, launch, openPage, waitReady, artifacts, loadCrowd } from "./harness.mjs";
+import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, takeBases, rotated } from "./harness.mjs";
 import { resolve } from "node:path";
 import { loadavg } from "node:os";
 
@@ -14,8 +14,7 @@ const args = process.argv.slice(2);
 // `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
 // into /tmp) is served beside this one and the first-frame loads and the
 // crowd rows alternate between them, in rotating order.
-const baseDirs = [];
-for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) baseDirs.push(args.splice(at, 2)[1]);
+const baseDirs = takeBases(args);
 const loadsAt = args.indexOf("--loads");
 const LOADS = loadsAt >= 0 ? Number(args.splice(loadsAt, 2)[1]) : 9;
 // `--server inproc|child|both` (issue 17): the first-frame loads' builds
@@ -32,9 +31,7 @@ const onlyWorkers = process.env.ONLY_WORKERS === "1";
 // ONLY_CROWD=1: the crowd page's rows alone (issue 17, crowd boids per frame).
 // CROWD_SIZES (30000,100000,150000,200000), CROWD_ROUNDS (3), CROWD_MODES (0,1,N: page's thread, 1 worker, a worker per core).
 const onlyCrowd = process.env.ONLY_CROWD === "1";
-const { server, url } = await serve();
-const bases = [];
-for (const d of baseDirs) bases.push({ dir: d, ...(await serve(d)) });
+const { url, bases, builds, close } = await serveBuilds(baseDirs);
 const children = [];
 if (SERVER !== "inproc" && !onlyWorkers) {
   for (const d of [...baseDirs, ""]) children.push({ dir: d || "this", ...(await serveChild(d || undefined)) });
@@ -143,15 +140,13 @@ try {
   const rows = new Map();
   const drawnRows = new Map();
   // With `--base DIR`: every row for each build, this one and the bases,
-  // in rotating order (the crowd's rows too).
-  const builds = [["this", url], ...bases.map((b) => [b.dir, b.url])];
+  // in rotating order (the crowd's rows too; `builds`).
   const workerModes = (process.env.WORKER_MODES ?? "0,1,N").split(",");
   for (let round = 0; round < rounds; round++) {
     for (const n of wsizes) {
       // Alternating order by round, so a drift in the host's load does not favour one mode.
       for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => workerModes.includes(m))) {
-      for (let b = 0; b < builds.length; b++) {
-        const [build, at] = builds[(b + round) % builds.length];
+      for (const [build, at] of rotated(builds, round)) {
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
         // "N": as many workers as navigator.hardwareConcurrency (read on the first load).
         const nq = `?workers=${w === "N" ? cores || 2 : w}`;
@@ -216,8 +211,7 @@ try {
   for (let round = 0; round < crounds; round++) {
     for (const n of csizes) {
       for (const w of (round % 2 ? ["N", "1", "0"] : ["0", "1", "N"]).filter((m) => crowdModes.includes(m))) {
-      for (let b = 0; b < builds.length; b++) {
-        const [build, at] = builds[(b + round) % builds.length];
+      for (const [build, at] of rotated(builds, round)) {
         const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 }, 1);
         await loadCrowd(page, at, w === "N" ? cores || 2 : w, n);
         cores = await page.evaluate(() => navigator.hardwareConcurrency);
@@ -257,8 +251,7 @@ try {
   }
 } finally {
   await browser.close();
-  await server.close();
-  for (const b of bases) await b.server.close();
+  await close();
   for (const c of children) await c.server.close();
 }
 process.exit(bad ? 1 : 0);
