@@ -26,7 +26,10 @@ setup-browser:
 	if [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends chromium chromium-driver; fi
 
+# Vite 8 does not install with npm 10 (seen on machines where npm's own
+# upgrade at boot failed): upgrade npm first, from the npm registry.
 setup-web:
+	if [ "$$(npm --version | cut -d. -f1)" -lt 11 ]; then npm install -g npm@11 --no-audit --no-fund; fi
 	if [ ! -f web/node_modules/.package-lock.json ] || [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
 	  cd web && npm ci --no-audit --no-fund; fi
 
