@@ -20,8 +20,8 @@
 use std::time::{Duration, Instant};
 
 use criterion::{BenchmarkId, Criterion, Throughput};
-use steering::avoidance::AvoidanceMethod;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
 
 #[path = "avoid_world.rs"]
 mod avoid_world;

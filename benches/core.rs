@@ -2,7 +2,7 @@
 //! step (the baseline), one η-table lookup (issue: lookup ≤ 10× seek) and
 //! one funnelling update — plan plus the committed seek step — for near
 //! (1–4 m) and far (20–30 m) targets, for the default μ bound and the two
-//! literal ones (issue: funnelling ≤ 4× seek); and `crate::trig::atan2`
+//! literal ones (issue: funnelling ≤ 4× seek); and `crate::base::trig::atan2`
 //! against std's `atan2`.
 //!
 //! `cargo bench --bench core` (add `-- --warm-up-time 1 --measurement-time 2`
@@ -16,12 +16,12 @@ use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
 use glam::Vec2;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal, MuBound};
-use steering::rng::Rng;
-use steering::seek::seek_point;
-use steering::table::EtaTable;
-use steering::trig::unit;
-use steering::vehicle::{VehicleParams, VehicleState};
+use steering::base::rng::Rng;
+use steering::base::trig::unit;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, MuBound};
+use steering::funnelling::seek::seek_point;
+use steering::funnelling::table::lookup::EtaTable;
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -144,7 +144,7 @@ fn bounds() -> [(&'static str, FunnelConfig); 4] {
         ),
         (
             "paper literal (centre aim, literal bound, gain 1)",
-            steering::funnelling::envelope::literal_config(),
+            steering::studies::envelope::literal_config(),
         ),
         (
             "ScaledLiteral ×6",
@@ -200,7 +200,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             k += 1;
             let (y, x) = pts[k & 1023];
-            black_box(steering::trig::atan2(black_box(y), black_box(x)))
+            black_box(steering::base::trig::atan2(black_box(y), black_box(x)))
         });
     });
     g.bench_function("atan2 std", |b| {
@@ -257,7 +257,7 @@ fn ratio() {
     }
     // A table at paper 000's own size (43,200 entries, issue 19; counts as
     // in tests/fidelity.rs), generated here (0.1 s), beside ours.
-    let small = steering::table::generate::TableSpec::with_counts(
+    let small = steering::funnelling::table::generate::TableSpec::with_counts(
         VehicleParams::default(),
         [10, 24, 5, 4, 6],
     )

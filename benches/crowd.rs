@@ -23,10 +23,11 @@ use std::hint::black_box;
 use std::time::{Duration, Instant};
 
 use criterion::{criterion_group, criterion_main, BenchmarkId, Criterion, Throughput};
+use steering::base::grid::NeighbourGrid;
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{CrowdConfig, PaperTest};
-use steering::crowd::separation::{count_overlaps, count_overlaps_both_sides, NeighbourGrid};
-use steering::crowd::Crowd;
+use steering::crowd::separation::{count_overlaps, count_overlaps_both_sides};
+use steering::crowd::world::Crowd;
 
 #[path = "cpu_clock.rs"]
 mod cpu_clock;

@@ -15,11 +15,12 @@ use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
 use glam::Vec2;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
-use steering::relaxed::{Controller, EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
-use steering::rng::Rng;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
+use steering::base::rng::Rng;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::controller::Controller;
+use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::funnelling::relaxed::{EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
+use steering::funnelling::table::lookup::EtaTable;
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -84,8 +85,8 @@ const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15
 /// (issue 19: Table 1's "relaxed about 50 % cheaper" is against that).
 fn controllers() -> [(&'static str, Controller); 6] {
     let f = FunnelConfig::default();
-    let lit = steering::funnelling::envelope::literal_config();
-    let lit_rel = steering::funnelling::envelope::literal_relaxed_config();
+    let lit = steering::studies::envelope::literal_config();
+    let lit_rel = steering::studies::envelope::literal_relaxed_config();
     let paper = RelaxedConfig {
         aim: RelaxedAim::PaperArc,
         ..Default::default()

@@ -15,26 +15,23 @@
 //!
 //! The `bindings` module is the only place that knows about JavaScript;
 //! everything else runs the same natively and in WebAssembly. The modules of
-//! `funnelling` and `base` are re-exported at the root (`steering::funnel`,
-//! `steering::angle`, …), the paths the tests, benches and README use.
+//! `funnelling` and `base` are re-exported at the root (`steering::funnelling::funnel`,
+//! `steering::base::angle`, …), the paths the tests, benches and README use.
 
 #![deny(unsafe_code)]
 #![warn(missing_docs, clippy::all)]
 
 pub mod avoidance;
 pub mod base;
-#[cfg(not(target_arch = "wasm32"))]
+#[cfg(all(feature = "cli", not(target_arch = "wasm32")))]
 pub mod cli;
 pub mod crowd;
 pub mod funnelling;
+#[cfg(feature = "studies")]
+pub mod studies;
 pub mod wander;
+pub mod world;
 
 /// The JavaScript boundary (WebAssembly builds only).
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;
-
-pub use base::{angle, dubins, metrics, minmax, parallel, range, rng, trig};
-pub use funnelling::{
-    funnel, ghost, ranges, region_study, relaxed, scenario, seek, study, table, vehicle, world,
-    world_edit,
-};

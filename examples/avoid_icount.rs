@@ -14,8 +14,8 @@
 //! sets `maxNeighbours` (a change of behaviour, to measure its cost).
 
 use std::hint::black_box;
-use steering::avoidance::AvoidanceMethod;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
 
 #[path = "../benches/avoid_world.rs"]
 mod avoid_world;
@@ -35,7 +35,7 @@ fn main() {
         .expect("tables/eta.bin (run from the repository root)");
     let mut w = avoid_world::world(32, method);
     if let Some(k) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
-        let mut cfg = steering::avoidance::AvoidanceConfig::with_method(method);
+        let mut cfg = steering::avoidance::config::AvoidanceConfig::with_method(method);
         cfg.max_neighbours = k;
         w.set_avoidance(cfg, Vec::new()).unwrap();
     }

@@ -14,9 +14,9 @@
 //! - `wall-own-lane`: within 0.55 m of a wall, on its own side;
 //! - `mid-jam`: the rest (inside the corridor, away from the walls).
 
-use steering::avoidance::benchmarks::Bench;
-use steering::avoidance::AvoidanceMethod;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::avoidance::Bench;
 
 const KINDS: [&str; 5] = [
     "finished",

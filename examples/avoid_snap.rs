@@ -5,9 +5,9 @@
 //! `cargo run --release --example avoid_snap -- corridor 1001 2.0`
 //! (benchmark, seed, seconds between snapshots).
 
-use steering::avoidance::benchmarks::Bench;
-use steering::avoidance::AvoidanceMethod;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::avoidance::Bench;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

@@ -9,8 +9,8 @@
 
 #[path = "common/bench_arg.rs"]
 mod bench_arg;
-use steering::avoidance::AvoidanceMethod;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
 
 fn main() {
     let args: Vec<String> = std::env::args().collect();

@@ -5,7 +5,7 @@
 //! `perf record`; `ONLY_STEP=1`: the steps alone). `cargo run --release --example crowd_profile -- N STEPS`.
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{CrowdConfig, PaperTest};
-use steering::crowd::Crowd;
+use steering::crowd::world::Crowd;
 fn main() {
     let a: Vec<String> = std::env::args().collect();
     let n: usize = a.get(1).map_or(100_000, |s| s.parse().unwrap());
@@ -36,7 +36,7 @@ fn main() {
         println!("{n} boids: {:.2} ms per step", dt * 1e3);
         return;
     }
-    let mut grid = steering::crowd::separation::NeighbourGrid::new();
+    let mut grid = steering::base::grid::NeighbourGrid::new();
     let mut out = vec![0.0f32; 2 * n];
     let pos = c.positions().to_vec();
     let t = std::time::Instant::now();

@@ -10,11 +10,11 @@
 
 use glam::Vec2;
 use std::hint::black_box;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
-use steering::rng::Rng;
-use steering::seek::seek_point;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
+use steering::base::rng::Rng;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::funnelling::seek::seek_point;
+use steering::funnelling::table::lookup::EtaTable;
 fn main() {
     let what = std::env::args().nth(1).unwrap_or_else(|| "funnel".into());
     let n: usize = std::env::args()

@@ -3,9 +3,10 @@
 //! `VEHICLE=robot TABLE=path/to/its/eta-KEY.bin` (a reference vehicle
 //! of `scenarios/vehicles/` and its table, e.g. from `steer run`'s cache);
 //! runs get the study's time limit scaled to the vehicle.
-use steering::funnel::FunnelConfig;
-use steering::funnelling::envelope::{run, GoalKind};
-use steering::relaxed::{Controller, RelaxedConfig};
+use steering::funnelling::controller::Controller;
+use steering::funnelling::funnel::FunnelConfig;
+use steering::funnelling::relaxed::RelaxedConfig;
+use steering::studies::envelope::{run, GoalKind};
 #[path = "common/moving.rs"]
 mod moving;
 
@@ -26,7 +27,7 @@ fn main() {
             &p,
             &ctl,
             &sc,
-            st.max_time * steering::table::generate::VehicleScale::of(&p).time(),
+            st.max_time * steering::funnelling::table::generate::VehicleScale::of(&p).time(),
         );
         if !r.reached || !r.finished {
             println!("{i}: {:?}\n  goals {:?}\n  rec {:?}", sc.start, sc.goals, r);

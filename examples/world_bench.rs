@@ -12,8 +12,8 @@
 //! the caller can check both sides did the same work.
 use std::time::Instant;
 
-use steering::funnel::FunnelConfig;
-use steering::table::EtaTable;
+use steering::funnelling::funnel::FunnelConfig;
+use steering::funnelling::table::lookup::EtaTable;
 use steering::world::World;
 
 #[path = "../benches/cpu_clock.rs"]

@@ -5,9 +5,9 @@
 //! the doorway preset (obstacles).
 #![cfg(not(target_arch = "wasm32"))]
 
-use steering::avoidance::AvoidanceMethod;
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::scenario::Scenario;
 
 mod common;
 

@@ -6,9 +6,9 @@
 
 #![cfg(not(target_arch = "wasm32"))]
 
-use steering::avoidance::benchmarks::{run, Bench};
-use steering::avoidance::{AvoidanceConfig, AvoidanceMethod, Obstacle};
-use steering::scenario::Scenario;
+use steering::avoidance::{config::AvoidanceConfig, config::AvoidanceMethod, config::Obstacle};
+use steering::studies::avoidance::{run, Bench};
+use steering::world::scenario::Scenario;
 
 mod common;
 use common::{table, world_hash};
@@ -98,7 +98,7 @@ fn corridor_groups_keep_right_early_and_pass_in_lanes() {
     // beyond the corridor, their targets behind two arrived ones, still
     // creep towards them at the end.
     let t = table();
-    let runs: Vec<_> = steering::parallel::map_indices(100, |k| {
+    let runs: Vec<_> = steering::base::parallel::map_indices(100, |k| {
         run(
             &Bench::Corridor.scenario(1000 + k as u64, AvoidanceMethod::Orca),
             &t,

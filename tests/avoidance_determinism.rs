@@ -28,9 +28,9 @@
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-use steering::avoidance::{AvoidanceConfig, AvoidanceMethod};
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
+use steering::avoidance::{config::AvoidanceConfig, config::AvoidanceMethod};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::scenario::Scenario;
 
 mod common;
 use common::world_hash;
@@ -81,7 +81,7 @@ const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
 
 /// The doorway's golden hash. It once differed between native and wasm32:
 /// `unicycle`'s heading search (run by agents stuck at the door's walls)
-/// took `f32::cos`, the platform's libm; it now takes `steering::trig`.
+/// took `f32::cos`, the platform's libm; it now takes `steering::base::trig`.
 const DOORWAY: u64 = 0xc135_74cd_328a_4ce0;
 
 /// The lattice world's golden hash (ORCA, 16 × 16 agents, 300 steps).

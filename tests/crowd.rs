@@ -4,17 +4,16 @@
 
 use glam::Vec2;
 use proptest::prelude::*;
+use steering::base::grid::NeighbourGrid;
+use steering::base::range::RangeError;
+use steering::base::rng::Rng;
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{seek_tag, CrowdConfig, PaperTest};
 use steering::crowd::error::CrowdError;
 use steering::crowd::path::Path;
 use steering::crowd::path_follow::PathFollow;
-use steering::crowd::separation::{
-    count_overlaps, count_overlaps_both_sides, separate, NeighbourGrid,
-};
-use steering::crowd::Crowd;
-use steering::range::RangeError;
-use steering::rng::Rng;
+use steering::crowd::separation::{count_overlaps, count_overlaps_both_sides, separate};
+use steering::crowd::world::Crowd;
 
 fn open_l() -> Path {
     Path::new(
@@ -513,7 +512,7 @@ fn open_paths_edits_and_long_traces_stay_bounded() {
     );
     let t = crowd.trace().len();
     assert!(
-        t > 0 && t <= 2 * steering::crowd::TRACE_CAPACITY,
+        t > 0 && t <= 2 * steering::crowd::world::TRACE_CAPACITY,
         "trace length {t}"
     );
     crowd.set_path_closed(true).unwrap();

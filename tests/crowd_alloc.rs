@@ -5,7 +5,7 @@
 
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{CrowdConfig, PaperTest};
-use steering::crowd::Crowd;
+use steering::crowd::world::Crowd;
 
 mod common;
 

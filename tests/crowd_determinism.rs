@@ -6,7 +6,7 @@
 mod common;
 
 use common::{crowd_golden_cases, crowd_hash_step, fnv, FNV_OFFSET};
-use steering::crowd::Crowd;
+use steering::crowd::world::Crowd;
 
 fn run(cfg: &steering::crowd::config::CrowdConfig, steps: u32, metrics: bool) -> u64 {
     let mut c = Crowd::new(cfg).unwrap();

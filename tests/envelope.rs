@@ -3,8 +3,8 @@
 //! what every controller must keep over the whole operating envelope.
 #![cfg(not(target_arch = "wasm32"))]
 
-use steering::funnelling::envelope::{summarise, variants, EnvelopeStudy, GoalKind};
-use steering::vehicle::VehicleParams;
+use steering::base::vehicle::VehicleParams;
+use steering::studies::envelope::{report::summarise, variants, EnvelopeStudy, GoalKind};
 
 mod common;
 use common::table;
@@ -45,7 +45,7 @@ fn every_variant_stays_finite_and_within_limits_and_standard_finishes() {
 /// `steer envelope --n 10000 --seed 2` reports every cell).
 #[test]
 fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
-    use steering::funnelling::envelope::BANDS;
+    use steering::studies::envelope::BANDS;
     let study = EnvelopeStudy {
         seed: 3,
         n_static: 1000,
@@ -62,7 +62,7 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
     let (std, rel) = (&report.variants[0], &report.variants[1]);
     let runs = std.runs(GoalKind::Static);
     let far = BANDS[BANDS.len() - 1].0;
-    let share = |f: &dyn Fn(&&steering::funnelling::envelope::RunRecord) -> bool| {
+    let share = |f: &dyn Fn(&&steering::studies::envelope::RunRecord) -> bool| {
         summarise(runs.iter().filter(f)).oriented
     };
     let far_wide = share(&|r| r.d0 >= far && r.eps_tol_deg > 3.0);

@@ -3,18 +3,18 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec2;
-use steering::angle::diff;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
-use steering::scenario::Scenario;
-use steering::study::{run, summarise, ReachStudy};
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::base::angle::diff;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::reach::{run, summarise, ReachStudy};
+use steering::world::scenario::Scenario;
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 mod common;
 use common::table;
 
-fn plan(t: &EtaTable, s: VehicleState, g: &Goal) -> steering::funnel::Internals {
+fn plan(t: &EtaTable, s: VehicleState, g: &Goal) -> steering::funnelling::funnel::Internals {
     FunnelConfig::default().plan(
         t,
         &VehicleParams::default(),
@@ -129,7 +129,7 @@ fn deviation_from_seek(lo: f32, hi: f32) -> (f32, f32, f32) {
     let p = VehicleParams::default();
     let cfg = FunnelConfig::default();
     let mut devs = Vec::new();
-    let mut rng = steering::rng::Rng::new(11);
+    let mut rng = steering::base::rng::Rng::new(11);
     for _ in 0..200 {
         let d = rng.range(lo, hi);
         let bearing = rng.range(-3.1, 3.1);
@@ -158,7 +158,7 @@ fn deviation_from_seek(lo: f32, hi: f32) -> (f32, f32, f32) {
             let mut s = start;
             let mut pts = vec![s.pos];
             while (g.pos - s.pos).length() > g.d_tol && pts.len() < steps {
-                steering::seek::seek_point(&p, &mut s, g.pos, g.speed);
+                steering::funnelling::seek::seek_point(&p, &mut s, g.pos, g.speed);
                 pts.push(s.pos);
             }
             pts
@@ -175,9 +175,9 @@ fn deviation_from_seek(lo: f32, hi: f32) -> (f32, f32, f32) {
             .fold(0.0f32, f32::max);
         devs.push(dev);
     }
-    let med = steering::metrics::percentile(&mut devs, 0.5);
-    let p90 = steering::metrics::percentile(&mut devs, 0.9);
-    let max = steering::metrics::percentile(&mut devs, 1.0);
+    let med = steering::base::metrics::percentile(&mut devs, 0.5);
+    let p90 = steering::base::metrics::percentile(&mut devs, 0.9);
+    let max = steering::base::metrics::percentile(&mut devs, 1.0);
     eprintln!("lateral deviation from seek over the first half, D in [{lo}, {hi}] m: median {med:.2} m, p90 {p90:.2} m, max {max:.2} m");
     (med, p90, max)
 }
@@ -224,7 +224,7 @@ fn targets_behind_are_turned_to_not_chattered_at() {
         let mut mem = FunnelMemory::default();
         let arrived = (0..(study.max_time / p.dt) as u32).any(|_| {
             let o = cfg.plan(&t, &p, &s, &g, &mut mem);
-            steering::seek::seek_step(&p, &mut s, o.gamma, o.v_dt);
+            steering::funnelling::seek::seek_step(&p, &mut s, o.gamma, o.v_dt);
             o.mode == Mode::EndOfSteering
         });
         plain_failures += usize::from(!arrived);

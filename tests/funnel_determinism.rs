@@ -5,15 +5,15 @@
 //! step of paper presets: plain seek (issue 19), standard funnelling with static, successive and
 //! moving goals (each other's pose, Fig. 6) and relaxed funnelling. The
 //! controllers use only IEEE-exact arithmetic and the crate's own trig
-//! (`steering::trig`), never the platform's libm, so the bits must agree on
+//! (`steering::base::trig`), never the platform's libm, so the bits must agree on
 //! every target. This file has no proptest and no file I/O so it also runs
 //! under `wasm-pack test --headless --chrome`.
 
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::scenario::Scenario;
 
 mod common;
 use common::world_hash;

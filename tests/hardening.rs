@@ -7,14 +7,14 @@ use std::path::Path;
 
 use clap::Parser;
 use glam::Vec2;
+use steering::base::vehicle::{VehicleParams, VehicleState};
 use steering::cli::steer::{Command, SteerCli};
 use steering::cli::trajectory::{check_out_path, stream_run, OutFormat};
-use steering::funnel::{FunnelConfig, Goal};
-use steering::funnelling::precision::{agent_limit, coordinate_limit};
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::funnelling::funnel::{FunnelConfig, Goal};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::precision::{agent_limit, coordinate_limit};
+use steering::world::scenario::Scenario;
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 mod common;
 
@@ -133,9 +133,9 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
     let sc = Scenario::from_json(fast).unwrap();
     let p = sc.vehicle;
     // Its own table (issue 14), not the pedestrian's.
-    let t = steering::table::generate::TableSpec::for_vehicle(
+    let t = steering::funnelling::table::generate::TableSpec::for_vehicle(
         p,
-        steering::table::generate::DEFAULT_COUNTS,
+        steering::funnelling::table::generate::DEFAULT_COUNTS,
     )
     .unwrap()
     .generate()

@@ -9,16 +9,16 @@ use core::f32::consts::PI;
 
 use glam::Vec2;
 use proptest::prelude::*;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
-use steering::region_study::RegionStudy;
-use steering::relaxed::{
-    interval_delta, relaxed_direction, Controller, ControllerKind, Fig7Branch, RelaxedAim,
-    RelaxedConfig, RelaxedInternals,
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::controller::{Controller, ControllerKind};
+use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
+use steering::funnelling::relaxed::{
+    interval_delta, relaxed_direction, Fig7Branch, RelaxedAim, RelaxedConfig, RelaxedInternals,
 };
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::region::RegionStudy;
+use steering::world::scenario::Scenario;
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 mod common;
 use common::table;
@@ -180,7 +180,7 @@ fn plan(
     t: &EtaTable,
     s: VehicleState,
     g: &Goal,
-) -> (steering::funnel::Internals, RelaxedInternals) {
+) -> (steering::funnelling::funnel::Internals, RelaxedInternals) {
     plan_with(&paper(), t, s, g)
 }
 
@@ -189,7 +189,7 @@ fn plan_with(
     t: &EtaTable,
     s: VehicleState,
     g: &Goal,
-) -> (steering::funnel::Internals, RelaxedInternals) {
+) -> (steering::funnelling::funnel::Internals, RelaxedInternals) {
     let mut ri = RelaxedInternals::default();
     let i = c.plan(
         &FunnelConfig::default(),
@@ -478,7 +478,7 @@ fn ring_linear_eta_matches_the_table_at_samples_and_stays_close() {
             let v = t.axis(3)[idx[3]];
             let omega = t.axis(2)[idx[2]] * p.omega_limit(v);
             let got = t.eta_ring_linear(ring, t.axis(1)[ia], omega, v, t.axis(4)[idx[4]]);
-            if flags & steering::table::FLAG_ETA_VALID != 0 {
+            if flags & steering::funnelling::table::format::FLAG_ETA_VALID != 0 {
                 assert!(
                     (got.unwrap() - eta).abs() < 1e-5,
                     "{idx:?}: {got:?} vs {eta}"

@@ -9,10 +9,10 @@
 
 mod common;
 
-use steering::funnelling::envelope::{variants, EnvelopeStudy};
+use steering::funnelling::table::generate::{TableSpec, DEFAULT_COUNTS};
 use steering::funnelling::vehicle_file;
-use steering::funnelling::vehicle_study::{accuracy, oriented_far};
-use steering::table::generate::{TableSpec, DEFAULT_COUNTS};
+use steering::studies::envelope::{variants, EnvelopeStudy};
+use steering::studies::vehicle::{accuracy, oriented_far};
 
 #[test]
 fn every_reference_vehicle_meets_the_targets() {

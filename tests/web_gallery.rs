@@ -9,7 +9,7 @@
 use steering::bindings::crowd::CrowdLab;
 use steering::bindings::wander::WanderLab;
 use steering::crowd::config::CrowdConfig;
-use steering::wander::WanderPreset;
+use steering::wander::pipeline::WanderPreset;
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 

@@ -6,10 +6,10 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec2;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
-use steering::world_edit::{EditError, MAX_AGENTS, RANDOM_GOALS};
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::world::edit::{EditError, MAX_AGENTS, RANDOM_GOALS};
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 mod common;
 use common::table;

@@ -19,7 +19,7 @@
 //! turns, and never reverses), that every half-plane admits. If even
 //! braking is not admissible, it brakes (the reciprocal neighbour takes its
 //! share). The commands go through the vehicle model
-//! ([`crate::vehicle::VehicleParams::integrate`]), which clamps them into
+//! ([`crate::base::vehicle::VehicleParams::integrate`]), which clamps them into
 //! the admissible set: no limit is ever broken, whatever the avoidance asks.
 //!
 //! **Who gives way** (the corridor and the doorway jammed for good
@@ -48,7 +48,7 @@
 //! rank last and step aside at up to [`DODGE_SPEED`].
 //!
 //! **Neighbours** come from the crowd's hashed uniform grid
-//! ([`crate::crowd::separation::NeighbourGrid`], cell = the search
+//! ([`crate::base::grid::NeighbourGrid`], cell = the search
 //! distance), the `max_neighbours` nearest kept in a fixed array: the cost
 //! per agent is bounded at constant density and nothing is allocated once
 //! the buffers have grown. Obstacles are tested one by one (few by design,
@@ -158,9 +158,9 @@ use crate::avoidance::orca::{self, ray_cap, Lines, MAX_NEIGHBOURS};
 use crate::avoidance::passing::{self, Passing};
 use crate::avoidance::patience;
 use crate::avoidance::stalled;
-use crate::crowd::separation::NeighbourGrid;
-use crate::trig;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::grid::NeighbourGrid;
+use crate::base::trig;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 
 /// What one agent is told to do this step.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]
@@ -967,7 +967,7 @@ pub fn unicycle(
         consider(
             h,
             v_orca.normalize(),
-            crate::angle::diff(h, s.theta).abs(),
+            crate::base::angle::diff(h, s.theta).abs(),
             None,
         );
     }
@@ -979,8 +979,8 @@ pub fn unicycle(
         let d = step * k as f32;
         left = turn_step.rotate(left);
         right = Vec2::new(turn_step.x, -turn_step.y).rotate(right);
-        consider(crate::angle::wrap(s.theta + d), left, d, None);
-        consider(crate::angle::wrap(s.theta - d), right, d, None);
+        consider(crate::base::angle::wrap(s.theta + d), left, d, None);
+        consider(crate::base::angle::wrap(s.theta - d), right, d, None);
     }
     let (_, turn, heading, sp) = best;
     if !best.0.is_finite() {
@@ -1010,7 +1010,7 @@ mod tests {
     /// seeded keys with many ties, every length up to 16.
     #[test]
     fn sort_networks_sort_stably() {
-        let mut rng = crate::rng::Rng::new(7);
+        let mut rng = crate::base::rng::Rng::new(7);
         for trial in 0..3000 {
             let m = trial % (RANKED + 1);
             let d: Vec<f32> = (0..m)

@@ -1,7 +1,7 @@
 //! What a scenario says about avoidance (issue 18): the method (off,
 //! separation, ORCA), the agents' body radius and the method's settings,
 //! and the static obstacles (discs and line segments). Validation uses the
-//! one table of ranges ([`crate::funnelling::ranges`]); errors name the
+//! one table of ranges ([`crate::base::ranges`]); errors name the
 //! field (`obstacles[2]: obstacle.radius = -1 is outside [0.01, 10000]`).
 //!
 //! The default is `off`: a scenario that says nothing steps exactly as
@@ -10,8 +10,8 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::funnelling::ranges as r;
-use crate::vehicle::ParamError;
+use crate::base::ranges as r;
+use crate::base::vehicle::ParamError;
 
 /// How moving agents avoid each other and the obstacles.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]

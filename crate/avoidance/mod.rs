@@ -15,14 +15,8 @@
 //! | [`benchmarks`] | — | the benchmark scenarios (circle swap, corridor, doorway, paper figures with avoidance) and the seeded study behind `steer avoid` |
 
 pub mod avoider;
-pub mod benchmarks;
 pub mod config;
 pub mod orca;
 pub mod passing;
 pub mod patience;
-pub mod proximity;
 pub mod stalled;
-mod world_step;
-
-pub use avoider::{Avoider, Command};
-pub use config::{AvoidanceConfig, AvoidanceMethod, Obstacle};

@@ -33,7 +33,7 @@
 
 use glam::{BVec4A, Vec2, Vec4};
 
-/// Most agent half-planes per agent ([`crate::avoidance::AvoidanceConfig::max_neighbours`] ≤ this).
+/// Most agent half-planes per agent ([`crate::avoidance::config::AvoidanceConfig::max_neighbours`] ≤ this).
 pub const MAX_NEIGHBOURS: usize = 16;
 /// Most obstacle half-planes per agent (the nearest obstacles in reach).
 pub const MAX_OBSTACLE_LINES: usize = 16;
@@ -712,7 +712,7 @@ mod tests {
     /// keeping right.
     #[test]
     fn four_lanes_give_the_scalar_lines_bit_for_bit() {
-        let mut rng = crate::rng::Rng::new(18);
+        let mut rng = crate::base::rng::Rng::new(18);
         let (horizon, dt) = (2.0f32, 0.1f32);
         for trial in 0..20_000 {
             let p = Vec2::new(rng.range(-5.0, 5.0), rng.range(-5.0, 5.0));
@@ -769,7 +769,7 @@ mod tests {
     /// included.
     #[test]
     fn four_line_programs_give_the_former_bits() {
-        let mut rng = crate::rng::Rng::new(3);
+        let mut rng = crate::base::rng::Rng::new(3);
         let mut lp3_runs = 0;
         for trial in 0..30_000 {
             let n_obs = [0, 0, 1, 3][trial % 4];

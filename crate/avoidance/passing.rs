@@ -440,15 +440,15 @@ mod tests {
     /// and a long reach.
     #[test]
     fn the_far_box_holds_what_only_the_look_ahead_sees() {
-        let mut rng = crate::rng::Rng::new(5);
+        let mut rng = crate::base::rng::Rng::new(5);
         for (clear, reach) in [(0.9, 3.0), (0.9, 1.0), (0.5, 2.0), (0.9, 6.0)] {
             let fb = FarBox::new(clear, reach);
             let mut taken = 0;
             for _ in 0..200_000 {
                 let pos = Vec2::new(rng.range(-50.0, 50.0), rng.range(-50.0, 50.0));
-                let u = crate::trig::unit(rng.range(-3.2, 3.2));
+                let u = crate::base::trig::unit(rng.range(-3.2, 3.2));
                 let rel = Vec2::new(rng.range(-9.0, 9.0), rng.range(-9.0, 9.0));
-                let fwd = crate::trig::unit(rng.range(-3.2, 3.2));
+                let fwd = crate::base::trig::unit(rng.range(-3.2, 3.2));
                 let q = pos + rel;
                 let (rx, ry) = (Vec4::splat(q.x - pos.x), Vec4::splat(q.y - pos.y));
                 let (fx, fy) = (Vec4::splat(fwd.x), Vec4::splat(fwd.y));

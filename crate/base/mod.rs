@@ -15,9 +15,12 @@
 
 pub mod angle;
 pub mod dubins;
+pub mod grid;
 pub mod metrics;
 pub mod minmax;
 pub mod parallel;
 pub mod range;
+pub mod ranges;
 pub mod rng;
 pub mod trig;
+pub mod vehicle;

@@ -31,17 +31,17 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
+use steering::base::metrics::PathMetrics;
 use steering::cli::steer::{
     AvoidArgs, Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli,
 };
 use steering::cli::trajectory::{check_out_path, create_out, stream_run};
-use steering::funnel::{FunnelConfig, MuBound};
-use steering::metrics::PathMetrics;
-use steering::region_study::{compare, Comparison, RegionStudy};
-use steering::relaxed::{Controller, ControllerKind};
-use steering::scenario::Scenario;
-use steering::study::{summarise, ReachStudy};
-use steering::table::EtaTable;
+use steering::funnelling::controller::{Controller, ControllerKind};
+use steering::funnelling::funnel::{FunnelConfig, MuBound};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::reach::{summarise, ReachStudy};
+use steering::studies::region::{compare, Comparison, RegionStudy};
+use steering::world::scenario::Scenario;
 
 fn load_table(path: &Path) -> Result<EtaTable, String> {
     let shown = path.display();
@@ -143,11 +143,11 @@ fn run(args: &RunArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// `steer envelope`: the envelope study (`steering::funnelling::envelope`).
+/// `steer envelope`: the envelope study (`steering::studies::envelope`).
 fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
-    use steering::funnelling::envelope::EnvelopeStudy;
+    use steering::studies::envelope::EnvelopeStudy;
     let p = match &args.vehicle {
-        None => steering::vehicle::VehicleParams::default(),
+        None => steering::base::vehicle::VehicleParams::default(),
         Some(path) => {
             let text = std::fs::read_to_string(path)
                 .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
@@ -179,16 +179,24 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     if let Some(cfg) = args.standard_config()? {
         for v in &mut vs {
             match &mut v.controller {
-                steering::relaxed::Controller::Standard(f) if v.name == "standard" => *f = cfg,
-                steering::relaxed::Controller::Relaxed(f, _) if v.name == "relaxed" => *f = cfg,
+                steering::funnelling::controller::Controller::Standard(f)
+                    if v.name == "standard" =>
+                {
+                    *f = cfg
+                }
+                steering::funnelling::controller::Controller::Relaxed(f, _)
+                    if v.name == "relaxed" =>
+                {
+                    *f = cfg
+                }
                 _ => {}
             }
         }
     }
     let report = study.run_all(&table, &p, &vs);
     if args.vehicle.is_some() {
-        use steering::funnelling::vehicle_study::{accuracy, oriented_far};
-        let r = steering::table::generate::turn_radius(&p);
+        use steering::studies::vehicle::{accuracy, oriented_far};
+        let r = steering::funnelling::table::generate::turn_radius(&p);
         let acc = accuracy(&table, &p, args.queries as usize, args.seed, 4.0);
         println!(
             "vehicle: vMax {} m/s, turning radius R = {r:.3} m (× {:.4} the pedestrian's), speeds × {:.4}; table key {}",
@@ -245,7 +253,7 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
     };
     let table_path = &args.table;
     let table = load_table(table_path)?;
-    let p = steering::vehicle::VehicleParams::default();
+    let p = steering::base::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
     println!(
         "reach study: {} scenarios, seed {}, D in [{}, {}] m, D_tol {} m, eps_tol {:.0} deg, v_d {} m/s, limit {} s",
@@ -341,7 +349,7 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     let dir = args.scenarios.display();
     let rcfg = args.relaxed_config()?;
     let table = load_table(table_path)?;
-    let p = steering::vehicle::VehicleParams::default();
+    let p = steering::base::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
     println!("Relaxed settings: {rcfg:?}");
     println!("Paper 001 presets (per agent, whole run; reach = finished every goal):");
@@ -390,19 +398,19 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
             study.run_all(&table, &p, &Controller::Relaxed(f, rcfg)),
         )
     })?;
-    let pick = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
+    let pick = |v: &[steering::studies::region::RegionRun]| -> Vec<(PathMetrics, bool)> {
         v.iter().map(|r| (r.path, r.reached)).collect()
     };
     print_row("random", &compare(&pick(&rs), &pick(&rr)));
     let both: Vec<usize> = (0..rs.len().min(rr.len()))
         .filter(|&i| rs[i].reached && rr[i].reached)
         .collect();
-    let sub = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
+    let sub = |v: &[steering::studies::region::RegionRun]| -> Vec<(PathMetrics, bool)> {
         both.iter().map(|&i| (v[i].path, v[i].reached)).collect()
     };
     print_row("random, both reached", &compare(&sub(&rs), &sub(&rr)));
-    let mean = |v: &[steering::region_study::RegionRun],
-                f: fn(&steering::region_study::RegionRun) -> f32| {
+    let mean = |v: &[steering::studies::region::RegionRun],
+                f: fn(&steering::studies::region::RegionRun) -> f32| {
         v.iter().map(|r| f64::from(f(r))).sum::<f64>() / v.len().max(1) as f64
     };
     println!(
@@ -422,8 +430,8 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
 /// `steer avoid`: the avoidance benchmarks, every method on the same
 /// seeds, one table row per benchmark and method; or `--write-presets`.
 fn avoid(args: &AvoidArgs) -> Result<(), String> {
-    use steering::avoidance::benchmarks::{study, Bench};
-    use steering::avoidance::AvoidanceMethod;
+    use steering::avoidance::config::AvoidanceMethod;
+    use steering::studies::avoidance::{study, Bench};
     let benches = args.benches()?;
     if let Some(dir) = &args.write_presets {
         for b in &benches {
@@ -446,7 +454,7 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
         "avoidance benchmarks: {} seeded runs per benchmark and method from seed {} (paper figures once); radius {} m; avoidance planned every {} step(s); deadlock = unfinished and < 0.05 m/s for 10 s",
         args.seeds,
         args.seed,
-        steering::avoidance::benchmarks::BODY_RADIUS,
+        steering::studies::avoidance::BODY_RADIUS,
         args.replan_every
     );
     println!("| benchmark | method | runs | reach | oriented entries | runs finished | median finish s | length / off (median, max) | min distance m | runs with overlap | overlap pair-steps (max at once) | obstacle contacts | deadlocked agents (runs) | violations | NaN |");

@@ -14,7 +14,7 @@ use crate::bindings::boundary::{from_js, js_err, to_js};
 
 use crate::crowd::boid_seek::Seek;
 use crate::crowd::config::CrowdConfig;
-use crate::crowd::Crowd;
+use crate::crowd::world::Crowd;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_CROWD_TYPES: &'static str = r#"

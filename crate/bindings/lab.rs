@@ -19,16 +19,17 @@ use wasm_bindgen::prelude::*;
 use super::lab_types::{
     AgentConfig, ArcOut, GhostOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo,
 };
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
-use crate::funnel::{FunnelConfig, Internals, Mode};
-use crate::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
-use crate::relaxed::{ControllerKind, RelaxedConfig};
-use crate::rng::Rng;
-use crate::scenario::Scenario;
-use crate::seek::ReachLimits;
-use crate::table::generate::TableSpec;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::funnel::{FunnelConfig, Internals, Mode};
+use crate::funnelling::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
+use crate::funnelling::relaxed::RelaxedConfig;
+use crate::funnelling::seek::ReachLimits;
+use crate::funnelling::table::generate::TableSpec;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::world::scenario::Scenario;
 use crate::world::{provisional_plan, World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
@@ -39,7 +40,7 @@ pub fn version() -> String {
 }
 
 /// The core's validation ranges, one per user-settable field
-/// ([`crate::funnelling::ranges::ALL`]): the page derives its URL decoder,
+/// ([`crate::base::ranges::ALL`]): the page derives its URL decoder,
 /// sliders and number inputs from them, so it accepts exactly what the
 /// core accepts.
 ///
@@ -47,10 +48,10 @@ pub fn version() -> String {
 /// Never in practice (plain numbers and strings).
 #[wasm_bindgen(unchecked_return_type = "FieldRange[]")]
 pub fn ranges() -> Result<JsValue, JsError> {
-    to_js(&crate::funnelling::ranges::ALL.as_slice())
+    to_js(&crate::base::ranges::ALL.as_slice())
 }
 
-/// The coordinate rule of [`crate::funnelling::precision`]: an agent and
+/// The coordinate rule of [`crate::world::precision`]: an agent and
 /// its goals stay within `min(⌊stepScale·v·dt⌋, ⌊toleranceScale·D_tol⌋,
 /// coordMax)` metres (v its slowest goal speed). The page bounds its
 /// positions with it, as it bounds the desired speed by the max speed.
@@ -59,7 +60,7 @@ pub fn ranges() -> Result<JsValue, JsError> {
 /// Never in practice (plain numbers).
 #[wasm_bindgen(unchecked_return_type = "PrecisionRule")]
 pub fn precision() -> Result<JsValue, JsError> {
-    use crate::funnelling::precision as p;
+    use crate::world::precision as p;
     to_js(&super::lab_types::PrecisionRule {
         step_scale: p::STEP_RESOLUTION_SCALE,
         tolerance_scale: p::TOLERANCE_RESOLUTION_SCALE,
@@ -69,7 +70,7 @@ pub fn precision() -> Result<JsValue, JsError> {
 
 /// A JavaScript number that must be a whole number in `r` (compared in
 /// f64: f32 cannot tell 2³² from 2³² − 1).
-pub(crate) fn whole(r: &crate::funnelling::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
+pub(crate) fn whole(r: &crate::base::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
     if v.is_finite() && v.fract() == 0.0 && v >= r.min && v <= r.max {
         Ok(v as u64)
     } else {
@@ -112,7 +113,7 @@ fn field_samples(
     }
 }
 
-/// Points a ghost path keeps at most ([`crate::ghost`]).
+/// Points a ghost path keeps at most ([`crate::funnelling::ghost`]).
 const GHOST_POINTS: usize = 256;
 
 /// What a lab knows of the table it waits for ([`Lab::without_table`]):
@@ -519,7 +520,7 @@ impl Lab {
     /// first, for a caller that wants the answer before the work.
     #[wasm_bindgen(js_name = checkRoom)]
     pub fn check_room(&self, n: f64) -> Result<(), JsError> {
-        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
+        let n = whole(&crate::base::ranges::AGENTS, n)?;
         self.world
             .check_room(n as usize)
             .map_err(|e| js_err("random agents", e))
@@ -539,8 +540,8 @@ impl Lab {
         extent: f32,
         speed: f32,
     ) -> Result<(), JsError> {
-        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
-        let seed = whole(&crate::funnelling::ranges::SEED, seed)?;
+        let n = whole(&crate::base::ranges::AGENTS, n)?;
+        let seed = whole(&crate::base::ranges::SEED, seed)?;
         self.world
             .spawn_random(n as usize, seed, extent, speed)
             .map_err(|e| js_err("random agents", e))
@@ -640,7 +641,7 @@ impl Lab {
     }
 
     /// The predicted seek path of agent `i`'s current update (paper 000
-    /// Fig. 1c, [`crate::ghost::update_ghost`]): from its state towards the
+    /// Fig. 1c, [`crate::funnelling::ghost::update_ghost`]): from its state towards the
     /// point its controller asked the η table about, at the queried speed
     /// (or the fallback v_dt where the table says unreachable). `points`
     /// holds x, y pairs (at most 256 points).
@@ -679,7 +680,7 @@ impl Lab {
 
     /// The predicted seek path from any state (position, heading θ, speed
     /// v, angular speed ω) towards the point (`tx`, `ty`) at desired speed
-    /// `v_d`: the table generator's simulation ([`crate::ghost::seek_ghost`]).
+    /// `v_d`: the table generator's simulation ([`crate::funnelling::ghost::seek_ghost`]).
     #[wasm_bindgen(js_name = ghostFrom, unchecked_return_type = "Ghost")]
     #[allow(clippy::too_many_arguments)]
     pub fn ghost_from(
@@ -696,9 +697,11 @@ impl Lab {
         let s = VehicleState::new(Vec2::new(x, y), theta, v, omega);
         s.validate(&self.world.params)
             .map_err(|e| js_err("ghost state", e))?;
-        crate::range::check_range("ghost.tx", tx, -1e6, 1e6).map_err(|e| js_err("ghost", e))?;
-        crate::range::check_range("ghost.ty", ty, -1e6, 1e6).map_err(|e| js_err("ghost", e))?;
-        crate::range::check_range("ghost.vD", v_d, 0.0, self.world.params.v_max)
+        crate::base::range::check_range("ghost.tx", tx, -1e6, 1e6)
+            .map_err(|e| js_err("ghost", e))?;
+        crate::base::range::check_range("ghost.ty", ty, -1e6, 1e6)
+            .map_err(|e| js_err("ghost", e))?;
+        crate::base::range::check_range("ghost.vD", v_d, 0.0, self.world.params.v_max)
             .map_err(|e| js_err("ghost", e))?;
         self.ghost.clear();
         let g = seek_ghost(
@@ -782,7 +785,7 @@ impl Lab {
 #[wasm_bindgen]
 impl Lab {
     /// Replaces the world with a scenario file's (scenarios/*.json, see
-    /// crate::scenario); returns its name, description and bounding box.
+    /// crate::world::scenario); returns its name, description and bounding box.
     #[wasm_bindgen(js_name = loadScenario, unchecked_return_type = "ScenarioInfo")]
     pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;

@@ -17,9 +17,9 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::table::generate::{TableSpec, DEFAULT_COUNTS};
-use crate::table::EtaTable;
-use crate::vehicle::VehicleParams;
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::table::generate::{TableSpec, DEFAULT_COUNTS};
+use crate::funnelling::table::lookup::EtaTable;
 
 /// Where a table came from.
 #[derive(Clone, Debug, PartialEq, Eq)]

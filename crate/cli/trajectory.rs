@@ -19,7 +19,7 @@
 //!   `{"metrics": [...]}`.
 //!
 //! Writes go through a [`BufWriter`]; the per-agent metrics need only the
-//! start poses and the world's running [`PathMetrics`](crate::metrics::PathMetrics).
+//! start poses and the world's running [`PathMetrics`](crate::base::metrics::PathMetrics).
 
 use std::fs::File;
 use std::io::{BufWriter, Write};
@@ -27,9 +27,9 @@ use std::path::{Path, PathBuf};
 
 use serde::Serialize;
 
-use crate::angle::diff;
-use crate::scenario::Scenario;
-use crate::table::EtaTable;
+use crate::base::angle::diff;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::world::scenario::Scenario;
 
 /// Largest `--every` (the most steps a scenario has: 3,600 s at the
 /// smallest time step, 1e-4 s).
@@ -270,7 +270,7 @@ pub fn stream_run(
             for g in &a.goals {
                 let to = (g.goal.pos.x, g.goal.pos.y, g.goal.beta);
                 dubins_length +=
-                    crate::dubins::shortest_length(from, to, p.min_turn_radius(g.goal.speed));
+                    crate::base::dubins::shortest_length(from, to, p.min_turn_radius(g.goal.speed));
                 from = to;
             }
             AgentMetrics {

@@ -261,7 +261,7 @@ impl CrowdConfig {
         Ok(())
     }
 
-    /// Checks that a batch run ([`crate::crowd::Crowd::run_measured`], the
+    /// Checks that a batch run ([`crate::crowd::world::Crowd::run_measured`], the
     /// `crowd-metrics` table) stays under [`MAX_BOID_STEPS`]; an
     /// interactive crowd (the page) steps as long as it is shown.
     ///

@@ -21,7 +21,3 @@ pub mod path;
 pub mod path_follow;
 pub mod separation;
 pub mod world;
-
-pub use config::CrowdConfig;
-pub use error::CrowdError;
-pub use world::*;

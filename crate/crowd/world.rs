@@ -27,14 +27,15 @@
 
 use glam::Vec2;
 
+use crate::base::grid::NeighbourGrid;
+use crate::base::rng::Rng;
 use crate::crowd::boid_seek::Seek;
 use crate::crowd::config::{CrowdConfig, PathConfig, MAX_BOIDS};
 use crate::crowd::error::{check_range, CrowdError};
 use crate::crowd::metrics::{CrowdMetrics, MetricsAccumulator};
 use crate::crowd::path::Path;
 use crate::crowd::path_follow::PathFollow;
-use crate::crowd::separation::{count_overlaps, separate, separate_owned, NeighbourGrid};
-use crate::rng::Rng;
+use crate::crowd::separation::{count_overlaps, separate, separate_owned};
 
 /// Most points kept for the highlighted lap trace; longer laps are
 /// decimated (every other point dropped, sampling stride doubled).

@@ -1,6 +1,6 @@
 //! What every funnelling update does before and after choosing *where* to
 //! aim (paper 000 Figs. 4–5; paper 001 §4.1): the part the standard
-//! ([`crate::funnel`]) and the relaxed ([`crate::relaxed`]) controllers
+//! ([`crate::funnelling::funnel`]) and the relaxed ([`crate::funnelling::relaxed`]) controllers
 //! share, written once so the two never drift apart.
 //!
 //! An update begins ([`Approach::begin`]) by measuring the goal in the
@@ -16,17 +16,17 @@
 //! speed `v_dt`), and, when an orientation correction is needed, the bounded
 //! modulation μ of Fig. 4 around the aim direction ([`Approach::funnel`]).
 
-use crate::minmax::MinMax;
+use crate::base::minmax::MinMax;
 use core::cell::Cell;
 use core::ops::ControlFlow;
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::{diff, wrap};
-use crate::funnel::{Aim, FunnelConfig, FunnelMemory, Goal, Internals, Mode};
-use crate::table::{EtaTable, Lookup};
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::{diff, wrap};
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::funnel::{Aim, FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnelling::table::{lookup::EtaTable, lookup::Lookup};
 
 /// Speed cap for final halting: the speed from which the vehicle can
 /// still brake to rest at the target with 80 % of its deceleration.
@@ -65,7 +65,7 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 }
 
 /// The position-tolerance phase of paper 000 Fig. 5, shared by the
-/// standard and the relaxed controllers ([`crate::relaxed`]): latches
+/// standard and the relaxed controllers ([`crate::funnelling::relaxed`]): latches
 /// [`FunnelMemory::position_met`] from the distance `d` to the goal centre
 /// and, once met, fills `out` with End_of_Steering or Orientation_only.
 /// Returns true when the position tolerance is met (then `out` is final).
@@ -265,7 +265,7 @@ pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
     if laps == 0 {
         return v_d;
     }
-    let sc = crate::table::generate::VehicleScale::of(p);
+    let sc = crate::funnelling::table::generate::VehicleScale::of(p);
     let floor = v_d.at_most((0.5 * sc.speed).at_least(2.0 * g.vel.length()));
     (v_d / (1.0 + 0.5 * f32::from(laps))).at_least(floor)
 }
@@ -302,13 +302,13 @@ pub struct Terminal {
 impl Terminal {
     /// The carrot distance, m: `lookahead` seconds at the current speed,
     /// the goal's desired speed if higher, and at least 0.5 m/s (seconds
-    /// and speed scaled with the vehicle, [`crate::table::generate::VehicleScale`]).
+    /// and speed scaled with the vehicle, [`crate::funnelling::table::generate::VehicleScale`]).
     #[inline]
     #[must_use]
     pub fn look(&self, p: &VehicleParams, s: &VehicleState, g: &Goal) -> f32 {
         // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
         // the vehicle (×1 for the pedestrian; issue 14).
-        let sc = crate::table::generate::VehicleScale::of(p);
+        let sc = crate::funnelling::table::generate::VehicleScale::of(p);
         self.lookahead * sc.time() * s.v.at_least(g.speed).at_least(0.5 * sc.speed)
     }
 }
@@ -367,7 +367,7 @@ pub fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
     let rel = point - s.pos;
     let d = rel.length();
     let bearing = if d > 1e-6 {
-        crate::trig::atan2(rel.y, rel.x)
+        crate::base::trig::atan2(rel.y, rel.x)
     } else {
         s.theta
     };
@@ -378,7 +378,7 @@ pub fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
 /// [`FunnelMemory`] from one update to the next.
 ///
 /// Why (issue 17): the entry aim and the terminal pursuit need β's
-/// direction every update, and [`crate::trig::sin_cos`] (f64, for bits that
+/// direction every update, and [`crate::base::trig::sin_cos`] (f64, for bits that
 /// are the same natively and in wasm) was about a tenth of a world step
 /// (`examples/world_bench.rs`, 1,000 agents: 186 → 170 ns per agent update
 /// without it). A goal's β changes only with the goal (or every step for
@@ -415,7 +415,7 @@ impl BetaDir {
     #[inline]
     pub fn unit(&mut self, beta: f32) -> Vec2 {
         if beta.to_bits() != self.beta {
-            self.dir = crate::trig::unit(beta);
+            self.dir = crate::base::trig::unit(beta);
             self.beta = beta.to_bits();
         }
         self.dir

@@ -6,11 +6,11 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals};
-use crate::relaxed::{RelaxedConfig, RelaxedInternals};
-use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Internals};
+use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::table::lookup::EtaTable;
 
 /// Which controller steers the agents of a [`crate::world::World`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]

@@ -9,7 +9,7 @@
 //! has gain 1, see [`FunnelConfig::gain`]) bounded by [`MuBound`]; the
 //! modulated heading γ = θ + α + μ goes to the seek controller with speed
 //! `min(v_dt, A/|ω|)`, through the step that keeps its turn direction near
-//! the ±π seam ([`crate::seek::seek_step_committed`]). Constant cost, no
+//! the ±π seam ([`crate::funnelling::seek::seek_step_committed`]). Constant cost, no
 //! allocation. Table interpolations per update (counted in
 //! [`EtaTable::lookup`]): the lookup blends once when the target is
 //! reachable at the queried speed, twice when it is not (again at the
@@ -20,20 +20,19 @@
 //! default and 2–4 with the literal bound, against the paper's "in the
 //! worst case two interpolations" (paper 000 §7).
 
-use crate::minmax::MinMax;
+use crate::base::minmax::MinMax;
 use core::f32::consts::FRAC_PI_2;
 use core::ops::ControlFlow;
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::angle::diff;
-use crate::funnelling::approach::Approach;
-pub use crate::funnelling::approach::{halting_speed, tolerance_phase, Terminal};
-use crate::seek::seek_step_committed;
-use crate::table::generate::VehicleScale;
-use crate::table::{EtaTable, Lookup};
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::approach::{Approach, Terminal};
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::table::generate::VehicleScale;
+use crate::funnelling::table::{lookup::EtaTable, lookup::Lookup};
 
 /// The control mode chosen every step (paper 000 Fig. 5).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -95,7 +94,7 @@ pub struct Goal {
     /// Arrive at rest (final halting).
     pub halting: bool,
     /// The goal's velocity now, m/s: zero for a static goal, filled by
-    /// [`crate::world::GoalSpec::at`] for goals moving by themselves. Not
+    /// [`crate::world::goals::GoalSpec::at`] for goals moving by themselves. Not
     /// part of the file format (the motion is, in the goal's spec): the
     /// controllers read it to lead the target ([`crate::approach::lead`]).
     #[serde(skip)]
@@ -118,7 +117,7 @@ impl Default for Goal {
 
 impl Goal {
     /// The goal without a prescribed orientation (the seek controller,
-    /// [`crate::relaxed::ControllerKind::Seek`]): any heading is within an
+    /// [`crate::funnelling::controller::ControllerKind::Seek`]): any heading is within an
     /// infinite ε_tol, so the tolerance phase judges the position alone.
     #[must_use]
     pub fn unoriented(&self) -> Self {
@@ -128,13 +127,13 @@ impl Goal {
         }
     }
 
-    /// Rejects non-finite or out-of-range goals ([`crate::funnelling::ranges`]),
+    /// Rejects non-finite or out-of-range goals ([`crate::base::ranges`]),
     /// a desired speed of 0 included (the agent would never move).
     ///
     /// # Errors
     /// The offending field.
-    pub fn validate(&self, p: &VehicleParams) -> Result<(), crate::vehicle::ParamError> {
-        use crate::funnelling::ranges as r;
+    pub fn validate(&self, p: &VehicleParams) -> Result<(), crate::base::vehicle::ParamError> {
+        use crate::base::ranges as r;
         r::GOAL_X.check(self.pos.x)?;
         r::GOAL_Y.check(self.pos.y)?;
         r::GOAL_BETA.check(self.beta)?;
@@ -287,7 +286,7 @@ pub struct FunnelMemory {
     pub position_met: bool,
     /// The goal moves (in motion or following an agent): a static goal's
     /// re-approach rule does not apply. Set once when the goal becomes current
-    /// ([`crate::world::GoalSpec::fresh_memory`]).
+    /// ([`crate::world::goals::GoalSpec::fresh_memory`]).
     #[serde(default)]
     pub goal_moves: bool,
     /// The goal follows another agent: it is aimed at its centre, as in
@@ -330,7 +329,7 @@ impl FunnelMemory {
 #[inline]
 #[must_use]
 pub fn orbit_free_speed(p: &VehicleParams, d: f32, alpha: f32) -> f32 {
-    let r = d / (2.0 * crate::trig::sin(alpha).abs()).at_least(1e-3);
+    let r = d / (2.0 * crate::base::trig::sin(alpha).abs()).at_least(1e-3);
     (p.omega_max * r).at_most((p.normal_accel_max * r).sqrt())
 }
 
@@ -354,8 +353,8 @@ impl FunnelConfig {
     ///
     /// # Errors
     /// The offending field.
-    pub fn validate(&self) -> Result<(), crate::vehicle::ParamError> {
-        use crate::funnelling::ranges as r;
+    pub fn validate(&self) -> Result<(), crate::base::vehicle::ParamError> {
+        use crate::base::ranges as r;
         r::SEEK_THRESHOLD.check(self.seek_threshold)?;
         r::FUNNEL_GAIN.check(self.gain)?;
         match self.bound {
@@ -399,7 +398,7 @@ impl FunnelConfig {
                 // vehicle's turning radius (×1 for the pedestrian; issue 14).
                 let floor = self.min_bound_radius * VehicleScale::of(p).length;
                 let r = factor * p.min_turn_radius(lk.v_dt.at_least(v)).at_least(floor);
-                crate::trig::atan2(r, d).at_most(FRAC_PI_2)
+                crate::base::trig::atan2(r, d).at_most(FRAC_PI_2)
             }
             MuBound::Constant => FRAC_PI_2,
         }

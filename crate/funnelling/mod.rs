@@ -26,21 +26,9 @@
 
 pub mod approach;
 pub mod controller;
-pub mod envelope;
 pub mod funnel;
 pub mod ghost;
-pub mod goals;
-pub mod precision;
-pub mod ranges;
-pub mod region_study;
 pub mod relaxed;
-pub mod scenario;
 pub mod seek;
-pub mod study;
 pub mod table;
-pub mod vehicle;
 pub mod vehicle_file;
-pub mod vehicle_study;
-pub mod world;
-pub mod world_edit;
-pub mod world_split;

@@ -5,7 +5,7 @@
 //! `Goal::d_tol`) and an orientation interval T = [β − τ, β + τ]
 //! (τ = `Goal::eps_tol`): any point of the disk is a valid target and any
 //! final orientation in T is valid. The standard controller
-//! ([`crate::funnel`]) still aims at the disk centre and at β exactly,
+//! ([`crate::funnelling::funnel`]) still aims at the disk centre and at β exactly,
 //! which curves paths artificially (paper 001 Fig. 6b). The relaxed
 //! controller instead, every update:
 //!
@@ -36,7 +36,7 @@
 //!   vehicle), so 𝒜 is clipped at ±π on the side of the centre's bearing.
 //! - **Vehicle inside the disk**: the position is met; orientation is then
 //!   completed exactly as in the standard controller
-//!   ([`crate::funnel::tolerance_phase`]).
+//!   ([`crate::funnelling::approach::tolerance_phase`]).
 //! - **Margins**: the relaxed point lies on the disk boundary at the arc
 //!   ends and Δη = 0 only puts the prediction at T's edge, so the search
 //!   uses a shrunk disk and interval (`disk_margin`, `orientation_margin`)
@@ -83,13 +83,12 @@ use core::ops::ControlFlow;
 
 use serde::{Deserialize, Serialize};
 
-use crate::angle::{diff, wrap};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::base::angle::{diff, wrap};
+use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::approach::Approach;
-pub use crate::funnelling::controller::{Controller, ControllerKind};
-use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::table::lookup::EtaTable;
 
 /// How η is evaluated at the two ends of the restricted arc 𝒜.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -356,7 +355,7 @@ impl RelaxedConfig {
     /// # Errors
     /// The offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        use crate::funnelling::ranges as r;
+        use crate::base::ranges as r;
         r::DISK_MARGIN.check(self.disk_margin)?;
         r::ORIENTATION_MARGIN.check(self.orientation_margin)?;
         Ok(())
@@ -415,7 +414,7 @@ impl RelaxedConfig {
         }
         let cos_h = ((ring * ring + d * d - r * r) / (2.0 * ring * d)).clamp(-1.0, 1.0);
         // acos from the deterministic atan2 (libm's acos differs per target).
-        let h = crate::trig::atan2((1.0 - cos_h * cos_h).max(0.0).sqrt(), cos_h);
+        let h = crate::base::trig::atan2((1.0 - cos_h * cos_h).max(0.0).sqrt(), cos_h);
         let a_min = (alpha_c - h).max(-PI);
         let a_max = (alpha_c + h).min(PI);
         // 2. F from η at the two arc ends.
@@ -442,7 +441,7 @@ impl RelaxedConfig {
         let tau = self.orientation_margin * g.eps_tol;
         let c = relaxed_direction(a_min, a_max, f_min, f_max, tc, tau);
         let dir = s.theta + c.alpha_r;
-        let point = s.pos + crate::trig::unit(dir) * ring;
+        let point = s.pos + crate::base::trig::unit(dir) * ring;
         *ri = RelaxedInternals {
             branch: c.branch,
             ring,
@@ -475,7 +474,7 @@ impl RelaxedConfig {
 
     /// [`RelaxedAim::Entry`] once the position tolerance is not met: the
     /// standard update aimed at the disk's entry point
-    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnel::Aim::Entry`]),
+    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnelling::funnel::Aim::Entry`]),
     /// with the orientation interval T shrunk to `orientation_margin`·τ as
     /// its seek threshold: no correction while the predicted heading lies
     /// inside it, else a correction towards β itself (correcting only to
@@ -492,7 +491,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         let cfg = FunnelConfig {
-            aim: crate::funnel::Aim::Entry,
+            aim: crate::funnelling::funnel::Aim::Entry,
             seek_threshold: self.orientation_margin,
             ..*funnel
         };

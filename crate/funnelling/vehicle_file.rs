@@ -20,8 +20,8 @@
 
 use serde::Deserialize;
 
-use crate::table::generate::check_vehicle;
-use crate::vehicle::VehicleParams;
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::table::generate::check_vehicle;
 
 /// A parsed vehicle file.
 #[derive(Clone, Debug, PartialEq)]

@@ -31,6 +31,3 @@ pub mod pipeline;
 pub mod response;
 pub mod time_fn;
 pub mod timed;
-
-pub use error::WanderError;
-pub use pipeline::{WanderConfig, WanderPreset, Wanderer};

@@ -1,7 +1,7 @@
 //! The avoidance examples' benchmark argument (`avoid_dump`, `avoid_stuck`,
 //! `avoid_trace`): `corridor` (the default) | `doorway` | `circle32` |
 //! `circle100`.
-use steering::avoidance::benchmarks::Bench;
+use steering::studies::avoidance::Bench;
 
 /// The benchmark named by `arg`, the corridor when absent or unknown.
 pub fn bench(arg: Option<&String>) -> Bench {

@@ -2,9 +2,9 @@
 //! `tables/eta.bin`), the vehicle (`VEHICLE`, a reference vehicle of
 //! `scenarios/vehicles/`, default the pedestrian) and the envelope study's
 //! first `n` moving-goal scenarios of `seed`, scaled to the vehicle.
-use steering::funnelling::envelope::EnvelopeStudy;
-use steering::table::EtaTable;
-use steering::vehicle::VehicleParams;
+use steering::base::vehicle::VehicleParams;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::envelope::EnvelopeStudy;
 
 pub fn setup(seed: u64, n: usize) -> (EtaTable, VehicleParams, EnvelopeStudy) {
     let path = std::env::var("TABLE").unwrap_or_else(|_| "tables/eta.bin".into());

@@ -28,7 +28,7 @@ pub fn fnv(hash: &mut u64, values: &[f32]) {
 /// FNV-1a over every agent's state bits at every step of `steps` world
 /// steps: the golden trajectory hash of a funnelling or avoidance world.
 pub fn world_hash(
-    table: &steering::table::EtaTable,
+    table: &steering::funnelling::table::lookup::EtaTable,
     w: &mut steering::world::World,
     steps: u32,
 ) -> u64 {
@@ -140,8 +140,8 @@ pub fn allocations<R>(f: impl FnOnce() -> R) -> (R, usize) {
 }
 
 /// The committed η table (`tables/eta.bin`), read from disk (native tests).
-pub fn table() -> steering::table::EtaTable {
-    steering::table::EtaTable::from_bytes(
+pub fn table() -> steering::funnelling::table::lookup::EtaTable {
+    steering::funnelling::table::lookup::EtaTable::from_bytes(
         &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
     )
     .unwrap()

@@ -2,7 +2,7 @@
 //! (issue 14: the table build in the browser had to fit in 3 s).
 //!
 //! # Problem
-//! One step of [`crate::seek::simulate_reach`] is a chain of dependent
+//! One step of [`crate::funnelling::seek::simulate_reach`] is a chain of dependent
 //! operations: position → bearing (`atan2`, a division and a polynomial) →
 //! PD command → angular speed → heading → `sin_cos` (a degree-12 polynomial
 //! in f64) → position. Each waits for the one before, so a lone simulation
@@ -33,11 +33,11 @@
 
 use glam::Vec2;
 
-use crate::angle::{diff, wrap};
-use crate::minmax::MinMax;
-use crate::table::{FLAG_ETA_VALID, FLAG_REACHABLE};
-use crate::trig;
-use crate::vehicle::{Integrator, VehicleParams, VehicleState};
+use crate::base::angle::{diff, wrap};
+use crate::base::minmax::MinMax;
+use crate::base::trig;
+use crate::base::vehicle::{Integrator, VehicleParams, VehicleState};
+use crate::funnelling::table::{format::FLAG_ETA_VALID, format::FLAG_REACHABLE};
 
 use super::generate::{Entry, TableSpec};
 
@@ -366,8 +366,8 @@ pub fn entries(spec: &TableSpec, range: core::ops::Range<usize>) -> Vec<Option<E
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::table::generate::TableSpec;
-    use crate::vehicle::VehicleParams;
+    use crate::base::vehicle::VehicleParams;
+    use crate::funnelling::table::generate::TableSpec;
 
     /// The interleaved lanes give every entry the one-at-a-time
     /// simulation's bits: both integrators, reachable, fallback and

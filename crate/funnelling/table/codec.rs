@@ -13,7 +13,7 @@ use super::format::{
     HEADER_LEN, MAGIC, MAX_ENTRIES,
 };
 use super::lookup::EtaTable;
-use crate::vehicle::{Integrator, VehicleParams};
+use crate::base::vehicle::{Integrator, VehicleParams};
 
 /// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), through
 /// `crc32fast` (issue 17: the page checks the 3.2 MB table before its first
@@ -381,7 +381,7 @@ mod tests {
     fn crc32_is_the_standard_one_at_every_length() {
         assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
         assert_eq!(crc32(b""), 0);
-        let mut r = crate::rng::Rng::new(3);
+        let mut r = crate::base::rng::Rng::new(3);
         let data: Vec<u8> = (0..3000).map(|_| (r.next_u32() & 0xFF) as u8).collect();
         for n in (0..64).chain([255, 1000, 2999, 3000]) {
             assert_eq!(crc32(&data[..n]), bytewise(&data[..n]), "length {n}");

@@ -1,5 +1,5 @@
 //! The η table generator (paper 000 §3; DESIGN §3): runs the very seek
-//! controller of [`crate::seek`] from every sampled relative target and
+//! controller of [`crate::funnelling::seek`] from every sampled relative target and
 //! records η, reachability and the fallback speed.
 //!
 //! # Axes, and why
@@ -26,7 +26,7 @@
 //! - **Desired speed v_d**: 9 samples, 0.25 m/s to `v_max`, u² spacing.
 //!
 //! 16 × 56 × 5 × 9 × 9 = 362,880 entries (the paper has 43,200); 0.8 s on
-//! two cores (rayon, [`crate::parallel`]).
+//! two cores (rayon, [`crate::base::parallel`]).
 //!
 //! # Time step
 //! The simulations step at the vehicle's `dt`, or coarser for a vehicle
@@ -43,9 +43,12 @@ use core::f32::consts::PI;
 
 use glam::Vec2;
 
-use crate::seek::{simulate_reach, ReachLimits, ReachOutcome};
-use crate::table::{BuildParams, EtaTable, TableError, AXES, FLAG_ETA_VALID, FLAG_REACHABLE};
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::seek::{simulate_reach, ReachLimits, ReachOutcome};
+use crate::funnelling::table::{
+    format::BuildParams, format::TableError, format::AXES, format::FLAG_ETA_VALID,
+    format::FLAG_REACHABLE, lookup::EtaTable,
+};
 
 /// Entries per parallel task of [`TableSpec::generate`] (a few hundred
 /// tasks for the default table, so the threads balance).
@@ -222,7 +225,7 @@ pub fn check_vehicle(p: &VehicleParams) -> Result<(), String> {
 pub struct TableSpec {
     /// Vehicle, controller and reach-simulation parameters.
     pub params: BuildParams,
-    /// Axis samples in storage order (see [`crate::table::AXIS_NAMES`]).
+    /// Axis samples in storage order (see [`crate::funnelling::table::format::AXIS_NAMES`]).
     pub axes: [Vec<f32>; AXES],
 }
 
@@ -330,7 +333,7 @@ impl TableSpec {
         let v = self.axes[3][idx[3]];
         let w = self.axes[2][idx[2]] * self.params.vehicle.omega_limit(v);
         let start = VehicleState::new(Vec2::ZERO, 0.0, v, w);
-        (start, crate::trig::unit(a) * d, self.axes[4][idx[4]])
+        (start, crate::base::trig::unit(a) * d, self.axes[4][idx[4]])
     }
 
     /// Computes one entry: (η, fallback speed, flags).
@@ -423,14 +426,14 @@ impl TableSpec {
                 Some(e) => e,
                 None => {
                     let (eta, v, f) = partial[self.mirror(i)].unwrap_or((0.0, 0.0, 0));
-                    (crate::angle::wrap(-eta), v, f)
+                    (crate::base::angle::wrap(-eta), v, f)
                 }
             })
             .collect()
     }
 
     /// Generates the whole table: in parallel on the current rayon pool
-    /// natively, sequentially on wasm32 ([`crate::parallel`]). Entries are
+    /// natively, sequentially on wasm32 ([`crate::base::parallel`]). Entries are
     /// computed independently and collected in index order, so the bytes do
     /// not depend on the thread count.
     ///
@@ -439,7 +442,7 @@ impl TableSpec {
     pub fn generate(&self) -> Result<EtaTable, TableError> {
         let n = self.len();
         let chunks = n.div_ceil(GENERATE_CHUNK);
-        let parts = crate::parallel::map_indices(chunks, |c| {
+        let parts = crate::base::parallel::map_indices(chunks, |c| {
             self.entries(c * GENERATE_CHUNK..((c + 1) * GENERATE_CHUNK).min(n))
         });
         let partial: Vec<Option<Entry>> = parts.into_iter().flatten().collect();

@@ -18,7 +18,7 @@
 //! sample. An axis too uneven for the bucket cap falls back to a binary
 //! search (correct, slower; no committed table has one).
 
-use crate::minmax::MinMax;
+use crate::base::minmax::MinMax;
 use core::f32::consts::TAU;
 
 /// Most buckets per axis (guards the allocation for odd axes).

@@ -10,8 +10,9 @@
 //! is used, so a renamed or stale file is rebuilt, never used silently.
 //! The same function runs natively and in wasm, so both caches agree.
 
+use super::format::{BuildParams, AXES, FORMAT_VERSION};
 use super::generate::{generator_dt, TableSpec};
-use super::{BuildParams, EtaTable, AXES, FORMAT_VERSION};
+use super::lookup::EtaTable;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

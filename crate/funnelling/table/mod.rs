@@ -20,7 +20,3 @@ pub mod generate;
 pub mod grid;
 pub mod key;
 pub mod lookup;
-
-pub use codec::crc32;
-pub use format::*;
-pub use lookup::{EtaTable, Lookup};

@@ -22,14 +22,15 @@ use core::f32::consts::PI;
 use glam::Vec2;
 use serde::Serialize;
 
-use super::envelope::{GoalKind, VariantReport};
-use crate::angle::diff;
-use crate::metrics::percentile;
-use crate::rng::Rng;
-use crate::seek::{simulate_reach, ReachLimits, ReachOutcome};
-use crate::table::generate::turn_radius;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::metrics::percentile;
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::seek::{simulate_reach, ReachLimits, ReachOutcome};
+use crate::funnelling::table::generate::turn_radius;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::studies::envelope::report::VariantReport;
+use crate::studies::envelope::GoalKind;
 
 /// Interpolation accuracy of a table.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -76,12 +77,12 @@ pub fn accuracy(
         max_time: bp.max_time,
     };
     let d_min = d_min_radii * turn_radius(p);
-    let out = crate::parallel::map_indices(n, |i| {
+    let out = crate::base::parallel::map_indices(n, |i| {
         let [d, a, w, v, vd] = query(table, p, seed, i, d_min);
         let sim = simulate_reach(
             p,
             VehicleState::new(Vec2::ZERO, 0.0, v, w),
-            crate::trig::unit(a) * d,
+            crate::base::trig::unit(a) * d,
             vd,
             &lim,
         );

@@ -33,12 +33,13 @@ use core::fmt;
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::avoidance::{AvoidanceConfig, Obstacle};
-use crate::funnel::{FunnelConfig, Goal};
-use crate::funnelling::precision;
-use crate::relaxed::{ControllerKind, RelaxedConfig};
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
-use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use crate::avoidance::{config::AvoidanceConfig, config::Obstacle};
+use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::funnel::{FunnelConfig, Goal};
+use crate::funnelling::relaxed::RelaxedConfig;
+use crate::world::precision;
+use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 /// A scenario file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -168,11 +169,11 @@ fn default_speed() -> f32 {
     1.3
 }
 
-/// Longest scenario, s ([`crate::funnelling::ranges::DURATION`]).
-pub const MAX_DURATION: f32 = crate::funnelling::ranges::DURATION.max as f32;
+/// Longest scenario, s ([`crate::base::ranges::DURATION`]).
+pub const MAX_DURATION: f32 = crate::base::ranges::DURATION.max as f32;
 
-/// Most agents in a scenario ([`crate::funnelling::ranges::AGENTS`]).
-pub const MAX_SCENARIO_AGENTS: usize = crate::funnelling::ranges::AGENTS.max as usize;
+/// Most agents in a scenario ([`crate::base::ranges::AGENTS`]).
+pub const MAX_SCENARIO_AGENTS: usize = crate::base::ranges::AGENTS.max as usize;
 
 /// Most goals queued per agent in a scenario.
 pub const MAX_GOALS: usize = 10_000;
@@ -297,7 +298,7 @@ impl Scenario {
         self.avoidance.validate()?;
         crate::avoidance::config::validate_obstacles(&self.obstacles)
             .map_err(ScenarioError::Invalid)?;
-        crate::funnelling::ranges::DURATION
+        crate::base::ranges::DURATION
             .check(self.duration)
             .map_err(ParamError::Range)?;
         let n = self.agents.len();
@@ -365,7 +366,7 @@ impl Scenario {
         for (i, a) in self.agents.iter().enumerate() {
             let st = VehicleState::new(
                 Vec2::new(a.x, a.y),
-                crate::angle::wrap(a.theta_deg.to_radians()),
+                crate::base::angle::wrap(a.theta_deg.to_radians()),
                 a.v,
                 a.omega,
             );

@@ -5,8 +5,8 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::funnel::{FunnelMemory, Goal};
-use crate::vehicle::{ParamError, VehicleState};
+use crate::base::vehicle::{ParamError, VehicleState};
+use crate::funnelling::funnel::{FunnelMemory, Goal};
 
 /// How a goal moves (paper 000 §1: "a possibly moving target").
 ///
@@ -132,7 +132,7 @@ impl GoalSpec {
                 angular_speed,
             } => {
                 let r0 = self.goal.pos - center;
-                let rot = crate::trig::unit(angular_speed * t);
+                let rot = crate::base::trig::unit(angular_speed * t);
                 let r = rot.rotate(r0);
                 g.pos = center + r;
                 g.beta = self.goal.beta + angular_speed * t;

@@ -35,8 +35,8 @@
 //! checks where it ends; in an open-ended world (the lab) a goal that
 //! drifts beyond the limit is steered with coarser steps, as before.
 
-use crate::vehicle::{check_range, ParamError, VehicleParams};
-use crate::world::{GoalMotion, GoalSpec};
+use crate::base::vehicle::{check_range, ParamError, VehicleParams};
+use crate::world::{goals::GoalMotion, goals::GoalSpec};
 
 /// Largest |coordinate| anywhere, m (f32 spacing there: 6.25 cm).
 pub const COORD_MAX: f32 = 1e6;

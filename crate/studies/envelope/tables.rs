@@ -3,8 +3,9 @@
 
 use core::fmt::Write as _;
 
+use super::report::missed;
 use super::report::{summarise, CellSummary, EnvelopeReport, MISSES_KEPT};
-use super::{missed, GoalKind, RunRecord, BANDS, D_TOLS, EPS_TOLS_DEG, SPEEDS};
+use super::{GoalKind, RunRecord, BANDS, D_TOLS, EPS_TOLS_DEG, SPEEDS};
 
 /// The static cells of `runs` in distance band `band` (`None`: all D):
 /// (ε_tol in degrees, column, column value, summary) for every ε_tol ×

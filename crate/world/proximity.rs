@@ -7,8 +7,8 @@
 //! first step inside it, or the goal completed). Pairs are found through
 //! the crowd's grid, so measuring costs about as much as avoiding.
 
-use crate::angle::diff;
-use crate::crowd::separation::NeighbourGrid;
+use crate::base::angle::diff;
+use crate::base::grid::NeighbourGrid;
 use crate::world::World;
 
 /// Speed under which an unfinished agent counts as stuck, m/s.

@@ -4,13 +4,13 @@
 
 use glam::Vec2;
 
-use crate::angle::diff;
-use crate::dubins;
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
-use crate::metrics::{percentile, PathMetrics};
-use crate::rng::Rng;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::dubins;
+use crate::base::metrics::{percentile, PathMetrics};
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
+use crate::funnelling::table::lookup::EtaTable;
 
 /// The random scenario family of the funnelling issue: static targets at
 /// D in [1, 30] m, any bearing and β, initial v in [0, v_max], initial ω
@@ -154,7 +154,7 @@ impl ReachStudy {
         let w = r.range(-1.0, 1.0) * p.omega_limit(v);
         let start = VehicleState::new(Vec2::ZERO, 0.0, v, w);
         let goal = Goal {
-            pos: crate::trig::unit(bearing) * d,
+            pos: crate::base::trig::unit(bearing) * d,
             beta,
             d_tol: self.d_tol,
             eps_tol: self.eps_tol,
@@ -167,7 +167,7 @@ impl ReachStudy {
 
     /// Runs the whole study: in parallel on the current rayon pool natively,
     /// sequentially on wasm32; results in scenario order, independent of
-    /// the thread count ([`crate::parallel`]).
+    /// the thread count ([`crate::base::parallel`]).
     #[must_use]
     pub fn run_all(
         &self,
@@ -175,7 +175,7 @@ impl ReachStudy {
         p: &VehicleParams,
         cfg: &FunnelConfig,
     ) -> Vec<RunResult> {
-        crate::parallel::map_indices(self.n, |i| {
+        crate::base::parallel::map_indices(self.n, |i| {
             let (s, g) = self.scenario(p, i);
             run(table, p, cfg, s, &g, self.max_time)
         })

@@ -24,8 +24,8 @@
 
 use core::ops::Range;
 
-use crate::avoidance::AvoidanceMethod;
-use crate::world::{GoalMotion, World};
+use crate::avoidance::config::AvoidanceMethod;
+use crate::world::{goals::GoalMotion, World};
 
 /// Why a world cannot keep only a range of its agents; nothing is changed.
 #[derive(Clone, Debug, PartialEq, Eq)]

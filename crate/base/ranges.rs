@@ -6,8 +6,8 @@
 //! they disagreed: `#vd=50` and `#vmax=0.05` passed the page and were then
 //! refused by the core (an empty playground), `#vd=0` gave an agent that
 //! never moves. Here each field is one [`FieldRange`] constant; the core's
-//! validation ([`VehicleParams::validate`](crate::vehicle::VehicleParams::validate),
-//! [`Goal::validate`](crate::funnel::Goal::validate), the funnel, relaxed,
+//! validation ([`VehicleParams::validate`](crate::base::vehicle::VehicleParams::validate),
+//! [`Goal::validate`](crate::funnelling::funnel::Goal::validate), the funnel, relaxed,
 //! scenario and world-edit checks) calls [`FieldRange::check`] on it, and
 //! the bindings export [`ALL`] (`ranges()`), from which the page derives its
 //! URL decoder, sliders and number inputs.
@@ -450,7 +450,7 @@ mod tests {
     #[test]
     fn a_desired_speed_of_zero_is_refused_in_files_too() {
         let text = r#"{"name": "z", "agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0, "speed": 0}]}]}"#;
-        let e = crate::scenario::Scenario::from_json(text).unwrap_err();
+        let e = crate::world::scenario::Scenario::from_json(text).unwrap_err();
         assert_eq!(
             e.to_string(),
             "scenario is inconsistent: agent 0: goal.speed = 0 is outside [0.01, 2]"

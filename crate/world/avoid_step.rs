@@ -2,13 +2,13 @@
 //! avoidance adjusts the plans together, then every agent steps. With
 //! avoidance off [`World::step`] keeps its own loop (same bits as before).
 
-use crate::angle::diff;
 use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::patience;
-use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
-use crate::vehicle::ParamError;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::vehicle::ParamError;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::table::lookup::EtaTable;
 use crate::world::World;
 
 impl World {

@@ -8,13 +8,14 @@ use core::f32::consts::PI;
 
 use glam::Vec2;
 
-use crate::angle::diff;
-use crate::funnel::{FunnelMemory, Goal, Mode};
-use crate::metrics::PathMetrics;
-use crate::relaxed::{Controller, RelaxedInternals};
-use crate::rng::Rng;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::metrics::PathMetrics;
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::controller::Controller;
+use crate::funnelling::funnel::{FunnelMemory, Goal, Mode};
+use crate::funnelling::relaxed::RelaxedInternals;
+use crate::funnelling::table::lookup::EtaTable;
 
 /// The random family: start at the origin heading +x with a random
 /// admissible (v, ω); disk centre at D ∈ `d_range` in any direction,
@@ -124,7 +125,7 @@ impl RegionStudy {
         (
             VehicleState::new(Vec2::ZERO, 0.0, v, w),
             Goal {
-                pos: crate::trig::unit(bearing) * d,
+                pos: crate::base::trig::unit(bearing) * d,
                 beta,
                 d_tol: radius,
                 eps_tol: tau,
@@ -137,10 +138,10 @@ impl RegionStudy {
 
     /// Runs the whole study with `ctl`: in parallel on the current rayon
     /// pool natively, sequentially on wasm32; results in scenario order,
-    /// independent of the thread count ([`crate::parallel`]).
+    /// independent of the thread count ([`crate::base::parallel`]).
     #[must_use]
     pub fn run_all(&self, table: &EtaTable, p: &VehicleParams, ctl: &Controller) -> Vec<RegionRun> {
-        crate::parallel::map_indices(self.n, |i| {
+        crate::base::parallel::map_indices(self.n, |i| {
             let (s, g) = self.scenario(p, i);
             run_region(table, p, ctl, s, &g, self.max_time)
         })

@@ -1,18 +1,40 @@
-//! A world of agents, each with its own state, goal queue and funnelling
-//! memory, stepped together (paper 000 §6: moving targets, successive
-//! targets, many entities). Stepping allocates nothing: the only buffer,
-//! a snapshot of the agents' states for goals that follow other agents, is
-//! sized when agents are added.
+//! The world above the controllers (paper 000 §6: moving targets,
+//! successive targets, many entities): agents, each with its own state,
+//! goal queue and funnelling memory, stepped together, with or without
+//! avoidance. Stepping allocates nothing: the only buffer, a snapshot of
+//! the agents' states for goals that follow other agents, is sized when
+//! agents are added.
+//!
+//! | module | paper | what |
+//! |---|---|---|
+//! | this one | 000 §6 | [`World`] and [`Agent`]: many agents with goal queues, the plain step, the state records |
+//! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
+//! | [`edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`avoid_step`] | 000 §7 | the step with avoidance: plan every funnel, avoid, step |
+//! | [`split`] | 000 §6, Fig. 6 | a world split into contiguous slices that step alone (facing links kept inside one), for the lab's stepping workers |
+//! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
+//! | [`precision`] | — | the coordinate range where f32 resolves a quarter of one step (slowest goal speed × dt), measured; checked on every agent and goal |
+//! | [`proximity`] | — | avoidance metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |
 
-use crate::avoidance::{AvoidanceConfig, AvoidanceMethod, Avoider, Obstacle};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
-use crate::metrics::PathMetrics;
-use crate::relaxed::{ControllerKind, RelaxedConfig, RelaxedInternals};
-use crate::seek::{seek_step, seek_step_committed};
-use crate::table::EtaTable;
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+pub mod avoid_step;
+pub mod edit;
+pub mod goals;
+pub mod precision;
+pub mod proximity;
+pub mod scenario;
+pub mod split;
 
-pub use crate::funnelling::goals::{GoalMotion, GoalSpec, SwitchRule, MOVING_HALTING};
+use crate::avoidance::{
+    avoider::Avoider, config::AvoidanceConfig, config::AvoidanceMethod, config::Obstacle,
+};
+use crate::base::metrics::PathMetrics;
+use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
+use crate::funnelling::seek::{seek_step, seek_step_committed};
+use crate::funnelling::table::lookup::EtaTable;
+use crate::world::goals::{GoalMotion, GoalSpec, SwitchRule};
 
 /// One agent.
 #[derive(Clone, Debug, PartialEq)]
@@ -212,7 +234,7 @@ impl World {
         for g in &goals {
             g.validate(&self.params)?;
         }
-        crate::funnelling::precision::check_agent(&self.params, state.pos, &goals, None)?;
+        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
         let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
         let internals = if goals.is_empty() {
             Internals {
@@ -481,18 +503,20 @@ pub fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Intern
     let rel = g.pos - s.pos;
     let d = rel.length();
     let bearing = if d > 1e-6 {
-        crate::trig::atan2(rel.y, rel.x)
+        crate::base::trig::atan2(rel.y, rel.x)
     } else {
         s.theta
     };
     let mut out = Internals {
         mode: Mode::Funnelling,
         d,
-        alpha: crate::angle::diff(bearing, s.theta),
+        alpha: crate::base::angle::diff(bearing, s.theta),
         gamma: bearing,
         v_dt: if g.halting {
-            g.speed
-                .min(crate::funnel::halting_speed(p, d - 0.9 * g.d_tol))
+            g.speed.min(crate::funnelling::approach::halting_speed(
+                p,
+                d - 0.9 * g.d_tol,
+            ))
         } else {
             g.speed
         },
@@ -500,7 +524,7 @@ pub fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Intern
         ..Default::default()
     };
     let mut mem = FunnelMemory::default();
-    crate::funnel::tolerance_phase(p, s, g, &mut mem, d, &mut out);
+    crate::funnelling::approach::tolerance_phase(p, s, g, &mut mem, d, &mut out);
     out
 }
 
