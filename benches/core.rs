@@ -257,7 +257,7 @@ fn ratio() {
     }
     // A table at paper 000's own size (43,200 entries, issue 19; counts as
     // in tests/fidelity.rs), generated here (0.1 s), beside ours.
-    let small = steering::funnelling::table::generate::TableSpec::with_counts(
+    let small = steering::funnelling::table::spec::TableSpec::with_counts(
         VehicleParams::default(),
         [10, 24, 5, 4, 6],
     )

@@ -27,7 +27,7 @@ fn main() {
             &p,
             &ctl,
             &sc,
-            st.max_time * steering::funnelling::table::generate::VehicleScale::of(&p).time(),
+            st.max_time * steering::funnelling::table::spec::VehicleScale::of(&p).time(),
         );
         if !r.reached || !r.finished {
             println!("{i}: {:?}\n  goals {:?}\n  rec {:?}", sc.start, sc.goals, r);

@@ -967,7 +967,7 @@ mod wander {
 mod paper_size_table {
     use steering::base::vehicle::VehicleParams;
     use steering::funnelling::funnel::FunnelConfig;
-    use steering::funnelling::table::generate::{turn_radius, TableSpec};
+    use steering::funnelling::table::spec::{turn_radius, TableSpec};
     use steering::studies::reach::{summarise, ReachStudy};
     use steering::studies::vehicle::accuracy;
 

@@ -133,9 +133,9 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
     let sc = Scenario::from_json(fast).unwrap();
     let p = sc.vehicle;
     // Its own table (issue 14), not the pedestrian's.
-    let t = steering::funnelling::table::generate::TableSpec::for_vehicle(
+    let t = steering::funnelling::table::spec::TableSpec::for_vehicle(
         p,
-        steering::funnelling::table::generate::DEFAULT_COUNTS,
+        steering::funnelling::table::spec::DEFAULT_COUNTS,
     )
     .unwrap()
     .generate()

@@ -4,7 +4,7 @@
 
 use proptest::prelude::*;
 use steering::base::vehicle::VehicleParams;
-use steering::funnelling::table::generate::TableSpec;
+use steering::funnelling::table::spec::TableSpec;
 use steering::funnelling::table::{
     codec::crc32, format::TableError, format::FORMAT_VERSION, format::HEADER_LEN, lookup::EtaTable,
 };

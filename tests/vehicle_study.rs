@@ -9,7 +9,7 @@
 
 mod common;
 
-use steering::funnelling::table::generate::{TableSpec, DEFAULT_COUNTS};
+use steering::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
 use steering::funnelling::vehicle_file;
 use steering::studies::envelope::{variants, EnvelopeStudy};
 use steering::studies::vehicle::{accuracy, oriented_far};

@@ -8,7 +8,7 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use steering::base::vehicle::VehicleParams;
-use steering::funnelling::table::generate::{
+use steering::funnelling::table::spec::{
     check_vehicle, TableSpec, VehicleScale, DEFAULT_COUNTS,
 };
 use steering::funnelling::table::lookup::EtaTable;
@@ -46,7 +46,7 @@ fn reference_vehicles_parse_and_scale() {
         let spec = TableSpec::with_counts(v, DEFAULT_COUNTS);
         let s = VehicleScale::of(&v);
         // Distances in turning radii, speeds in fractions of v_max.
-        let r = steering::funnelling::table::generate::turn_radius(&v);
+        let r = steering::funnelling::table::spec::turn_radius(&v);
         assert!((spec.axes[0][0] / r - 0.1875).abs() < 1e-4, "{name}");
         assert_eq!(*spec.axes[3].last().unwrap(), v.v_max);
         assert_eq!(spec.axes[4][0], 0.125 * v.v_max);

@@ -26,7 +26,7 @@ fn file_crc(bytes: &[u8]) -> u32 {
 #[cfg(not(target_arch = "wasm32"))]
 #[test]
 fn native_small_tables_match_the_golden_crcs() {
-    use steering::funnelling::table::generate::TableSpec;
+    use steering::funnelling::table::spec::TableSpec;
     for (name, crc) in GOLDEN {
         let p = vehicle_file::reference(name).unwrap().vehicle;
         let bytes = TableSpec::for_vehicle(p, COUNTS)

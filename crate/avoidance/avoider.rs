@@ -155,9 +155,9 @@ use glam::{BVec4A, Mat4, Vec2, Vec4};
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::orca::{self, ray_cap, Lines, MAX_NEIGHBOURS};
-use crate::avoidance::passing::{self, Passing};
+use crate::avoidance::passing::{self, Passing, ONCOMING_COS};
 use crate::avoidance::patience;
-use crate::avoidance::stalled;
+use crate::avoidance::stalled::{self, STUCK_SPEED};
 use crate::base::grid::NeighbourGrid;
 use crate::base::trig;
 use crate::base::vehicle::{VehicleParams, VehicleState};
@@ -870,12 +870,6 @@ fn present_heading_clear(lines: &Lines, forward: Vec2, speed: f32) -> bool {
 /// goal) may move to let others pass, m/s.
 pub const DODGE_SPEED: f32 = 0.5;
 
-/// A neighbour ahead whose heading makes a cosine below this with the
-/// funnel's heading is oncoming: only oncoming neighbours call for keeping
-/// right (a neighbour going the same way is followed, not overtaken on a
-/// side).
-pub const ONCOMING_COS: f32 = -0.3;
-
 /// How much nearer its goal an agent must be than a neighbour, m, to have
 /// the right of way over it.
 pub const PRIORITY_GAP: f32 = 0.25;
@@ -888,9 +882,6 @@ pub const PRIORITY_MARGIN: f32 = 0.15;
 /// least, while an oncoming neighbour is ahead (the full bias once it has
 /// slowed to a stop).
 pub const LANE_BIAS: f32 = 0.2;
-
-/// Below this ORCA speed, m/s, [`unicycle`] searches the headings.
-pub const STUCK_SPEED: f32 = 0.1;
 
 /// Headings sampled each side of the current one by [`unicycle`].
 pub const HEADING_SAMPLES: usize = 12;

@@ -18,7 +18,7 @@
 //! **Rule.** While the grid lists the neighbours in reach (all of them, not
 //! only the nearest kept for ORCA), every *oncoming* neighbour ahead
 //! (heading cosine with the agent's way below
-//! [`crate::avoidance::avoider::ONCOMING_COS`]) that is not already clear on
+//! [`ONCOMING_COS`]) that is not already clear on
 //! the agent's left (lateral offset within ± the clearance 2(r + margin))
 //! asks the agent to move right by its half share ([`LANE_SHARE`]) of the
 //! lateral gap that would put it on the left at that clearance; the largest
@@ -129,7 +129,12 @@
 
 use glam::{BVec4A, Vec2, Vec4};
 
-use crate::avoidance::avoider::ONCOMING_COS;
+/// A neighbour ahead whose heading makes a cosine below this with the
+/// funnel's heading is oncoming: only oncoming neighbours call for keeping
+/// right (a neighbour going the same way is followed, not overtaken on a
+/// side).
+pub const ONCOMING_COS: f32 = -0.3;
+
 
 /// Largest turn of the preferred velocity, as its tangent (1: 45°).
 pub const LANE_MAX_TAN: f32 = 1.0;

@@ -73,8 +73,12 @@
 
 use glam::Vec2;
 
-use crate::avoidance::avoider::STUCK_SPEED;
 use crate::avoidance::orca::Lines;
+
+/// Below this speed, m/s, an agent is at rest: the avoider searches the
+/// headings instead of following ORCA's velocity ([`crate::avoidance::avoider`]),
+/// and an unfinished agent at rest seeks its goal's direction.
+pub const STUCK_SPEED: f32 = 0.1;
 
 /// True when an unfinished agent at speed `v`, whose funnel asks for
 /// `v_dt`, seeks its goal's direction instead of the funnel's heading γ:

@@ -448,16 +448,6 @@ mod tests {
     }
 
     #[test]
-    fn a_desired_speed_of_zero_is_refused_in_files_too() {
-        let text = r#"{"name": "z", "agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0, "speed": 0}]}]}"#;
-        let e = crate::world::scenario::Scenario::from_json(text).unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "scenario is inconsistent: agent 0: goal.speed = 0 is outside [0.01, 2]"
-        );
-    }
-
-    #[test]
     fn at_most_narrows_both_sides_of_a_signed_range() {
         assert!(OMEGA.check_at_most(1.5, 2.0).is_ok());
         let e = OMEGA.check_at_most(-2.5, 2.0).unwrap_err();

@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use clap::Parser;
 use steering::cli::eta_table::EtaTableCli;
-use steering::funnelling::table::generate::TableSpec;
+use steering::funnelling::table::spec::TableSpec;
 
 fn main() -> ExitCode {
     match generate(&EtaTableCli::parse()) {

@@ -196,7 +196,7 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     let report = study.run_all(&table, &p, &vs);
     if args.vehicle.is_some() {
         use steering::studies::vehicle::{accuracy, oriented_far};
-        let r = steering::funnelling::table::generate::turn_radius(&p);
+        let r = steering::funnelling::table::spec::turn_radius(&p);
         let acc = accuracy(&table, &p, args.queries as usize, args.seed, 4.0);
         println!(
             "vehicle: vMax {} m/s, turning radius R = {r:.3} m (× {:.4} the pedestrian's), speeds × {:.4}; table key {}",

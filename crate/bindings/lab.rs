@@ -27,7 +27,7 @@ use crate::funnelling::funnel::{FunnelConfig, Internals, Mode};
 use crate::funnelling::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
 use crate::funnelling::relaxed::RelaxedConfig;
 use crate::funnelling::seek::ReachLimits;
-use crate::funnelling::table::generate::TableSpec;
+use crate::funnelling::table::spec::TableSpec;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::world::scenario::Scenario;
 use crate::world::{provisional_plan, World, STATE_STRIDE};

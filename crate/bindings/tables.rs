@@ -14,7 +14,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::base::vehicle::VehicleParams;
 use crate::bindings::boundary::{from_js, js_err, to_js};
-use crate::funnelling::table::generate::{TableSpec, DEFAULT_COUNTS};
+use crate::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
 use crate::funnelling::table::{format::AXES, lookup::EtaTable};
 use crate::funnelling::vehicle_file::REFERENCE;
 

@@ -93,7 +93,7 @@ impl EtaTableCli {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::funnelling::table::generate::DEFAULT_COUNTS;
+    use crate::funnelling::table::spec::DEFAULT_COUNTS;
 
     #[test]
     fn the_default_counts_are_the_committed_tables() {

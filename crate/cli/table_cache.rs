@@ -18,7 +18,7 @@
 use std::path::{Path, PathBuf};
 
 use crate::base::vehicle::VehicleParams;
-use crate::funnelling::table::generate::{TableSpec, DEFAULT_COUNTS};
+use crate::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
 use crate::funnelling::table::lookup::EtaTable;
 
 /// Where a table came from.

@@ -265,7 +265,7 @@ pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
     if laps == 0 {
         return v_d;
     }
-    let sc = crate::funnelling::table::generate::VehicleScale::of(p);
+    let sc = crate::funnelling::table::spec::VehicleScale::of(p);
     let floor = v_d.at_most((0.5 * sc.speed).at_least(2.0 * g.vel.length()));
     (v_d / (1.0 + 0.5 * f32::from(laps))).at_least(floor)
 }
@@ -302,13 +302,13 @@ pub struct Terminal {
 impl Terminal {
     /// The carrot distance, m: `lookahead` seconds at the current speed,
     /// the goal's desired speed if higher, and at least 0.5 m/s (seconds
-    /// and speed scaled with the vehicle, [`crate::funnelling::table::generate::VehicleScale`]).
+    /// and speed scaled with the vehicle, [`crate::funnelling::table::spec::VehicleScale`]).
     #[inline]
     #[must_use]
     pub fn look(&self, p: &VehicleParams, s: &VehicleState, g: &Goal) -> f32 {
         // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
         // the vehicle (×1 for the pedestrian; issue 14).
-        let sc = crate::funnelling::table::generate::VehicleScale::of(p);
+        let sc = crate::funnelling::table::spec::VehicleScale::of(p);
         self.lookahead * sc.time() * s.v.at_least(g.speed).at_least(0.5 * sc.speed)
     }
 }

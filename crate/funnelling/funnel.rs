@@ -31,7 +31,7 @@ use crate::base::angle::diff;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::approach::{Approach, Terminal};
 use crate::funnelling::seek::seek_step_committed;
-use crate::funnelling::table::generate::VehicleScale;
+use crate::funnelling::table::spec::VehicleScale;
 use crate::funnelling::table::{lookup::EtaTable, lookup::Lookup};
 
 /// The control mode chosen every step (paper 000 Fig. 5).

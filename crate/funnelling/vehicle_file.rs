@@ -21,7 +21,7 @@
 use serde::Deserialize;
 
 use crate::base::vehicle::VehicleParams;
-use crate::funnelling::table::generate::check_vehicle;
+use crate::funnelling::table::spec::check_vehicle;
 
 /// A parsed vehicle file.
 #[derive(Clone, Debug, PartialEq)]

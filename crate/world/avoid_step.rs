@@ -121,7 +121,7 @@ pub const AVOID_TURN_COMMIT_WINDOW: f32 = core::f32::consts::FRAC_PI_4;
 #[inline]
 fn avoidance_step(p: &VehicleParams, s: &mut VehicleState, heading: f32, speed: f32) {
     let e = diff(heading, s.theta);
-    let e = if s.v < crate::avoidance::avoider::STUCK_SPEED
+    let e = if s.v < crate::avoidance::stalled::STUCK_SPEED
         && e.abs() > core::f32::consts::PI - AVOID_TURN_COMMIT_WINDOW
         && e * s.omega < 0.0
     {

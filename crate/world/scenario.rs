@@ -383,3 +383,19 @@ impl Scenario {
         (self.duration / self.vehicle.dt).round() as u32
     }
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The desired-speed range of `base::ranges` holds in files too.
+    #[test]
+    fn a_desired_speed_of_zero_is_refused_in_files_too() {
+        let text = r#"{"name": "z", "agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0, "speed": 0}]}]}"#;
+        let e = Scenario::from_json(text).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "scenario is inconsistent: agent 0: goal.speed = 0 is outside [0.01, 2]"
+        );
+    }
+}

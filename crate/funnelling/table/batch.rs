@@ -39,7 +39,7 @@ use crate::base::trig;
 use crate::base::vehicle::{Integrator, VehicleParams, VehicleState};
 use crate::funnelling::table::{format::FLAG_ETA_VALID, format::FLAG_REACHABLE};
 
-use super::generate::{Entry, TableSpec};
+use super::spec::{Entry, TableSpec};
 
 /// Simulations advanced together.
 pub const LANES: usize = 4;
@@ -367,7 +367,7 @@ pub fn entries(spec: &TableSpec, range: core::ops::Range<usize>) -> Vec<Option<E
 mod tests {
     use super::*;
     use crate::base::vehicle::VehicleParams;
-    use crate::funnelling::table::generate::TableSpec;
+    use crate::funnelling::table::spec::TableSpec;
 
     /// The interleaved lanes give every entry the one-at-a-time
     /// simulation's bits: both integrators, reachable, fallback and

@@ -11,7 +11,7 @@
 //! The same function runs natively and in wasm, so both caches agree.
 
 use super::format::{BuildParams, AXES, FORMAT_VERSION};
-use super::generate::{generator_dt, TableSpec};
+use super::spec::{generator_dt, TableSpec};
 use super::lookup::EtaTable;
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;

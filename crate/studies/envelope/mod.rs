@@ -49,7 +49,7 @@ use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::controller::{Controller, ControllerKind};
 use crate::funnelling::funnel::{FunnelConfig, Goal, Mode, MuBound};
 use crate::funnelling::relaxed::{RelaxedAim, RelaxedConfig};
-use crate::funnelling::table::generate::VehicleScale;
+use crate::funnelling::table::spec::VehicleScale;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
