@@ -9,7 +9,8 @@ use glam::Vec2;
 use steering::avoidance::{config::AvoidanceConfig, config::AvoidanceMethod};
 use steering::base::rng::Rng;
 use steering::base::vehicle::{VehicleParams, VehicleState};
-use steering::funnelling::funnel::{FunnelConfig, Goal};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::goal::Goal;
 use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 /// The lattice world with `side × side` agents and avoidance `method`.

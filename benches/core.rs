@@ -19,9 +19,11 @@ use glam::Vec2;
 use steering::base::rng::Rng;
 use steering::base::trig::unit;
 use steering::base::vehicle::{VehicleParams, VehicleState};
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, MuBound};
+use steering::funnelling::config::{FunnelConfig, MuBound};
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Update;
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -128,7 +130,13 @@ impl Pieces {
         let mut s = self.st[k & 1023];
         let g = if far { &self.far } else { &self.near }[k & 1023];
         let mut m = FunnelMemory::default();
-        black_box(cfg.step(&self.t, &self.p, &mut s, black_box(&g), &mut m));
+        black_box(cfg.step(&mut Update {
+            table: &self.t,
+            params: &self.p,
+            state: &mut s,
+            goal: black_box(&g),
+            memory: &mut m,
+        }));
         black_box(s);
     }
 }

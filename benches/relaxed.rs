@@ -17,10 +17,12 @@ use criterion::{criterion_group, Criterion};
 use glam::Vec2;
 use steering::base::rng::Rng;
 use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::Controller;
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::relaxed::{EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Update;
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -74,7 +76,14 @@ fn update(t: &EtaTable, p: &VehicleParams, c: &Controller, case: &(VehicleState,
     let mut s = case.0;
     let mut mem = FunnelMemory::default();
     let mut ri = RelaxedInternals::default();
-    black_box(c.step(t, p, &mut s, black_box(&case.1), &mut mem, &mut ri));
+    let mut u = Update {
+        table: t,
+        params: p,
+        state: &mut s,
+        goal: black_box(&case.1),
+        memory: &mut mem,
+    };
+    black_box(c.step(&mut u, &mut ri));
     black_box(&s);
 }
 

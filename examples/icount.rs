@@ -12,9 +12,11 @@ use glam::Vec2;
 use std::hint::black_box;
 use steering::base::rng::Rng;
 use steering::base::vehicle::{VehicleParams, VehicleState};
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Update;
 fn main() {
     let what = std::env::args().nth(1).unwrap_or_else(|| "funnel".into());
     let n: usize = std::env::args()
@@ -65,7 +67,13 @@ fn main() {
                     beta: q[5],
                     ..Default::default()
                 };
-                black_box(cfg.step(&t, &p, &mut st, &g, &mut FunnelMemory::default()));
+                black_box(cfg.step(&mut Update {
+                    table: &t,
+                    params: &p,
+                    state: &mut st,
+                    goal: &g,
+                    memory: &mut FunnelMemory::default(),
+                }));
                 // The moved state is the update's result too: without this
                 // the integrator was dead code (1,279 instructions counted
                 // before issue 13's second stop, integrator and θ's sin/cos

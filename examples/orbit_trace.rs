@@ -3,8 +3,8 @@
 //! laps, mode, D to the goal and its least value so far, the aim point
 //! (distance, α), v_dt, passes; `VEHICLE` and `TABLE` as in
 //! `examples/orbits.rs`. Runs 150 s.
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::ControllerKind;
-use steering::funnelling::funnel::FunnelConfig;
 use steering::funnelling::relaxed::RelaxedConfig;
 use steering::studies::envelope::GoalKind;
 use steering::world::World;

@@ -3,8 +3,8 @@
 //! `VEHICLE=robot TABLE=path/to/its/eta-KEY.bin` (a reference vehicle
 //! of `scenarios/vehicles/` and its table, e.g. from `steer run`'s cache);
 //! runs get the study's time limit scaled to the vehicle.
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::Controller;
-use steering::funnelling::funnel::FunnelConfig;
 use steering::funnelling::relaxed::RelaxedConfig;
 use steering::studies::envelope::{run, GoalKind};
 #[path = "common/moving.rs"]

@@ -12,7 +12,7 @@
 //! the caller can check both sides did the same work.
 use std::time::Instant;
 
-use steering::funnelling::funnel::FunnelConfig;
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::world::World;
 

@@ -11,9 +11,9 @@ use core::f32::consts::{FRAC_PI_2, PI, TAU};
 use glam::Vec2;
 use steering::base::angle::diff;
 use steering::funnelling::controller::ControllerKind;
-use steering::funnelling::funnel::Mode;
 use steering::funnelling::relaxed::{Fig7Branch, RelaxedAim};
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Mode;
 use steering::world::scenario::Scenario;
 use steering::world::World;
 
@@ -966,7 +966,7 @@ mod wander {
 
 mod paper_size_table {
     use steering::base::vehicle::VehicleParams;
-    use steering::funnelling::funnel::FunnelConfig;
+    use steering::funnelling::config::FunnelConfig;
     use steering::funnelling::table::spec::{turn_radius, TableSpec};
     use steering::studies::reach::{summarise, ReachStudy};
     use steering::studies::vehicle::accuracy;

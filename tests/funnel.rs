@@ -5,8 +5,10 @@
 use glam::Vec2;
 use steering::base::angle::diff;
 use steering::base::vehicle::{VehicleParams, VehicleState};
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::{Mode, Update};
 use steering::studies::reach::{run, summarise, ReachStudy};
 use steering::world::scenario::Scenario;
 use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
@@ -14,14 +16,14 @@ use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Wor
 mod common;
 use common::table;
 
-fn plan(t: &EtaTable, s: VehicleState, g: &Goal) -> steering::funnelling::funnel::Internals {
-    FunnelConfig::default().plan(
-        t,
-        &VehicleParams::default(),
-        &s,
-        g,
-        &mut FunnelMemory::default(),
-    )
+fn plan(t: &EtaTable, s: VehicleState, g: &Goal) -> steering::funnelling::update::Internals {
+    FunnelConfig::default().plan(&mut Update {
+        table: t,
+        params: &VehicleParams::default(),
+        state: &mut s.clone(),
+        goal: g,
+        memory: &mut FunnelMemory::default(),
+    })
 }
 
 #[test]
@@ -146,7 +148,14 @@ fn deviation_from_seek(lo: f32, hi: f32) -> (f32, f32, f32) {
             let mut mem = FunnelMemory::default();
             let mut pts = vec![s.pos];
             for _ in 0..steps {
-                if cfg.step(&t, &p, &mut s, &g, &mut mem).mode == Mode::EndOfSteering {
+                let mut u = Update {
+                    table: &t,
+                    params: &p,
+                    state: &mut s,
+                    goal: &g,
+                    memory: &mut mem,
+                };
+                if cfg.step(&mut u).mode == Mode::EndOfSteering {
                     break;
                 }
                 pts.push(s.pos);
@@ -223,7 +232,13 @@ fn targets_behind_are_turned_to_not_chattered_at() {
         let mut s = start;
         let mut mem = FunnelMemory::default();
         let arrived = (0..(study.max_time / p.dt) as u32).any(|_| {
-            let o = cfg.plan(&t, &p, &s, &g, &mut mem);
+            let o = cfg.plan(&mut Update {
+                table: &t,
+                params: &p,
+                state: &mut s,
+                goal: &g,
+                memory: &mut mem,
+            });
             steering::funnelling::seek::seek_step(&p, &mut s, o.gamma, o.v_dt);
             o.mode == Mode::EndOfSteering
         });

@@ -300,7 +300,8 @@ proptest! {
             0..4,
         ),
     ) {
-        use steering::funnelling::funnel::{FunnelConfig, Goal};
+        use steering::funnelling::config::FunnelConfig;
+        use steering::funnelling::goal::Goal;
         use steering::base::vehicle::VehicleParams;
         use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
         let p = VehicleParams { v_max, dt, ..VehicleParams::default() };

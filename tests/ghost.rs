@@ -16,10 +16,12 @@ use glam::Vec2;
 use steering::base::angle::{diff, wrap};
 use steering::base::rng::Rng;
 use steering::base::vehicle::{VehicleParams, VehicleState};
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::{simulate_reach, ReachOutcome};
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Update;
 
 const MAX_POINTS: usize = 256;
 
@@ -163,7 +165,13 @@ fn the_update_ghost_is_the_seek_the_funnel_asked_about() {
             vel: Vec2::ZERO,
         };
         let mut mem = FunnelMemory::default();
-        let inter = cfg.plan(&t, &p, &s, &g, &mut mem);
+        let inter = cfg.plan(&mut Update {
+            table: &t,
+            params: &p,
+            state: &mut s.clone(),
+            goal: &g,
+            memory: &mut mem,
+        });
         let ghost: Ghost = update_ghost(&t, &p, &s, &inter, &g, MAX_POINTS, &mut out);
         if inter.aim_d <= 0.0 {
             continue; // inside the tolerance or on the terminal line

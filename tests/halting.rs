@@ -9,10 +9,11 @@ use steering::base::vehicle::{VehicleParams, VehicleState};
 use steering::funnelling::approach::halting_speed;
 use steering::funnelling::approach::{braking_distance, rest_rotation};
 use steering::funnelling::controller::ControllerKind;
-use steering::funnelling::funnel::{Goal, Mode};
+use steering::funnelling::goal::Goal;
 use steering::funnelling::relaxed::RelaxedConfig;
 use steering::funnelling::seek::seek_step;
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Mode;
 use steering::studies::envelope::{run, variants, EnvelopeStudy, GoalKind};
 use steering::world::scenario::Scenario;
 use steering::world::{

@@ -46,13 +46,20 @@ fn crate_dir() -> PathBuf {
 
 /// Every `.rs` file under `dir`, as paths relative to `crate/` with `/`.
 fn rust_files(dir: &Path, base: &Path, out: &mut Vec<String>) {
-    let mut entries: Vec<_> = fs::read_dir(dir).unwrap().map(|e| e.unwrap().path()).collect();
+    let mut entries: Vec<_> = fs::read_dir(dir)
+        .unwrap()
+        .map(|e| e.unwrap().path())
+        .collect();
     entries.sort();
     for p in entries {
         if p.is_dir() {
             rust_files(&p, base, out);
         } else if p.extension().is_some_and(|e| e == "rs") {
-            let rel = p.strip_prefix(base).unwrap().to_string_lossy().replace('\\', "/");
+            let rel = p
+                .strip_prefix(base)
+                .unwrap()
+                .to_string_lossy()
+                .replace('\\', "/");
             out.push(rel);
         }
     }
@@ -91,7 +98,8 @@ fn code_only(src: &str) -> String {
                     i += 1;
                 }
             }
-        } else if c == b'r' && (b.get(i + 1) == Some(&b'"') || b.get(i + 1) == Some(&b'#'))
+        } else if c == b'r'
+            && (b.get(i + 1) == Some(&b'"') || b.get(i + 1) == Some(&b'#'))
             && (i == 0 || !(b[i - 1].is_ascii_alphanumeric() || b[i - 1] == b'_'))
         {
             // A raw string: r"..." or r#"..."#.
@@ -106,7 +114,9 @@ fn code_only(src: &str) -> String {
                 i += 1;
                 continue;
             }
-            let close: Vec<u8> = std::iter::once(b'"').chain(std::iter::repeat_n(b'#', hashes)).collect();
+            let close: Vec<u8> = std::iter::once(b'"')
+                .chain(std::iter::repeat_n(b'#', hashes))
+                .collect();
             out.extend(std::iter::repeat_n(b' ', j + 1 - i));
             i = j + 1;
             while i < b.len() && !b[i..].starts_with(&close) {
@@ -133,7 +143,10 @@ fn code_only(src: &str) -> String {
         } else if c == b'\'' {
             // A char literal ('a', '\n', '\u{..}') or a lifetime ('a).
             let end = if b.get(i + 1) == Some(&b'\\') {
-                b[i + 2..].iter().position(|&x| x == b'\'').map(|p| i + 2 + p)
+                b[i + 2..]
+                    .iter()
+                    .position(|&x| x == b'\'')
+                    .map(|p| i + 2 + p)
             } else if b.get(i + 2) == Some(&b'\'') {
                 Some(i + 2)
             } else {
@@ -160,7 +173,11 @@ fn code_only(src: &str) -> String {
 
 /// The module path of a file (`world/mod.rs` → `["world"]`, `lib.rs` → `[]`).
 fn module_of(file: &str) -> Vec<String> {
-    let mut parts: Vec<String> = file.trim_end_matches(".rs").split('/').map(String::from).collect();
+    let mut parts: Vec<String> = file
+        .trim_end_matches(".rs")
+        .split('/')
+        .map(String::from)
+        .collect();
     if matches!(parts.last().map(String::as_str), Some("mod" | "lib")) {
         parts.pop();
     }
@@ -190,7 +207,10 @@ fn top_folder(file: &str) -> &str {
 
 fn layer(file: &str) -> u32 {
     let top = top_folder(file);
-    LAYERS.iter().find(|(f, _)| *f == top).map_or(ROOT_LAYER, |&(_, l)| l)
+    LAYERS
+        .iter()
+        .find(|(f, _)| *f == top)
+        .map_or(ROOT_LAYER, |&(_, l)| l)
 }
 
 /// One import: where it is written and the file it resolves to.
@@ -305,7 +325,8 @@ fn imports_of(files: &BTreeSet<String>, file: &str, src: &str) -> Vec<Import> {
             .iter()
             .filter_map(|f| {
                 let m = module_of(f);
-                (m.len() == here.len() + 1 && m[..here.len()] == here[..]).then(|| m[here.len()].clone())
+                (m.len() == here.len() + 1 && m[..here.len()] == here[..])
+                    .then(|| m[here.len()].clone())
             })
             .collect()
     } else {
@@ -331,7 +352,16 @@ fn imports_of(files: &BTreeSet<String>, file: &str, src: &str) -> Vec<Import> {
             end = brace_paths(b, j + 1, &segs, &mut paths);
         }
         for segs in paths {
-            if let Some(im) = import_of(files, file, &here, &children, is_mod_root, depth[i] as usize, &segs, line_of(i)) {
+            if let Some(im) = import_of(
+                files,
+                file,
+                &here,
+                &children,
+                is_mod_root,
+                depth[i] as usize,
+                &segs,
+                line_of(i),
+            ) {
                 out.push(im);
             }
         }
@@ -383,7 +413,12 @@ fn import_of(
             _ => None,
         };
         let to = resolve(files, &target?)?;
-        (to != file).then(|| Import { from: file.into(), line, path: segs.join("::"), to })
+        (to != file).then(|| Import {
+            from: file.into(),
+            line,
+            path: segs.join("::"),
+            to,
+        })
     }
 }
 
@@ -442,8 +477,18 @@ fn cycles(edges: &BTreeMap<String, BTreeSet<String>>) -> Vec<Vec<String>> {
             }
         }
     }
-    let mut t = T { e: edges, index: BTreeMap::new(), low: BTreeMap::new(), stack: vec![], on: BTreeSet::new(), out: vec![] };
-    let nodes: BTreeSet<String> = edges.iter().flat_map(|(k, v)| std::iter::once(k.clone()).chain(v.iter().cloned())).collect();
+    let mut t = T {
+        e: edges,
+        index: BTreeMap::new(),
+        low: BTreeMap::new(),
+        stack: vec![],
+        on: BTreeSet::new(),
+        out: vec![],
+    };
+    let nodes: BTreeSet<String> = edges
+        .iter()
+        .flat_map(|(k, v)| std::iter::once(k.clone()).chain(v.iter().cloned()))
+        .collect();
     for v in &nodes {
         if !t.index.contains_key(v) {
             visit(&mut t, v);
@@ -482,7 +527,15 @@ fn violations(imports: &[Import]) -> Vec<String> {
     let mut dirs: BTreeSet<String> = BTreeSet::from([String::new()]);
     for im in imports {
         let mut d = String::new();
-        for part in im.from.split('/').rev().skip(1).collect::<Vec<_>>().into_iter().rev() {
+        for part in im
+            .from
+            .split('/')
+            .rev()
+            .skip(1)
+            .collect::<Vec<_>>()
+            .into_iter()
+            .rev()
+        {
             d.push_str(part);
             d.push('/');
             dirs.insert(d.clone());
@@ -503,7 +556,10 @@ fn violations(imports: &[Import]) -> Vec<String> {
             let mut lines = vec![format!("a cycle in crate/{dir}: {}", comp.join(", "))];
             for ((a, b), im) in &witness {
                 if comp.contains(a) && comp.contains(b) {
-                    lines.push(format!("  crate/{}:{}: `{}` ({a} → {b})", im.from, im.line, im.path));
+                    lines.push(format!(
+                        "  crate/{}:{}: `{}` ({a} → {b})",
+                        im.from, im.line, im.path
+                    ));
                 }
             }
             msgs.push(lines.join("\n"));
@@ -515,28 +571,60 @@ fn violations(imports: &[Import]) -> Vec<String> {
 #[test]
 fn every_import_goes_down_the_layers_without_cycles() {
     let imports = all_imports();
-    assert!(imports.len() > 300, "the scan found only {} imports: is it reading crate/?", imports.len());
+    assert!(
+        imports.len() > 300,
+        "the scan found only {} imports: is it reading crate/?",
+        imports.len()
+    );
     let v = violations(&imports);
-    assert!(v.is_empty(), "{} violations of the layers (DESIGN §12):\n{}", v.len(), v.join("\n"));
+    assert!(
+        v.is_empty(),
+        "{} violations of the layers (DESIGN §12):\n{}",
+        v.len(),
+        v.join("\n")
+    );
 }
 
 #[test]
 fn the_checker_sees_an_upward_import_and_a_cycle() {
-    let files: BTreeSet<String> =
-        ["lib.rs", "base/mod.rs", "base/angle.rs", "base/rng.rs", "world/mod.rs"].iter().map(|s| s.to_string()).collect();
+    let files: BTreeSet<String> = [
+        "lib.rs",
+        "base/mod.rs",
+        "base/angle.rs",
+        "base/rng.rs",
+        "world/mod.rs",
+    ]
+    .iter()
+    .map(|s| s.to_string())
+    .collect();
     let planted = "//! doc: crate::world::World is fine here\nuse crate::world::World;\nuse super::rng::Rng;\n";
     let mut imports = imports_of(&files, "base/angle.rs", planted);
     assert_eq!(imports.len(), 2, "{imports:?}");
-    assert_eq!((imports[0].line, imports[0].to.as_str()), (2, "world/mod.rs"));
-    imports.extend(imports_of(&files, "base/rng.rs", "fn f() { crate::base::angle::wrap(1.0); }"));
+    assert_eq!(
+        (imports[0].line, imports[0].to.as_str()),
+        (2, "world/mod.rs")
+    );
+    imports.extend(imports_of(
+        &files,
+        "base/rng.rs",
+        "fn f() { crate::base::angle::wrap(1.0); }",
+    ));
     let v = violations(&imports);
-    assert!(v.iter().any(|m| m.contains("crate/base/angle.rs:2") && m.contains("upward")), "{v:?}");
-    assert!(v.iter().any(|m| m.contains("a cycle in crate/base/")), "{v:?}");
+    assert!(
+        v.iter()
+            .any(|m| m.contains("crate/base/angle.rs:2") && m.contains("upward")),
+        "{v:?}"
+    );
+    assert!(
+        v.iter().any(|m| m.contains("a cycle in crate/base/")),
+        "{v:?}"
+    );
 }
 
 #[test]
 fn comments_and_strings_are_not_imports() {
-    let code = code_only("let s = \"crate::world\"; // crate::world\n/* crate::world */ let c = '\"'; x");
+    let code =
+        code_only("let s = \"crate::world\"; // crate::world\n/* crate::world */ let c = '\"'; x");
     assert!(!code.contains("world"), "{code}");
     assert!(code.ends_with('x'));
 }
@@ -554,7 +642,12 @@ fn long_functions(file: &str, src: &str) -> Vec<String> {
             break; // test modules close the file by convention
         }
         let is_fn = l.split("fn ").next().is_some_and(|pre| {
-            pre.split_whitespace().all(|w| matches!(w, "pub" | "pub(crate)" | "pub(super)" | "const" | "async" | "unsafe" | "extern"))
+            pre.split_whitespace().all(|w| {
+                matches!(
+                    w,
+                    "pub" | "pub(crate)" | "pub(super)" | "const" | "async" | "unsafe" | "extern"
+                )
+            })
         }) && l.contains("fn ");
         if is_fn {
             let mut depth = 0i32;
@@ -579,8 +672,17 @@ fn long_functions(file: &str, src: &str) -> Vec<String> {
             }
             let n = j + 1 - i;
             if started && n > MAX_FN_LINES {
-                let name = l.split("fn ").nth(1).unwrap_or("").split(['(', '<']).next().unwrap_or("");
-                out.push(format!("crate/{file}:{}: fn {name} is {n} lines (at most {MAX_FN_LINES})", i + 1));
+                let name = l
+                    .split("fn ")
+                    .nth(1)
+                    .unwrap_or("")
+                    .split(['(', '<'])
+                    .next()
+                    .unwrap_or("");
+                out.push(format!(
+                    "crate/{file}:{}: fn {name} is {n} lines (at most {MAX_FN_LINES})",
+                    i + 1
+                ));
             }
         }
         i += 1;
@@ -593,9 +695,15 @@ fn no_function_is_longer_than_150_lines() {
     let dir = crate_dir();
     let mut list = Vec::new();
     rust_files(&dir, &dir, &mut list);
-    let long: Vec<String> =
-        list.iter().flat_map(|f| long_functions(f, &fs::read_to_string(dir.join(f)).unwrap())).collect();
-    assert!(long.is_empty(), "functions waiting for named steps:\n{}", long.join("\n"));
+    let long: Vec<String> = list
+        .iter()
+        .flat_map(|f| long_functions(f, &fs::read_to_string(dir.join(f)).unwrap()))
+        .collect();
+    assert!(
+        long.is_empty(),
+        "functions waiting for named steps:\n{}",
+        long.join("\n")
+    );
 }
 
 /// The word issue or stop followed by a number, case-insensitive.
@@ -621,12 +729,22 @@ fn the_code_says_why_not_when() {
     list.extend(["Makefile".to_string(), "Cargo.toml".to_string()]);
     let mut hits = Vec::new();
     for f in &list {
-        for (k, line) in fs::read_to_string(root.join(f)).unwrap().lines().enumerate() {
+        for (k, line) in fs::read_to_string(root.join(f))
+            .unwrap()
+            .lines()
+            .enumerate()
+        {
             if names_history(line) && !line.contains("names_history") {
                 hits.push(format!("{f}:{}: {}", k + 1, line.trim()));
             }
         }
     }
-    assert!(names_history("see Issue 17") && !names_history("reissue 3") && !names_history("stop at 3"));
-    assert!(hits.is_empty(), "history in the code (the git log keeps it; say why instead):\n{}", hits.join("\n"));
+    assert!(
+        names_history("see Issue 17") && !names_history("reissue 3") && !names_history("stop at 3")
+    );
+    assert!(
+        hits.is_empty(),
+        "history in the code (the git log keeps it; say why instead):\n{}",
+        hits.join("\n")
+    );
 }

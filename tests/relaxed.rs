@@ -10,12 +10,15 @@ use core::f32::consts::PI;
 use glam::Vec2;
 use proptest::prelude::*;
 use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::{Controller, ControllerKind};
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::relaxed::{
     interval_delta, relaxed_direction, Fig7Branch, RelaxedAim, RelaxedConfig, RelaxedInternals,
 };
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Mode;
+use steering::funnelling::update::Update;
 use steering::studies::region::RegionStudy;
 use steering::world::scenario::Scenario;
 use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
@@ -180,7 +183,7 @@ fn plan(
     t: &EtaTable,
     s: VehicleState,
     g: &Goal,
-) -> (steering::funnelling::funnel::Internals, RelaxedInternals) {
+) -> (steering::funnelling::update::Internals, RelaxedInternals) {
     plan_with(&paper(), t, s, g)
 }
 
@@ -189,17 +192,16 @@ fn plan_with(
     t: &EtaTable,
     s: VehicleState,
     g: &Goal,
-) -> (steering::funnelling::funnel::Internals, RelaxedInternals) {
+) -> (steering::funnelling::update::Internals, RelaxedInternals) {
     let mut ri = RelaxedInternals::default();
-    let i = c.plan(
-        &FunnelConfig::default(),
-        t,
-        &VehicleParams::default(),
-        &s,
-        g,
-        &mut FunnelMemory::default(),
-        &mut ri,
-    );
+    let mut u = Update {
+        table: t,
+        params: &VehicleParams::default(),
+        state: &mut s.clone(),
+        goal: g,
+        memory: &mut FunnelMemory::default(),
+    };
+    let i = c.plan(&FunnelConfig::default(), &mut u, &mut ri);
     (i, ri)
 }
 

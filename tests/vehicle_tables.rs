@@ -8,10 +8,8 @@ use std::path::{Path, PathBuf};
 use std::process::Command;
 
 use steering::base::vehicle::VehicleParams;
-use steering::funnelling::table::spec::{
-    check_vehicle, TableSpec, VehicleScale, DEFAULT_COUNTS,
-};
 use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::table::spec::{check_vehicle, TableSpec, VehicleScale, DEFAULT_COUNTS};
 use steering::funnelling::vehicle_file::{self, REFERENCE};
 
 fn committed() -> Vec<u8> {

@@ -212,7 +212,7 @@ fn effective_max(r: &FieldRange) -> f64 {
     if r.key.ends_with("pos.x") || r.key.ends_with("pos.y") || on_circle {
         let p = steering::base::vehicle::VehicleParams::default();
         let goal = steering::world::goals::GoalSpec {
-            goal: steering::funnelling::funnel::Goal {
+            goal: steering::funnelling::goal::Goal {
                 speed: 1.3,
                 d_tol: 0.3,
                 ..Default::default()

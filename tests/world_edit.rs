@@ -7,7 +7,8 @@
 
 use glam::Vec2;
 use steering::base::vehicle::{VehicleParams, VehicleState};
-use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::world::edit::{EditError, MAX_AGENTS, RANDOM_GOALS};
 use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 

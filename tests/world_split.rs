@@ -6,7 +6,7 @@
 
 use steering::avoidance::{config::AvoidanceConfig, config::AvoidanceMethod};
 use steering::base::vehicle::VehicleParams;
-use steering::funnelling::funnel::FunnelConfig;
+use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::world::scenario::Scenario;
 use steering::world::split::SplitError;

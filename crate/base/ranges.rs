@@ -7,7 +7,7 @@
 //! refused by the core (an empty playground), `#vd=0` gave an agent that
 //! never moves. Here each field is one [`FieldRange`] constant; the core's
 //! validation ([`VehicleParams::validate`](crate::base::vehicle::VehicleParams::validate),
-//! [`Goal::validate`](crate::funnelling::funnel::Goal::validate), the funnel, relaxed,
+//! [`Goal::validate`](crate::funnelling::goal::Goal::validate), the funnel, relaxed,
 //! scenario and world-edit checks) calls [`FieldRange::check`] on it, and
 //! the bindings export [`ALL`] (`ranges()`), from which the page derives its
 //! URL decoder, sliders and number inputs.

@@ -36,8 +36,8 @@ use steering::cli::steer::{
     AvoidArgs, Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli,
 };
 use steering::cli::trajectory::{check_out_path, create_out, stream_run};
+use steering::funnelling::config::{FunnelConfig, MuBound};
 use steering::funnelling::controller::{Controller, ControllerKind};
-use steering::funnelling::funnel::{FunnelConfig, MuBound};
 use steering::funnelling::table::lookup::EtaTable;
 use steering::studies::reach::{summarise, ReachStudy};
 use steering::studies::region::{compare, Comparison, RegionStudy};

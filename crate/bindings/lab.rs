@@ -22,13 +22,14 @@ use super::lab_types::{
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
+use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
-use crate::funnelling::funnel::{FunnelConfig, Internals, Mode};
 use crate::funnelling::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
 use crate::funnelling::relaxed::RelaxedConfig;
 use crate::funnelling::seek::ReachLimits;
-use crate::funnelling::table::spec::TableSpec;
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::TableSpec;
+use crate::funnelling::update::{Internals, Mode, Update};
 use crate::world::scenario::Scenario;
 use crate::world::{provisional_plan, World, STATE_STRIDE};
 
@@ -758,14 +759,14 @@ impl Lab {
             // its last update did.
             a.internals
         } else {
-            let mut mem = a.memory;
-            self.world.config.plan(
-                self.table()?,
-                &self.world.params,
-                &a.state,
-                &a.goal_now,
-                &mut mem,
-            )
+            let (mut mem, mut state) = (a.memory, a.state);
+            self.world.config.plan(&mut Update {
+                table: self.table()?,
+                params: &self.world.params,
+                state: &mut state,
+                goal: &a.goal_now,
+                memory: &mut mem,
+            })
         })
     }
 

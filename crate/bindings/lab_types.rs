@@ -8,8 +8,9 @@ use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
 use crate::base::vehicle::VehicleParams;
-use crate::funnelling::funnel::{Goal, Internals};
 use crate::funnelling::ghost::Ghost;
+use crate::funnelling::goal::Goal;
+use crate::funnelling::update::Internals;
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule};
 
 #[wasm_bindgen(typescript_custom_section)]
@@ -47,7 +48,7 @@ export interface VehicleParams {
   kd: number;
   integrator: "euler" | "semiImplicitEuler";
 }
-/** How the modulation μ is bounded (crate::funnelling::funnel::MuBound). `literal`: the
+/** How the modulation μ is bounded (crate::funnelling::config::MuBound). `literal`: the
  *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
  *  π/2; `turningRadius`: atan(factor·max(R_min, minBoundRadius) / D), the
  *  default (factor 8); `constant`: π/2 (does not vanish with distance). */
@@ -57,7 +58,7 @@ export type MuBound =
   | { kind: "turningRadius"; factor: number }
   | { kind: "constant" };
 /** The funnelling controller's settings, shared by every agent
- *  (crate::funnelling::funnel::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
+ *  (crate::funnelling::config::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
  *  bounded by `bound`; Position_only once |Δη| < seekThreshold·ε_tol
  *  (seekThreshold in [0, 1], default 0.25). */
 export interface FunnelConfig {
@@ -71,7 +72,7 @@ export interface FunnelConfig {
   /** The terminal line pursuit (default on; null or absent: off). */
   terminal?: TerminalConfig | null;
 }
-/** The terminal line pursuit (crate::funnelling::approach::Terminal): carrot
+/** The terminal line pursuit (crate::funnelling::config::Terminal): carrot
  *  `lookahead` seconds of travel ahead on the goal's line; starts within
  *  `range` carrot distances of the disk when |β − θ| < `heading` (rad). */
 export interface TerminalConfig {
@@ -89,7 +90,7 @@ export interface RelaxedConfig {
   orientationMargin?: number;
   endEta?: "linear" | "multilinear";
 }
-/** An oriented goal (crate::funnelling::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
+/** An oriented goal (crate::funnelling::goal::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
 export interface GoalConfig {
   x: number;
   y: number;
@@ -109,7 +110,7 @@ export interface AgentConfig {
   omega?: number;
   goals: GoalConfig[];
 }
-/** What one controller update computed (crate::funnelling::funnel::Internals). Angles in rad. */
+/** What one controller update computed (crate::funnelling::update::Internals). Angles in rad. */
 export interface Internals {
   /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
   mode: 0 | 1 | 2 | 3;

@@ -313,11 +313,11 @@ impl EnvelopeArgs {
     /// Not a `FunnelConfig`, or a value out of range.
     pub fn standard_config(
         &self,
-    ) -> Result<Option<crate::funnelling::funnel::FunnelConfig>, String> {
+    ) -> Result<Option<crate::funnelling::config::FunnelConfig>, String> {
         let Some(json) = &self.standard else {
             return Ok(None);
         };
-        let cfg: crate::funnelling::funnel::FunnelConfig =
+        let cfg: crate::funnelling::config::FunnelConfig =
             serde_json::from_str(json).map_err(|e| format!("--standard: {e}"))?;
         cfg.validate().map_err(|e| format!("--standard: {e}"))?;
         Ok(Some(cfg))

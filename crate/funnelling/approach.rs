@@ -16,17 +16,18 @@
 //! speed `v_dt`), and, when an orientation correction is needed, the bounded
 //! modulation μ of Fig. 4 around the aim direction ([`Approach::funnel`]).
 
-use crate::base::minmax::MinMax;
 use core::cell::Cell;
 use core::ops::ControlFlow;
 
 use glam::Vec2;
-use serde::{Deserialize, Serialize};
 
 use crate::base::angle::{diff, wrap};
+use crate::base::minmax::MinMax;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::funnel::{Aim, FunnelConfig, FunnelMemory, Goal, Internals, Mode};
-use crate::funnelling::table::{lookup::EtaTable, lookup::Lookup};
+use crate::funnelling::config::{Aim, FunnelConfig, Terminal};
+use crate::funnelling::goal::{BetaDir, FunnelMemory, Goal};
+use crate::funnelling::table::lookup::{EtaTable, Lookup};
+use crate::funnelling::update::{Internals, Mode, Update};
 
 /// Speed cap for final halting: the speed from which the vehicle can
 /// still brake to rest at the target with 80 % of its deceleration.
@@ -162,81 +163,6 @@ pub fn tolerance_phase(
     false
 }
 
-/// The laps of a vehicle circling a goal moving by itself without entering
-/// its disk ([`FunnelMemory::lap`]), and what counts them. Three ways round count:
-/// - a full turn of the heading, signed: the vehicle circles the goal or
-///   the point it aims at;
-/// - a *near miss*: the vehicle passes the goal (crosses the line through
-///   its centre across β, going β's way) beside the disk, within a
-///   turning radius at the desired speed: it came in along β but
-///   laterally off, and must come round again;
-/// - a lap's length of travel, `2π` turning radii at the desired speed
-///   plus `D_tol`, without coming closer to the goal than before: the
-///   vehicle hovers near the goal (or near its runway) as fast as it
-///   moves, getting no closer.
-///
-/// Each count starts afresh after a lap, and on entering the disk. The
-/// same state twice (the relaxed controller's fallback plans again)
-/// counts nothing. Constant cost: a few products and one square root.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct LapCount {
-    /// Laps so far.
-    pub laps: u8,
-    /// The heading turned (signed, rad) since the last lap was counted
-    /// or the disk was last entered.
-    turned: f32,
-    /// The heading at the previous update, rad (`turned` adds the change).
-    last_theta: f32,
-    /// `last_theta` and `last_pos` hold the previous update's (false until
-    /// the first update).
-    started: bool,
-    /// The position at the previous update, m.
-    last_pos: Vec2,
-    /// The least distance to the goal since the last lap, m.
-    best_d: f32,
-    /// The distance travelled since `best_d` last fell, m.
-    travel: f32,
-    /// The vehicle was ahead of the goal along β at the previous update
-    /// (a near miss crosses from behind to ahead beside the disk).
-    ahead: bool,
-}
-
-impl LapCount {
-    /// Counts this update (vehicle `s`, goal `g` at distance `d`, β's
-    /// direction `u`, turning radius at the desired speed `radius`).
-    #[inline]
-    fn observe(&mut self, s: &VehicleState, g: &Goal, u: Vec2, radius: f32, d: f32) {
-        if self.started && s.pos == self.last_pos {
-            return;
-        }
-        let r = s.pos - g.pos;
-        let ahead = r.dot(u) >= 0.0;
-        if d < g.d_tol || !self.started || d < self.best_d {
-            self.best_d = d;
-            self.travel = 0.0;
-        } else {
-            self.travel += (s.pos - self.last_pos).length();
-        }
-        if d < g.d_tol {
-            self.turned = 0.0;
-        } else if self.started {
-            self.turned += diff(s.theta, self.last_theta);
-            let missed = ahead && !self.ahead && r.perp_dot(u).abs() < g.d_tol + radius;
-            let stalled = self.travel > core::f32::consts::TAU * radius + g.d_tol;
-            if missed || stalled || self.turned.abs() >= core::f32::consts::TAU {
-                self.laps = self.laps.saturating_add(1);
-                self.turned = 0.0;
-                self.travel = 0.0;
-                self.best_d = d;
-            }
-        }
-        self.ahead = ahead;
-        self.last_theta = s.theta;
-        self.last_pos = s.pos;
-        self.started = true;
-    }
-}
-
 /// The desired speed a goal moving by itself is approached with after
 /// `laps` laps around it ([`FunnelMemory::lap`]): `v_d / (1 + laps/2)`,
 /// not below the slower of `v_d` and the larger of 0.5 m/s (scaled with
@@ -268,59 +194,6 @@ pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
     let sc = crate::funnelling::table::spec::VehicleScale::of(p);
     let floor = v_d.at_most((0.5 * sc.speed).at_least(2.0 * g.vel.length()));
     (v_d / (1.0 + 0.5 * f32::from(laps))).at_least(floor)
-}
-
-/// The terminal line pursuit: the last stretch before the tolerance disk,
-/// steered along the goal's line instead of by the table.
-///
-/// Why: the η table predicts the heading on reaching a point, and close to
-/// a point that prediction is ill-conditioned. Seeking a point at 0.3 m
-/// with a lateral offset of 1 cm already means a heading 2° off, so at
-/// ε_tol 2° the funnelled approaches that were right to within the
-/// table's interpolation error still entered the disk 2–4° off (issue 13,
-/// tune seed: 67 % oriented on entry at ε_tol 2°, D ≥ 5 m). Once the
-/// vehicle is behind the disk, close to the line through the goal along β
-/// and already nearly facing β, it pursues a carrot on that line one
-/// `lookahead`-second of travel ahead of its projection (pure pursuit):
-/// the lateral offset and the heading error decay together, and the disk
-/// is entered along β. Measured on the envelope (tune seed 1): median
-/// entry error 4.4° → 2.9°, ε_tol 2° cells at D ≥ 5 m 73 % → 85 % at
-/// worst. It replaces neither the table nor the funnel: a vehicle that is
-/// not nearly lined up is funnelled as before.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields, rename_all = "camelCase")]
-pub struct Terminal {
-    /// Carrot distance ahead of the projection, as seconds of travel at
-    /// the current speed (at least 0.5 m/s), s.
-    pub lookahead: f32,
-    /// Largest heading error |β − θ| at which the stage starts, rad.
-    pub heading: f32,
-    /// The stage starts within this many carrot distances of the disk.
-    pub range: f32,
-}
-
-impl Terminal {
-    /// The carrot distance, m: `lookahead` seconds at the current speed,
-    /// the goal's desired speed if higher, and at least 0.5 m/s (seconds
-    /// and speed scaled with the vehicle, [`crate::funnelling::table::spec::VehicleScale`]).
-    #[inline]
-    #[must_use]
-    pub fn look(&self, p: &VehicleParams, s: &VehicleState, g: &Goal) -> f32 {
-        // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
-        // the vehicle (×1 for the pedestrian; issue 14).
-        let sc = crate::funnelling::table::spec::VehicleScale::of(p);
-        self.lookahead * sc.time() * s.v.at_least(g.speed).at_least(0.5 * sc.speed)
-    }
-}
-
-impl Default for Terminal {
-    fn default() -> Self {
-        Self {
-            lookahead: 1.0,
-            heading: 0.5,
-            range: 1.0,
-        }
-    }
 }
 
 /// Where to aim for a goal in motion (issue 13): the goal as it will be
@@ -374,54 +247,6 @@ pub fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
     (d, bearing, diff(bearing, s.theta))
 }
 
-/// The unit vector of a goal's orientation β, kept in the agent's
-/// [`FunnelMemory`] from one update to the next.
-///
-/// Why (issue 17): the entry aim and the terminal pursuit need β's
-/// direction every update, and [`crate::base::trig::sin_cos`] (f64, for bits that
-/// are the same natively and in wasm) was about a tenth of a world step
-/// (`examples/world_bench.rs`, 1,000 agents: 186 → 170 ns per agent update
-/// without it). A goal's β changes only with the goal (or every step for
-/// a goal that follows an agent or circles), so the vector is recomputed
-/// only when β's bits differ from the kept ones: the same vector, the same
-/// bits. A cache, not state: any two compare equal, and it is not
-/// serialised.
-#[derive(Clone, Copy, Debug)]
-pub struct BetaDir {
-    /// β's bits, `u32::MAX` (a NaN no valid goal has) when empty.
-    beta: u32,
-    dir: Vec2,
-}
-
-impl Default for BetaDir {
-    fn default() -> Self {
-        Self {
-            beta: u32::MAX,
-            dir: Vec2::NAN,
-        }
-    }
-}
-
-impl PartialEq for BetaDir {
-    fn eq(&self, _: &Self) -> bool {
-        true
-    }
-}
-
-impl Eq for BetaDir {}
-
-impl BetaDir {
-    /// `(cos β, sin β)`: kept, or computed and kept.
-    #[inline]
-    pub fn unit(&mut self, beta: f32) -> Vec2 {
-        if beta.to_bits() != self.beta {
-            self.dir = crate::base::trig::unit(beta);
-            self.beta = beta.to_bits();
-        }
-        self.dir
-    }
-}
-
 /// One update's view of its goal, once the tolerance phase has let it
 /// through: the context (table, vehicle) and what was measured.
 #[derive(Clone, Copy, Debug)]
@@ -460,13 +285,10 @@ impl<'a> Approach<'a> {
     /// approach and the internals filled so far (`d`, `alpha`, `gamma` =
     /// bearing, `v_dt` = `v_d`, reachable).
     #[inline(always)]
-    pub fn begin(
-        table: &'a EtaTable,
-        p: &'a VehicleParams,
-        s: &'a VehicleState,
-        g: &Goal,
-        mem: &'a mut FunnelMemory,
-    ) -> ControlFlow<Internals, (Self, Internals)> {
+    pub fn begin(u: &'a mut Update<'_>) -> ControlFlow<Internals, (Self, Internals)> {
+        let (table, p, g): (&'a EtaTable, &'a VehicleParams, &Goal) = (u.table, u.params, u.goal);
+        let s: &'a VehicleState = &*u.state;
+        let mem: &'a mut FunnelMemory = &mut *u.memory;
         let (d, bearing, alpha) = seen_from(s, g.pos);
         let mut v_d = g.speed;
         if g.halting {

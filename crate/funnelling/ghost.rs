@@ -32,9 +32,10 @@
 use glam::Vec2;
 
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::funnel::{Goal, Internals};
+use crate::funnelling::goal::Goal;
 use crate::funnelling::seek::{simulate_reach_traced, ReachLimits, ReachOutcome};
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::Internals;
 
 /// Fewest points a ghost may be asked to keep (start, a middle, the end).
 pub const MIN_GHOST_POINTS: usize = 4;

@@ -25,10 +25,13 @@
 //! | [`region_study`] | 001 §5 | seeded region-goal study: standard vs relaxed |
 
 pub mod approach;
+pub mod config;
 pub mod controller;
 pub mod funnel;
 pub mod ghost;
+pub mod goal;
 pub mod relaxed;
 pub mod seek;
 pub mod table;
+pub mod update;
 pub mod vehicle_file;

@@ -84,11 +84,12 @@ use core::ops::ControlFlow;
 use serde::{Deserialize, Serialize};
 
 use crate::base::angle::{diff, wrap};
-use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::base::vehicle::ParamError;
 use crate::funnelling::approach::Approach;
-use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::goal::Goal;
 use crate::funnelling::seek::seek_step_committed;
-use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Internals, Mode, Update};
 
 /// How η is evaluated at the two ends of the restricted arc 𝒜.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -367,24 +368,20 @@ impl RelaxedConfig {
     /// disk centre and `eta`, `delta_eta`, `mu`, `gamma` to the relaxed
     /// point (Δη re-measured against T with the full lookup's η).
     #[must_use]
-    #[allow(clippy::too_many_arguments)]
     pub fn plan(
         &self,
         funnel: &FunnelConfig,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
+        u: &mut Update<'_>,
         ri: &mut RelaxedInternals,
     ) -> Internals {
         *ri = RelaxedInternals::default();
-        let (a, mut out) = match Approach::begin(table, p, s, g, mem) {
+        let (a, mut out) = match Approach::begin(u) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
+        let (table, s) = (a.table, a.s);
         // Aim at the goal as the vehicle will meet it (approach::lead).
-        let (g_now, led) = (g, a.goal);
+        let led = a.goal;
         let g = &led;
         let (d, alpha_c) = (a.d, a.alpha);
         // A goal that follows an agent: the paper's relaxed point, as the
@@ -397,7 +394,7 @@ impl RelaxedConfig {
             // radius D, whose ends the vehicle keeps circling: seek the
             // centre at the orbit-free speed, as the standard does.
             ri.branch = Fig7Branch::Fallback;
-            return funnel.plan(table, p, s, g_now, mem);
+            return funnel.plan(u);
         }
         // 1. The restricted arc 𝒜 on the ring nearest the disk centre.
         let r = self.disk_margin * g.d_tol;
@@ -432,7 +429,7 @@ impl RelaxedConfig {
         };
         let (Some(e0), Some(e1)) = ends else {
             ri.branch = Fig7Branch::Fallback;
-            return funnel.plan(table, p, s, g, mem);
+            return funnel.plan(&mut u.towards(&led));
         };
         let f_min = a_min + e0;
         let f_max = f_min + wrap(a_max + e1 - f_min);
@@ -474,7 +471,7 @@ impl RelaxedConfig {
 
     /// [`RelaxedAim::Entry`] once the position tolerance is not met: the
     /// standard update aimed at the disk's entry point
-    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnelling::funnel::Aim::Entry`]),
+    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnelling::config::Aim::Entry`]),
     /// with the orientation interval T shrunk to `orientation_margin`·τ as
     /// its seek threshold: no correction while the predicted heading lies
     /// inside it, else a correction towards β itself (correcting only to
@@ -491,7 +488,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         let cfg = FunnelConfig {
-            aim: crate::funnelling::funnel::Aim::Entry,
+            aim: crate::funnelling::config::Aim::Entry,
             seek_threshold: self.orientation_margin,
             ..*funnel
         };
@@ -520,19 +517,14 @@ impl RelaxedConfig {
     }
 
     /// One relaxed update: plan, then one seek step.
-    #[allow(clippy::too_many_arguments)]
     pub fn step(
         &self,
         funnel: &FunnelConfig,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &mut VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
+        u: &mut Update<'_>,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        let out = self.plan(funnel, table, p, s, g, mem, ri);
-        seek_step_committed(p, s, out.gamma, out.v_dt);
+        let out = self.plan(funnel, u, ri);
+        seek_step_committed(u.params, u.state, out.gamma, out.v_dt);
         out
     }
 }

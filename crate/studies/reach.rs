@@ -9,8 +9,10 @@ use crate::base::dubins;
 use crate::base::metrics::{percentile, PathMetrics};
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Mode, Update};
 
 /// The random scenario family of the funnelling issue: static targets at
 /// D in [1, 30] m, any bearing and β, initial v in [0, v_max], initial ω
@@ -89,7 +91,13 @@ pub fn run(
     let mut mem = FunnelMemory::default();
     for k in 0..steps {
         let prev = s;
-        let out = cfg.step(table, p, &mut s, goal, &mut mem);
+        let out = cfg.step(&mut Update {
+            table,
+            params: p,
+            state: &mut s,
+            goal,
+            memory: &mut mem,
+        });
         if !entered && (goal.pos - prev.pos).length() < goal.d_tol {
             entered = true;
             let e = diff(goal.beta, prev.theta).abs();

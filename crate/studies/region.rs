@@ -13,9 +13,10 @@ use crate::base::metrics::PathMetrics;
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::controller::Controller;
-use crate::funnelling::funnel::{FunnelMemory, Goal, Mode};
+use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::relaxed::RelaxedInternals;
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Mode, Update};
 
 /// The random family: start at the origin heading +x with a random
 /// admissible (v, ω); disk centre at D ∈ `d_range` in any direction,
@@ -89,7 +90,14 @@ pub fn run_region(
     let steps = (max_time / p.dt) as u32;
     for k in 0..steps {
         let prev = s;
-        let out = ctl.step(table, p, &mut s, goal, &mut mem, &mut ri);
+        let mut u = Update {
+            table,
+            params: p,
+            state: &mut s,
+            goal,
+            memory: &mut mem,
+        };
+        let out = ctl.step(&mut u, &mut ri);
         if out.mode == Mode::EndOfSteering {
             r.ended = true;
             r.time = k as f32 * p.dt;

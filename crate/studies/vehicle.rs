@@ -27,8 +27,8 @@ use crate::base::metrics::percentile;
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::seek::{simulate_reach, ReachLimits, ReachOutcome};
-use crate::funnelling::table::spec::turn_radius;
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::turn_radius;
 use crate::studies::envelope::report::VariantReport;
 use crate::studies::envelope::GoalKind;
 

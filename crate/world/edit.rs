@@ -9,7 +9,7 @@
 use glam::Vec2;
 
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
-use crate::funnelling::funnel::{FunnelMemory, Goal};
+use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::world::precision;
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent, World};
 
@@ -263,7 +263,7 @@ impl World {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::funnelling::funnel::FunnelConfig;
+    use crate::funnelling::config::FunnelConfig;
 
     #[test]
     fn random_agents_of_a_vehicle_slower_than_a_tenth_of_a_metre_per_second() {

@@ -6,7 +6,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::base::vehicle::{ParamError, VehicleState};
-use crate::funnelling::funnel::{FunnelMemory, Goal};
+use crate::funnelling::goal::{FunnelMemory, Goal};
 
 /// How a goal moves (paper 000 §1: "a possibly moving target").
 ///

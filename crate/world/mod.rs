@@ -29,11 +29,13 @@ use crate::avoidance::{
 };
 use crate::base::metrics::PathMetrics;
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
-use crate::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
 use crate::funnelling::seek::{seek_step, seek_step_committed};
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Internals, Mode, Update};
 use crate::world::goals::{GoalMotion, GoalSpec, SwitchRule};
 
 /// One agent.
@@ -450,16 +452,16 @@ impl Planner<'_> {
         a.goal_now = goal;
         let mut kept = a.memory;
         let mem = if advance { &mut a.memory } else { &mut kept };
-        a.internals = self.kind.plan(
-            self.funnel,
-            self.relaxed,
-            self.table,
-            self.p,
-            &a.state,
-            &goal,
-            mem,
-            &mut a.relaxed,
-        );
+        let mut u = Update {
+            table: self.table,
+            params: self.p,
+            state: &mut a.state,
+            goal: &goal,
+            memory: mem,
+        };
+        a.internals = self
+            .kind
+            .plan(self.funnel, self.relaxed, &mut u, &mut a.relaxed);
         spec
     }
 }

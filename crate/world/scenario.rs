@@ -35,8 +35,9 @@ use serde::{Deserialize, Serialize};
 
 use crate::avoidance::{config::AvoidanceConfig, config::Obstacle};
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
-use crate::funnelling::funnel::{FunnelConfig, Goal};
+use crate::funnelling::goal::Goal;
 use crate::funnelling::relaxed::RelaxedConfig;
 use crate::world::precision;
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};

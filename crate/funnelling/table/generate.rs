@@ -3,6 +3,7 @@
 //! order, mirrored where the vehicle is symmetric; and the browser's share
 //! of it (a worker's slice, encoded; the slices assembled).
 
+#[cfg(not(target_arch = "wasm32"))]
 use crate::funnelling::table::batch;
 use crate::funnelling::table::format::TableError;
 use crate::funnelling::table::lookup::EtaTable;

@@ -11,8 +11,8 @@
 //! The same function runs natively and in wasm, so both caches agree.
 
 use super::format::{BuildParams, AXES, FORMAT_VERSION};
-use super::spec::{generator_dt, TableSpec};
 use super::lookup::EtaTable;
+use super::spec::{generator_dt, TableSpec};
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

@@ -46,11 +46,13 @@ use crate::base::angle::diff;
 use crate::base::dubins;
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::config::{FunnelConfig, MuBound};
 use crate::funnelling::controller::{Controller, ControllerKind};
-use crate::funnelling::funnel::{FunnelConfig, Goal, Mode, MuBound};
+use crate::funnelling::goal::Goal;
 use crate::funnelling::relaxed::{RelaxedAim, RelaxedConfig};
-use crate::funnelling::table::spec::VehicleScale;
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::VehicleScale;
+use crate::funnelling::update::Mode;
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 /// Position tolerances sampled, m.
@@ -123,7 +125,7 @@ pub fn literal_config() -> FunnelConfig {
         bound: MuBound::Literal,
         gain: 1.0,
         seek_threshold: 1.0,
-        aim: crate::funnelling::funnel::Aim::Centre,
+        aim: crate::funnelling::config::Aim::Centre,
         min_bound_radius: 0.0,
         terminal: None,
     }
