@@ -13,6 +13,8 @@
 //!   "kind": "deterministic",
 //!   "seeds": { "tuning": [], "report": [] },
 //!   "commit": "4dd0f3d…", "date": "2026-12-04", "cores": 2,
+//!   "claim": { "paper": "001", "place": "Fig. 10", "claim": "…",
+//!              "reading": "paper", "verdict": "refuted" },
 //!   "figures": [ { "id": "p001.fig10.beta45.relaxed.length", "what": "…",
 //!                  "value": 55.9, "unit": "m", "digits": 1 } ] }
 //! ```
@@ -48,7 +50,13 @@ pub struct Figure {
 impl Figure {
     /// A figure with `digits` decimals shown.
     pub fn new(id: &str, what: &str, value: f64, unit: &str, digits: u8) -> Self {
-        Self { id: id.into(), what: what.into(), value, unit: unit.into(), digits }
+        Self {
+            id: id.into(),
+            what: what.into(),
+            value,
+            unit: unit.into(),
+            digits,
+        }
     }
 }
 
@@ -61,6 +69,35 @@ pub struct Seeds {
     pub tuning: Vec<u64>,
     /// Seeds the figure is reported on (never tuned on).
     pub report: Vec<u64>,
+}
+
+/// What a fidelity record concludes about a paper's claim.
+#[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
+#[serde(rename_all = "camelCase")]
+pub enum Verdict {
+    /// The claim holds on our measurement, asserted by the test.
+    Reproduced,
+    /// Part of the claim holds; the test asserts which part, with numbers.
+    Partly,
+    /// The claim does not hold; the test asserts the refutation, with numbers.
+    Refuted,
+}
+
+/// A claim of one of the four texts and what the test that writes the
+/// record concludes (the fidelity table's row).
+#[derive(Clone, Debug, Serialize)]
+pub struct Claim {
+    /// `000`, `001`, `003` or `004`.
+    pub paper: String,
+    /// Where in the text: `Fig. 10`, `§5`, `Table 1`.
+    pub place: String,
+    /// The claim in a sentence, as the text makes it.
+    pub claim: String,
+    /// Which reading of the algorithm was measured: `paper` (the text's
+    /// literal algorithm against its literal baseline) or `ours`.
+    pub reading: String,
+    /// The conclusion, asserted by the test.
+    pub verdict: Verdict,
 }
 
 /// Deterministic or a same-run timing ratio.
@@ -82,6 +119,8 @@ struct Record<'a> {
     commit: String,
     date: String,
     cores: usize,
+    #[serde(skip_serializing_if = "Option::is_none")]
+    claim: Option<&'a Claim>,
     figures: &'a [Figure],
 }
 
@@ -99,7 +138,10 @@ fn commit() -> String {
         .output()
         .ok()
         .filter(|o| o.status.success())
-        .map_or_else(|| "unknown".into(), |o| String::from_utf8_lossy(&o.stdout).trim().to_string())
+        .map_or_else(
+            || "unknown".into(),
+            |o| String::from_utf8_lossy(&o.stdout).trim().to_string(),
+        )
 }
 
 /// Today's date (UTC), `YYYY-MM-DD`, from the system clock (days since the
@@ -124,8 +166,35 @@ fn date() -> String {
 /// `command`, replacing the previous one atomically (a temporary file
 /// renamed over it). Figures are also printed, for `--nocapture` readers.
 pub fn record(source: &str, command: &str, kind: Kind, seeds: &Seeds, figures: &[Figure]) {
+    write(source, command, kind, seeds, None, figures);
+}
+
+/// [`record`] for a fidelity test: the claim it checks and its verdict too
+/// (one row of the fidelity table).
+pub fn record_claim(source: &str, command: &str, seeds: &Seeds, claim: &Claim, figures: &[Figure]) {
+    write(
+        source,
+        command,
+        Kind::Deterministic,
+        seeds,
+        Some(claim),
+        figures,
+    );
+}
+
+fn write(
+    source: &str,
+    command: &str,
+    kind: Kind,
+    seeds: &Seeds,
+    claim: Option<&Claim>,
+    figures: &[Figure],
+) {
     for f in figures {
-        println!("{}: {:.*} {} ({})", f.id, f.digits as usize, f.value, f.unit, f.what);
+        println!(
+            "{}: {:.*} {} ({})",
+            f.id, f.digits as usize, f.value, f.unit, f.what
+        );
     }
     let rec = Record {
         source,
@@ -135,6 +204,7 @@ pub fn record(source: &str, command: &str, kind: Kind, seeds: &Seeds, figures: &
         commit: commit(),
         date: date(),
         cores: std::thread::available_parallelism().map_or(1, usize::from),
+        claim,
         figures,
     };
     let dir = dir();
