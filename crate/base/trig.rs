@@ -9,8 +9,8 @@
 //! IEEE-exact operations (+, −, ×, ÷; `sin_cos` in f64,
 //! `atan2` in f32, no fused multiply-adds), so they are bit-identical on
 //! every target, and accurate to well under 1e-6. They are
-//! also no slower than libm's: `atan2` here is about 1.5× faster than
-//! glibc's `atan2f` (`cargo bench --bench core -- atan2`).
+//! also no slower than libm's (`cargo bench --bench core -- atan2` times
+//! `atan2` here against glibc's `atan2f` in the same run).
 
 use core::f64::consts::{FRAC_2_PI, FRAC_PI_2};
 
@@ -18,11 +18,11 @@ use core::f64::consts::{FRAC_2_PI, FRAC_PI_2};
 /// for `|x| < 1e4`. NaN in, NaN out.
 ///
 /// The quadrant is restored by bit operations (a swap by selects, the
-/// signs by xor), not by a `match` on it: its jump table's indirect jump
-/// was mispredicted about two times in three where the angles fall in any
-/// quadrant from one call to the next (agents' headings, one after
-/// another: 1.2 of the avoidance's 1.9 indirect mispredictions per agent
-/// update, callgrind). The same bits as the `match` (the tests compare
+/// signs by xor), not by a `match` on it: a `match` compiles to a jump
+/// table whose indirect jump is mispredicted about two times in three
+/// where the angles fall in any quadrant from one call to the next
+/// (agents' headings, one after another: most of the avoidance's indirect
+/// mispredictions). The same bits as the `match` (the tests compare
 /// them over every quadrant, NaN and the saturated extremes).
 #[inline]
 #[must_use]
