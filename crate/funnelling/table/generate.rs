@@ -51,8 +51,8 @@ impl TableSpec {
         self.assemble(self.fill_mirrors(&partial))
     }
 
-    /// Entries `range` encoded for a worker (issue 14: the browser splits
-    /// the generation across Web Workers): three f32 per entry, η, the
+    /// Entries `range` encoded for a worker (the browser splits the
+    /// generation across Web Workers): three f32 per entry, η, the
     /// desired-or-fallback speed and the flags, with flags −1 for an entry
     /// left to its mirror ([`TableSpec::is_mirrored`]).
     #[must_use]
