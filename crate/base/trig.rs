@@ -49,8 +49,8 @@ fn reduced(x: f32) -> (u64, f64, f64) {
     let x = f64::from(x);
     // The nearest quadrant, ties to even, by the classic 1.5·2^52 shift:
     // two exact additions (for |x| < 1e15) where `f64::round` is a
-    // software call on x86-64 and wasm32 (25 instructions, 2 % of a
-    // funnelling update); a tie can only differ from `round` by picking
+    // software call on x86-64 and wasm32 (about 25 instructions, for every
+    // sin_cos of every update); a tie can only differ from `round` by picking
     // the other, equally reduced, quadrant.
     const SHIFT: f64 = 6_755_399_441_055_744.0;
     let k = (x * FRAC_2_PI + SHIFT) - SHIFT;

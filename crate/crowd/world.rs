@@ -473,8 +473,8 @@ impl Crowd {
         });
     }
 
-    /// Switches metric recording (on by default; off saves about a third of
-    /// a step).
+    /// Switches metric recording (on by default; off skips the per-step
+    /// measures, a large share of a step).
     pub fn set_metrics_enabled(&mut self, on: bool) {
         self.metrics_on = on;
     }

@@ -486,8 +486,8 @@ impl<'a> Approach<'a> {
     /// heading error). Constant cost: the heading test, then (nearly
     /// facing β only) β's sin/cos and two dot products, and when it
     /// steers one atan2. The heading is tested first so that most updates
-    /// skip the sin/cos: computing it up front cost 15 % of an update
-    /// (1,482 against 1,289 instructions, `examples/icount.rs`).
+    /// skip the sin/cos, a noticeable share of an update's instructions
+    /// (`examples/icount.rs` counts them).
     #[inline]
     pub fn terminal(&self, t: &Terminal, g: &Goal, out: &mut Internals) -> bool {
         let s = self.s;

@@ -179,9 +179,10 @@ fn heading_move(
 /// Rounds of [`Batch::rounds`] per call. Why a bound: V8 runs a wasm
 /// function in its baseline compiler (Liftoff) until it returns and tiers
 /// it up for the *next* call (no on-stack replacement), so one call that
-/// ran a worker's whole slice stayed at baseline speed: measured 6.1 s
-/// against 3.5 s with `node --no-liftoff` for the same slice. Short calls
-/// reach the optimised code after the first few.
+/// ran a worker's whole slice would stay at baseline speed, far slower
+/// than the optimised code (`node --no-liftoff` shows the difference).
+/// Short calls reach the optimised code after the first few; natively the
+/// bound costs nothing.
 const ROUNDS_PER_CALL: u32 = 2048;
 
 /// The simulations in flight over a range of entries.
