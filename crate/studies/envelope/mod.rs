@@ -36,6 +36,12 @@
 //! finished (every goal done), path length over the Dubins length (radius
 //! at the desired speed, [`crate::base::dubins`]), non-finite values and limit
 //! violations ([`crate::base::metrics`]), and orbits (never enters).
+//!
+//! | module | what |
+//! |---|---|
+//! | this one | the sampled envelope, the variants, one run and its record |
+//! | [`report`] | per-cell summaries, the runs of every variant, the parallel run |
+//! | [`tables`] | markdown tables per cell, the targets, the per-cell JSON |
 
 use core::f32::consts::PI;
 
