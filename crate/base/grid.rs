@@ -55,9 +55,9 @@ fn cell_coord(v: f32, inv_cell: f32) -> i32 {
     // `as` saturates (and maps NaN to 0): never UB, never a panic. Floor by
     // hand: without SSE4.1 `f32::floor` is a libm call, and this runs 10×
     // per boid per step.
-    // Issue 17: the correction is subtracted, not branched on: its sign
-    // test mispredicted about once per boid per step (boids on both sides
-    // of an axis), in the rebuild and the queries alike.
+    // The correction is subtracted, not branched on: a sign test would
+    // mispredict about once per boid per step (boids on both sides of an
+    // axis), in the rebuild and the queries alike.
     let x = v * inv_cell;
     let t = x as i32;
     t.saturating_sub(i32::from((t as f32) > x))
@@ -92,19 +92,17 @@ impl NeighbourGrid {
     /// Re-bins the boids at `pos` (flat `[x0, y0, x1, y1, ...]`) into cells
     /// of side `cell` (> 0, world units).
     ///
-    /// Issue 17: from the second rebuild of the same boids on, they are
-    /// visited in the previous rebuild's bucket order, not by index. The
-    /// counting sort writes each boid's slot in three arrays; visited by
-    /// index (spatially random in a moving crowd) those writes missed the
-    /// cache one by one, visited in last step's order they land almost in
-    /// sequence (most boids stay in their cell from one step to the next).
-    /// Within a bucket the boids then follow last step's order, so each
-    /// bucket is put back into ascending index by an insertion sort (runs
-    /// already sorted but for the boids that changed cell): the same order,
-    /// and so the same bits, as the by-index sort. 100,000 boids at Test
-    /// IV's density (`examples/crowd_profile.rs`): a rebuild cost 3.9–4.1
-    /// ms by index; rebuilding the same positions stored in bucket order
-    /// took 1.6 ms.
+    /// From the second rebuild of the same boids on, they are visited in
+    /// the previous rebuild's bucket order, not by index. The counting sort
+    /// writes each boid's slot in three arrays; visited by index (spatially
+    /// random in a moving crowd) those writes miss the cache one by one,
+    /// visited in last step's order they land almost in sequence (most
+    /// boids stay in their cell from one step to the next). Within a bucket
+    /// the boids then follow last step's order, so each bucket is put back
+    /// into ascending index by an insertion sort (runs already sorted but
+    /// for the boids that changed cell): the same order, and so the same
+    /// bits, as the by-index sort. `examples/crowd_profile.rs` times the
+    /// crowd's step at Test IV's density.
     pub fn rebuild(&mut self, pos: &[f32], cell: f32) {
         let n = pos.len() / 2;
         if self.order_full && self.order.len() == n && n > 0 {
@@ -153,7 +151,7 @@ impl NeighbourGrid {
     }
 
     /// Re-bins only the boids `members` (ascending indices into `pos`) with
-    /// the bucket table of all `pos.len() / 2` boids (issue 17's strips):
+    /// the bucket table of all `pos.len() / 2` boids (a stepping worker's strip):
     /// any boid's neighbours among the members come in the order
     /// [`NeighbourGrid::rebuild`] gives them, so sums over them are the
     /// same bits when every neighbour within reach is a member.
@@ -217,11 +215,10 @@ impl NeighbourGrid {
         self.visit = visit;
     }
 
-    /// The counting sort behind both rebuilds. Issue 17: the placing pass
-    /// runs backwards with a falling cursor per bucket (ascending index
-    /// within a bucket, as before), which leaves each cursor at its bucket's
-    /// start: no pass over the table to restore it, and each boid's cell is
-    /// computed once.
+    /// The counting sort behind both rebuilds. The placing pass runs
+    /// backwards with a falling cursor per bucket (ascending index within a
+    /// bucket), which leaves each cursor at its bucket's start: no pass over
+    /// the table to restore it, and each boid's cell is computed once.
     fn rebuild_from(
         &mut self,
         pos: &[f32],
@@ -328,7 +325,7 @@ impl NeighbourGrid {
     /// of a neighbour query at `p`, in the order
     /// [`NeighbourGrid::for_each_neighbour`] visits them: the 3 × 3 cells
     /// round `p`'s, each bucket once. A caller keeping its own per-slot
-    /// copy of the boids (issue 18's avoidance) scans the same candidates
+    /// copy of the boids (the avoidance's) scans the same candidates
     /// in the same order without the callback.
     #[inline(always)]
     #[must_use]
@@ -376,10 +373,10 @@ impl NeighbourGrid {
         // or two apart differ by `ROW_PITCH` or `2·ROW_PITCH` mod the table
         // size, ≡ 49 or 34 mod 64, so at least 15 apart round the table of
         // ≥ 64 buckets (`rebuild_from`), and a row spans at most 3 (see
-        // `rebuild_members`). Issue 17: the pairwise overlap test that
-        // guarded a fallback here took a fifth of the crowd's step in wasm
-        // (where this function is not inlined), for a fallback that never
-        // ran.
+        // `rebuild_members`). So a release build has no pairwise overlap
+        // test and fallback: in wasm, where this function is not inlined,
+        // such a test is a large share of the crowd's step, for a case that
+        // cannot occur; the debug assertion checks it in tests.
         debug_assert!((1..n_ranges)
             .all(|a| (0..a).all(|b| ranges[a].0 >= ranges[b].1 || ranges[b].0 >= ranges[a].1)));
         for r in &mut ranges[..n_ranges] {

@@ -1,4 +1,4 @@
-//! The avoidance (issue 18) through the lab's binding: the method of the
+//! The avoidance through the lab's binding: the method of the
 //! world in force (presets carry theirs, `scenarios/avoid_*.json`), the
 //! obstacles as a flat array for drawing and dragging (`obstacles` /
 //! `setObstacles`, the same five floats per obstacle), and the overlap

@@ -1,6 +1,6 @@
 //! The JavaScript boundary: the one module that knows about wasm-bindgen.
 //!
-//! Rules kept here (issue 5):
+//! Rules kept here:
 //! - thin: conversion only, no steering logic; every value from JavaScript
 //!   is validated and turned into a `JsError` with a readable message, never
 //!   a panic (indices are checked, configs go through the core's `validate`);
@@ -129,8 +129,8 @@ struct Expected {
 #[wasm_bindgen]
 pub struct Lab {
     /// Shared by the labs [`Lab::fork`] makes (one copy in memory, ~10 MB).
-    /// `None` until the table has arrived (issue 17: the first frame is
-    /// drawn without it; see [`Lab::without_table`]).
+    /// `None` until the table has arrived (the first frame is drawn
+    /// without it; see [`Lab::without_table`]).
     table: Option<Rc<EtaTable>>,
     /// The table a lab without one waits for.
     expected: Expected,
@@ -208,7 +208,7 @@ impl Lab {
     }
 
     /// A lab for the default vehicle whose η table has not arrived yet
-    /// (issue 17: the page draws its first frame while the table loads).
+    /// (the page draws its first frame while the table loads).
     /// Agents, goals, presets, edits and settings work as usual; until
     /// [`Lab::set_table`] the internals are the provisional plan (the goal
     /// measured from the vehicle, γ its bearing: seek steering; the mode
@@ -423,8 +423,8 @@ impl Lab {
 
 /// Every world the lab holds (new, forked, cleared, a scenario's) goes
 /// through here: without the agents' path metrics, which no binding reads
-/// (issue 17: about a twentieth of an update; the states are the same
-/// bits, `World::set_metrics`).
+/// (they cost a square root, an angle difference and the limit checks per
+/// agent per step; the states are the same bits, `World::set_metrics`).
 fn lab_world(mut world: World) -> World {
     world.set_metrics(false);
     world
@@ -573,8 +573,8 @@ impl Lab {
         self.buf.clone()
     }
 
-    /// [`Lab::state`] written into `out` (issue 17: a stepping worker's
-    /// slice of the page's shared buffer) with one copy out of the core's
+    /// [`Lab::state`] written into `out` (a stepping worker's slice of the
+    /// page's shared buffer) with one copy out of the core's
     /// memory, instead of a `Vec` clone, a new JS array and a copy of that.
     ///
     /// # Errors
@@ -590,8 +590,8 @@ impl Lab {
 
     /// One step ([`Lab::step`] of 1), then [`Lab::state`] written into
     /// `out` as [`Lab::state_into`] writes it: each agent's record as soon
-    /// as it has stepped (issue 17: a stepping worker's step and copy in one
-    /// pass over its agents; `World::step_writing`).
+    /// as it has stepped (a stepping worker's step and copy in one pass
+    /// over its agents; `World::step_writing`).
     ///
     /// # Errors
     /// No η table yet, or `out` not exactly [`Lab::count`] ×

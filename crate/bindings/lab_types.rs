@@ -169,8 +169,8 @@ export interface ScenarioInfo {
   name: string;
   description: string;
   source: string;
-  /** What the paper claims for this figure, and what we measure (issue 19;
-   *  empty for scenarios that do not say). */
+  /** What the paper claims for this figure, and what we measure (empty
+   *  for scenarios that do not say). */
   claim: string;
   measured: string;
   /** Non-empty when the scenario's vehicle differs from the table's. */

@@ -1,4 +1,4 @@
-//! What the lab's stepping workers call (issue 17, point 2): the world's
+//! What the lab's stepping workers call: the world's
 //! slices ([`crate::world::split`]) and a hash of the state, so
 //! the page can check N workers against one core.
 

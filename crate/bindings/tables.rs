@@ -1,4 +1,4 @@
-//! η tables built in the browser (issue 14): what the page's Web Workers
+//! η tables built in the browser: what the page's Web Workers
 //! call to build the table of the vehicle in use, split across workers.
 //! Thin: the core's [`TableSpec`] does the work ([`TableSpec::encode_slice`]
 //! per worker, [`TableSpec::assemble_encoded`] once), so a table built here

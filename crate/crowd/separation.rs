@@ -67,7 +67,7 @@ fn separation_sum(grid: &mut NeighbourGrid, k: usize, reach: f32, nudge: f32) ->
     (sum, visited)
 }
 
-/// [`separate`] for the boids `owned` only (issue 17: one worker's strip),
+/// [`separate`] for the boids `owned` only (one worker's strip),
 /// through a grid of `members` (ascending; must hold every boid within
 /// `2·boid_radius` of an owned one). Writes `out` at the owned boids' slots
 /// only, the same bits as [`separate`] there.
@@ -97,13 +97,12 @@ pub fn separate_owned(
 /// Counts overlapping pairs (closer than `2·boid_radius`) without computing
 /// separation: the metric for runs with separation switched off.
 ///
-/// Issue 17's crowd anomaly: with separation off nothing spreads the
-/// boids, so Test IV's pathway holds about twice as many boids per cell as
-/// with separation (measured at 30,000 boids: 593 candidates per boid in
-/// nine-cell queries against 306), and the cost of exact pair counting
-/// grows with the square of that density. Stepping *without* separation
-/// then cost more than stepping with it (wasm, 30,000 boids: 89.9 against
-/// 40.8 ms). Each pair is therefore examined once, from one side
+/// Why one side: with separation off nothing spreads the boids, so Test
+/// IV's pathway holds about twice as many boids per cell as with
+/// separation, and the cost of exact pair counting grows with the square
+/// of that density; counted from both sides, stepping *without*
+/// separation would cost more than stepping with it. Each pair is
+/// therefore examined once, from one side
 /// ([`NeighbourGrid::count_pairs_forward`]): half the candidates, the
 /// same count.
 pub fn count_overlaps(grid: &mut NeighbourGrid, pos: &[f32], boid_radius: f32) -> u64 {

@@ -71,7 +71,7 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 /// and, once met, fills `out` with End_of_Steering or Orientation_only.
 /// Returns true when the position tolerance is met (then `out` is final).
 ///
-/// Halting goals (issue 13): End_of_Steering promises that the vehicle
+/// Halting goals: End_of_Steering promises that the vehicle
 /// comes to *rest* inside both tolerances, so both tests look at the rest
 /// pose, not only the current one. The position counts as met only when
 /// the whole braking disk lies inside the tolerance (`d` plus
@@ -84,23 +84,24 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 /// Orientation_only keeps turning towards β while braking. Non-halting
 /// goals keep the paper's test on the current pose.
 ///
-/// Goals moving by themselves (linear or circular motion; issue 13) are
-/// never latched: the paper's sequence, position then orientation, has
-/// the vehicle brake and turn inside the disk, and a moving disk walks
-/// off meanwhile (tune seed 1: End_of_Steering was declared outside it in
-/// 19.5 % of moving runs). End_of_Steering is declared only while the
-/// vehicle is inside the disk *and* faces β; a pass through the disk
-/// unoriented is counted ([`FunnelMemory::passes`]) and the approach goes
-/// on, led to where the goal will be ([`lead`]) along a runway that each
-/// pass lengthens ([`Approach::aim_depth`]). Tune seed 1: 100 % of
-/// declarations inside both tolerances, 99.7 % of moving goals finished
-/// (99.5 % latched), 84.6 % entered oriented (54.0 %).
+/// Goals moving by themselves (linear or circular motion) are never
+/// latched: the paper's sequence, position then orientation, has the
+/// vehicle brake and turn inside the disk, and a moving disk walks off
+/// meanwhile, so End_of_Steering would be declared outside it.
+/// End_of_Steering is declared only while the vehicle is inside the disk
+/// *and* faces β, so always inside both tolerances (the envelope study
+/// counts it, `steer envelope`); a pass through the disk unoriented is
+/// counted ([`FunnelMemory::passes`]) and the approach goes on, led to
+/// where the goal will be ([`lead`]) along a runway that each pass
+/// lengthens ([`Approach::aim_depth`]).
 ///
 /// A vehicle that goes round a moving goal without entering its disk
-/// counts laps ([`LapCount`], [`FunnelMemory::lap`]), and each lap
-/// lowers the speed the goal is approached with ([`lap_speed`]; issue 13:
-/// 6 of 2,000 moving goals, 27 of 10,000 in `examples/orbits.rs`, tune
-/// seed 1, were orbited for the whole time limit and never entered).
+/// counts laps ([`LapCount`](crate::funnelling::goal::LapCount),
+/// [`FunnelMemory::lap`]), and each lap lowers the speed the goal is
+/// approached with ([`lap_speed`]): at full speed a vehicle can orbit a
+/// small moving disk for the whole time limit without entering it
+/// (`examples/orbits.rs` lists the moving-goal runs of a seed that never
+/// enter).
 #[inline]
 pub fn tolerance_phase(
     p: &VehicleParams,
@@ -169,22 +170,20 @@ pub fn tolerance_phase(
 /// the vehicle, the envelope's slowest desired speed) and twice the
 /// goal's speed (a goal is never caught below its own speed).
 ///
-/// Why (issue 13): the orbits were near misses at speed. A 0.1 m disk at
-/// 1.8–2 m/s is six steps wide and the vehicle turns on a 2.2–2.7 m
-/// radius; the terminal pursuit brought it in along β but it passed
-/// 1–3 cm outside the disk, came round on the same
-/// wide loop and missed again, lap after lap (left and right loops in
-/// turn for some), at full speed: the table's proactive speed `v_dt`
-/// (paper 000 §3–4) judges a *static* point reachable and never slowed
-/// it. Slower, the turning radius and the pursuit's carrot
-/// ([`Terminal::look`], which follows this speed) shrink, the lateral
-/// offset decays over a shorter run-in, and the next approach enters:
-/// the paper's proactive speed adaptation, driven by what the vehicle
-/// did rather than by the table. Only goals moving by themselves and
-/// only after a lap: every other trajectory keeps its bits. Tune seed 1:
-/// moving goals never entered 6 → 0 of 2,000 (standard and relaxed),
-/// oriented on entry 84.6 → 85.5 %, length/Dubins p90 2.47 → 2.29;
-/// `examples/orbits.rs -- 1 10000`: 27 → 0.
+/// Why: such orbits are near misses at speed. A 0.1 m disk at 1.8–2 m/s
+/// is six steps wide and the vehicle turns on a 2.2–2.7 m radius; the
+/// terminal pursuit brings it in along β but it can pass 1–3 cm outside
+/// the disk, come round on the same wide loop and miss again, lap after
+/// lap (left and right loops in turn for some), at full speed: the
+/// table's proactive speed `v_dt` (paper 000 §3–4) judges a *static*
+/// point reachable and never slows it. Slower, the turning radius and the
+/// pursuit's carrot ([`Terminal::look`], which follows this speed)
+/// shrink, the lateral offset decays over a shorter run-in, and the next
+/// approach enters: the paper's proactive speed adaptation, driven by
+/// what the vehicle did rather than by the table. Only goals moving by
+/// themselves and only after a lap: no other trajectory depends on it.
+/// `examples/orbits.rs -- 1 10000` lists the
+/// moving-goal runs of tune seed 1 that never enter the disk.
 #[inline]
 #[must_use]
 pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
@@ -196,15 +195,14 @@ pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
     (v_d / (1.0 + 0.5 * f32::from(laps))).at_least(floor)
 }
 
-/// Where to aim for a goal in motion (issue 13): the goal as it will be
+/// Where to aim for a goal in motion: the goal as it will be
 /// when the vehicle, going straight at speed `v`, meets it.
 ///
 /// Why: the η table predicts the heading on reaching a *fixed* point. A
 /// vehicle funnelled towards where a moving goal is now arrives where it
-/// was, facing β but behind it, then chases it from the wrong side: on the
-/// envelope (tune seed 1, goals at up to 0.4 m/s) 54 % of moving goals
-/// were entered oriented against 83 % of static ones, and 10 in 2,000 were
-/// never entered. Led to the interception point, the funnel shapes the
+/// was, facing β but behind it, then chases it from the wrong side:
+/// fewer moving goals are entered oriented than static ones, and some
+/// are never entered. Led to the interception point, the funnel shapes the
 /// approach to where the goal will be. The interception time τ solves
 /// |r + v_g τ| = v τ (r the goal's offset, v_g its velocity); when the goal
 /// is about as fast as the vehicle or faster, τ = D / v. The path is a
@@ -398,10 +396,10 @@ impl<'a> Approach<'a> {
     /// point's depth, or for a goal in motion ([`Goal::vel`]) the start
     /// of a *runway* inside the terminal pursuit's reach.
     ///
-    /// Why: near a moving goal, the vehicle aimed at the disk fell in
-    /// beside it and rode along, facing the goal's way instead of β, for
-    /// as long as the goal moved (issue 13, tune seed 1: 4.6 % of moving
-    /// goals never finished, nearly all with D_tol ≤ 0.25 m). A static
+    /// Why: near a moving goal, a vehicle aimed at the disk falls in
+    /// beside it and rides along, facing the goal's way instead of β, for
+    /// as long as the goal moves (on the tune seed 1 of the envelope study,
+    /// mostly goals with D_tol ≤ 0.25 m). A static
     /// goal stops such a vehicle: it brakes inside and turns (paper 000
     /// §5); a moving one walks off meanwhile. Aimed at the runway start,
     /// the funnel brings the vehicle onto β's line behind the goal, and
@@ -427,17 +425,17 @@ impl<'a> Approach<'a> {
     /// β's line one carrot distance ([`Terminal::look`]) ahead of the
     /// vehicle's projection.
     ///
-    /// Why (issue 13): a vehicle that reached the runway start unaligned
-    /// sought it at close range, and a goal coming against β carried the
-    /// point on nearly as fast as the vehicle could follow: the vehicle
-    /// hovered at it, turning this way and that, never facing β (tune
-    /// seed 1, a goal at 0.37 m/s and a vehicle asked for 0.5 m/s: 150 s;
-    /// slowing down cannot help, the vehicle is at its floor). There the
-    /// runway has done its work: pursuing the line turns the vehicle onto
-    /// it, facing the goal that comes to meet it, and the terminal pursuit
-    /// takes over. Without the two conditions the carrot cost goals that
-    /// the funnel brings round in its own time (two large disks of the
-    /// tune seed were never finished).
+    /// Why: a vehicle that reaches the runway start unaligned seeks it at
+    /// close range, and a goal coming against β carries the point on
+    /// nearly as fast as the vehicle can follow: seeking it, the vehicle
+    /// would hover at it, turning this way and that, never facing β (on
+    /// tune seed 1, a goal at 0.37 m/s and a vehicle asked for 0.5 m/s, for
+    /// the whole 150 s; slowing down cannot help, the vehicle is at its
+    /// floor). There the runway has done its work: pursuing the line turns
+    /// the vehicle onto it, facing the goal that comes to meet it, and the
+    /// terminal pursuit takes over. The two conditions keep the carrot
+    /// from goals that the funnel brings round in its own time (without
+    /// them, large disks of the tune seed are never finished).
     #[inline]
     #[must_use]
     pub fn seen_aim(&self, g: &Goal, t: Option<&Terminal>) -> (f32, f32, f32) {
@@ -488,8 +486,8 @@ impl<'a> Approach<'a> {
     /// heading error). Constant cost: the heading test, then (nearly
     /// facing β only) β's sin/cos and two dot products, and when it
     /// steers one atan2. The heading is tested first so that most updates
-    /// skip the sin/cos: computing it up front cost 15 % of an update
-    /// (1,482 against 1,289 instructions, `examples/icount.rs`).
+    /// skip the sin/cos, a noticeable share of an update's instructions
+    /// (`examples/icount.rs` counts them).
     #[inline]
     pub fn terminal(&self, t: &Terminal, g: &Goal, out: &mut Internals) -> bool {
         let s = self.s;

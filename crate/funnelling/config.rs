@@ -44,11 +44,10 @@ pub enum MuBound {
 /// [`FunnelConfig::min_bound_radius`]). It vanishes with distance like
 /// the literal one and needs no table interpolation of its own (the
 /// literal bound adds one to the lookup's one to three), which keeps a
-/// funnelling update near 4× a seek step. Six radii
-/// were chosen on `steer reach`'s single operating point; over the whole
-/// envelope (`steer envelope`, tune seed 1) eight orient better (worst
-/// ε_tol 2° cell at D ≥ 5 m: 83 % → 86 %) at a median path of 1.09×
-/// Dubins; ten gained nothing more and lengthened paths (1.11×).
+/// funnelling update near 4× a seek step. Eight radii are chosen over the
+/// whole envelope (`steer envelope`, tune seed 1), not at `steer reach`'s
+/// single operating point: six orient worse in the hardest cells (ε_tol
+/// 2°, D ≥ 5 m), ten lengthen paths for no gain.
 impl Default for MuBound {
     fn default() -> Self {
         Self::TurningRadius { factor: 8.0 }
@@ -62,10 +61,11 @@ pub enum Aim {
     /// The goal centre (paper 000 literally). The η table predicts the
     /// heading on reaching the table's reach circle (0.25 m) around the
     /// point it is asked about, so for a larger D_tol the vehicle crosses
-    /// the tolerance circle while still turning: oriented entries fell to
-    /// 29 % for D_tol 2 m (issue 13, tune seed).
+    /// the tolerance circle while still turning: for D_tol 2 m most
+    /// entries miss ε_tol (`steer envelope`, tune seed 1).
     Centre,
-    /// The disk's entry point along β ([`Approach::entry_point`]): the
+    /// The disk's entry point along β
+    /// ([`Approach::entry_point`](crate::funnelling::approach::Approach::entry_point)): the
     /// table then predicts the heading on *entering* the tolerance disk.
     #[default]
     Entry,
@@ -96,12 +96,13 @@ pub struct FunnelConfig {
     pub aim: Aim,
     /// Smallest turning radius the [`MuBound::TurningRadius`] bound is
     /// computed with, m. The bound `atan(factor·R_min/D)` shrinks with
-    /// speed: at 0.5 m/s (R_min 0.25 m) and 10 m it allowed 8.5°, too
-    /// little to correct anything, and 0.5 m/s was the weakest speed of the
-    /// envelope (issue 13: 65 % oriented on entry at ε_tol 5°, D ≥ 5 m).
-    /// Default 1 m: 97 % (tune seed). 0 restores the plain bound.
+    /// speed: at 0.5 m/s (R_min 0.25 m) and 10 m the plain bound allows
+    /// about 11°, too little to correct anything, which makes 0.5 m/s the
+    /// weakest desired speed of the envelope. Default 1 m (chosen on the
+    /// envelope study's tune seed 1); 0 gives the plain bound.
     pub min_bound_radius: f32,
-    /// The terminal line pursuit ([`Approach::terminal`]); `None`: off.
+    /// The terminal line pursuit
+    /// ([`Approach::terminal`](crate::funnelling::approach::Approach::terminal)); `None`: off.
     pub terminal: Option<Terminal>,
 }
 
@@ -124,17 +125,16 @@ impl Default for FunnelConfig {
 /// Why: the η table predicts the heading on reaching a point, and close to
 /// a point that prediction is ill-conditioned. Seeking a point at 0.3 m
 /// with a lateral offset of 1 cm already means a heading 2° off, so at
-/// ε_tol 2° the funnelled approaches that were right to within the
-/// table's interpolation error still entered the disk 2–4° off (issue 13,
-/// tune seed: 67 % oriented on entry at ε_tol 2°, D ≥ 5 m). Once the
+/// ε_tol 2° a funnelled approach right to within the table's
+/// interpolation error still enters the disk 2–4° off. Once the
 /// vehicle is behind the disk, close to the line through the goal along β
 /// and already nearly facing β, it pursues a carrot on that line one
 /// `lookahead`-second of travel ahead of its projection (pure pursuit):
 /// the lateral offset and the heading error decay together, and the disk
-/// is entered along β. Measured on the envelope (tune seed 1): median
-/// entry error 4.4° → 2.9°, ε_tol 2° cells at D ≥ 5 m 73 % → 85 % at
-/// worst. It replaces neither the table nor the funnel: a vehicle that is
-/// not nearly lined up is funnelled as before.
+/// is entered along β. On the envelope study (tune seed 1) it lowers the
+/// median entry error and lifts the worst ε_tol 2° cells at D ≥ 5 m
+/// (`steer envelope --standard '{"terminal": null}'` runs without it). It replaces neither the table nor the funnel: a vehicle that is
+/// not nearly lined up is funnelled as usual.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields, rename_all = "camelCase")]
 pub struct Terminal {
@@ -155,7 +155,7 @@ impl Terminal {
     #[must_use]
     pub fn look(&self, p: &VehicleParams, s: &VehicleState, g: &Goal) -> f32 {
         // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
-        // the vehicle (×1 for the pedestrian; issue 14).
+        // the vehicle (×1 for the pedestrian).
         let sc = crate::funnelling::table::spec::VehicleScale::of(p);
         self.lookahead * sc.time() * s.v.at_least(g.speed).at_least(0.5 * sc.speed)
     }
@@ -233,7 +233,7 @@ impl FunnelConfig {
             }
             MuBound::TurningRadius { factor } => {
                 // The floor is the pedestrian's metres, scaled with the
-                // vehicle's turning radius (×1 for the pedestrian; issue 14).
+                // vehicle's turning radius (×1 for the pedestrian).
                 let floor = self.min_bound_radius * VehicleScale::of(p).length;
                 let r = factor * p.min_turn_radius(lk.v_dt.at_least(v)).at_least(floor);
                 crate::base::trig::atan2(r, d).at_most(FRAC_PI_2)

@@ -6,16 +6,17 @@
 //! the table (with the proactive fallback speed `v_dt` where the target
 //! appears unreachable); Δη = β − (θ + α + η), the error between the target
 //! orientation and the predicted final direction; μ = −gain·Δη (the paper
-//! has gain 1, see [`FunnelConfig::gain`]) bounded by [`MuBound`]; the
+//! has gain 1, see [`FunnelConfig::gain`]) bounded by
+//! [`MuBound`](crate::funnelling::config::MuBound); the
 //! modulated heading γ = θ + α + μ goes to the seek controller with speed
 //! `min(v_dt, A/|ω|)`, through the step that keeps its turn direction near
 //! the ±π seam ([`crate::funnelling::seek::seek_step_committed`]). Constant cost, no
 //! allocation. Table interpolations per update (counted in
-//! [`EtaTable::lookup`]): the lookup blends once when the target is
+//! [`EtaTable::lookup`](crate::funnelling::table::lookup::EtaTable::lookup)): the lookup blends once when the target is
 //! reachable at the queried speed, twice when it is not (again at the
 //! fallback speed v_dt), three times when no corner is reachable at v_dt
 //! either (the stored fallback η's are blended), once when v_dt is 0; the
-//! default μ bound ([`MuBound::TurningRadius`]) adds none, the literal
+//! default μ bound ([`MuBound::TurningRadius`](crate::funnelling::config::MuBound::TurningRadius)) adds none, the literal
 //! bounds one more (16 corners on the ω = 0 plane). So 1–3 per update by
 //! default and 2–4 with the literal bound, against the paper's "in the
 //! worst case two interpolations" (paper 000 §7).
@@ -80,8 +81,8 @@ impl FunnelConfig {
             // vehicle down proactively; do it geometrically instead, so a
             // near target is never orbited (paper 000 §3).
             // A moving aim point is never caught below its own speed: at
-            // least twice the goal's (issue 13, tune seed 1: 32 of 2,000
-            // moving goals were ridden alongside for good, 6 with this).
+            // least twice the goal's, or the vehicle rides alongside it
+            // for good.
             let floor = 2.0 * g.vel.length();
             out.v_dt = out
                 .v_dt

@@ -1,4 +1,4 @@
-//! The predicted seek path ("ghost", issue 15): where plain seek would take
+//! The predicted seek path ("ghost"): where plain seek would take
 //! the vehicle from its current state to a point, and the final direction
 //! it would arrive with — the path whose end defines η (paper 000 §3,
 //! Fig. 1c; paper 001 §3, Fig. 2).

@@ -29,7 +29,7 @@ pub struct Goal {
     /// The goal's velocity now, m/s: zero for a static goal, filled by
     /// [`crate::world::goals::GoalSpec::at`] for goals moving by themselves. Not
     /// part of the file format (the motion is, in the goal's spec): the
-    /// controllers read it to lead the target ([`crate::approach::lead`]).
+    /// controllers read it to lead the target ([`crate::funnelling::approach::lead`]).
     #[serde(skip)]
     pub vel: Vec2,
 }
@@ -85,16 +85,15 @@ impl Goal {
 /// fact is latched until the target is farther than
 /// [`FunnelMemory::release_radius`] (a moving target can walk away).
 ///
-/// A *static* goal that is not halting gets one more rule (issue 13): when
-/// the vehicle, having braked and turned, faces β again but has left the
+/// A *static* goal that is not halting gets one more rule: when the
+/// vehicle, having braked and turned, faces β again but has left the
 /// disk, the fact is forgotten and the goal approached again, so
-/// End_of_Steering always finds both tolerances met (tune seed 1: 97.9 %
-/// → 100 % of declarations, every run still finishes). A goal following
+/// End_of_Steering always finds both tolerances met. A goal following
 /// an agent keeps the latch; a goal moving by itself is never latched
-/// ([`crate::approach::tolerance_phase`]): `position_met` then says
-/// whether the vehicle is inside its disk now, and the laps the vehicle
-/// goes round it without entering are counted (`lap`, issue 13), each lowering the approach speed
-/// ([`crate::approach::lap_speed`]).
+/// ([`crate::funnelling::approach::tolerance_phase`]): `position_met` then
+/// says whether the vehicle is inside its disk now, and the laps the
+/// vehicle goes round it without entering are counted (`lap`), each
+/// lowering the approach speed ([`crate::funnelling::approach::lap_speed`]).
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 pub struct FunnelMemory {
     /// The position tolerance has been met.
@@ -107,19 +106,19 @@ pub struct FunnelMemory {
     /// The goal follows another agent: it is aimed at its centre, as in
     /// the paper. Its entry point moves with the agent it follows, and two
     /// agents aiming at each other's entry points (paper 000 Fig. 6, face
-    /// to face) fell into step side by side and chased each other for ever.
+    /// to face) would fall into step side by side and chase each other for ever.
     #[serde(default)]
     pub goal_follows_agent: bool,
     /// A goal moving by itself: how often the vehicle has passed through
     /// its disk without facing β. Each pass lengthens the runway
-    /// ([`crate::approach::Approach::aim_depth`]).
+    /// ([`crate::funnelling::approach::Approach::aim_depth`]).
     #[serde(default)]
     pub passes: u8,
     /// A goal moving by itself: the laps the vehicle has gone round it
     /// without entering its disk, and what counts them
     /// ([`crate::funnelling::goal::LapCount`]). Each lap lowers the
     /// desired speed the goal is approached with
-    /// ([`crate::approach::lap_speed`]).
+    /// ([`crate::funnelling::approach::lap_speed`]).
     #[serde(default)]
     pub lap: crate::funnelling::goal::LapCount,
     /// β's unit vector, kept from one update to the next
@@ -215,11 +214,10 @@ impl LapCount {
 /// The unit vector of a goal's orientation β, kept in the agent's
 /// [`FunnelMemory`] from one update to the next.
 ///
-/// Why (issue 17): the entry aim and the terminal pursuit need β's
-/// direction every update, and [`crate::base::trig::sin_cos`] (f64, for bits that
-/// are the same natively and in wasm) was about a tenth of a world step
-/// (`examples/world_bench.rs`, 1,000 agents: 186 → 170 ns per agent update
-/// without it). A goal's β changes only with the goal (or every step for
+/// Why: the entry aim and the terminal pursuit need β's direction every
+/// update, and [`crate::base::trig::sin_cos`] (f64, for bits that are the
+/// same natively and in wasm) is a noticeable share of a world step
+/// (`examples/world_bench.rs` times one). A goal's β changes only with the goal (or every step for
 /// a goal that follows an agent or circles), so the vector is recomputed
 /// only when β's bits differ from the kept ones: the same vector, the same
 /// bits. A cache, not state: any two compare equal, and it is not

@@ -9,7 +9,8 @@
 //! which curves paths artificially (paper 001 Fig. 6b). The relaxed
 //! controller instead, every update:
 //!
-//! 1. takes the table ring (a sampled distance `R` of [`EtaTable::distances`])
+//! 1. takes the table ring (a sampled distance `R` of
+//!    [`EtaTable::distances`](crate::funnelling::table::lookup::EtaTable::distances))
 //!    nearest the disk centre and intersects it with the disk: the
 //!    restricted arc 𝒜 = [α_min, α_max] of candidate directions (paper 001
 //!    §4.2.3: the search is restricted to keep the cost constant);
@@ -49,30 +50,30 @@
 //!   (Δη at α_r, hence seek or funnel) is re-measured with the full lookup.
 //!
 //! Two readings of *where* to aim ([`RelaxedAim`]), measured side by side
-//! on the envelope of issue 13 (tune seed 1, held-out seed 2):
+//! by the envelope study (`steer envelope`: tune seed 1, held-out seed 2;
+//! variants `relaxed` and `relaxed-paper-arc`):
 //! - [`RelaxedAim::PaperArc`], the paper's literal reading above. Its
 //!   relaxed point lies on the ring through the disk, ~D ahead, and is
 //!   chosen afresh every update at the edge of T, so it slides as the
-//!   vehicle moves and the heading on *entering* the disk drifts: 42 % of
-//!   runs enter oriented against 56 % for the standard controller (tune
-//!   seed, 600 runs). The paper's design cannot orient on entry as well
-//!   as standard: letting any aim point slide across the disk cost 5–8
-//!   points of the entry rate in every variant tried.
+//!   vehicle moves and the heading on *entering* the disk drifts: fewer
+//!   runs enter oriented than with the standard controller. An aim point
+//!   that slides across the disk costs oriented entries, so the paper's
+//!   design cannot orient on entry as well as standard.
 //! - [`RelaxedAim::Entry`], the default: aim at the *entry point* of the
 //!   disk, `d_tol − r_reach` before the centre along β (`r_reach` the
 //!   table's reach radius, so reaching it in the table's sense is entering
 //!   the disk), a point fixed in the world; no orientation correction
 //!   while the prediction lies inside T shrunk to `orientation_margin`·τ.
 //!   The table then predicts the heading at entry, which is what a region
-//!   goal asks for: 70 % oriented on entry against 56 % standard (tune
-//!   seed), the same as standard for disks no larger than `r_reach`,
-//!   where the entry point is the centre.
+//!   goal asks for. The standard controller aims there too by default
+//!   ([`crate::funnelling::config::Aim::Entry`]); for disks no larger than
+//!   `r_reach` the entry point is the centre.
 //!
 //! Neither aim orbits near the disk. Closer than the first sampled ring
-//! `D_η` the paper's relaxed point fell inside the vehicle's turning
-//! circle and was sought at full speed (issue 13: 5–8 % of runs circled
-//! it for 150 s); below `D_η` both now seek at the orbit-free speed, like
-//! the standard controller.
+//! `D_η` the paper's relaxed point can fall inside the vehicle's turning
+//! circle, and sought at full speed it would be circled for the whole time
+//! limit; below `D_η` both aims seek at the orbit-free speed, like the
+//! standard controller.
 //!
 //! Cost: constant per update, no allocation — paper arc: two cheap η
 //! reads, one full lookup, the μ bound's interpolation and a ≤ 16-sample
@@ -96,7 +97,8 @@ use crate::funnelling::update::{Internals, Mode, Update};
 #[serde(rename_all = "camelCase")]
 pub enum EndEta {
     /// The paper's cheaper reading (§4.2.4): linear in α on the ring,
-    /// nearest sample on ω, v_c, v_d ([`EtaTable::eta_ring_linear`]).
+    /// nearest sample on ω, v_c, v_d
+    /// ([`EtaTable::eta_ring_linear`](crate::funnelling::table::lookup::EtaTable::eta_ring_linear)).
     #[default]
     Linear,
     /// The full multilinear interpolation (16 non-zero corners on a ring).
@@ -125,9 +127,9 @@ pub struct RelaxedConfig {
     /// Fraction of the disk radius searched ([`RelaxedAim::PaperArc`]) for the relaxed point (0, 1].
     pub disk_margin: f32,
     /// Fraction of τ used for the interval T searched (0, 1]. Default
-    /// 0.25, like the standard controller's seek threshold: with 0.8 the
-    /// prediction sat at T's edge and entries fell just outside it (paper
-    /// arc: 38.3 % oriented on entry with 0.8, 46.8 % with 0.25, tune seed).
+    /// 0.25, like the standard controller's seek threshold: with a margin
+    /// near 1 (0.8) the prediction sits at T's edge and entries fall just
+    /// outside it (chosen on the envelope study's tune seed 1).
     pub orientation_margin: f32,
     /// η at the arc ends.
     pub end_eta: EndEta,
@@ -475,10 +477,10 @@ impl RelaxedConfig {
     /// with the orientation interval T shrunk to `orientation_margin`·τ as
     /// its seek threshold: no correction while the predicted heading lies
     /// inside it, else a correction towards β itself (correcting only to
-    /// T's edge left entries just outside it: 67.8 % oriented on entry
-    /// against 69.7 % re-centred, tune seed). The standard controller took
-    /// this aim over (issue 13), so on a disk goal the two now coincide;
-    /// the paper's relaxed point is [`RelaxedAim::PaperArc`].
+    /// T's edge leaves entries just outside it; envelope study, tune seed
+    /// 1). The standard controller aims at the entry point by default as
+    /// well, so on a disk goal the two coincide; the paper's relaxed point
+    /// is [`RelaxedAim::PaperArc`].
     fn plan_entry(
         &self,
         funnel: &FunnelConfig,

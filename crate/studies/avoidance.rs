@@ -1,4 +1,4 @@
-//! The avoidance benchmarks (issue 18) and the seeded study behind
+//! The avoidance benchmarks and the seeded study behind
 //! `steer avoid`: each scenario is built from a seed (small jitter of the
 //! start poses), run once per method on the same seed, and measured
 //! ([`crate::world::proximity`]); path lengths are compared with the
@@ -44,7 +44,7 @@ pub enum Bench {
 }
 
 impl Bench {
-    /// The issue's list.
+    /// Every benchmark, in the order `steer avoid` reports them.
     pub const ALL: [Bench; 7] = [
         Bench::CircleSwap(8),
         Bench::CircleSwap(32),
@@ -101,7 +101,7 @@ fn empty(name: String, description: &str, duration: f32) -> Scenario {
     Scenario {
         name,
         description: description.into(),
-        source: "issue 18 benchmark".into(),
+        source: "avoidance benchmark".into(),
         duration,
         vehicle: VehicleParams::default(),
         funnel: FunnelConfig::default(),

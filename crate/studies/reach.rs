@@ -1,4 +1,5 @@
-//! Reproducible measurement campaigns (issue acceptance figures): seeded
+//! Reproducible measurement campaigns (the acceptance figures of paper
+//! 000's funnelling, one operating point): seeded
 //! random reach scenarios for the funnelling controller, run to the end and
 //! summarised. Shared by the tests and by `steer reach`.
 
@@ -14,7 +15,7 @@ use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::update::{Mode, Update};
 
-/// The random scenario family of the funnelling issue: static targets at
+/// The random scenario family of the acceptance figures: static targets at
 /// D in [1, 30] m, any bearing and β, initial v in [0, v_max], initial ω
 /// admissible; `D_tol` = 0.25 m, `ε_tol` = 5°, desired speed 1.3 m/s.
 #[derive(Clone, Copy, Debug, PartialEq)]

@@ -1,4 +1,5 @@
-//! Seeded random region-goal scenarios (paper 001 §5; issue 4 acceptance):
+//! Seeded random region-goal scenarios (paper 001 §5; the relaxed
+//! controller's acceptance figures):
 //! the same start and region goal run with the standard and the relaxed
 //! controller, compared on path length and integrated |curvature|, and
 //! checked for reach (ends inside the disk with a heading inside T).

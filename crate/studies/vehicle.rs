@@ -1,4 +1,4 @@
-//! What a vehicle's table is worth (issue 14): the measures each reference
+//! What a vehicle's table is worth: the measures each reference
 //! vehicle is reported with, in the vehicle's own units (distances in
 //! turning radii `R = v_max / min(ω_max, A/v_max)`, speeds in fractions of
 //! `v_max`), so one set of targets serves every vehicle.
@@ -9,11 +9,12 @@
 //!   η jumps no fixed grid follows: `tests/table_accuracy.rs`); median and
 //!   p95 of the error over queries both call reachable, and the share of
 //!   all queries whose reachability the table gets right.
-//! - [`oriented_far`]: from an [`EnvelopeStudy`] scaled to the vehicle,
+//! - [`oriented_far`]: from an
+//!   [`EnvelopeStudy`](crate::studies::envelope::EnvelopeStudy) scaled to the vehicle,
 //!   reach over every static run and oriented entries of the runs with
 //!   `D ≥ 5 R` at ε_tol 5°.
 //!
-//! Targets (issue 14): median ≤ 0.2°, p95 ≤ 2°, reach ≥ 99.5 %, oriented
+//! Targets: median ≤ 0.2°, p95 ≤ 2°, reach ≥ 99.5 %, oriented
 //! ≥ 95 %. `steer envelope --vehicle FILE` prints them; `tests/
 //! vehicle_study.rs` asserts a fast slice.
 

@@ -1,6 +1,5 @@
-//! Edits of a running world (issue 12: the logic of the lab page's drags,
-//! sliders and performance runs lives in the core, the bindings only
-//! convert): a pose reset or a new goal queue restarts the agent's queue and
+//! Edits of a running world (the logic of the lab page's drags, sliders
+//! and performance runs lives in the core, the bindings only convert): a pose reset or a new goal queue restarts the agent's queue and
 //! its mode memory (paper 000 Fig. 5's Position_only latch), and the seeded
 //! random crowd of the performance runs. Every edit validates first and
 //! changes nothing when it refuses, so a front end can pass user input
@@ -15,8 +14,8 @@ use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent,
 
 /// Fastest a goal may move by itself, m/s: each component of a linear
 /// velocity ([`crate::base::ranges::MOTION_VX`]), and the tangential
-/// speed `radius·|ω|` of a circling goal (issue 16: a circle of 1e6 m at
-/// 100 rad/s moved its goal at 1e8 m/s).
+/// speed `radius·|ω|` of a circling goal (each factor within its own
+/// range, a circle of 1e6 m at 100 rad/s would move its goal at 1e8 m/s).
 pub const MAX_GOAL_MOTION_SPEED: f32 = crate::base::ranges::MOTION_VX.max as f32;
 
 /// Agents a world may hold: the lab's playground agent and
@@ -207,8 +206,8 @@ impl World {
         self.spawn_random_kept(n, seed, extent, speed, 0..n)
     }
 
-    /// [`World::spawn_random`]'s agents `keep` only (issue 17: a stepping
-    /// worker's slice): the same agents, bit for bit, without building the
+    /// [`World::spawn_random`]'s agents `keep` only (a stepping worker's
+    /// slice): the same agents, bit for bit, without building the
     /// others (their random draws are made and dropped).
     ///
     /// # Errors

@@ -12,8 +12,8 @@ use crate::funnelling::goal::{FunnelMemory, Goal};
 ///
 /// A goal that moves by itself ([`GoalMotion::Linear`] with a non-zero
 /// velocity, [`GoalMotion::Circle`] with a non-zero angular speed) cannot be
-/// `halting` (issue 13): it never stops, so no rest pose lies inside its
-/// tolerances for long; [`World::add_agent`], scenario files and the lab
+/// `halting`: it never stops, so no rest pose lies inside its
+/// tolerances for long; [`World::add_agent`](crate::world::World::add_agent), scenario files and the lab
 /// refuse the combination ([`GoalSpec::check_halting`]). A
 /// [`GoalMotion::FaceAgent`] goal may halt: the agent it follows can stop.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]

@@ -64,12 +64,10 @@ pub struct Agent {
     pub metrics: PathMetrics,
     /// Time at which the last goal was completed, s.
     pub finished_at: Option<f32>,
-    /// `goals[current]` kept inside the agent (issue 17): a step reads the
-    /// current goal from the agent's own record, which the per-agent loop
-    /// streams through, instead of from the queue's own allocation, a cache
-    /// miss per agent per step in a big world (`perf` at 50,000 agents:
-    /// `GoalSpec::at` 22 % of the native world step, nearly all the load
-    /// of the spec). Same bits. Every change of `goals` or `current` goes
+    /// `goals[current]` kept inside the agent: a step reads the current
+    /// goal from the agent's own record, which the per-agent loop streams
+    /// through, instead of from the queue's own allocation, a cache miss
+    /// per agent per step in a big world. Same bits. Every change of `goals` or `current` goes
     /// through [`Agent::refresh_spec`] ([`World::queues_changed`] for
     /// direct changes); debug builds check it at each plan.
     pub(crate) spec: GoalSpec,
@@ -128,7 +126,7 @@ pub struct World {
     pub agents: Vec<Agent>,
     /// Simulated time, s.
     pub time: f32,
-    /// Avoidance between agents and of the obstacles (issue 18; off by
+    /// Avoidance between agents and of the obstacles (off by
     /// default). Set with [`World::set_avoidance`].
     pub avoidance: AvoidanceConfig,
     /// Static obstacles (avoided when the avoidance is on).
@@ -137,9 +135,9 @@ pub struct World {
     /// Agents whose queue holds a goal facing an agent
     /// ([`GoalMotion::FaceAgent`]), the only goals that read the snapshot:
     /// while there are none and the avoidance (which reads it too) is off,
-    /// a step takes no snapshot (issue 17: a pass over every agent's record
-    /// before the update pass, about a third of the loop's own samples in
-    /// `perf` at 50,000 agents; same bits). Kept by every edit of a queue.
+    /// a step takes no snapshot (a pass over every agent's record before
+    /// the update pass, a large share of the loop's own cost in a big
+    /// world; same bits). Kept by every edit of a queue.
     pub(crate) facing: usize,
     pub(crate) preferred: Vec<(f32, f32)>,
     /// The avoidance's buffers and this step's commands.
@@ -178,10 +176,10 @@ impl World {
     /// metrics ([`Agent::metrics`]: length, curvature, limit checks), which
     /// only studies, the command line and tests read.
     ///
-    /// Issue 17: the lab's page never reads them, and adding them was about
-    /// a twentieth of its update (a square root, an angle difference and the
-    /// limit checks per agent per step). The states are the same bits
-    /// either way: nothing in a step reads the metrics.
+    /// The lab's page never reads them, and keeping them costs a square
+    /// root, an angle difference and the limit checks per agent per step.
+    /// The states are the same bits either way: nothing in a step reads
+    /// the metrics.
     pub fn set_metrics(&mut self, on: bool) {
         self.metrics_on = on;
     }
@@ -271,8 +269,8 @@ impl World {
     /// Fills every agent's internals (and relaxed internals) with what its
     /// controller chooses for the current state — the plan the next
     /// [`World::step`] makes — without moving anything or changing the mode
-    /// memory (issue 13: the first trajectory row reports a mode that is
-    /// true at t = 0). [`World::add_agent`] has no η table, so until this
+    /// memory (so the first trajectory row reports a mode that is true at
+    /// t = 0). [`World::add_agent`] has no η table, so until this
     /// runs (or the first step) a new agent's internals are provisional:
     /// exact inside the tolerance, else Funnelling towards the goal centre.
     /// Call it after adding agents or changing the controller (stepping
@@ -307,8 +305,8 @@ impl World {
 
     /// [`World::step`], then the records [`World::write_state`] writes,
     /// each written as soon as its agent has stepped, while the agent's
-    /// memory is at hand (issue 17: a stepping worker's step and state in
-    /// one pass over the agents instead of two; the same floats).
+    /// memory is at hand (a stepping worker's step and state in one pass
+    /// over the agents instead of two; the same floats).
     pub fn step_writing(&mut self, table: &EtaTable, out: &mut Vec<f32>) {
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
         self.step_each(table, |i, a| {
@@ -499,7 +497,7 @@ pub(crate) fn faces(goals: &[GoalSpec]) -> bool {
 /// the goal measured from the vehicle, and the position-tolerance phase of
 /// paper 000 Fig. 5, which settles the mode inside the tolerance; outside,
 /// Funnelling towards the centre until the table is consulted. Also what
-/// the lab shows before its table has arrived (issue 17: first frame).
+/// the lab shows before its table has arrived (its first frame).
 #[must_use]
 pub fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Internals {
     let rel = g.pos - s.pos;

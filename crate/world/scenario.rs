@@ -54,7 +54,7 @@ pub struct Scenario {
     /// Which paper figure it reproduces, if any.
     #[serde(default)]
     pub source: String,
-    /// What the paper claims for that figure (issue 19), in a sentence.
+    /// What the paper claims for that figure, in a sentence.
     #[serde(default)]
     pub claim: String,
     /// What we measure, with the test that asserts it (`tests/fidelity.rs`)
@@ -67,7 +67,7 @@ pub struct Scenario {
     /// Vehicle parameters (defaults: pedestrian).
     #[serde(default)]
     pub vehicle: VehicleParams,
-    /// The η table to run with (issue 14), relative to the scenario file;
+    /// The η table to run with, relative to the scenario file;
     /// it must have been built for `vehicle` (`eta-table --vehicle`).
     /// Without it `steer run` uses the committed table if it matches the
     /// vehicle, else builds the matching one or loads it from its cache.
@@ -84,7 +84,7 @@ pub struct Scenario {
     /// Relaxed-controller settings.
     #[serde(default)]
     pub relaxed: RelaxedConfig,
-    /// Avoidance between agents and of the obstacles (issue 18): `method`
+    /// Avoidance between agents and of the obstacles: `method`
     /// off (default), separation or orca, the body `radius` and settings
     /// ([`AvoidanceConfig`]).
     #[serde(default, skip_serializing_if = "is_default_avoidance")]
@@ -179,10 +179,9 @@ pub const MAX_SCENARIO_AGENTS: usize = crate::base::ranges::AGENTS.max as usize;
 /// Most goals queued per agent in a scenario.
 pub const MAX_GOALS: usize = 10_000;
 
-/// Most agent-steps (agents × duration / dt) in a scenario: 1e9 is about
-/// 7 minutes of simulation at 0.4 µs per agent update; 1,000 agents ×
-/// 3,600 s at 60 Hz is 2.16e8 (issue 16: 100,000 agents × 3,600 s, 2.2e10,
-/// was admitted).
+/// Most agent-steps (agents × duration / dt) in a scenario: 1e9 keeps a
+/// run to minutes, not hours (100,000 agents × 3,600 s at 60 Hz, 2.2e10,
+/// is refused); 1,000 agents × 3,600 s at 60 Hz is 2.16e8.
 pub const MAX_AGENT_STEPS: u64 = 1_000_000_000;
 
 /// Refuses structs written as positional arrays (serde accepts

@@ -18,10 +18,9 @@ impl TableSpec {
     /// [`TableSpec::is_mirrored`] are left as `None` (filled by
     /// [`TableSpec::fill_mirrors`]).
     /// Natively several simulations run interleaved ([`super::batch`]);
-    /// in wasm one at a time, which V8 runs faster (measured, one thread,
-    /// the pedestrian at v_max 1.2: 2.08 s one at a time, 2.17 s with two
-    /// lanes, 2.25 s with four; natively four lanes are 26 % faster). The
-    /// result is the same bits either way.
+    /// in wasm one at a time, which V8 runs at least as fast as two or
+    /// four lanes (natively the lanes win). The result is the same bits
+    /// either way.
     #[must_use]
     pub fn entries(&self, range: core::ops::Range<usize>) -> Vec<Option<Entry>> {
         #[cfg(not(target_arch = "wasm32"))]
@@ -51,8 +50,8 @@ impl TableSpec {
         self.assemble(self.fill_mirrors(&partial))
     }
 
-    /// Entries `range` encoded for a worker (issue 14: the browser splits
-    /// the generation across Web Workers): three f32 per entry, η, the
+    /// Entries `range` encoded for a worker (the browser splits the
+    /// generation across Web Workers): three f32 per entry, η, the
     /// desired-or-fallback speed and the flags, with flags −1 for an entry
     /// left to its mirror ([`TableSpec::is_mirrored`]).
     #[must_use]

@@ -211,7 +211,7 @@ impl EtaTable {
         &self.params
     }
 
-    /// Sample values of axis `k` (see [`AXIS_NAMES`](super::AXIS_NAMES)).
+    /// Sample values of axis `k` (see [`AXIS_NAMES`](crate::funnelling::table::format::AXIS_NAMES)).
     #[must_use]
     pub fn axis(&self, k: usize) -> &[f32] {
         &self.axes[k]
@@ -297,8 +297,9 @@ impl EtaTable {
     ///
     /// Bounds: [`Grid::holds`] checks the position against the sample
     /// counts (ten comparisons) and the cells reads are then unchecked.
-    /// Why: the 16 per-pair checks (overflow, then length) were ~100 of a
-    /// lookup's 834 instructions (callgrind, `examples/icount.rs`).
+    /// Why: the 16 per-pair checks (overflow, then length) would be a
+    /// noticeable share of a lookup's instructions (`examples/icount.rs`
+    /// counts them under callgrind).
     /// Positions outside the grid (none from [`Axis::locate`]) take the
     /// checked path.
     #[inline]

@@ -5,9 +5,9 @@
 //!
 //! | module | paper | what |
 //! |---|---|---|
-//! | [format](mod@format) | 000 §3 | the file's header: [`BuildParams`], [`TableError`], layout constants |
+//! | [format](mod@format) | 000 §3 | the file's header: [`BuildParams`](format::BuildParams), [`TableError`](format::TableError), layout constants |
 //! | [`codec`] | 000 §3 | the bytes: CRC-32, validation of every field, to/from bytes |
-//! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`] in memory: cells, the multilinear blend, [`Lookup`] |
+//! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`](lookup::EtaTable) in memory: cells, the multilinear blend, [`Lookup`](lookup::Lookup) |
 //! | [`grid`] | — | where a query falls on a sampled axis, in constant time |
 //! | [`key`] | — | the parameter key (hash of build parameters and axes) that table caches are keyed by |
 //! | [`spec`] | 000 §3 | what the table samples: anisotropic axes scaled with the vehicle, one entry's reach simulation (the same seek code), mirror symmetry |

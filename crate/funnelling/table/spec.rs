@@ -5,12 +5,12 @@
 //! built by [`crate::funnelling::table::generate`].
 //!
 //! # Axes, and why
-//! Every axis is dimensionless, scaled with the vehicle ([`VehicleScale`],
-//! issue 14): distances in units of the vehicle's turning radius at full
+//! Every axis is dimensionless, scaled with the vehicle ([`VehicleScale`]):
+//! distances in units of the vehicle's turning radius at full
 //! speed, speeds in fractions of `v_max`, the reach radius with the
 //! distances and the simulated-time cap with distance over speed. The
 //! pedestrian of [`VehicleParams::default`] is the unit (scale exactly 1,
-//! so its committed table is unchanged); a car with 21 times its turning
+//! so its table is the committed `tables/eta.bin`); a car with 21 times its turning
 //! radius gets rings from 10.5 m to 675 m, one generator serves both. The
 //! figures below are the pedestrian's.
 //! - **Distance D**: 16 samples, geometric from 0.5 m to 32 m (ratio ≈ 1.32).
@@ -27,8 +27,8 @@
 //!   where turns are tight).
 //! - **Desired speed v_d**: 9 samples, 0.25 m/s to `v_max`, u² spacing.
 //!
-//! 16 × 56 × 5 × 9 × 9 = 362,880 entries (the paper has 43,200); 0.8 s on
-//! two cores (rayon, [`crate::base::parallel`]).
+//! 16 × 56 × 5 × 9 × 9 = 362,880 entries (the paper has 43,200), generated
+//! in parallel (rayon, [`crate::base::parallel`]).
 //!
 //! # Time step
 //! The simulations step at the vehicle's `dt`, or coarser for a vehicle
@@ -128,12 +128,13 @@ pub fn turn_radius(p: &VehicleParams) -> f32 {
 /// pedestrian and every vehicle at or below its time scale, so their
 /// tables are unchanged.
 ///
-/// Why, measured (issue 14): the car's table took 75 M steps (the
-/// pedestrian's 42 M), 3.7–4.5 s in Chromium against a 3 s target; at
-/// its time-scaled step (2.81 × 1/60 s) 27 M steps and 2.4 × faster
-/// natively, with the η error against direct simulation at the car's own
-/// `dt` going from median 0.040° / p95 0.32° to 0.052° / 0.33° (10,000
-/// queries at D ≥ 4 R, seeds 1 and 2; targets 0.2° / 2°). The table's
+/// Why: at its own `dt` the car's table is 75 M simulation steps (the
+/// pedestrian's 42 M), too slow for a build in the page; at its
+/// time-scaled step (2.81 × 1/60 s) it is 27 M, and the η error against
+/// direct simulation at the car's own `dt` stays well inside the targets
+/// of 0.2° median and 2° p95 (`steer envelope --vehicle
+/// scenarios/vehicles/car.json --queries 10000 --seed 2`: median 0.052°,
+/// p95 0.33° over 10,000 queries at D ≥ 4 R). The table's
 /// header still records the vehicle's `dt` (the controller it serves);
 /// the key ([`super::key`]) includes this step when it differs.
 #[must_use]

@@ -1,9 +1,9 @@
-//! The envelope study (issue 13): oriented arrival measured over the whole
-//! operating envelope a user of the lab can reach, not at one operating
-//! point. [`crate::studies::reach`] samples one point (D_tol 0.25 m, ε_tol 5°,
-//! 1.3 m/s, D 1–30 m); the defaults tuned there did much worse on random
+//! The envelope study: oriented arrival measured over the whole operating
+//! envelope a user of the lab can reach, not at one operating point.
+//! [`crate::studies::reach`] samples one point (D_tol 0.25 m, ε_tol 5°,
+//! 1.3 m/s, D 1–30 m); settings tuned there do much worse on random
 //! targets drawn over the sliders' range, so this is the study the
-//! controller is tuned on (one seed) and judged on (another, held out).
+//! controller is tuned on (seed 1) and judged on (seed 2, held out).
 //!
 //! Every run is a one-agent [`World`], stepped exactly as the lab and
 //! `steer run` step it (goal queues, moving goals, the braking after the
@@ -36,6 +36,12 @@
 //! finished (every goal done), path length over the Dubins length (radius
 //! at the desired speed, [`crate::base::dubins`]), non-finite values and limit
 //! violations ([`crate::base::metrics`]), and orbits (never enters).
+//!
+//! | module | what |
+//! |---|---|
+//! | this one | the sampled envelope, the variants, one run and its record |
+//! | [`report`] | per-cell summaries, the runs of every variant, the parallel run |
+//! | [`tables`] | markdown tables per cell, the targets, the per-cell JSON |
 
 use core::f32::consts::PI;
 
@@ -132,7 +138,8 @@ pub fn literal_config() -> FunnelConfig {
 }
 
 /// Paper 001 Fig. 7 read literally: the relaxed point on the ring arc 𝒜,
-/// T searched over 0.8 of τ (the relaxed settings before issue 13).
+/// T searched over 0.8 of τ, without the tuned margin of
+/// [`RelaxedConfig::orientation_margin`]'s default.
 #[must_use]
 pub fn literal_relaxed_config() -> RelaxedConfig {
     RelaxedConfig {
@@ -207,7 +214,7 @@ pub struct EnvelopeStudy {
     pub n_chain: usize,
     /// Time limit per goal, s (at scale 1; multiplied by the time scale).
     pub max_time: f32,
-    /// The vehicle's scale (issue 14, [`EnvelopeStudy::for_vehicle`]):
+    /// The vehicle's scale ([`EnvelopeStudy::for_vehicle`]):
     /// sampled distances and tolerances are multiplied by `scale.length`,
     /// speeds by `scale.speed`. The records keep the pedestrian-equivalent
     /// values (divided back), so the tables' cells are the same for every

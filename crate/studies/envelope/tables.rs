@@ -1,5 +1,5 @@
 //! The envelope report as people read it: markdown tables per cell, the
-//! issue-13 targets, and the per-cell JSON.
+//! targets the controllers are held to, and the per-cell JSON.
 
 use core::fmt::Write as _;
 
@@ -182,8 +182,10 @@ impl EnvelopeReport {
         worst
     }
 
-    /// The issue-13 targets against this report, markdown (standard =
-    /// `standard`, relaxed = `relaxed`).
+    /// The targets against this report, markdown (standard = `standard`,
+    /// relaxed = `relaxed`): oriented entries at D ≥ 5 m per cell and over
+    /// all D, End_of_Steering inside both tolerances, halting runs at rest
+    /// inside both, relaxed reach without orbits.
     #[must_use]
     pub fn targets(&self) -> String {
         let get = |name: &str, kind: GoalKind| {
