@@ -87,10 +87,10 @@ fn ideal_path(seek: Seek, seed: u64) -> OffsetProfile {
     profiles(&mut c, 6000).remove(0)
 }
 
-const PARKER_SIDES: &str = "parker_100_percent_and_reynolds_differ_only_in_the_side_they_ride";
+const PARKER_SIDES: &str = "p003_parker_100_percent_and_reynolds_differ_only_in_the_side_they_ride";
 
 #[test]
-fn parker_100_percent_and_reynolds_differ_only_in_the_side_they_ride() {
+fn p003_parker_100_percent_and_reynolds_differ_only_in_the_side_they_ride() {
     // "By observation of the two first illustrations we can conclude that
     // Conrad Parker's seek with 100% steering is equivalent to Craig
     // Reynolds' seek algorithm" (Tests I–II), and Test III "should produce
@@ -236,10 +236,10 @@ fn parker_100_percent_and_reynolds_differ_only_in_the_side_they_ride() {
 }
 
 const TEN_PERCENT: &str =
-    "ten_percent_changes_the_ideal_path_as_much_as_reynolds_differs_from_parker";
+    "p003_ten_percent_changes_the_ideal_path_as_much_as_reynolds_differs_from_parker";
 
 #[test]
-fn ten_percent_changes_the_ideal_path_as_much_as_reynolds_differs_from_parker() {
+fn p003_ten_percent_changes_the_ideal_path_as_much_as_reynolds_differs_from_parker() {
     // "At 10%, see footnote five, a relatively major change in the ideal
     // path is made by the boid" (Test I), where 100 % is "equivalent" to
     // Reynolds. The ideal path of a seek on a seed: its Test I boid's mean
@@ -314,10 +314,10 @@ fn ten_percent_changes_the_ideal_path_as_much_as_reynolds_differs_from_parker() 
     assert!(one > 2.0 * ten, "1 % vs 10 %: {one}, 10 % vs 100 %: {ten}");
 }
 
-const PREDICTABLE: &str = "test_three_weaker_steering_is_less_predictable";
+const PREDICTABLE: &str = "p003_test_three_weaker_steering_is_less_predictable";
 
 #[test]
-fn test_three_weaker_steering_is_less_predictable() {
+fn p003_test_three_weaker_steering_is_less_predictable() {
     // Test III: illustration three (10 %) "is also similar to one and two,
     // but as the steering loosens the shape of the lap changes
     // unpredictably. A conclusion can be made, the weaker the steering is
@@ -381,10 +381,10 @@ fn test_three_weaker_steering_is_less_predictable() {
     }
 }
 
-const SIMILAR: &str = "test_four_illustrations_13_to_16_are_quite_similar";
+const SIMILAR: &str = "p003_test_four_illustrations_13_to_16_are_quite_similar";
 
 #[test]
-fn test_four_illustrations_13_to_16_are_quite_similar() {
+fn p003_test_four_illustrations_13_to_16_are_quite_similar() {
     // "Illustration one to four, see footnote 13 to 16, are quite similar.
     // [...] there is no free space to move around in". 13–16 are Reynolds
     // and Parker at 100, 10 and 1 %. At our separation weight (0.05).
@@ -452,10 +452,10 @@ fn test_four_illustrations_13_to_16_are_quite_similar() {
     assert!(mean(&spread[3]) > 1.25 * mean(&spread[0]), "{spread:?}");
 }
 
-const SWEEP: &str = "test_four_at_every_separation_weight";
+const SWEEP: &str = "p003_test_four_at_every_separation_weight";
 
 #[test]
-fn test_four_at_every_separation_weight() {
+fn p003_test_four_at_every_separation_weight() {
     // The presets weight the paper's separation sum by 0.05
     // (`CrowdConfig::paper`); the text's rule is the plain sum (weight 1).
     // Test IV's share of boid-steps outside the path at each weight, and
