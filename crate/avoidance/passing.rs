@@ -135,7 +135,6 @@ use glam::{BVec4A, Vec2, Vec4};
 /// side).
 pub const ONCOMING_COS: f32 = -0.3;
 
-
 /// Largest turn of the preferred velocity, as its tangent (1: 45°).
 pub const LANE_MAX_TAN: f32 = 1.0;
 
