@@ -1,7 +1,7 @@
 //! One avoidance pass over a world's agents: neighbours through a grid,
 //! the method's velocity, and that velocity turned into what a
-//! forward-only unicycle can do (issue 18; paper 000 §7 and 001 §7 name
-//! avoidance as the next step).
+//! forward-only unicycle can do (paper 000 §7 and 001 §7 name avoidance
+//! as the next step).
 //!
 //! **Combined with funnelling.** Every agent's funnel plans first; its
 //! modulated heading γ and desired speed v_dt give the *preferred
@@ -22,9 +22,9 @@
 //! ([`crate::base::vehicle::VehicleParams::integrate`]), which clamps them into
 //! the admissible set: no limit is ever broken, whatever the avoidance asks.
 //!
-//! **Who gives way** (the corridor and the doorway jammed for good
-//! without it: two forward-only agents face to face, or level at a door,
-//! each waiting for the other). *Right of way by progress*: of a pair, the
+//! **Who gives way** (without it the corridor and the doorway jam for
+//! good: two forward-only agents face to face, or level at a door, each
+//! waiting for the other). *Right of way by progress*: of a pair, the
 //! agent clearly nearer its current goal ([`PRIORITY_GAP`]; within it, the
 //! lower index) keeps only the bodies' clearance plus [`PRIORITY_MARGIN`]
 //! from the other, which keeps the whole margin: the pair never overlaps,
@@ -37,12 +37,12 @@
 //! [`crate::avoidance::passing::PASS_REACH`] ahead, read from the grid's
 //! cells round a point further along the way; an agent turning into its
 //! lane with a mate beside it on that side drops back to half speed and
-//! merges behind it (a block as wide as the corridor turned as a block,
-//! four abreast). *Walls*:
+//! merges behind it (a block as wide as the corridor cannot turn as a
+//! block, four abreast). *Walls*:
 //! when the funnel's heading runs into a wall (tested at a walking speed,
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own
-//! heading (funnel and avoidance otherwise took turns for ever at a
+//! heading (funnel and avoidance would otherwise take turns for ever at a
 //! corner); so it does for an agent at rest, and the keep-right bias never
 //! points into a wall ([`crate::avoidance::stalled`]). Finished agents
 //! rank last and step aside at up to [`DODGE_SPEED`].
@@ -54,102 +54,83 @@
 //! the buffers have grown. Obstacles are tested one by one (few by design,
 //! [`crate::avoidance::config::MAX_OBSTACLES`]).
 //!
-//! **Cost** (issue 18's target: ORCA ≤ 3× the update without avoidance).
-//! What cost the time was as much unpredictable branches as instructions:
-//! which case of a neighbour's half-plane applies, which neighbour has the
-//! right of way or asks to keep right, which line bounds a ray flip from
-//! neighbour to neighbour, and as branches were mispredicted about every
-//! other time (scalar `select`s on a compound condition became branches on
-//! x86, which has no conditional move for floats). So the per-neighbour
-//! work runs four lanes at a time (glam's `Vec4`, SSE2 natively, simd128
-//! or scalar in wasm) with lane masks: the candidates' distances and the
-//! keep-right asks ([`crate::avoidance::passing::Passing::see4`]), the
-//! agents' half-planes ([`orca::agent_lines4`]), the line set as a structure
-//! of arrays read four lines at a time by the linear program and the ray
-//! caps ([`orca::ray_cap`]). Every lane does the scalar code's operations
-//! on the same values (IEEE `+ − × ÷ sqrt`), and folds that the order could
-//! change (minima, maxima) are folded in the scalar order: the same bits,
-//! which unit tests check lane by lane against the scalar forms.
-//! `examples/avoid_icount.rs` under callgrind `--branch-sim=yes` (1,024
-//! agents, per agent update): ORCA 6,687 → 6,188 instructions, simulated
-//! mispredictions 43.8 → 20.8 (off: 1,714 and 3.5).
+//! **The pass, phase by phase** ([`Avoider::compute`]): the agents between
+//! their plans hold their commands (`hold_commands`); the grid and the
+//! agents' records are rebuilt in its bucket order (`index_agents`); the
+//! agents due to plan this step are listed (`collect_due`); and each of them
+//! plans (`plan`), in bucket order so that consecutive queries hit cached
+//! buckets. One plan: the agent as its phases read it (`Agent`: its record,
+//! the funnel's ask, the margin its patience leaves it); with ORCA the
+//! obstacles' half-planes and the way sought (`seek_around_walls`: the goal's
+//! direction when walled or at rest); the candidates in reach gathered
+//! (`gather`) and the k nearest ranked, the keep-right rule reading them on
+//! the way (`rank`). Then the method: off, the funnel's command;
+//! separation, a push away from what is too near (`separation_command`);
+//! ORCA (`orca_command`), the keep-right look ahead (`see_ahead`), the turn
+//! into the lane (`lane_way`), the neighbours' half-planes
+//! (`push_agent_lines`), and either the way sought as it is
+//! (`way_admitted`) or the linear program's velocity turned into the
+//! unicycle's heading and speed (`solve_keep_right`, [`unicycle`]). The
+//! values every plan shares live in a per-pass context (`Pass`). Every
+//! phase is inlined into the pass's loop: the compiler sees one body.
+//!
+//! **Cost.** ORCA's plan costs as much in unpredictable branches as in
+//! instructions: which case of a neighbour's half-plane applies, which
+//! neighbour has the right of way or asks to keep right, which line bounds
+//! a ray flip from neighbour to neighbour, and as branches they would be
+//! mispredicted about every other time (scalar `select`s on a compound
+//! condition become branches on x86, which has no conditional move for
+//! floats). So the per-neighbour work runs four lanes at a time (glam's
+//! `Vec4`, SSE2 natively, simd128 or scalar in wasm) with lane masks: the
+//! candidates' distances and the keep-right asks
+//! ([`crate::avoidance::passing::Passing::see4`]), the agents' half-planes
+//! ([`orca::agent_lines4`]), the line set as a structure of arrays read
+//! four lines at a time by the linear program and the ray caps
+//! ([`orca::ray_cap`]). Every lane does the scalar code's operations on the
+//! same values (IEEE `+ − × ÷ sqrt`), and folds that the order could change
+//! (minima, maxima) are folded in the scalar order: the same bits, which
+//! unit tests check lane by lane against the scalar forms. Loops whose
+//! length varies from agent to agent are avoided where a constant count
+//! does the same work (the ranking's keys and its copy for all `RANKED`
+//! slots, the gathered neighbours shown to the keep-right rule in a fixed
+//! number of fours): a loop's exit is mispredicted when its length changes.
+//! `examples/avoid_icount.rs` counts instructions and simulated
+//! mispredictions per agent update under callgrind.
 //!
 //! The look-ahead scan ([`passing::LOOK_AHEAD`]) reads only the cells of
 //! its 3 × 3 block that meet the box where a neighbour it takes in can be
 //! and none within reach was ([`passing::FarBox`]: beyond reach ahead, in
 //! the lane), a third fewer candidates, when the grid's table gives every
 //! cell near the agent its own bucket (else the whole block): the same
-//! neighbours seen, the same bits. 7,564 → 7,421 instructions per ORCA
-//! update, mispredictions 26.1 → 25.1 (off 1,688 and 3.5). The keep-right
-//! rule reads the neighbours gathered (`see_gathered`, about 3 fours at
-//! 11 neighbours) rather than every candidate of the nine cells while
-//! gathering (about 10 fours, two thirds out of reach), and the ranking's
-//! keys are built for all `RANKED` slots (no loop exit to mispredict):
-//! → 7,173 instructions, 23.2 mispredictions, the same bits. ORCA's
-//! neighbours are read four at a time from their records, transposed,
-//! instead of copied lane by lane into arrays first: → 7,065 and 22.2.
-//! The look-ahead scan no longer looks for mates where they are all in
-//! reach (the scan within reach saw them; [`passing::FarBox`]): → 6,918
-//! instructions (22.9 mispredictions: its loop, shorter, is laid out
-//! otherwise). Nor does it run when the asks within reach are already
-//! larger than any from beyond can be ([`Passing::far_may_ask`]: 0.32 at
-//! the default clearance and reach, a neighbour ahead in the lane within
-//! about 1.4 m): → 6,812 and 21.8. The lanes sliced to one length (one
-//! bounds check per four read, not one per lane array): → 6,767, 22.2.
-//! ORCA / off in instructions 4.48 → 4.01. Callgrind's simple predictor
-//! (2-bit counters indexed by the branch's address and the last few
-//! outcomes) still counts about one misprediction per agent update at the
-//! exit of loops of nearly constant length (ORCA's fours; the ranking's k
-//! nearest until copied out for all 16 slots, below), and its counts move
-//! by a few tenths with the code's layout alone.
+//! neighbours seen, the same bits. It looks for mates only where some may
+//! be beyond reach, and it does not run at all when the asks within reach
+//! are already larger than any from beyond can be
+//! ([`Passing::far_may_ask`]: 0.32 at the default clearance and reach, a
+//! neighbour ahead in the lane within about 1.4 m). The keep-right rule
+//! reads the neighbours gathered (`see_gathered`, about 3 fours at 11
+//! neighbours) rather than every candidate of the nine cells (about 10
+//! fours, two thirds out of reach). ORCA's neighbours are read four at a
+//! time from their records, transposed, rather than copied lane by lane
+//! into arrays first. The unit vectors of the agents' headings, the
+//! funnels' and the keep-right turn come from [`trig::sin_cos`], whose
+//! quadrant is restored by bit operations, not by a jump whose target
+//! flips from agent to agent.
 //!
 //! **Plans every other step** ([`AvoidanceConfig::replan_every`], default
 //! 2: 30 Hz at the default step of 1/60 s, agents taking turns by index).
 //! Between its plans an agent keeps its last plan's command (heading and
 //! speed), or takes its funnel's when that plan left the funnel's alone;
 //! its patience clock, the grid, the neighbours' records and the vehicle
-//! model still run every step. Why: the bit-identical cuts above had
-//! brought one plan to about 6,800 instructions per agent update against
-//! 1,690 without avoidance, 4.1–4.3× in time, and what is left (the
-//! half-planes, the linear program, the unicycle, the keep-right) is the
-//! method itself. Held for one 1/60 s step, a command is 17 ms old at
-//! most: at 1.5 m/s an agent moves 2.5 cm in it, a sixth of the 0.15 m
-//! margin. Measured (`steer avoid`, ORCA, 100 seeds per cell, every step
-//! and every other step on the same seeds): 0 overlapping pairs and 0
-//! deadlocks in every cell of the report sets 0–99, 9000–9099 and
-//! 11000–11099 and of the tune sets (the corridor's one touching run of
-//! 0–99 gone); reach and oriented entries within a few tenths of a percent
-//! (README). Callgrind, the lattice world: 6,803 → 4,446 instructions and
-//! 22.2 → 13.7 mispredictions per agent update (off 1,689 and 3.5): the
-//! per-step part (grid, records, lanes) about 350 instructions, one plan
-//! about 4,830, paid every other step. `replanEvery` 1 keeps the
-//! every-step reading, the same bits as before (its golden hash is
-//! checked beside the new one).
-//!
-//! Then, with [`AvoidanceConfig::replan_every`] = 2 (each agent plans every
-//! other step), per agent update: ORCA 4,446 instructions, 13.7
-//! conditional and 1.9 indirect mispredictions (off: 1,689, 3.5 and
-//! 0.75). The unit vectors of the agents' headings, the funnels' and the
-//! keep-right turn with the quadrant restored by bit operations, not a
-//! jump table whose target flips from agent to agent: 4,463 instructions,
-//! 13.4 + 0.7 mispredictions (first a second sine beside
-//! [`trig::sin_cos`]; then `sin_cos` itself, for every caller, the funnel
-//! and the vehicle model too: ORCA 4,448 and 12.9 + 0, off 1,696 and
-//! 4.0 + 0, same bits). The ranking's
-//! k nearest copied out for all 16 slots, not k (no loop exit): 4,465
-//! and 12.8 + 0.7. The grid's rebuild keeps each agent's cell from the
-//! count to the placing pass instead of flooring its position again:
-//! 4,442 and 12.9 + 0.7 (the mispredictions within layout noise).
-//! Tried and dropped, no gain or a loss by these counts: one loop over all
-//! the gather's runs' fours (the run chosen by a counter: +159
-//! instructions, −0.4 mispredictions; by a select, which the compiler
-//! made a branch: worse), every run read as many fours as the longest,
-//! ORCA's fours written out behind tests of k (−11, −0.1), the keep-right
-//! fours written out, the linear program's violated lines found as one
-//! mask per solution (+22, −0.2), one linear program per `direction_opt`
-//! (−2, −0.1: the mispredictions moved to other branches), `f64` ranking
-//! keys (+81), and the vehicle's limits as bit-mask selects (the compiler
-//! turns a select round a division back into a branch).
+//! model still run every step. Why: what a plan costs is the method itself
+//! (the half-planes, the linear program, the unicycle, the keep-right), and
+//! one plan costs about three times a whole update without avoidance; the
+//! per-step part (grid, records, lanes) is a small fraction of it, so
+//! planning every other step nearly halves what the avoidance adds to an
+//! agent update. Held
+//! for one 1/60 s step, a command is 17 ms old at most: at 1.5 m/s an agent
+//! moves 2.5 cm in it, a sixth of the 0.15 m margin. The benchmarks'
+//! figures (README) are measured at this default; `replanEvery` 1 plans
+//! every step, its own golden hash checked beside the default's.
 
 use glam::{BVec4A, Mat4, Vec2, Vec4};
 
@@ -172,13 +153,13 @@ pub struct Command {
     /// True when the avoidance changed the funnel's (γ, v_dt).
     pub active: bool,
     /// An obstacle was in reach: the step keeps the agent's turn near the
-    /// ±π seam (`avoidance::world_step`'s turn commitment).
+    /// ±π seam (`world::avoid_step`'s turn commitment).
     pub walls: bool,
 }
 
 /// One agent as the pass reads it, kept in the grid's bucket order: a
-/// neighbour's data is one 32-byte record beside its cell-mates' (the
-/// pass read five arrays in world order per neighbour before).
+/// neighbour's data is one 32-byte record beside its cell-mates', not
+/// five arrays in world order read per neighbour.
 #[derive(Clone, Copy, Debug, Default)]
 #[repr(align(32))]
 struct Peer {
@@ -210,8 +191,7 @@ const RANKED: usize = 16;
 /// compare–exchanges with a key past `N` (no-ops: the maximum stays
 /// put): 63 for `N` = 16, fewer below; the same whatever the keys
 /// (constant loop bounds: unrolled into straight code). Insertion's
-/// data-dependent branches cost ~11 mispredictions per agent update at 11
-/// neighbours.
+/// data-dependent branches are mispredicted about once per neighbour.
 #[inline]
 fn sort_network<const N: usize>(keys: &mut [u64; RANKED]) {
     let mut p = 1;
@@ -327,7 +307,7 @@ impl Avoider {
     /// Fills [`Avoider::commands`] for agents in `states` whose funnels
     /// asked for `preferred[i] = (heading, speed)`: the agents not due to
     /// plan hold their commands, the grid and the records are rebuilt, and
-    /// each agent due plans ([`Avoider::plan`]).
+    /// each agent due plans (`plan`).
     pub fn compute(
         &mut self,
         p: &VehicleParams,
@@ -1073,9 +1053,9 @@ fn solve_keep_right(pass: &Pass, a: &Agent, way: &Way, oncoming: bool, lines: &L
 /// True when the vehicle, still moving along its present heading `forward`
 /// while it turns to the funnel's, may speed up to `speed` without running
 /// into an obstacle. The funnel's own command sets a heading to turn to and
-/// a speed, not a velocity: an agent facing a wall whose funnel asked to
-/// turn round at full speed accelerated into it (corridor, seed 94: 28
-/// steps closer than a radius). Without obstacles in reach: always (the
+/// a speed, not a velocity: an agent facing a wall whose funnel asks to
+/// turn round at full speed would accelerate into the wall while it
+/// turns, closer than its radius. Without obstacles in reach: always (the
 /// same bits).
 #[inline]
 fn present_heading_clear(lines: &Lines, forward: Vec2, speed: f32) -> bool {
@@ -1087,7 +1067,8 @@ fn present_heading_clear(lines: &Lines, forward: Vec2, speed: f32) -> bool {
 pub const DODGE_SPEED: f32 = 0.5;
 
 /// How much nearer its goal an agent must be than a neighbour, m, to have
-/// the right of way over it.
+/// the right of way over it. Much wider, the right of way goes nearly by
+/// index, and agents level at the doorway jam.
 pub const PRIORITY_GAP: f32 = 0.25;
 
 /// The clearance, m, beyond the two bodies that an agent with the right of
@@ -1102,8 +1083,8 @@ pub const LANE_BIAS: f32 = 0.2;
 /// Headings sampled each side of the current one by [`unicycle`].
 pub const HEADING_SAMPLES: usize = 12;
 
-/// The forward-only unicycle's answer (issue 18: "chooses among admissible
-/// headings and speeds"). When ORCA's velocity `v_orca` is at least
+/// The forward-only unicycle's answer: it chooses among the admissible
+/// headings and speeds. When ORCA's velocity `v_orca` is at least
 /// [`STUCK_SPEED`], the heading command is its direction and the speed its
 /// projection on the present heading, no more than that ray admits.
 /// Otherwise (a crowd packed at the contact distance leaves ORCA nearly no
@@ -1202,7 +1183,7 @@ pub fn unicycle(
     Command {
         heading,
         // `trig`, not `f32::cos` (the platform's libm): the same bits
-        // natively and in wasm (the doorway's hash differed).
+        // natively and in wasm.
         speed: (sp * trig::sin_cos(turn).1.max(0.0)).min(along),
         active: true,
         walls: false,
