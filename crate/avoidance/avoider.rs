@@ -739,7 +739,7 @@ impl Avoider {
         lines: &mut Lines,
     ) -> bool {
         let (cfg, me, pos) = (pass.cfg, &a.peer, a.state.pos);
-        let Nearest { near, k } = *near;
+        let (near, k) = (&near.near, near.k);
         let record = |c: usize| &self.peers[near[c.min(k - 1)].1 as usize];
         let mut oncoming = BVec4A::FALSE;
         let v_me = me.fwd * me.v;
