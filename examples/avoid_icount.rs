@@ -1,5 +1,5 @@
-//! Deterministic cost of a world step with and without avoidance (issue
-//! 18), for a loaded machine: run under callgrind and difference two step
+//! Deterministic cost of a world step with and without avoidance, for a
+//! loaded machine: run under callgrind and difference two step
 //! counts, e.g.
 //!
 //! ```sh

@@ -1,4 +1,4 @@
-//! What kind of deadlock each corridor agent is in (issue 18): every
+//! What kind of deadlock each corridor agent is in (ORCA): every
 //! agent the moment it has been unfinished and slower than 0.05 m/s for
 //! 10 s (the study's rule, as `avoid_stuck.rs`), classified by where it
 //! stands and what holds it, and whether it finished by the end of the run.

@@ -1,5 +1,5 @@
-//! Where avoidance benchmark agents first get stuck (issue 18's deadlock
-//! target): for each seed, every agent the moment it has been unfinished
+//! Where avoidance benchmark agents first get stuck (the study's
+//! deadlocks): for each seed, every agent the moment it has been unfinished
 //! and slower than 0.05 m/s for 10 s (the study's deadlock rule), with
 //! its goal, mode and the agents within 1.5 m.
 //!

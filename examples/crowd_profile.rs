@@ -1,4 +1,4 @@
-//! Crowd step cost (issue 17): N boids of Test IV's pathway scaled with N
+//! Crowd step cost natively: N boids of Test IV's pathway scaled with N
 //! (its density), Parker 10 %, metrics off (the workers' mode), STEPS steps
 //! after 100 settling ones; then separation alone and its grid rebuild
 //! alone on the last positions (`ONLY_REBUILD=1`: 500 rebuilds, for

@@ -67,9 +67,8 @@ fn main() {
                 };
                 black_box(cfg.step(&t, &p, &mut st, &g, &mut FunnelMemory::default()));
                 // The moved state is the update's result too: without this
-                // the integrator was dead code (1,279 instructions counted
-                // before issue 13's second stop, integrator and θ's sin/cos
-                // left out).
+                // the integrator and θ's sin/cos are dead code and drop out
+                // of the count.
                 black_box(st);
             }
         }

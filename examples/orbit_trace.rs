@@ -1,4 +1,4 @@
-//! One envelope moving-goal run step by step (issue 13's orbits):
+//! One envelope moving-goal run step by step (to see an orbit form):
 //! `orbit_trace -- SEED INDEX [EVERY] [relaxed]` prints t, pose, speed,
 //! laps, mode, D to the goal and its least value so far, the aim point
 //! (distance, α), v_dt, passes; `VEHICLE` and `TABLE` as in

@@ -1,8 +1,9 @@
 //! The funnelling world's cost per agent update, natively, on exactly the
 //! workload `web/test/wasmnative.mjs` runs in the release wasm package
-//! (issue 17: wasm / native in one run): the lab's performance world
-//! (`spawn_random`: N agents, seed, extent √N·1.5 m, 1.3 m/s, 16 goals
-//! each), warmed up, then timed over rounds of `steps` steps.
+//! (`make bench-wasm-native` runs both and prints wasm / native): the
+//! lab's performance world (`spawn_random`: N agents, seed, extent
+//! √N·1.5 m, 1.3 m/s, 16 goals each), warmed up, then timed over rounds of
+//! `steps` steps.
 //!
 //! `cargo run --release --example world_bench -- N STEPS ROUNDS` prints one
 //! line per round, `ns_per_update <wall> cpu <process CPU time>` (CPU time:

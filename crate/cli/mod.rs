@@ -6,7 +6,7 @@
 //!
 //! | module | what |
 //! |---|---|
-//! | [`steer`] | `steer run / reach / relaxed`: one enum variant and one argument struct per subcommand |
+//! | [`steer`] | `steer run / reach / relaxed / envelope / avoid`: one enum variant and one argument struct per subcommand |
 //! | [`eta_table`] | `eta-table`: output file, vehicle file, sample counts per axis, thread count |
 //! | [`crowd_metrics`] | `crowd-metrics`: `--write-presets`, repeatable `--set key=value` |
 //! | [`pool`] | `--threads`: the rayon pool a study or the table generator runs on |

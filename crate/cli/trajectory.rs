@@ -1,14 +1,13 @@
-//! `steer run`'s output, streamed (issue 16): the trajectory is written as
-//! it is simulated, one recorded step at a time, so peak memory is
-//! O(agents) whatever the duration (before: every trace was kept and the
-//! output built as one string; 1,000 agents × 60 s took 324 MB and
-//! 1,000 × 3,600 s aborted on a 4 GB allocation in the JSON serialiser).
+//! `steer run`'s output, streamed: the trajectory is written as it is
+//! simulated, one recorded step at a time, so peak memory is O(agents)
+//! whatever the duration (a trace kept whole grows with agents × recorded
+//! steps: 1,000 agents over the longest scenario, 3,600 s, would need
+//! gigabytes).
 //!
 //! Formats, chosen by the output's extension (case-insensitive; anything
 //! else is refused before the simulation starts):
 //! - `.csv`: one row per agent per recorded step, time-ordered (all agents
-//!   at t, then t + every·dt), header `agent,t,x,y,theta,v,omega,mode`;
-//!   the same rows as before issue 16, which were agent-ordered.
+//!   at t, then t + every·dt), header `agent,t,x,y,theta,v,omega,mode`.
 //! - `.json`: one document, time-ordered:
 //!   `{"name", "source", "dt", "steps", "every", "agents": N,
 //!     "frames": [{"t", "x": [N], "y", "theta", "v", "omega", "mode"}, …],
