@@ -133,6 +133,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     };
     let s = stream_run(&sc, &table, args.every, format, &mut out, &mut progress)
         .map_err(|e| format!("{scenario}: {e}"))?;
+    out.commit()?;
     println!(
         "steer: {} ({}) — {} agents, {} steps, {} finished all goals, {} limit violations -> {}",
         sc.name,

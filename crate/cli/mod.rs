@@ -11,7 +11,7 @@
 //! | [`crowd_metrics`] | `crowd-metrics`: `--write-presets`, repeatable `--set key=value` |
 //! | [`pool`] | `--threads`: the rayon pool a study or the table generator runs on |
 //! | [`table_cache`] | the η tables built for other vehicles, cached by parameter key (`steer run`) |
-//! | [`trajectory`] | `steer run`'s output streamed (CSV, time-ordered JSON, JSON Lines), the `--out` checks before simulating |
+//! | [`trajectory`] | `steer run`'s output streamed (CSV, time-ordered JSON, JSON Lines) to a temporary file renamed onto `--out` when complete, the `--out` checks before simulating |
 
 pub mod crowd_metrics;
 pub mod eta_table;

@@ -18,8 +18,8 @@
 use std::path::{Path, PathBuf};
 
 use crate::base::vehicle::VehicleParams;
-use crate::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
 
 /// Where a table came from.
 #[derive(Clone, Debug, PartialEq, Eq)]
