@@ -33,13 +33,14 @@ setup-web:
 	if [ ! -f web/node_modules/.package-lock.json ] || [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
 	  cd web && npm ci --no-audit --no-fund; fi
 
+# `--features cli`: the command lines and the tests that run them as a user does.
 lint:
 	cargo fmt --all -- --check
-	cargo clippy --all-targets -- -D warnings
+	cargo clippy --all-targets --features cli -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
 
 test-native:
-	cargo test --all-targets
+	cargo test --all-targets --features cli
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).
@@ -159,7 +160,7 @@ demo: setup web-build
 	cd web && npx vite preview --host 127.0.0.1 --port 5173 --strictPort
 
 table:
-	cargo run --release --bin eta-table -- --out tables/eta.bin
+	cargo run --release --features cli --bin eta-table -- --out tables/eta.bin
 
 bench:
 	cargo bench
