@@ -8,6 +8,12 @@
 //! ```
 //! `seek`, `seek_like` (from the funnelling update's states), `lookup` or `funnel` (default funnelling update), N iterations.
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
+use clap::Parser;
 use glam::Vec2;
 use std::hint::black_box;
 use steering::base::rng::Rng;
@@ -15,12 +21,20 @@ use steering::base::vehicle::{VehicleParams, VehicleState};
 use steering::funnelling::funnel::{FunnelConfig, FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
+
+/// Calls of one piece, for callgrind.
+#[derive(Parser)]
+struct Args {
+    /// The piece.
+    #[arg(default_value = "funnel", value_parser = ["seek", "seek_like", "lookup", "funnel"])]
+    what: String,
+    /// Iterations.
+    #[arg(default_value_t = 10_000)]
+    n: usize,
+}
+
 fn main() {
-    let what = std::env::args().nth(1).unwrap_or_else(|| "funnel".into());
-    let n: usize = std::env::args()
-        .nth(2)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(10_000);
+    let Args { what, n } = Args::parse();
     let t = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
         .expect("tables/eta.bin (run from the repository root)");
     let p = black_box(VehicleParams::default());
