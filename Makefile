@@ -38,6 +38,7 @@ lint:
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --features cli -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
+	cargo clippy --target wasm32-unknown-unknown --lib --no-default-features -- -D warnings
 
 test-native:
 	cargo test --all-targets --features cli
@@ -50,11 +51,13 @@ test-native:
 # as web/pkg/steering_simd_bg.wasm; web/src/wasm.ts loads it where
 # WebAssembly.validate accepts a SIMD instruction, else the baseline. The
 # two builds' JavaScript glue must be byte-identical (checked here).
+# `--no-default-features`: the pages call no study, so `studies` (and
+# anything else on by default for native users) stays out of the download.
 SIMD_FLAGS := -C target-feature=+simd128
 wasm: setup-rust
-	wasm-pack build --target web --release --out-dir web/pkg --no-pack
+	wasm-pack build --target web --release --out-dir web/pkg --no-pack -- --no-default-features
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
-	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack
+	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack -- --no-default-features
 	cmp web/pkg/steering.js target/wasm-simd/pkg/steering.js
 	cp target/wasm-simd/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm
 	@ls -l web/pkg/steering_bg.wasm | awk '{print "wasm size: " $$5 " bytes"}'
