@@ -1,4 +1,4 @@
-//! Fidelity (issue 19): what each figure of the four texts *claims*,
+//! Fidelity: what each figure of the four texts *claims*,
 //! measured on its preset and asserted, so a claim that stops holding
 //! fails a test. Every test prints its figures (`--nocapture`); the README's
 //! table "figure | preset | claim | our measurement | agrees?" quotes them,
