@@ -8,7 +8,6 @@
 //! and forwards every call unchanged.
 #![allow(dead_code, unsafe_code)]
 
-#[cfg(not(target_arch = "wasm32"))]
 pub mod figures;
 
 use std::alloc::{GlobalAlloc, Layout, System};
