@@ -24,6 +24,7 @@ use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::Update;
+use steering::studies::cost::{oriented_goals, start_states};
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -50,30 +51,6 @@ fn queries() -> Vec<[f32; 5]> {
         .collect()
 }
 
-/// 1,024 random oriented goals at distances in [lo, hi] from the origin.
-fn goals(lo: f32, hi: f32) -> Vec<Goal> {
-    let mut r = Rng::new(17);
-    (0..1024)
-        .map(|_| Goal {
-            pos: unit(r.range(-3.1, 3.1)) * r.range(lo, hi),
-            beta: r.range(-3.1, 3.1),
-            ..Default::default()
-        })
-        .collect()
-}
-
-/// 1,024 random admissible start states at the origin.
-fn states() -> Vec<VehicleState> {
-    let p = VehicleParams::default();
-    let mut r = Rng::new(23);
-    (0..1024)
-        .map(|_| {
-            let v = r.range(0.0, p.v_max);
-            VehicleState::new(Vec2::ZERO, 0.0, v, r.range(-1.0, 1.0) * p.omega_limit(v))
-        })
-        .collect()
-}
-
 /// The measured pieces, each a closure over iteration `k`.
 struct Pieces {
     p: VehicleParams,
@@ -95,9 +72,9 @@ impl Pieces {
             t: table(),
             offsets: qs.iter().map(|q| unit(q[1]) * q[0]).collect(),
             qs,
-            st: states(),
-            near: goals(1.0, 4.0),
-            far: goals(20.0, 30.0),
+            st: start_states(),
+            near: oriented_goals(1.0, 4.0),
+            far: oriented_goals(20.0, 30.0),
         }
     }
 

@@ -42,6 +42,9 @@ use steering::funnelling::relaxed::{RelaxedAim, RelaxedConfig, RelaxedInternals}
 use steering::funnelling::table::lookup::counters::{self, Counts};
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::{Mode, Update};
+use steering::studies::cost::{
+    oriented_goals, start_states, table1_bin, TABLE1_BETAS_DEG, TABLE1_DISTANCES,
+};
 
 mod common;
 use common::figures::{record_claim, Claim, Figure, Seeds, Verdict};
@@ -165,40 +168,14 @@ impl Tally {
 
 // ------------------------------------------------------- paper 000 §7
 
-/// `benches/core.rs`'s 1,024 random oriented goals at distances in
-/// [lo, hi] from the origin (seed 17).
-fn goals(lo: f32, hi: f32) -> Vec<Goal> {
-    let mut r = Rng::new(17);
-    (0..1024)
-        .map(|_| Goal {
-            pos: unit(r.range(-3.1, 3.1)) * r.range(lo, hi),
-            beta: r.range(-3.1, 3.1),
-            ..Default::default()
-        })
-        .collect()
-}
-
-/// `benches/core.rs`'s 1,024 random admissible start states at the origin
-/// (seed 23).
-fn states() -> Vec<VehicleState> {
-    let p = VehicleParams::default();
-    let mut r = Rng::new(23);
-    (0..1024)
-        .map(|_| {
-            let v = r.range(0.0, p.v_max);
-            VehicleState::new(Vec2::ZERO, 0.0, v, r.range(-1.0, 1.0) * p.omega_limit(v))
-        })
-        .collect()
-}
-
 /// The bench's funnelling updates: state k towards goal k, near (1–4 m)
 /// and far (20–30 m).
 fn near_far(t: &EtaTable, cfg: FunnelConfig) -> (Tally, Tally) {
     let c = Controller::Standard(cfg);
-    let st = states();
+    let st = start_states();
     let mut out = [Tally::default(); 2];
     for (slot, (lo, hi)) in [(1.0, 4.0), (20.0, 30.0)].into_iter().enumerate() {
-        for (s, g) in st.iter().zip(goals(lo, hi)) {
+        for (s, g) in st.iter().zip(oriented_goals(lo, hi)) {
             out[slot].add(update(t, &c, *s, &g));
         }
     }
@@ -478,48 +455,18 @@ fn p000_sec7_far_targets_cost_less_paper() {
 
 // ------------------------------------------------------- paper 001 Table 1
 
-const DISTANCES: [f32; 4] = [1.5, 4.0, 10.0, 25.0];
-const BETAS_DEG: [f32; 4] = [0.0, 60.0, 120.0, 180.0];
 const SMALL: (f32, f32) = (0.1, 1.0);
 const LARGE: (f32, f32) = (2.5, 15.0);
-
-/// `benches/relaxed.rs`'s 256 (state, goal) cases of one bin: start at
-/// the origin, random bearing to the centre, random admissible (v, ω),
-/// β = bearing ± the bin's offset.
-fn bin(d: f32, beta_deg: f32, tol: (f32, f32), seed: u64) -> Vec<(VehicleState, Goal)> {
-    let p = VehicleParams::default();
-    let mut r = Rng::new(seed);
-    (0..256)
-        .map(|_| {
-            let bearing = r.range(-3.1, 3.1);
-            let v = r.range(0.0, p.v_max);
-            let w = r.range(-1.0, 1.0) * p.omega_limit(v);
-            let sign = if r.range(0.0, 1.0) < 0.5 { -1.0 } else { 1.0 };
-            (
-                VehicleState::new(Vec2::ZERO, 0.0, v, w),
-                Goal {
-                    pos: Vec2::from_angle(bearing) * d,
-                    beta: bearing + sign * beta_deg.to_radians(),
-                    d_tol: tol.0,
-                    eps_tol: tol.1.to_radians(),
-                    speed: 1.3,
-                    halting: false,
-                    vel: Vec2::ZERO,
-                },
-            )
-        })
-        .collect()
-}
 
 /// One controller over Table 1's 16 bins at tolerances `tol`: the tally
 /// per bin (Table 1 gives [min, max] over its bins) and over all.
 fn table1(t: &EtaTable, c: &Controller, tol: (f32, f32)) -> (Vec<Tally>, Tally) {
     let mut bins = Vec::new();
     let mut all = Tally::default();
-    for (i, d) in DISTANCES.iter().enumerate() {
-        for (j, b) in BETAS_DEG.iter().enumerate() {
+    for (i, d) in TABLE1_DISTANCES.iter().enumerate() {
+        for (j, b) in TABLE1_BETAS_DEG.iter().enumerate() {
             let mut tb = Tally::default();
-            for (s, g) in bin(*d, *b, tol, (i * 4 + j) as u64) {
+            for (s, g) in table1_bin(*d, *b, tol, (i * 4 + j) as u64) {
                 let cost = update(t, c, s, &g);
                 tb.add(cost);
                 all.add(cost);
