@@ -88,15 +88,11 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
       usPerUpdate: 0, time: 0, paused: false,
       pose: (i) => pose(i),
       field: at,
-      stepping: () => false,
       // sim.ts's line while the table loads.
       tableLine: () => "loading… (seek view)",
       steppingLine: () => undefined,
-      lab: {
-        ghost: () => { if (!ghost) throw new Error("no ghost"); return ghost; },
-        etaRing: () => new Float32Array(0),
-        etaField: () => new Float32Array(0),
-      },
+      etaField: () => new Float32Array(0),
+      world: { ghost: () => ghost, ring: () => null },
       avoid: { method: "off", radius: 0, obstacles: [] },
     };
     const scenes = new SceneBuilder(source);

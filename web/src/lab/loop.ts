@@ -22,11 +22,11 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
     const stepped = sim.advance(interval);
     if (stepped.updates > 0) perf.stepped(stepped.updates, stepped.ms);
     let drawMs = 0;
-    // With the workers stepping (issue 17), a frame draws only a new state or
-    // an edit: redrawing the same state would take their cores.
-    if (sim.dirty || (!sim.paused && !sim.stepping())) {
+    // A frame draws only a new state, an edit or a new view: redrawing the
+    // same picture would take a core from the stepping workers.
+    if (sim.dirty) {
       beginFrame(surface, COLOURS.background);
-      const inter = sim.internals(sim.shown);
+      const inter = sim.internals;
       const scene = scenes.scene(inter);
       const d0 = performance.now();
       drawScene(surface, view, scene);

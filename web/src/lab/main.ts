@@ -58,10 +58,6 @@ async function start(): Promise<void> {
   const transport = buildTransport(sim);
   const goal = buildPanel(sim, canvas);
   const changed = (): void => {
-    // Workers step worlds without avoidance only (issue 17: every agent is
-    // coupled once it is on); switching it on while they step rebuilds the
-    // world, at t = 0, on this page's core.
-    if (sim.stepping() && sim.avoid.method !== "off") void sim.rebuild(false);
     sim.dirty = true;
     sim.url.save();
   };
@@ -81,9 +77,9 @@ async function start(): Promise<void> {
 
   const perf = new Perf();
   hook.count = () => sim.count;
-  hook.mode = () => sim.internals(sim.shown)?.mode ?? null;
-  hook.internals = () => sim.internals(sim.shown);
-  hook.funnel = () => lab.funnel();
+  hook.mode = () => sim.internals?.mode ?? null;
+  hook.internals = () => sim.internals;
+  hook.funnel = () => sim.world.core()?.funnel() ?? null;
   hook.state = () => structuredClone(st);
   hook.handles = handles;
   hook.setPreset = transport.setPreset;
@@ -91,16 +87,16 @@ async function start(): Promise<void> {
   hook.perfReset = () => perf.reset();
   hook.perfStats = () => perf.stats(sim.count);
   hook.table = () => ({ ...sim.table });
-  hook.params = () => lab.params();
+  hook.params = () => sim.world.core()?.params() ?? sim.params();
   hook.cachedTables = cacheKeys;
   hook.workers = () => sim.stepper?.info(sim.workersWanted) ?? null;
   hook.stateHash = () => fnvHex(sim.state);
   hook.stepN = (k) => sim.stepN(k);
   hook.restart = () => sim.rebuild(false);
-  hook.avoidance = () => lab.avoidance();
-  hook.replanEvery = () => lab.avoidanceReplanEvery();
-  hook.overlaps = () => lab.overlaps();
-  hook.obstacles = () => Array.from(lab.obstacles());
+  hook.avoidance = () => sim.world.core()?.avoidance() ?? sim.avoid.method;
+  hook.replanEvery = () => sim.world.core()?.avoidanceReplanEvery() ?? sim.avoid.replanEvery;
+  hook.overlaps = () => sim.world.core()?.overlaps() ?? 0;
+  hook.obstacles = () => Array.from(sim.world.core()?.obstacles() ?? sim.avoid.obstacles);
   hook.obstacleKnobs = (i) => obstacleKnobs(view, sim.avoid.obstacles, i);
   hook.finished = () => {
     let n = 0;
