@@ -141,7 +141,7 @@ async function firstFrameScript(): Promise<string> {
   core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
   const data = make(core);
   const code = (await bundleTs(resolve(src, "first.ts"), "iife")).output[0].code.replace(/<\/(script)/gi, "<\\/$1");
-  return `window.__labFirstFrame=${jsLiteral(data)};\n${code}`;
+  return `window.__firstFrameData=${jsLiteral(data)};\n${code}`;
 }
 
 function firstFrame(): Plugin {
@@ -169,21 +169,27 @@ function firstFrame(): Plugin {
 // of 100 µs), which the HUD's µs-per-update figure needs.
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
 
-export default defineConfig({
+/** The e2e suites' and the benches' build (`vite build --mode test`):
+ *  the pages with their test hooks (`import.meta.env.MODE === "test"`),
+ *  beside the shipped dist/, which holds none of them. */
+const TEST_MODE = "test";
+
+export default defineConfig(({ mode }) => ({
   base: "./",
   plugins: [tables(), coreWasmUrl(), firstFrame()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
-  // The η-table workers (issue 14) import the wasm module: ES workers.
+  // The η-table workers import the wasm module: ES workers.
   worker: { format: "es" },
   build: {
+    outDir: mode === TEST_MODE ? "dist-test" : "dist",
     target: "es2022",
     sourcemap: false,
-    // The gallery pages (crowd path following, random steering) and the learn
-    // page (issue 15) beside the funnelling lab.
+    // The gallery pages (crowd path following, random steering) and the
+    // learn page beside the funnelling lab.
     rolldownOptions: {
-      // Issue 17: the code the pages share in one chunk (was four beside each
-      // page's own: fewer requests before the lab's core takes over).
+      // The code the pages share in one chunk (not one copy beside each
+      // page's own): fewer requests before the lab's core takes over.
       output: { codeSplitting: { groups: [{ name: "shared", test: /[\\/](src|pkg)[\\/]|preload-helper|modulepreload-polyfill/, minShareCount: 2 }] } },
       input: {
         index: resolve(import.meta.dirname, "index.html"),
@@ -193,4 +199,4 @@ export default defineConfig({
       },
     },
   },
-});
+}));

@@ -282,7 +282,7 @@ try {
         return { w: c.width, h: c.height, hash: hsh.toString(16) };
       });
       await page.goto(url, { waitUntil: "commit" });
-      await page.waitForFunction(() => window.__labFirst !== undefined, null, { timeout: 30000 });
+      await page.waitForFunction(() => window.__firstFrame !== undefined, null, { timeout: 30000 });
       assert.equal(await page.evaluate(() => window.__lab), undefined, "the page's modules ran before the first frame");
       const first = await pixels();
       await shot(page, `first-frame-${w}`);
@@ -293,10 +293,10 @@ try {
       await shot(page, `first-frame-core-${w}`);
       assert.deepEqual(core, first, "the core's first frame differs from the HTML's");
       const hashes = await page.evaluate(async () => {
-        const u = new Uint32Array(window.__labFirst.state.buffer);
+        const u = new Uint32Array(window.__firstFrame.state.buffer);
         let h = 0x811c9dc5;
         for (const x of u) for (let b = 0; b < 32; b += 8) h = Math.imul(h ^ ((x >>> b) & 0xff), 0x01000193) >>> 0;
-        return { first: h.toString(16).padStart(8, "0"), core: window.__lab.stateHash(), firstMs: window.__lab.firstFrameMs, ff: window.__labFirst.ms };
+        return { first: h.toString(16).padStart(8, "0"), core: window.__lab.stateHash(), firstMs: window.__lab.firstFrameMs, ff: window.__firstFrame.ms };
       });
       assert.equal(hashes.first, hashes.core);
       assert.equal(hashes.firstMs, hashes.ff, "window.__lab.firstFrameMs is the HTML's frame");
@@ -313,7 +313,7 @@ try {
       const { page, problems, context } = await openPage(browser);
       await page.goto(`${url.replace(/\/?$/, "/")}${at}`);
       assert.equal(await waitReady(page, 60000), null);
-      assert.equal(await page.evaluate(() => window.__labFirst), undefined, at);
+      assert.equal(await page.evaluate(() => window.__firstFrame), undefined, at);
       assert.ok(Number.isFinite(await page.evaluate(() => window.__lab.firstFrameMs)), at);
       assert.deepEqual(problems, []);
       await context.close();

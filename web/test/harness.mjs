@@ -1,5 +1,7 @@
-// Shared by the e2e and perf scripts: serves web/dist with Vite's preview
-// server on 127.0.0.1 and launches Debian's Chromium via playwright-core.
+// Shared by the e2e and perf scripts: serves the test build (web/dist-test,
+// `make web-build-test`: the pages with their test hooks) with Vite's
+// preview server on 127.0.0.1 and launches Debian's Chromium via
+// playwright-core.
 import { preview } from "vite";
 import { chromium } from "playwright-core";
 import { fileURLToPath } from "node:url";
@@ -9,6 +11,8 @@ import { spawn } from "node:child_process";
 
 export const webDir = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 export const artifacts = resolve(webDir, "../artifacts");
+/** The build the suites drive: the pages with their test hooks. */
+export const testDist = resolve(webDir, "dist-test");
 mkdirSync(artifacts, { recursive: true });
 
 export const CHROMIUM_ARGS = [
@@ -23,14 +27,14 @@ export const CHROMIUM_ARGS = [
   "--no-first-run",
 ];
 
-/** Serves web/dist, or `outDir` (another build's dist, e.g. a baseline). */
-export async function serve(outDir) {
+/** Serves web/dist-test, or `outDir` (another build's, e.g. a baseline). */
+export async function serve(outDir = testDist) {
   const server = await preview({
     root: webDir,
     configFile: resolve(webDir, "vite.config.ts"),
     logLevel: "warn",
     preview: { host: "127.0.0.1", port: 0, strictPort: false },
-    ...(outDir ? { build: { outDir: resolve(outDir) } } : {}),
+    build: { outDir: resolve(outDir) },
   });
   const url = server.resolvedUrls?.local?.[0];
   if (!url) throw new Error("vite preview gave no URL");
@@ -45,7 +49,7 @@ export function takeBases(args) {
   return dirs;
 }
 
-/** Serves this build (web/dist, or `outDir`) and each base dist: `url`,
+/** Serves this build (web/dist-test, or `outDir`) and each base dist: `url`,
  *  `bases` ({ dir, url, server }), `builds` ([name, url], "this" first) and
  *  `close()` for every server. The benches' same-run baselines. */
 export async function serveBuilds(baseDirs, outDir) {

@@ -3,4 +3,4 @@
 // beside it (firstframe.ts), before the page's modules and core arrive.
 import { drawFirstFrame } from "./firstframe";
 
-drawFirstFrame(window.__labFirstFrame);
+drawFirstFrame(window.__firstFrameData);

@@ -28,7 +28,7 @@ import { SceneBuilder, type SceneSource } from "./scene";
 import { defaultState, fitPlayground, type Pose } from "./state";
 import { Trails } from "./trails";
 
-/** What the build writes into index.html (window.__labFirstFrame). */
+/** What the build writes into index.html (window.__firstFrameData). */
 export interface FirstFrameData {
   stride: number;
   /** The core's state records at t = 0 (f32 values). */
@@ -39,7 +39,7 @@ export interface FirstFrameData {
   ghost: { points: number[]; reached: boolean; finalDir: number; slowed: boolean } | null;
 }
 
-/** What was drawn, and when (window.__labFirst; hook.ts and main.ts read it). */
+/** What was drawn, and when (window.__firstFrame; hook.ts and main.ts read it). */
 export interface FirstFrameRecord {
   /** performance.now() after the frame was drawn. */
   ms: number;
@@ -49,8 +49,8 @@ export interface FirstFrameRecord {
 
 declare global {
   interface Window {
-    __labFirstFrame?: FirstFrameData;
-    __labFirst?: FirstFrameRecord;
+    __firstFrameData?: FirstFrameData;
+    __firstFrame?: FirstFrameRecord;
   }
 }
 
@@ -105,8 +105,7 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
     requestAnimationFrame(() => {
       first.ms = performance.now();
       performance.mark("lab:firstraf");
-      window.__labFirst = first;
-      if (window.__lab && Number.isNaN(window.__lab.firstFrameMs)) window.__lab.firstFrameMs = first.ms;
+      window.__firstFrame = first;
     });
   }
 }

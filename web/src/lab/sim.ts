@@ -456,7 +456,7 @@ export class LabSim {
 
   /** One step, paused afterwards (the caller shows the pause). */
   stepOnce(): void {
-    if (this.live) void this.stepN(1);
+    if (this.live) void this.stepNow(1);
   }
 
   /** Runs the steps that `intervalMs` of wall time is worth (none when
@@ -493,7 +493,7 @@ export class LabSim {
 
   /** Runs `k` steps now (paused single steps, tests); resolves once the
    *  state drawn is theirs. */
-  async stepN(k: number): Promise<void> {
+  async stepNow(k: number): Promise<void> {
     this.took(await this.world.run(k, this.shown));
   }
 }
