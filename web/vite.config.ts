@@ -8,26 +8,17 @@ import type { IncomingMessage, ServerResponse } from "node:http";
 import { pathToFileURL } from "node:url";
 import { build as bundle } from "rolldown";
 import type { firstFrameData } from "./src/lab/firstdata";
+import { toPlanes } from "./src/tableplanes.ts";
 
 const TABLES = resolve(import.meta.dirname, "../tables");
 
-/** Gzipped tables by file, compressed once (issue 17: 3.2 MB → 1.2 MB on
- *  the wire; 0.54 MB as byte planes, `NAME.planes`). */
+/** Gzipped tables by file, compressed once (the byte planes, `NAME.planes`,
+ *  gzip to less than half of `NAME.bin`; src/tableplanes.ts). */
 const gzipped = new Map<string, { mtimeMs: number; body: Buffer }>();
 
-/** The byte planes of `b`: src/tableplanes.ts's `toPlanes` (the page's
- *  `fromPlanes` rejoins them; the e2e suite loads the table this way). */
-function toPlanes(b: Uint8Array): Uint8Array {
-  const m = b.length >>> 2;
-  const out = new Uint8Array(b.length);
-  for (let i = 0; i < m; i++) for (let j = 0; j < 4; j++) out[j * m + i] = b[4 * i + j]!;
-  out.set(b.subarray(4 * m), 4 * m);
-  return out;
-}
-
 /** A table file's bytes as served: `NAME.planes` is `NAME.bin` in byte
- *  planes (issue 17, src/tableplanes.ts: same bytes once rejoined, 2.2×
- *  smaller gzipped). */
+ *  planes (the page's `fromPlanes` rejoins them; the e2e suite loads the
+ *  table this way). */
 function tableBytes(file: string, planes: boolean): Buffer {
   const b = readFileSync(file);
   return planes ? Buffer.from(toPlanes(b)) : b;
