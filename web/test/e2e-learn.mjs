@@ -6,12 +6,11 @@
 // window.__lab hook); reduced motion means no autoplay, and without it a
 // figure plays once in view; no console errors. Screenshots of every
 // section at 1280x800 and 390x844 go to artifacts/learn-*.png.
-// Prints "e2e-learn: N passed, M failed".
-import { serve, launch, openPage, checks, waitReady, settle, artifacts } from "./harness.mjs";
+// A node:test suite (harness.mjs `check`).
+import { serve, launch, openPage, check, waitReady, settle, artifacts, countPixels } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-learn");
 
 /** Section → [handle to drag, live number it must change, drag offset in CSS px]. */
 const DRAGS = {
@@ -33,26 +32,12 @@ async function waitLearn(page) {
   return page.evaluate(() => window.__learn.error);
 }
 
-/** Pixels of a figure's canvas that differ from the background (#fbfaf7). */
-async function inked(page, name) {
-  return page.evaluate((name) => {
-    const c = document.querySelector(`[data-figure="${name}"] canvas`);
-    const copy = document.createElement("canvas");
-    copy.width = c.width;
-    copy.height = c.height;
-    const ctx = copy.getContext("2d", { willReadFrequently: true });
-    ctx.drawImage(c, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    let n = 0;
-    let colour = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      const dr = Math.abs(d[i] - 251), dg = Math.abs(d[i + 1] - 250), db = Math.abs(d[i + 2] - 247);
-      if (dr + dg + db > 30) n++;
-      if (Math.max(d[i], d[i + 1], d[i + 2]) - Math.min(d[i], d[i + 1], d[i + 2]) > 60) colour++;
-    }
-    return { n, colour, total: d.length / 4 };
-  }, name);
-}
+/** Pixels of a figure's canvas that differ from the background (#fbfaf7), and those in colour. */
+const inked = (page, name) =>
+  countPixels(page, { selector: `[data-figure="${name}"] canvas` }, {
+    n: (r, g, b) => Math.abs(r - 251) + Math.abs(g - 250) + Math.abs(b - 247) > 30,
+    colour: (r, g, b) => Math.max(r, g, b) - Math.min(r, g, b) > 60,
+  });
 
 const liveText = (page, name) => page.locator(`[data-live="${name}"]`).first().textContent();
 
@@ -228,4 +213,3 @@ try {
   await server.close();
 }
 if (allProblems.length) console.log(`# console problems:\n${allProblems.join("\n")}`);
-finish();

@@ -9,11 +9,10 @@
 // WebGL layer would be read back every frame), so the GL checks force it
 // with `?draw=gl` and allow the one "GPU stall due to ReadPixels" warning
 // that software compositing then prints; `?draw=2d` forces the sprites. Screenshots at 1280 and 390 px in artifacts/perf-gl-*.
-// Prints "e2e-perf: N passed, M failed".
-import { serve, launch, openPage, checks, waitReady, shot, settle, unisolated } from "./harness.mjs";
+// A node:test suite (harness.mjs `check`).
+import { serve, launch, openPage, check, waitReady, shot, settle, unisolated, countPixels } from "./harness.mjs";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-perf");
 
 /** The core's wasm files the page fetched (Vite adds a hash to the name). */
 const wasmFetched = (page) =>
@@ -52,23 +51,11 @@ try {
     });
   }
 
-  /** Pixels of what the page shows over `sel`'s box (both canvas layers, as
-   *  composited: a screenshot, decoded in the page) within `tol` of [r, g, b]. */
-  const colourPixels = async (page, sel, rgb, tol = 40) => {
-    const png = await page.screenshot({ clip: await page.locator(sel).boundingBox() });
-    return page.evaluate(async ({ b64, rgb, tol }) => {
-      const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-      const img = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
-      const c = document.createElement("canvas");
-      c.width = img.width;
-      c.height = img.height;
-      const ctx = c.getContext("2d", { willReadFrequently: true });
-      ctx.drawImage(img, 0, 0);
-      const d = ctx.getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - rgb[0]) + Math.abs(d[i + 1] - rgb[1]) + Math.abs(d[i + 2] - rgb[2]) < tol) n++;
-      return n;
-    }, { b64: png.toString("base64"), rgb, tol });
+  /** Pixels of what the page shows over `sel`'s box (every canvas layer,
+   *  as composited) within `tol` of [r, g, b]. */
+  const colourPixels = async (page, selector, rgb, tol = 40) => {
+    const near = new Function("r", "g", "b", `return Math.abs(r - ${rgb[0]}) + Math.abs(g - ${rgb[1]}) + Math.abs(b - ${rgb[2]}) < ${tol};`);
+    return (await countPixels(page, { selector, composited: true }, { near })).near;
   };
 
   /** Problems other than software compositing's ReadPixels notice (forced GL only). */
@@ -323,4 +310,3 @@ try {
   await browser.close();
   await server.close();
 }
-finish();

@@ -13,12 +13,11 @@
 // - a build whose workers cannot load the core (wasm requests refused)
 //   ends in an error the page shows, not at 0 % for ever;
 // - the reference vehicles (select "vehicle"): the car's table built;
-// - no console errors. Prints the build and cache timings (README figures)
-//   and "e2e-vehicle: N passed, M failed". Screenshots in artifacts/.
-import { serve, launch, openPage, checks, shot, waitReady, settle } from "./harness.mjs";
+// - no console errors. Prints the build and cache timings; a node:test
+//   suite (harness.mjs `check`). Screenshots in artifacts/.
+import { serve, launch, openPage, check, shot, waitReady, settle } from "./harness.mjs";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-vehicle");
 const { server, url } = await serve();
 const browser = await launch();
 const timings = {};
@@ -144,4 +143,3 @@ try {
   await browser.close();
   await server.close();
 }
-finish();

@@ -6,26 +6,32 @@
 // mean and p95 work per frame (core step + drawing) and core step time.
 // Issue 18: the largest N again with each avoidance method of AVOID
 // (default separation,orca; the second argument), beside the same run's avoidance-off figures.
-import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, takeBases, rotated } from "./harness.mjs";
+import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
+import { parseArgs } from "node:util";
 import { resolve } from "node:path";
 import { loadavg } from "node:os";
 
-const args = process.argv.slice(2);
-// `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
-// into /tmp) is served beside this one and the first-frame loads and the
-// crowd rows alternate between them, in rotating order.
-const baseDirs = takeBases(args);
-const loadsAt = args.indexOf("--loads");
-const LOADS = loadsAt >= 0 ? Number(args.splice(loadsAt, 2)[1]) : 9;
-// `--server inproc|child|both` (issue 17): the first-frame loads' builds
-// served by a preview server in this process (the default, as before), by
-// one in a child process (test/serve.mjs: a user's server does not share
-// the browser driver's event loop), or both, alternating in one run.
-const serverAt = args.indexOf("--server");
-const SERVER = serverAt >= 0 ? args.splice(serverAt, 2)[1] : "inproc";
+const { values: opts, positionals } = parseArgs({
+  allowPositionals: true,
+  options: {
+    // `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
+    // into /tmp) is served beside this one and the first-frame loads and the
+    // crowd rows alternate between them, in rotating order.
+    ...BASE_OPTION,
+    loads: { type: "string", default: "9" },
+    // `--server inproc|child|both`: the first-frame loads' builds served by a
+    // preview server in this process (the default), by one in a child
+    // process (test/serve.mjs: a user's server does not share the browser
+    // driver's event loop), or both, alternating in one run.
+    server: { type: "string", default: "inproc" },
+  },
+});
+const baseDirs = opts.base;
+const LOADS = Number(opts.loads);
+const SERVER = opts.server;
 if (!["inproc", "child", "both"].includes(SERVER)) throw new Error(`--server: inproc, child or both, not ${SERVER}`);
 // An empty size list ("") runs the first-frame loads alone.
-const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const sizes = (positionals[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
 const onlyFirst = sizes.length === 0;
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
 // ONLY_CROWD=1: the crowd page's rows alone (issue 17, crowd boids per frame).
