@@ -156,6 +156,46 @@ function firstFrame(): Plugin {
   };
 }
 
+/** The lab's pages: their file, title and own stylesheets, and their link
+ *  in the navigation every page shows, in this order. */
+const PAGES = [
+  { file: "index.html", title: "funnelling control", nav: "Funnelling", css: [] },
+  { file: "crowd.html", title: "crowded path following", nav: "Crowd path following", css: ["./src/gallery.css"] },
+  { file: "wander.html", title: "random steering gallery", nav: "Random steering gallery", css: ["./src/gallery.css"] },
+  { file: "learn.html", title: "learn funnelling", nav: "Learn", css: ["./src/learn/learn.css"] },
+] as const;
+
+/** Every page's head and navigation, from PAGES: `<!-- lab:head -->` and
+ *  `<!-- lab:nav -->` in a page's HTML, filled in before Vite reads its
+ *  stylesheets (dev server and build alike). */
+function pageFrame(): Plugin {
+  return {
+    name: "steering-page-frame",
+    transformIndexHtml: {
+      order: "pre",
+      handler(html, ctx) {
+        const file = basename(ctx.filename);
+        const page = PAGES.find((p) => p.file === file);
+        if (!page) throw new Error(`${file} is not one of the lab's pages (vite.config.ts, PAGES)`);
+        const head = [
+          `<meta charset="utf-8" />`,
+          `<meta name="viewport" content="width=device-width, initial-scale=1" />`,
+          `<link rel="icon" href="data:," />`,
+          `<title>The steering lab — ${page.title}</title>`,
+          ...["./src/style.css", ...page.css].map((href) => `<link rel="stylesheet" href="${href}" />`),
+        ];
+        const links = PAGES.map((p) => `<a href="./${p.file}"${p === page ? ` aria-current="page"` : ""}>${p.nav}</a>`);
+        const nav = [`<h1>The steering lab</h1>`, `<nav class="labnav" aria-label="lab pages">`, ...links.map((a) => `  ${a}`), `</nav>`];
+        const fill = (marker: string, lines: string[]) => (text: string) =>
+          text.replace(new RegExp(`^( *)<!-- ${marker} -->$`, "m"), (_, indent: string) => lines.map((l) => indent + l).join("\n"));
+        const out = fill("lab:nav", nav)(fill("lab:head", head)(html));
+        if (out.includes("<!-- lab:")) throw new Error(`${file}: a lab:head or lab:nav marker was not filled`);
+        return out;
+      },
+    },
+  };
+}
+
 // Cross-origin isolation gives performance.now() 5 µs resolution (instead
 // of 100 µs), which the HUD's µs-per-update figure needs.
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
@@ -167,7 +207,7 @@ const TEST_MODE = "test";
 
 export default defineConfig(({ mode }) => ({
   base: "./",
-  plugins: [tables(), coreWasmUrl(), firstFrame()],
+  plugins: [pageFrame(), tables(), coreWasmUrl(), firstFrame()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
   // The η-table workers import the wasm module: ES workers.
