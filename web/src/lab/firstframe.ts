@@ -1,9 +1,9 @@
-// Issue 17, the first drawn frame: the default playground drawn while the
-// page's scripts and the wasm core are still on their way.
+// The first drawn frame: the default playground drawn while the page's
+// scripts and the wasm core are still on their way.
 //
-// Problem: the lab's first frame waited for its script chunks, then for the
-// core to compile and build the scene (median ≈ 400 ms after navigation on
-// the 2-core host, of which ≈ 100 ms is a fresh context's parser start).
+// Problem: a first frame drawn by the page's modules waits for its script
+// chunks, then for the core to compile and build the scene (`make
+// bench-web` times where that time goes).
 // Design: the scene at t = 0 of the page without a link (no hash) is always
 // the same: the build (vite.config.ts, `firstFrame`) runs the core itself in
 // Node on that state (`Lab.withoutTable`, the playground agent as sim.ts
@@ -14,10 +14,11 @@
 // as soon as it runs, while the HTML is parsed (its time: the start of the
 // animation frame that shows it; the page's loop times a frame after drawing
 // it, in that frame). The core then builds the same scene from the same
-// state: main.ts checks the core's state against this one bit for bit (a
+// state (recipe.ts, the calls of firstdata.ts): main.ts checks the core's state against this one bit for bit (a
 // warning if they differ; the e2e suite fails on it) and its first frame
 // replaces this one. Fallback: a link with a hash, a `?workers=` page, or a
-// build without the data draws nothing here; the page starts as before.
+// build without the data draws nothing here; the page's own first frame
+// is the first.
 
 import { beginFrame, fitSurface, type Surface } from "../canvas";
 import { View } from "../view";

@@ -88,7 +88,7 @@ async function start(): Promise<void> {
   const since = performance.now();
   await sim.rebuild(true);
   performance.mark("lab:scene");
-  // Issue 17: the frame the HTML drew (firstframe.ts) must be this scene.
+  // The frame the HTML drew (firstframe.ts) must be this scene.
   const early = window.__firstFrame;
   if (early && (fnvHex(early.state) !== fnvHex(sim.state) || early.view.scale !== view.scale || early.view.cx !== view.cx || early.view.cy !== view.cy)) {
     console.warn("the first frame drawn from the HTML is not the core's scene at t = 0 (rebuild web/dist)");

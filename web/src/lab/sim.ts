@@ -11,6 +11,7 @@ import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
+import { recipeFor } from "./recipe";
 import { fitPlayground, goalConfig, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
@@ -396,23 +397,14 @@ export class LabSim {
     const { st } = this;
     const key = this.core.tableKey();
     const table = { key, url: new URL(TABLE_URL, location.href).href, bytes: this.tableBytes?.key === key ? this.tableBytes.bytes : null };
-    const settings = {
-      table, params: this.params(), funnel: funnelConfig(st.funnel), relaxed: relaxedConfig(st.funnel),
-      avoid: { method: st.avoidance, replanEvery: st.replanEvery, obstacles: st.obstacles },
-    };
-    if (st.preset) {
-      const p = findPreset(st.preset);
-      try {
-        if (!p) throw new Error(`no preset named ${st.preset}`);
-        return { ...settings, build: { kind: "scenario", name: st.preset, text: await p.load() } };
-      } catch (e) {
-        return `Preset ${st.preset} could not be loaded: ${errorText(e)}`;
-      }
+    if (!st.preset) return recipeFor(st, this.params(), table, null);
+    const p = findPreset(st.preset);
+    try {
+      if (!p) throw new Error(`no preset named ${st.preset}`);
+      return recipeFor(st, this.params(), table, { name: st.preset, text: await p.load() });
+    } catch (e) {
+      return `Preset ${st.preset} could not be loaded: ${errorText(e)}`;
     }
-    const n = st.agents;
-    const spawn = n > 0 ? { n, seed: st.seed, extent: Math.max(10, Math.sqrt(n) * 1.5), speed: st.speed } : null;
-    const agent = { x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [this.goal()] };
-    return { ...settings, build: { kind: "playground", agent, spawn } };
   }
 
   /** The workers to build `recipe`'s world in, or null: this page's core.

@@ -85,11 +85,11 @@ export interface StepReply {
 /** Steps one job runs at most (a frame's worth when the workers keep up). */
 const MAX_STEPS_PER_JOB = 4;
 
-/** Agents from which the page steps in workers by default. On a 2-core
- *  host (`make bench-web`, web/test/perf.mjs) the page's own thread steps
- *  and draws 10,000 agents at 40–60 fps, and workers only add their start
- *  and a frame of latency; from about 20,000 its frames take longer than
- *  the 16.7 ms of a 60 Hz display while the workers keep it drawing. */
+/** Agents from which the page steps in workers by default. Below it the
+ *  page's own thread steps and draws a frame within the 16.7 ms of a 60 Hz
+ *  display on a 2-core host, and workers would only add their start and a
+ *  frame of latency; above it, its frames take longer, and the workers
+ *  keep it drawing (`make bench-web`, web/test/perf.mjs, measures both). */
 export const AUTO_WORKERS_FROM = 20_000;
 
 /** `?workers=N` (0 = off) or, unset, the default for `count` agents:
