@@ -1,4 +1,4 @@
-// Issue 17: where the CPU goes per drawn state, and what the ≥ 100,000
+// Where the CPU goes per drawn state, and what the ≥ 100,000
 // agents (boids) per 16.7 ms frame target would take on this machine.
 //
 // The frame counts of `perf.mjs` say how far a page is from the target;

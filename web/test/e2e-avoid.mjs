@@ -1,4 +1,4 @@
-// Playwright for issue 18 (avoidance in the lab), against the built page in
+// Playwright for avoidance in the lab, against the built page in
 // Debian's headless Chromium. The page's own loop plays the antipodal circle
 // swap (32 agents, preset avoid_circle32) while a sampler in the page reads
 // the core's overlap count (`Lab.overlaps`, pairs closer than two body

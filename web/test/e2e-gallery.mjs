@@ -295,7 +295,7 @@ try {
     await context.close();
   }
 
-  // ------------------------------------------------- crowd in workers (issue 17)
+  // ------------------------------------------------- crowd in workers
   {
     const owned = (page) => page.waitForFunction(() => { const w = window.__crowd.workers(); return !w.starting && window.__crowd.idle(); }, null, { timeout: 60000 });
     const pause = async (page) => {

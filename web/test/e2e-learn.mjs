@@ -1,4 +1,4 @@
-// Browser end-to-end test of the learn page (learn.html, issue 15): the
+// Browser end-to-end test of the learn page (learn.html): the
 // built page in Debian's headless Chromium via playwright-core. Checks:
 // every section's canvas draws; one handle per section drags (pointer) and
 // changes a number in the prose; handles move with the keyboard; the

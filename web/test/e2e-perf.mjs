@@ -1,4 +1,4 @@
-// Issue 17's browser checks (`make test-e2e-perf`), against web/dist in
+// The browser checks of speed (`make test-e2e-perf`), against the test build in
 // Debian's headless Chromium: the SIMD build of the core loads where the
 // engine has WebAssembly SIMD and the baseline build where it has not (SIMD
 // hidden from WebAssembly.validate), and both run the lab, the crowd and the
@@ -107,7 +107,7 @@ try {
     assert.deepEqual(real(problems), []);
     await context.close();
   });
-  // Issue 17, point 2: the world stepped in Web Workers (?workers=N).
+  // The world stepped in Web Workers (?workers=N).
   const base = url.replace(/\/?$/, "/");
   /** Opens the lab at `query` + `hash`; waits for the workers (if any) to own the world. */
   const openLab = async (query, hash, isolated = true) => {
@@ -244,7 +244,7 @@ try {
     await context.close();
   });
 
-  // Issue 17, the first drawn frame: the default page draws its scene from
+  // The first drawn frame: the default page draws its scene from
   // the HTML (src/lab/firstframe.ts) before its scripts and core arrive; the
   // core's first frame, the η table held back (the clock at t = 0), must be
   // the same picture, pixel for pixel, from the same state, bit for bit.

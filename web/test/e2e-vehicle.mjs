@@ -1,4 +1,4 @@
-// Browser end-to-end test of issue 14 (η tables for the vehicle in use),
+// Browser end-to-end test of η tables for the vehicle in use,
 // against the built page (web/dist) in Debian's headless Chromium:
 // - a preset with a vehicle limit in the link really runs with it
 //   (`#preset=p000_fig1_seek&vmax=0.05`: the core's vMax and the agents'

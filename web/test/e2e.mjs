@@ -66,7 +66,7 @@ try {
     assert.ok(st.vehicle);
   });
 
-  await check("the HUD: running numbers rewritten at most 15 times a second (issue 17), a pause at once, a step within 1/15 s", async () => {
+  await check("the HUD: running numbers rewritten at most 15 times a second, a pause at once, a step within 1/15 s", async () => {
     await page.evaluate(() => window.__lab.setPaused(false));
     const seen = await page.evaluate(
       () =>
@@ -305,7 +305,7 @@ try {
     await p5.context.close();
   });
 
-  // Issue 17: the first frame does not wait for the η table. The table's
+  // The first frame does not wait for the η table. The table's
   // response is held back: the scene at t = 0 is drawn (seek steering, the
   // "loading" badge), a drag made meanwhile is kept, and when the table is
   // let through the same scene funnels from t = 0 with the link's state.
@@ -369,7 +369,7 @@ try {
     assert.ok(e && /η table/.test(e), String(e));
     const text = await p4.page.locator("#message").textContent();
     assert.match(text, /η table .* rejected/);
-    // Issue 17: the scene drawn before the table stays, held at t = 0.
+    // The scene drawn before the table stays, held at t = 0.
     await p4.page.waitForFunction(() => /table\s+none/.test(document.getElementById("hud").textContent));
     assert.equal(await p4.page.evaluate(() => window.__lab.live()), false);
     await shot(p4.page, "07-corrupt-table-message");
@@ -504,7 +504,7 @@ try {
       await page.waitForTimeout(1500);
       await shot(page, `08-preset-${name}`);
       assert.ok(page.url().includes(`preset=${encodeURIComponent(name)}`) || page.url().includes(`preset=${name}`));
-      // Issue 19: every paper preset states its claim and our measurement.
+      // Every paper preset states its claim and our measurement.
       if (/^p\d{3}_fig/.test(name)) {
         assert.match(await page.locator("#caption .claim").textContent(), /^Paper: ./);
         assert.match(await page.locator("#caption .measured").textContent(), /^Ours: ./);
@@ -512,7 +512,7 @@ try {
     });
   }
 
-  await check("the preset menu groups presets by paper and figure (issue 19)", async () => {
+  await check("the preset menu groups presets by paper and figure", async () => {
     const groups = await page.locator("#preset optgroup").evaluateAll((gs) => gs.map((g) => g.label));
     assert.ok(groups.includes("Paper 000 · Fig. 1") && groups.includes("Paper 001 · Fig. 11"), groups.join(" | "));
     const inFig11 = await page.locator('#preset optgroup[label="Paper 001 · Fig. 11"] option').count();

@@ -69,7 +69,7 @@ export function rotated(builds, round) {
 }
 
 /** As serve, but from a child process (test/serve.mjs): the server's work
- *  then does not wait on the harness's own (issue 17, perf.mjs --child). */
+ *  then does not wait on the harness's own (perf.mjs --server child). */
 export function serveChild(outDir) {
   const child = spawn(process.execPath, [resolve(webDir, "test/serve.mjs"), outDir ? resolve(outDir) : ""], { stdio: ["ignore", "pipe", "inherit"] });
   return new Promise((ok, fail) => {

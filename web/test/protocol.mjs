@@ -6,8 +6,8 @@
 // "page" raises the target every frame, takes a state (`take`), checks
 // that its buffer holds that step (every 61st float, all slices), draws
 // for a while, and checks it again: a buffer handed to a later step while drawn would show
-// there (the issue 17 DEPTH change: the page may take a state DEPTH
-// behind the newest, so the workers protect that many more buffers).
+// there (the page may take a state DEPTH behind the newest, so the workers
+// protect that many more buffers).
 // Then: states drawn in order, none skipped at a step per frame (at 1–3
 // steps a frame, a faster clock, the page takes a frame's worth on), and
 // every worker ending after the same step. The lab's protocol

@@ -1,4 +1,4 @@
-// Issue 17, point 4: would a quantised η table load faster, and what would
+// Would a quantised η table load faster, and what would
 // it cost in accuracy? Reads tables/eta.bin (format v1: η f32 × N, speed
 // f32 × N, flags u8 × N), and for each storage variant prints the bytes
 // raw / gzip -6 (what the server sends) / brotli, the gunzip time in Node,

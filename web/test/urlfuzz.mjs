@@ -1,4 +1,4 @@
-// Seeded fuzz of the lab's URL decoder (issue 16): ≥ 10,000 mutated
+// Seeded fuzz of the lab's URL decoder: ≥ 10,000 mutated
 // fragments (known and random keys; values such as NaN, Infinity, 1e999,
 // 0x10, empty, huge, negative, unicode digits, 5,000 characters, bad
 // percent-encoding; duplicated keys) through `decodeState`, bundled from the
@@ -9,7 +9,7 @@
 // for the random agents (and, for small counts, spawning them), the η field
 // view; every key whose value was not taken has a message naming it; and the
 // state re-encodes to a fragment that decodes with no message to the same
-// state. Issue 18: the avoidance method (`avoid`) and the obstacles (`obs`)
+// state. The avoidance method (`avoid`) and the obstacles (`obs`)
 // too, set in the core with setAvoidance / setObstacles. Prints "urlfuzz: N cases, M refused values, T ms" (node:test).
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
