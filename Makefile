@@ -106,24 +106,24 @@ test-e2e: setup-browser web-build-test
 test-e2e-gallery: setup-browser web-build-test
 	node web/test/e2e-gallery.mjs
 
-# Playwright against the learn page (learn.html, issue 15): every section
+# Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build-test
 	node web/test/e2e-learn.mjs
 
-# Playwright for issue 14: vehicle limits build their η table in Web
+# Playwright for the vehicle in use: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build-test
 	node web/test/e2e-vehicle.mjs
 
-# Issue 18 in the lab: the page plays the circle swap and reads the core's
+# Avoidance in the lab: the page plays the circle swap and reads the core's
 # overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
 # dragged by mouse and finger, the link; screenshots in artifacts/.
 test-e2e-avoid: setup-browser web-build-test
 	node web/test/e2e-avoid.mjs
 
-# Issue 17's browser checks: the SIMD core where the engine has SIMD, the
+# The browser checks of speed: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
 # ?draw=gl: headless WebGL is software, where the pages keep 2D sprites);
 # the lab stepped in Web Workers (shared memory, by message without
@@ -132,28 +132,29 @@ test-e2e-perf: setup-browser web-build-test
 	node web/test/e2e-perf.mjs
 
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
-# then wasm / native per funnelling agent update (issue 17), and agents
+# then wasm / native per funnelling agent update, and agents
 # stepped per 16.7 ms frame at 10k / 30k / 100k with 0, 1 and N workers.
 # First the time to the first frame, 9 fresh loads (median, p90, where the
 # time went); BENCH_WEB_ARGS="--base DIR" alternates them with another
-# build's dist, e.g. main's built into /tmp (README, figures).
+# build's test dist (web/dist-test), e.g. main's built into /tmp.
 BENCH_WEB_ARGS ?=
 bench-web: setup-browser web-build-test bench-wasm-native
 	node web/test/perf.mjs 1000,10000 $(BENCH_WEB_ARGS)
 
-# Issue 17: CPU per drawn state per thread group (the workers, the page's
+# CPU per drawn state per thread group (the workers, the page's
 # thread, the rest; Linux /proc) on the lab at 100,000 agents and the crowd
 # at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need
-# (BENCH_BUDGET_ARGS="--base DIR": against another build's dist, same run).
+# (BENCH_BUDGET_ARGS="--base DIR": against another build's test dist,
+# web/dist-test, same run; a build older than the test mode: its web/dist).
 bench-budget: setup-browser web-build-test
 	node web/test/budget.mjs $(BENCH_BUDGET_ARGS)
 
-# Issue 14: η table build in Chromium's Web Workers and the cached reload,
+# η table build in Chromium's Web Workers and the cached reload,
 # per reference vehicle, REPS fresh contexts each (median, max, host load).
 bench-tables: setup-browser web-build-test
 	node web/test/bench-tables.mjs
 
-# Issue 17: the same funnelling world natively (examples/world_bench.rs) and
+# The same funnelling world natively (examples/world_bench.rs) and
 # in Node on the release wasm package, alternating rounds, one run; prints
 # the ratio and checks both sides end in the same states.
 bench-wasm-native: setup-web wasm
