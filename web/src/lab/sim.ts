@@ -96,6 +96,8 @@ export class LabSim {
   private acc = 0;
   private generation = 0;
   private tableGen = 0;
+  /** The next build steps here (the workers failed while stepping). */
+  private notInWorkers = false;
   /** Edits made while a world is being built: the new world's, once built. */
   private waiting: Array<[Edit, (a: EditAnswer) => void]> | null = null;
   /** The URL's view, shown once (the first build); later builds fit when asked. */
@@ -417,7 +419,9 @@ export class LabSim {
     this.workersWanted = wanted.n;
     if (wanted.problem) showMessage(wanted.problem, "warn");
     const coupled = recipe.avoid.method !== null && recipe.avoid.method !== "off";
-    if (wanted.n === 0 || coupled || (recipe.table.key !== this.defaultTableKey && !recipe.table.bytes)) return null;
+    const failed = this.notInWorkers;
+    this.notInWorkers = false;
+    if (wanted.n === 0 || coupled || failed || (recipe.table.key !== this.defaultTableKey && !recipe.table.bytes)) return null;
     this.stepper ??= new WorkerWorld(wanted.n, this.stride);
     return this.stepper;
   }
@@ -455,6 +459,13 @@ export class LabSim {
    *  paused, or before the η table: edits still reach the world); returns
    *  the agent updates drawn now and the ms they took. */
   advance(intervalMs: number): { updates: number; ms: number } {
+    if (this.stepper && this.world === this.stepper && !this.stepper.active) {
+      // A worker failed while stepping: the world starts over here (the
+      // page's state holds every edit).
+      showMessage(`Stepping in workers failed, stepping here from t = 0: ${this.stepper.error ?? "?"}`, "warn");
+      this.notInWorkers = true;
+      void this.rebuild(false);
+    }
     if (this.count === 0) return { updates: 0, ms: 0 };
     let k = 0;
     if (!this.paused && this.live) {
