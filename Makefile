@@ -33,27 +33,31 @@ setup-web:
 	if [ ! -f web/node_modules/.package-lock.json ] || [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
 	  cd web && npm ci --no-audit --no-fund; fi
 
+# `--features cli`: the command lines and the tests that run them as a user does.
 lint:
 	cargo fmt --all -- --check
-	cargo clippy --all-targets -- -D warnings
+	cargo clippy --all-targets --features cli -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
+	cargo clippy --target wasm32-unknown-unknown --lib --no-default-features -- -D warnings
 
 test-native:
-	cargo test --all-targets
+	cargo test --all-targets --features cli
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).
 #
-# Issue 17: a second build with WebAssembly SIMD (`+simd128`, its own target
+# A second build with WebAssembly SIMD (`+simd128`, its own target
 # directory so the two builds do not invalidate each other) ships beside it
 # as web/pkg/steering_simd_bg.wasm; web/src/wasm.ts loads it where
 # WebAssembly.validate accepts a SIMD instruction, else the baseline. The
 # two builds' JavaScript glue must be byte-identical (checked here).
+# `--no-default-features`: the pages call no study, so `studies` (and
+# anything else on by default for native users) stays out of the download.
 SIMD_FLAGS := -C target-feature=+simd128
 wasm: setup-rust
-	wasm-pack build --target web --release --out-dir web/pkg --no-pack
+	wasm-pack build --target web --release --out-dir web/pkg --no-pack -- --no-default-features
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
-	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack
+	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack -- --no-default-features
 	cmp web/pkg/steering.js target/wasm-simd/pkg/steering.js
 	cp target/wasm-simd/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm
 	@ls -l web/pkg/steering_bg.wasm | awk '{print "wasm size: " $$5 " bytes"}'
@@ -74,8 +78,8 @@ web-build-test: setup-web wasm
 	cd web && npx vite build --mode test --logLevel warn
 
 # The bindings in headless Chromium (webdriver.json carries the flags).
-# Then the golden-hash suites again in the SIMD build (issue 17): the shipped
-# simd128 module must give the same bits.
+# Then the golden-hash suites again in the SIMD build: the shipped simd128
+# module must give the same bits.
 test-wasm: setup-rust setup-browser
 	wasm-pack test --headless --chrome --release
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
@@ -112,7 +116,7 @@ test-e2e-gallery: setup-browser web-build-test
 test-e2e-learn: setup-browser web-build-test
 	node web/test/e2e-learn.mjs
 
-# Playwright for the vehicle in use: vehicle limits build their η table in Web
+# Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build-test
 	node web/test/e2e-vehicle.mjs
@@ -123,7 +127,7 @@ test-e2e-vehicle: setup-browser web-build-test
 test-e2e-avoid: setup-browser web-build-test
 	node web/test/e2e-avoid.mjs
 
-# The browser checks of speed: the SIMD core where the engine has SIMD, the
+# Performance paths in the browser: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
 # ?draw=gl: headless WebGL is software, where the pages keep 2D sprites);
 # the lab stepped in Web Workers (shared memory, by message without
@@ -170,7 +174,7 @@ demo: setup web-build
 	cd web && npx vite preview --host 127.0.0.1 --port 5173 --strictPort
 
 table:
-	cargo run --release --bin eta-table -- --out tables/eta.bin
+	cargo run --release --features cli --bin eta-table -- --out tables/eta.bin
 
 bench:
 	cargo bench

@@ -1,4 +1,4 @@
-//! The avoidance benchmark's world (issue 18), shared by
+//! The avoidance benchmark's world, shared by
 //! `benches/avoidance.rs` and `examples/avoid_icount.rs` (included with
 //! `#[path]`): `side²` agents on a square lattice of 1.6 m (π·3²/1.6² ≈ 11
 //! within the 3 m neighbour reach), each funnelling to a seeded oriented
@@ -6,11 +6,12 @@
 //! avoidance is active for most agents.
 
 use glam::Vec2;
-use steering::avoidance::{AvoidanceConfig, AvoidanceMethod};
-use steering::funnel::{FunnelConfig, Goal};
-use steering::rng::Rng;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::avoidance::{config::AvoidanceConfig, config::AvoidanceMethod};
+use steering::base::rng::Rng;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::goal::Goal;
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 /// The lattice world with `side × side` agents and avoidance `method`.
 pub fn world(side: usize, method: AvoidanceMethod) -> World {
@@ -24,7 +25,7 @@ pub fn world(side: usize, method: AvoidanceMethod) -> World {
         let a = rng.range(-3.1, 3.1);
         let d = rng.range(20.0, 30.0);
         let goal = Goal {
-            pos: pos + steering::trig::unit(a) * d,
+            pos: pos + steering::base::trig::unit(a) * d,
             beta: rng.range(-3.1, 3.1),
             d_tol: 0.3,
             eps_tol: 10f32.to_radians(),

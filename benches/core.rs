@@ -1,8 +1,8 @@
 //! Cost of the core pieces, measured side by side in one run: one seek
-//! step (the baseline), one η-table lookup (issue: lookup ≤ 10× seek) and
+//! step (the baseline), one η-table lookup (target: ≤ 10× seek) and
 //! one funnelling update — plan plus the committed seek step — for near
 //! (1–4 m) and far (20–30 m) targets, for the default μ bound and the two
-//! literal ones (issue: funnelling ≤ 4× seek); and `crate::trig::atan2`
+//! literal ones (target: ≤ 4× seek); and `crate::base::trig::atan2`
 //! against std's `atan2`.
 //!
 //! `cargo bench --bench core` (add `-- --warm-up-time 1 --measurement-time 2`
@@ -16,12 +16,14 @@ use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
 use glam::Vec2;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal, MuBound};
-use steering::rng::Rng;
-use steering::seek::seek_point;
-use steering::table::EtaTable;
-use steering::trig::unit;
-use steering::vehicle::{VehicleParams, VehicleState};
+use steering::base::rng::Rng;
+use steering::base::trig::unit;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::config::{FunnelConfig, MuBound};
+use steering::funnelling::goal::{FunnelMemory, Goal};
+use steering::funnelling::seek::seek_point;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Update;
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -128,7 +130,13 @@ impl Pieces {
         let mut s = self.st[k & 1023];
         let g = if far { &self.far } else { &self.near }[k & 1023];
         let mut m = FunnelMemory::default();
-        black_box(cfg.step(&self.t, &self.p, &mut s, black_box(&g), &mut m));
+        black_box(cfg.step(&mut Update {
+            table: &self.t,
+            params: &self.p,
+            state: &mut s,
+            goal: black_box(&g),
+            memory: &mut m,
+        }));
         black_box(s);
     }
 }
@@ -144,7 +152,7 @@ fn bounds() -> [(&'static str, FunnelConfig); 4] {
         ),
         (
             "paper literal (centre aim, literal bound, gain 1)",
-            steering::funnelling::envelope::literal_config(),
+            steering::studies::envelope::literal_config(),
         ),
         (
             "ScaledLiteral ×6",
@@ -200,7 +208,7 @@ fn bench(c: &mut Criterion) {
         b.iter(|| {
             k += 1;
             let (y, x) = pts[k & 1023];
-            black_box(steering::trig::atan2(black_box(y), black_box(x)))
+            black_box(steering::base::trig::atan2(black_box(y), black_box(x)))
         });
     });
     g.bench_function("atan2 std", |b| {
@@ -255,9 +263,9 @@ fn ratio() {
             }
         }
     }
-    // A table at paper 000's own size (43,200 entries, issue 19; counts as
-    // in tests/fidelity.rs), generated here (0.1 s), beside ours.
-    let small = steering::table::generate::TableSpec::with_counts(
+    // A table at paper 000's own size (43,200 entries; counts as in
+    // tests/fidelity.rs), generated here (0.1 s), beside ours.
+    let small = steering::funnelling::table::spec::TableSpec::with_counts(
         VehicleParams::default(),
         [10, 24, 5, 4, 6],
     )

@@ -15,11 +15,14 @@ use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
 use glam::Vec2;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal};
-use steering::relaxed::{Controller, EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
-use steering::rng::Rng;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
+use steering::base::rng::Rng;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::controller::Controller;
+use steering::funnelling::goal::{FunnelMemory, Goal};
+use steering::funnelling::relaxed::{EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Update;
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -73,7 +76,14 @@ fn update(t: &EtaTable, p: &VehicleParams, c: &Controller, case: &(VehicleState,
     let mut s = case.0;
     let mut mem = FunnelMemory::default();
     let mut ri = RelaxedInternals::default();
-    black_box(c.step(t, p, &mut s, black_box(&case.1), &mut mem, &mut ri));
+    let mut u = Update {
+        table: t,
+        params: p,
+        state: &mut s,
+        goal: black_box(&case.1),
+        memory: &mut mem,
+    };
+    black_box(c.step(&mut u, &mut ri));
     black_box(&s);
 }
 
@@ -81,11 +91,11 @@ const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15
 
 /// Ours (defaults, then the paper arc variants), then like for like the
 /// paper's literal standard controller against its literal relaxed one
-/// (issue 19: Table 1's "relaxed about 50 % cheaper" is against that).
+/// (Table 1's "relaxed about 50 % cheaper" is against that).
 fn controllers() -> [(&'static str, Controller); 6] {
     let f = FunnelConfig::default();
-    let lit = steering::funnelling::envelope::literal_config();
-    let lit_rel = steering::funnelling::envelope::literal_relaxed_config();
+    let lit = steering::studies::envelope::literal_config();
+    let lit_rel = steering::studies::envelope::literal_relaxed_config();
     let paper = RelaxedConfig {
         aim: RelaxedAim::PaperArc,
         ..Default::default()

@@ -8,7 +8,7 @@
 use std::hint::black_box;
 
 use criterion::{criterion_group, criterion_main, Criterion};
-use steering::wander::{WanderPreset, Wanderer};
+use steering::wander::{pipeline::WanderPreset, pipeline::Wanderer};
 
 const CASES: [(&str, &str, usize); 20] = [
     (

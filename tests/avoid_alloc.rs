@@ -1,13 +1,13 @@
 //! An avoidance step (ORCA) allocates nothing once its buffers have grown
-//! (issue 18: the avoider's scratch lives in fixed arrays and reused
-//! buffers): counted with a global allocator that tallies allocations made
-//! by this test's own thread, on the cost benchmark's lattice world and on
-//! the doorway preset (obstacles).
+//! (the avoider's scratch lives in fixed arrays and reused buffers):
+//! counted with a global allocator that tallies allocations made by this
+//! test's own thread, on the cost benchmark's lattice world and on the
+//! doorway preset (obstacles).
 #![cfg(not(target_arch = "wasm32"))]
 
-use steering::avoidance::AvoidanceMethod;
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
+use steering::avoidance::config::AvoidanceMethod;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::scenario::Scenario;
 
 mod common;
 

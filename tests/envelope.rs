@@ -1,10 +1,10 @@
-//! The envelope study (issue 13) on a small held-out sample: seed 3, which
+//! The envelope study on a small held-out sample: seed 3, which
 //! neither tuning (seed 1) nor the reported figures (seed 2) use. Locks
 //! what every controller must keep over the whole operating envelope.
 #![cfg(not(target_arch = "wasm32"))]
 
-use steering::funnelling::envelope::{summarise, variants, EnvelopeStudy, GoalKind};
-use steering::vehicle::VehicleParams;
+use steering::base::vehicle::VehicleParams;
+use steering::studies::envelope::{report::summarise, variants, EnvelopeStudy, GoalKind};
 
 mod common;
 use common::table;
@@ -40,12 +40,12 @@ fn every_variant_stays_finite_and_within_limits_and_standard_finishes() {
     }
 }
 
-/// The issue-13 targets, locked on seed 3 (1,000 static runs: the cells
+/// The envelope's targets, locked on seed 3 (1,000 static runs: the cells
 /// are too small here to judge one by one, so the bands are judged whole;
 /// `steer envelope --n 10000 --seed 2` reports every cell).
 #[test]
 fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
-    use steering::funnelling::envelope::BANDS;
+    use steering::studies::envelope::BANDS;
     let study = EnvelopeStudy {
         seed: 3,
         n_static: 1000,
@@ -62,7 +62,7 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
     let (std, rel) = (&report.variants[0], &report.variants[1]);
     let runs = std.runs(GoalKind::Static);
     let far = BANDS[BANDS.len() - 1].0;
-    let share = |f: &dyn Fn(&&steering::funnelling::envelope::RunRecord) -> bool| {
+    let share = |f: &dyn Fn(&&steering::studies::envelope::RunRecord) -> bool| {
         summarise(runs.iter().filter(f)).oriented
     };
     let far_wide = share(&|r| r.d0 >= far && r.eps_tol_deg > 3.0);
@@ -98,7 +98,7 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
             }
         }
         // Led to where they will be, moving goals are entered oriented
-        // about as often as static ones (54 % before, tune seed 1).
+        // about as often as static ones.
         let m = summarise(v.runs(GoalKind::Moving));
         assert!(m.oriented >= 0.8, "{} moving: {m:?}", v.name);
     }

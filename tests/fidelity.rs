@@ -1,4 +1,4 @@
-//! Fidelity (issue 19): what each figure of the four texts *claims*,
+//! Fidelity: what each figure of the four texts *claims*,
 //! measured on its preset and asserted, so a claim that stops holding
 //! fails a test. Every test prints its figures (`--nocapture`); the README's
 //! table "figure | preset | claim | our measurement | agrees?" quotes them,
@@ -9,11 +9,12 @@
 use core::f32::consts::{FRAC_PI_2, PI, TAU};
 
 use glam::Vec2;
-use steering::angle::diff;
-use steering::funnel::Mode;
-use steering::relaxed::{ControllerKind, Fig7Branch, RelaxedAim};
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
+use steering::base::angle::diff;
+use steering::funnelling::controller::ControllerKind;
+use steering::funnelling::relaxed::{Fig7Branch, RelaxedAim};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Mode;
+use steering::world::scenario::Scenario;
 use steering::world::World;
 
 mod common;
@@ -175,7 +176,7 @@ fn p000_fig7_distant_targets_are_first_sought_then_funnelled() {
     let sc = preset("p000_fig7_variety");
     let (ours, done) = fig7_mu_by_distance(&t, &sc);
     let mut lit = sc.clone();
-    lit.funnel = steering::funnelling::envelope::literal_config();
+    lit.funnel = steering::studies::envelope::literal_config();
     let (paper, done_lit) = fig7_mu_by_distance(&t, &lit);
     println!(
         "fig7: mean |μ| at D > 10 m / 4–10 m / 1–4 m: ours {:.1}° / {:.1}° / {:.1}° ({done}/8 finish); paper's literal bound {:.1}° / {:.1}° / {:.1}° ({done_lit}/8 finish)",
@@ -300,7 +301,7 @@ fn p001_fig5_curvature_near_the_destination_by_distance() {
             a.goals[0].beta_deg = beta;
         }
         let mut lit = sc.clone();
-        lit.funnel = steering::funnelling::envelope::literal_config();
+        lit.funnel = steering::studies::envelope::literal_config();
         let (ours, paper) = (
             curvature_near_the_end(&t, &sc, 1.5),
             curvature_near_the_end(&t, &lit, 1.5),
@@ -443,8 +444,8 @@ fn distance_to_middle_path(tr: &[Vec<Vec2>], step: f32, until: f32) -> Vec<f32> 
 /// bound, centre aim; relaxed point on the arc, T searched over 0.8 τ).
 fn literal_relaxed(mut sc: Scenario) -> Scenario {
     sc.controller = ControllerKind::Relaxed;
-    sc.funnel = steering::funnelling::envelope::literal_config();
-    sc.relaxed = steering::funnelling::envelope::literal_relaxed_config();
+    sc.funnel = steering::studies::envelope::literal_config();
+    sc.relaxed = steering::studies::envelope::literal_relaxed_config();
     sc
 }
 
@@ -748,8 +749,8 @@ mod crowd {
 mod wander {
     use core::f32::consts::TAU;
 
-    use steering::angle::diff;
-    use steering::wander::{WanderConfig, WanderPreset, Wanderer};
+    use steering::base::angle::diff;
+    use steering::wander::{config::WanderConfig, pipeline::WanderPreset, pipeline::Wanderer};
 
     fn variant(file: &str, figure_or_label: &str) -> WanderConfig {
         let path = format!(
@@ -964,11 +965,11 @@ mod wander {
 // ------------------------------------------------ the table at the paper's size
 
 mod paper_size_table {
-    use steering::funnel::FunnelConfig;
-    use steering::funnelling::vehicle_study::accuracy;
-    use steering::study::{summarise, ReachStudy};
-    use steering::table::generate::{turn_radius, TableSpec};
-    use steering::vehicle::VehicleParams;
+    use steering::base::vehicle::VehicleParams;
+    use steering::funnelling::config::FunnelConfig;
+    use steering::funnelling::table::spec::{turn_radius, TableSpec};
+    use steering::studies::reach::{summarise, ReachStudy};
+    use steering::studies::vehicle::accuracy;
 
     /// Axis counts of a 43,200-entry table (paper 000 §3's size): 10
     /// distances, 36 radial angles (nominal 24: 15° in front, finer
@@ -1015,7 +1016,7 @@ mod paper_size_table {
 #[test]
 fn p004_sec6_response_curve_smooths_the_table() {
     // "We can smooth out the results by using a 2D response curve".
-    use steering::rng::Rng;
+    use steering::base::rng::Rng;
     use steering::wander::response::ResponseCurve;
     let table = vec![
         vec![0.9, 0.07, 0.03],

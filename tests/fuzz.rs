@@ -1,4 +1,4 @@
-//! Issue 16: fuzzing every entry point a user types into, seeded and
+//! Fuzzing every entry point a user types into, seeded and
 //! bounded. Each property feeds mutated real inputs (the presets in
 //! `scenarios/`, argument vectors built from every flag) and asserts an
 //! `Err` with a non-empty message, or a short run whose outputs are all
@@ -18,10 +18,10 @@ use steering::cli::eta_table::EtaTableCli;
 use steering::cli::steer::{Command, SteerCli};
 use steering::cli::trajectory::{check_out_path, stream_run, OutFormat};
 use steering::crowd::config::CrowdConfig;
-use steering::crowd::Crowd;
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
+use steering::crowd::world::Crowd;
+use steering::funnelling::table::lookup::EtaTable;
 use steering::wander::pipeline::Wanderer;
+use steering::world::scenario::Scenario;
 
 mod common;
 #[path = "fuzz/inputs.rs"]
@@ -251,7 +251,7 @@ proptest! {
             Err(e) => err_has_message(&e),
             Ok(cli) => {
                 let n: usize = cli.counts.iter().product();
-                assert!(n <= steering::table::format::MAX_ENTRIES);
+                assert!(n <= steering::funnelling::table::format::MAX_ENTRIES);
             }
         }
     }
@@ -300,9 +300,10 @@ proptest! {
             0..4,
         ),
     ) {
-        use steering::funnel::{FunnelConfig, Goal};
-        use steering::vehicle::VehicleParams;
-        use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+        use steering::funnelling::config::FunnelConfig;
+        use steering::funnelling::goal::Goal;
+        use steering::base::vehicle::VehicleParams;
+        use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
         let p = VehicleParams { v_max, dt, ..VehicleParams::default() };
         let mut w = match World::new(p, FunnelConfig::default()) {
             Err(e) => {

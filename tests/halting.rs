@@ -1,19 +1,24 @@
-//! Halting goals (issue 13, items 3, 5 and 6): End_of_Steering on a
+//! Halting goals: End_of_Steering on a
 //! halting goal means the vehicle comes to rest inside both tolerances;
 //! a goal that moves by itself cannot be halting; the first trajectory row
 //! reports the mode chosen at t = 0.
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec2;
-use steering::funnel::{halting_speed, Goal, Mode};
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::approach::halting_speed;
 use steering::funnelling::approach::{braking_distance, rest_rotation};
-use steering::funnelling::envelope::{run, variants, EnvelopeStudy, GoalKind};
-use steering::relaxed::{ControllerKind, RelaxedConfig};
-use steering::scenario::Scenario;
-use steering::seek::seek_step;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World, MOVING_HALTING};
+use steering::funnelling::controller::ControllerKind;
+use steering::funnelling::goal::Goal;
+use steering::funnelling::relaxed::RelaxedConfig;
+use steering::funnelling::seek::seek_step;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Mode;
+use steering::studies::envelope::{run, variants, EnvelopeStudy, GoalKind};
+use steering::world::scenario::Scenario;
+use steering::world::{
+    goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, goals::MOVING_HALTING, World,
+};
 
 mod common;
 use common::table;
@@ -53,7 +58,7 @@ fn run_to_rest(
     let err = |s: &VehicleState| {
         (
             (g.goal.pos - s.pos).length(),
-            steering::angle::diff(g.goal.beta, s.theta)
+            steering::base::angle::diff(g.goal.beta, s.theta)
                 .abs()
                 .to_degrees(),
         )
@@ -123,7 +128,7 @@ fn rest_prediction_bounds_the_simulated_braking() {
                 let hold = s.theta;
                 seek_step(&p, &mut s, hold, 0.0);
                 length += (s.pos - p0).length();
-                turn += steering::angle::diff(s.theta, th0);
+                turn += steering::base::angle::diff(s.theta, th0);
             }
             assert!(s.v == 0.0 && s.omega.abs() < 1e-6, "{s:?}");
             assert!(length <= braking_distance(&p, v) + 1e-5, "v {v}: {length}");

@@ -1,4 +1,4 @@
-//! Issue 16: bounds on every count, the f32 coordinate range, and
+//! Bounds on every count, the f32 coordinate range, and
 //! `steer run`'s streamed output (the fuzzing is in `tests/fuzz.rs`).
 
 #![cfg(not(target_arch = "wasm32"))]
@@ -7,14 +7,15 @@ use std::path::Path;
 
 use clap::Parser;
 use glam::Vec2;
+use steering::base::vehicle::{VehicleParams, VehicleState};
 use steering::cli::steer::{Command, SteerCli};
 use steering::cli::trajectory::{check_out_path, stream_run, OutFormat};
-use steering::funnel::{FunnelConfig, Goal};
-use steering::funnelling::precision::{agent_limit, coordinate_limit};
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::goal::Goal;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::precision::{agent_limit, coordinate_limit};
+use steering::world::scenario::Scenario;
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 mod common;
 
@@ -132,10 +133,10 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
     let fast = r#"{"name": "far", "vehicle": {"vMax": 10, "dt": 0.1}, "agents": [{"x": 999980, "y": 0, "goals": [{"x": 999996, "y": 12, "speed": 5, "dTol": 4}]}]}"#;
     let sc = Scenario::from_json(fast).unwrap();
     let p = sc.vehicle;
-    // Its own table (issue 14), not the pedestrian's.
-    let t = steering::table::generate::TableSpec::for_vehicle(
+    // Its own table (the axes scale with the vehicle), not the pedestrian's.
+    let t = steering::funnelling::table::spec::TableSpec::for_vehicle(
         p,
-        steering::table::generate::DEFAULT_COUNTS,
+        steering::funnelling::table::spec::DEFAULT_COUNTS,
     )
     .unwrap()
     .generate()

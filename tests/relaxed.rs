@@ -9,16 +9,19 @@ use core::f32::consts::PI;
 
 use glam::Vec2;
 use proptest::prelude::*;
-use steering::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
-use steering::region_study::RegionStudy;
-use steering::relaxed::{
-    interval_delta, relaxed_direction, Controller, ControllerKind, Fig7Branch, RelaxedAim,
-    RelaxedConfig, RelaxedInternals,
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::controller::{Controller, ControllerKind};
+use steering::funnelling::goal::{FunnelMemory, Goal};
+use steering::funnelling::relaxed::{
+    interval_delta, relaxed_direction, Fig7Branch, RelaxedAim, RelaxedConfig, RelaxedInternals,
 };
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
-use steering::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::update::Mode;
+use steering::funnelling::update::Update;
+use steering::studies::region::RegionStudy;
+use steering::world::scenario::Scenario;
+use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 mod common;
 use common::table;
@@ -180,7 +183,7 @@ fn plan(
     t: &EtaTable,
     s: VehicleState,
     g: &Goal,
-) -> (steering::funnel::Internals, RelaxedInternals) {
+) -> (steering::funnelling::update::Internals, RelaxedInternals) {
     plan_with(&paper(), t, s, g)
 }
 
@@ -189,17 +192,16 @@ fn plan_with(
     t: &EtaTable,
     s: VehicleState,
     g: &Goal,
-) -> (steering::funnel::Internals, RelaxedInternals) {
+) -> (steering::funnelling::update::Internals, RelaxedInternals) {
     let mut ri = RelaxedInternals::default();
-    let i = c.plan(
-        &FunnelConfig::default(),
-        t,
-        &VehicleParams::default(),
-        &s,
-        g,
-        &mut FunnelMemory::default(),
-        &mut ri,
-    );
+    let mut u = Update {
+        table: t,
+        params: &VehicleParams::default(),
+        state: &mut s.clone(),
+        goal: g,
+        memory: &mut FunnelMemory::default(),
+    };
+    let i = c.plan(&FunnelConfig::default(), &mut u, &mut ri);
     (i, ri)
 }
 
@@ -359,9 +361,9 @@ fn drive(
 
 #[test]
 fn issue_13_orbit_example_enters_the_disk_with_both_aims() {
-    // Issue 13: at rest 1.18 m from a 0.1 m disk that lies behind; the
-    // paper's relaxed point, inside the turning circle, was circled at
-    // 0.75 m/s for the whole 150 s.
+    // At rest 1.18 m from a 0.1 m disk that lies behind; the paper's
+    // relaxed point, inside the turning circle, is circled at 0.75 m/s for
+    // the whole 150 s.
     let s = VehicleState::new(Vec2::new(11.155, 22.935), 165.44f32.to_radians(), 0.0, 0.0);
     let g = Goal {
         pos: Vec2::new(12.232, 22.456),
@@ -478,7 +480,7 @@ fn ring_linear_eta_matches_the_table_at_samples_and_stays_close() {
             let v = t.axis(3)[idx[3]];
             let omega = t.axis(2)[idx[2]] * p.omega_limit(v);
             let got = t.eta_ring_linear(ring, t.axis(1)[ia], omega, v, t.axis(4)[idx[4]]);
-            if flags & steering::table::FLAG_ETA_VALID != 0 {
+            if flags & steering::funnelling::table::format::FLAG_ETA_VALID != 0 {
                 assert!(
                     (got.unwrap() - eta).abs() < 1e-5,
                     "{idx:?}: {got:?} vs {eta}"

@@ -1,6 +1,6 @@
 //! Interpolation accuracy of the committed η table against direct seek
 //! simulations at 10,000 random off-grid queries inside the sampled ranges
-//! (issue targets: median < 0.5°, p95 < 2°; reachability agreement ≥ 98 %).
+//! (targets: median < 0.5°, p95 < 2°; reachability agreement ≥ 98 %).
 //!
 //! Two samplings of the same box, both reported (README "Figures"):
 //! - **uniform** over every axis, the plain reading of "random queries
@@ -15,11 +15,11 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use glam::Vec2;
-use steering::angle::diff;
-use steering::rng::Rng;
-use steering::seek::{simulate_reach, ReachLimits, ReachOutcome};
-use steering::table::EtaTable;
-use steering::vehicle::{VehicleParams, VehicleState};
+use steering::base::angle::diff;
+use steering::base::rng::Rng;
+use steering::base::vehicle::{VehicleParams, VehicleState};
+use steering::funnelling::seek::{simulate_reach, ReachLimits, ReachOutcome};
+use steering::funnelling::table::lookup::EtaTable;
 
 fn percentile(v: &mut [f32], q: f32) -> f32 {
     v.sort_by(f32::total_cmp);
@@ -74,7 +74,7 @@ impl Sample {
             let out = simulate_reach(
                 &p,
                 VehicleState::new(Vec2::ZERO, 0.0, v, w),
-                steering::trig::unit(a) * d,
+                steering::base::trig::unit(a) * d,
                 vd,
                 &lim,
             );
@@ -176,7 +176,7 @@ fn near_eta_jumps_where_the_path_grazes_the_arrival_circle() {
         match simulate_reach(
             &p,
             VehicleState::new(Vec2::ZERO, 0.0, v, w),
-            steering::trig::unit(33.5f32.to_radians()) * 0.59,
+            steering::base::trig::unit(33.5f32.to_radians()) * 0.59,
             0.35,
             &lim,
         ) {

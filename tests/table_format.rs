@@ -3,9 +3,11 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
-use steering::table::generate::TableSpec;
-use steering::table::{crc32, EtaTable, TableError, FORMAT_VERSION, HEADER_LEN};
-use steering::vehicle::VehicleParams;
+use steering::base::vehicle::VehicleParams;
+use steering::funnelling::table::spec::TableSpec;
+use steering::funnelling::table::{
+    codec::crc32, format::TableError, format::FORMAT_VERSION, format::HEADER_LEN, lookup::EtaTable,
+};
 
 fn committed() -> Vec<u8> {
     std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).expect("tables/eta.bin")
@@ -62,7 +64,7 @@ fn committed_table_is_what_the_generator_produces() {
     for i in (0..spec.len()).step_by(61) {
         let (eta, v, f) = if spec.is_mirrored(i) {
             let (e, v, f) = spec.entry(spec.mirror(i));
-            (steering::angle::wrap(-e), v, f)
+            (steering::base::angle::wrap(-e), v, f)
         } else {
             spec.entry(i)
         };
@@ -97,7 +99,7 @@ fn generation_is_deterministic_whatever_the_thread_count() {
         let got = t.entry(spec.unravel(i));
         assert_eq!(direct.2, got.2, "flags of entry {i}");
         assert!(
-            steering::angle::diff(direct.0, got.0).abs() < 2e-3,
+            steering::base::angle::diff(direct.0, got.0).abs() < 2e-3,
             "η of entry {i}"
         );
     }
@@ -261,7 +263,7 @@ fn params_mismatch() {
     );
     assert!(e.to_string().contains("regenerate"));
     let p = VehicleParams {
-        integrator: steering::vehicle::Integrator::SemiImplicitEuler,
+        integrator: steering::base::vehicle::Integrator::SemiImplicitEuler,
         ..Default::default()
     };
     assert!(matches!(
@@ -283,8 +285,8 @@ fn every_truncation_of_the_real_file_is_an_error_not_a_panic() {
 
 #[test]
 fn crc32_is_the_textbook_crc() {
-    // Issue 17: crc32fast replaced the byte-at-a-time loop; same checksum.
-    use steering::table::codec::crc32_bytewise;
+    // crc32fast computes the checksum; the textbook byte-at-a-time loop agrees.
+    use steering::funnelling::table::codec::crc32_bytewise;
     assert_eq!(crc32(b"123456789"), 0xCBF4_3926, "the CRC-32 check value");
     let t = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap();
     assert_eq!(crc32(&t), crc32_bytewise(&t));
@@ -295,7 +297,7 @@ proptest! {
 
     #[test]
     fn crc32_equals_the_bytewise_reference(bytes in proptest::collection::vec(any::<u8>(), 0..300)) {
-        prop_assert_eq!(crc32(&bytes), steering::table::codec::crc32_bytewise(&bytes));
+        prop_assert_eq!(crc32(&bytes), steering::funnelling::table::codec::crc32_bytewise(&bytes));
     }
 
     #[test]

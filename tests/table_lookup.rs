@@ -5,8 +5,8 @@
 #![cfg(not(target_arch = "wasm32"))]
 
 use proptest::prelude::*;
-use steering::table::grid::Axis;
-use steering::table::EtaTable;
+use steering::funnelling::table::grid::Axis;
+use steering::funnelling::table::lookup::EtaTable;
 
 fn committed() -> &'static EtaTable {
     static TABLE: std::sync::OnceLock<EtaTable> = std::sync::OnceLock::new();
@@ -84,7 +84,7 @@ fn a_query_on_a_sample_returns_the_sample() {
     let (eta, _, flags) = t.entry(idx);
     assert!(flags & 1 != 0, "pick a reachable sample");
     let x: Vec<f32> = (0..5).map(|k| t.axis(k)[idx[k]]).collect();
-    let omega = x[2] * steering::vehicle::VehicleParams::default().omega_limit(x[3]);
+    let omega = x[2] * steering::base::vehicle::VehicleParams::default().omega_limit(x[3]);
     let lk = t.lookup(x[0], x[1], omega, x[3], x[4]);
     assert!(lk.reachable);
     assert!((lk.eta - eta).abs() < 1e-5, "{} vs {eta}", lk.eta);

@@ -1,4 +1,4 @@
-//! Issue 14: η tables for any vehicle. The axes scale with the vehicle
+//! η tables for any vehicle. The axes scale with the vehicle
 //! (the pedestrian's table is the committed one, byte for byte), vehicle
 //! files are refused with the field named, the worker slices assemble to
 //! the generator's bytes, and `steer run` never uses a table built for
@@ -7,10 +7,10 @@
 use std::path::{Path, PathBuf};
 use std::process::Command;
 
+use steering::base::vehicle::VehicleParams;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::funnelling::table::spec::{check_vehicle, TableSpec, VehicleScale, DEFAULT_COUNTS};
 use steering::funnelling::vehicle_file::{self, REFERENCE};
-use steering::table::generate::{check_vehicle, TableSpec, VehicleScale, DEFAULT_COUNTS};
-use steering::table::EtaTable;
-use steering::vehicle::VehicleParams;
 
 fn committed() -> Vec<u8> {
     std::fs::read(Path::new(env!("CARGO_MANIFEST_DIR")).join("tables/eta.bin")).unwrap()
@@ -44,7 +44,7 @@ fn reference_vehicles_parse_and_scale() {
         let spec = TableSpec::with_counts(v, DEFAULT_COUNTS);
         let s = VehicleScale::of(&v);
         // Distances in turning radii, speeds in fractions of v_max.
-        let r = steering::table::generate::turn_radius(&v);
+        let r = steering::funnelling::table::spec::turn_radius(&v);
         assert!((spec.axes[0][0] / r - 0.1875).abs() < 1e-4, "{name}");
         assert_eq!(*spec.axes[3].last().unwrap(), v.v_max);
         assert_eq!(spec.axes[4][0], 0.125 * v.v_max);

@@ -3,7 +3,7 @@
 //! per step), checked with a counting global allocator over every preset
 //! variant, including the trace ring wrapping round.
 
-use steering::wander::{WanderPreset, Wanderer};
+use steering::wander::{pipeline::WanderPreset, pipeline::Wanderer};
 
 mod common;
 

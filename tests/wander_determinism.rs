@@ -3,7 +3,7 @@
 //!
 //! The golden values hash the raw f32 bits of every pose of every preset
 //! variant. The toolkit uses only IEEE-exact arithmetic and its own
-//! polynomial trig (`steering::trig`), so the bits — not just rounded values —
+//! polynomial trig (`steering::base::trig`), so the bits — not just rounded values —
 //! must agree on every target. This file has no proptest so it also runs as
 //! a wasm-bindgen test:
 //! `CARGO_TARGET_WASM32_UNKNOWN_UNKNOWN_RUNNER=wasm-bindgen-test-runner cargo test --target wasm32-unknown-unknown --test wander_determinism`.
@@ -11,7 +11,7 @@
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-use steering::wander::{WanderPreset, Wanderer};
+use steering::wander::{pipeline::WanderPreset, pipeline::Wanderer};
 
 mod common;
 use common::{fnv, FNV_OFFSET, WANDER_PRESETS};

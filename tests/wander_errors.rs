@@ -5,8 +5,8 @@
 #[cfg(target_arch = "wasm32")]
 wasm_bindgen_test::wasm_bindgen_test_configure!(run_in_browser);
 
-use steering::range::RangeError;
-use steering::wander::{WanderError, WanderPreset, Wanderer};
+use steering::base::range::RangeError;
+use steering::wander::{error::WanderError, pipeline::WanderPreset, pipeline::Wanderer};
 
 fn build(control: &str, source: &str) -> Result<Wanderer, WanderError> {
     Wanderer::from_json(&format!(r#"{{"control": {control}, "source": {source}}}"#))

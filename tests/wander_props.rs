@@ -5,8 +5,8 @@
 //! however bad, makes building a wanderer panic.
 
 use proptest::prelude::*;
-use steering::angle;
-use steering::wander::Wanderer;
+use steering::base::angle;
+use steering::wander::pipeline::Wanderer;
 
 fn source_json(kind: u8, seed: u64) -> String {
     match kind {

@@ -6,14 +6,14 @@
 //! Run with `--nocapture` to see the statistics.
 
 use glam::Vec2;
-use steering::rng::Rng;
+use steering::base::rng::Rng;
 use steering::wander::distribution::{Curve, DistributionConfig, Sampler};
 use steering::wander::field::{FieldConfig, FieldSource, FieldValues, VectorField};
 use steering::wander::markov::{Markov, MarkovConfig};
 use steering::wander::noise;
+use steering::wander::pipeline::Wanderer;
 use steering::wander::time_fn::{Shape, SineTerm, TimeFn, TimeFnConfig, Weight};
 use steering::wander::timed::{Hold, HoldConfig};
-use steering::wander::Wanderer;
 
 /// KS critical value at α = 0.001: 1.949 / √n (one sample).
 fn ks_crit(n: usize) -> f64 {
@@ -384,7 +384,7 @@ fn field_interpolation_is_continuous_and_exact_at_nodes() {
                 "jump {jump} at {p}"
             );
             if v.length() > 0.2 && w.length() > 0.2 {
-                let dang = steering::angle::diff(w.y.atan2(w.x), v.y.atan2(v.x)).abs();
+                let dang = steering::base::angle::diff(w.y.atan2(w.x), v.y.atan2(v.x)).abs();
                 assert!(dang <= 3.0 * jump / 0.2 + 1e-4, "angle jump {dang} at {p}");
             }
             v = w;
@@ -527,9 +527,10 @@ fn time_function_is_the_sum_of_sines() {
 
 #[test]
 fn followers_stay_on_generated_paths() {
-    let preset =
-        steering::wander::WanderPreset::from_json(include_str!("../scenarios/wander/paths.json"))
-            .unwrap();
+    let preset = steering::wander::pipeline::WanderPreset::from_json(include_str!(
+        "../scenarios/wander/paths.json"
+    ))
+    .unwrap();
     for v in &preset.variants {
         let mut w = Wanderer::new(v.config.clone()).unwrap();
         w.run(preset.steps);
@@ -568,7 +569,7 @@ fn followers_stay_on_generated_paths() {
         // Look-ahead cuts corners, by design: on average stay within a
         // third of it.
         let lookahead = match &v.config.source {
-            steering::wander::pipeline::SourceConfig::Path { lookahead, .. } => *lookahead,
+            steering::wander::config::SourceConfig::Path { lookahead, .. } => *lookahead,
             _ => unreachable!("paths.json holds path sources only"),
         };
         assert!(mean < lookahead / 3.0, "{}: mean {mean}", v.label);

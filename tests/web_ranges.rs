@@ -1,13 +1,13 @@
 //! The core's validation ranges through the bindings, in headless Chromium
-//! (issue 16, "one source for ranges"): `ranges()` exports exactly the
-//! core's table (`steering::ranges::ALL`), and a value just outside each
+//! (one source for ranges): `ranges()` exports exactly the
+//! core's table (`steering::base::ranges::ALL`), and a value just outside each
 //! range is refused by the binding that takes it, with the field named: the
 //! page that derives its inputs from `ranges()` and the core agree at both
 //! ends of every range.
 #![cfg(target_arch = "wasm32")]
 
+use steering::base::ranges::{FieldRange, ALL};
 use steering::bindings::lab::{self as bindings, Lab};
-use steering::ranges::{FieldRange, ALL};
 use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
@@ -157,7 +157,7 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
             lab.check_room(v)
         }
         "seed" => lab.spawn_random(1.0, v, 10.0, 1.3),
-        // Issue 18: scenario files only (the reach must cover two radii
+        // Scenario files only (the reach must cover two radii
         // plus the margin at both ends of those ranges).
         "avoidance.radius" | "avoidance.margin" => lab
             .load_scenario(&avoid(format!(r#""{last}": {v}, "reach": 1000"#), ""))
@@ -208,16 +208,16 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
 fn effective_max(r: &FieldRange) -> f64 {
     let on_circle = r.key.starts_with("motion.center");
     if r.key.ends_with("pos.x") || r.key.ends_with("pos.y") || on_circle {
-        let p = steering::vehicle::VehicleParams::default();
-        let goal = steering::funnelling::goals::GoalSpec {
-            goal: steering::funnel::Goal {
+        let p = steering::base::vehicle::VehicleParams::default();
+        let goal = steering::world::goals::GoalSpec {
+            goal: steering::funnelling::goal::Goal {
                 speed: 1.3,
                 d_tol: 0.3,
                 ..Default::default()
             },
             ..Default::default()
         };
-        let limit = f64::from(steering::funnelling::precision::agent_limit(&p, &[goal]));
+        let limit = f64::from(steering::world::precision::agent_limit(&p, &[goal]));
         // A circle's far side (2·centre − goal, the goal at (3, 1)) must
         // stay inside too.
         return if on_circle {
@@ -239,7 +239,7 @@ fn a_value_just_outside_each_range_is_refused_with_the_field_named() {
     check_ends(ALL.iter());
 }
 
-/// Issue 18's ranges alone (scenario files: avoidance settings, obstacles).
+/// The avoidance ranges alone (scenario files: avoidance settings, obstacles).
 #[wasm_bindgen_test]
 fn the_avoidance_ranges_are_refused_outside_and_accepted_at_both_ends() {
     check_ends(

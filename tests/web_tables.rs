@@ -1,4 +1,4 @@
-//! Issue 14: a table built in the browser is byte-identical to the native
+//! A table built in the browser is byte-identical to the native
 //! one for the same limits. Small tables (6 × 12 × 3 × 4 × 4 entries) of
 //! every reference vehicle: natively from the generator, in headless
 //! Chromium (`wasm-pack test`) through the bindings the Web Workers call
@@ -7,8 +7,8 @@
 //! bit. A full pedestrian table built in wasm equals `tables/eta.bin`
 //! (checked by its key and CRC).
 
+use steering::funnelling::table::codec::crc32;
 use steering::funnelling::vehicle_file;
-use steering::table::crc32;
 
 const COUNTS: [usize; 5] = [6, 12, 3, 4, 4];
 /// CRC-32 of the small tables' files: pedestrian, car, robot.
@@ -26,7 +26,7 @@ fn file_crc(bytes: &[u8]) -> u32 {
 #[cfg(not(target_arch = "wasm32"))]
 #[test]
 fn native_small_tables_match_the_golden_crcs() {
-    use steering::table::generate::TableSpec;
+    use steering::funnelling::table::spec::TableSpec;
     for (name, crc) in GOLDEN {
         let p = vehicle_file::reference(name).unwrap().vehicle;
         let bytes = TableSpec::for_vehicle(p, COUNTS)
@@ -85,8 +85,10 @@ mod browser {
 
     #[wasm_bindgen_test]
     fn the_pedestrian_built_in_the_browser_is_the_committed_table() {
-        let committed =
-            steering::table::EtaTable::from_bytes(include_bytes!("../tables/eta.bin")).unwrap();
+        let committed = steering::funnelling::table::lookup::EtaTable::from_bytes(include_bytes!(
+            "../tables/eta.bin"
+        ))
+        .unwrap();
         let p = js(&vehicle_file::reference("pedestrian").unwrap().vehicle);
         let bytes = build(&p, None, committed.len() as u32);
         assert_eq!(table_key_of(&bytes).unwrap(), committed.key());

@@ -1,15 +1,15 @@
-//! Issue 17, point 2: a world split into slices (`world_split.rs`, the
+//! A world split into slices (`crate/world/split.rs`, the
 //! lab's stepping workers) steps every agent to the same bits as the whole
 //! world; cuts never separate an agent from the agent its goal faces
 //! (paper 000 Fig. 6); refused splits change nothing.
 #![cfg(not(target_arch = "wasm32"))]
 
-use steering::avoidance::{AvoidanceConfig, AvoidanceMethod};
-use steering::funnel::FunnelConfig;
-use steering::funnelling::world_split::SplitError;
-use steering::scenario::Scenario;
-use steering::table::EtaTable;
-use steering::vehicle::VehicleParams;
+use steering::avoidance::{config::AvoidanceConfig, config::AvoidanceMethod};
+use steering::base::vehicle::VehicleParams;
+use steering::funnelling::config::FunnelConfig;
+use steering::funnelling::table::lookup::EtaTable;
+use steering::world::scenario::Scenario;
+use steering::world::split::SplitError;
 use steering::world::World;
 
 mod common;
@@ -133,7 +133,7 @@ fn a_long_link_moves_the_cut() {
     let mut w = crowd(10, 3, 20.0);
     let fig6 = preset(include_str!("../scenarios/p000_fig6_face_to_face.json"));
     let mut g = fig6.agents[0].goals.clone();
-    if let steering::world::GoalMotion::FaceAgent { agent, .. } = &mut g[0].motion {
+    if let steering::world::goals::GoalMotion::FaceAgent { agent, .. } = &mut g[0].motion {
         *agent = 7;
     }
     w.set_goals(1, g).unwrap();

@@ -15,7 +15,7 @@ pub fn wrap(a: f32) -> f32 {
     }
     // One turn off, as sums and differences of two wrapped angles are: one
     // exact subtraction instead of a remainder (a software `fmod` on some
-    // targets, and a tenth of a funnelling update's instructions).
+    // targets, and a noticeable share of a funnelling update's instructions).
     let b = if a > PI { a - TAU } else { a + TAU };
     if b > -PI && b <= PI {
         return b;

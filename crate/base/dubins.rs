@@ -161,7 +161,7 @@ mod tests {
 
     #[test]
     fn every_word_solution_ends_at_the_goal_pose() {
-        let mut r = crate::rng::Rng::new(3);
+        let mut r = crate::base::rng::Rng::new(3);
         let mut solved = 0;
         for _ in 0..2000 {
             let a = f64::from(r.range(0.0, core::f32::consts::TAU));

@@ -6,8 +6,8 @@
 //! the vehicle's bounds (speed, angular speed, both accelerations, normal
 //! acceleration) plus finiteness.
 
-use crate::angle::diff;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 
 /// Running path measures of one agent.
 #[derive(Clone, Copy, Debug, Default, PartialEq)]

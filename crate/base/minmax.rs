@@ -4,8 +4,8 @@
 //! `f32::max` / `min` return the other operand, so in wasm each one becomes
 //! a call to compiler-builtins' `fmaxf` / `fminf`: an out-of-line call in
 //! the η lookup's axis positions, the vehicle model and the funnel's speed
-//! caps (issue 17: 3.6 % of a 50,000-agent world step's samples in Node,
-//! self time alone, `--cpu-prof`). Natively they are one instruction plus
+//! caps, a noticeable share of a world step's time in wasm for calls
+//! that do one comparison each. Natively they are one instruction plus
 //! a NaN fix-up either way.
 //!
 //! **The same numbers.** [`MinMax::at_least`] is libm's `fmax` and

@@ -1,4 +1,4 @@
-//! One vocabulary for "this number is not acceptable" (issue 12): every
+//! One vocabulary for "this number is not acceptable": every
 //! paper's inputs (vehicle limits, goals, funnel settings, crowd and wander
 //! configurations, world edits) are checked with [`check_range`] and refused
 //! with the same [`RangeError`], so a front end shows one kind of message:

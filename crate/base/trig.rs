@@ -9,8 +9,8 @@
 //! IEEE-exact operations (+, −, ×, ÷; `sin_cos` in f64,
 //! `atan2` in f32, no fused multiply-adds), so they are bit-identical on
 //! every target, and accurate to well under 1e-6. They are
-//! also no slower than libm's: `atan2` here is about 1.5× faster than
-//! glibc's `atan2f` (`cargo bench --bench core -- atan2`).
+//! also no slower than libm's (`cargo bench --bench core -- atan2` times
+//! `atan2` here against glibc's `atan2f` in the same run).
 
 use core::f64::consts::{FRAC_2_PI, FRAC_PI_2};
 
@@ -18,11 +18,11 @@ use core::f64::consts::{FRAC_2_PI, FRAC_PI_2};
 /// for `|x| < 1e4`. NaN in, NaN out.
 ///
 /// The quadrant is restored by bit operations (a swap by selects, the
-/// signs by xor), not by a `match` on it: its jump table's indirect jump
-/// was mispredicted about two times in three where the angles fall in any
-/// quadrant from one call to the next (agents' headings, one after
-/// another: 1.2 of the avoidance's 1.9 indirect mispredictions per agent
-/// update, callgrind). The same bits as the `match` (the tests compare
+/// signs by xor), not by a `match` on it: a `match` compiles to a jump
+/// table whose indirect jump is mispredicted about two times in three
+/// where the angles fall in any quadrant from one call to the next
+/// (agents' headings, one after another: most of the avoidance's indirect
+/// mispredictions). The same bits as the `match` (the tests compare
 /// them over every quadrant, NaN and the saturated extremes).
 #[inline]
 #[must_use]
@@ -49,8 +49,8 @@ fn reduced(x: f32) -> (u64, f64, f64) {
     let x = f64::from(x);
     // The nearest quadrant, ties to even, by the classic 1.5·2^52 shift:
     // two exact additions (for |x| < 1e15) where `f64::round` is a
-    // software call on x86-64 and wasm32 (25 instructions, 2 % of a
-    // funnelling update); a tie can only differ from `round` by picking
+    // software call on x86-64 and wasm32 (about 25 instructions, for every
+    // sin_cos of every update); a tie can only differ from `round` by picking
     // the other, equally reduced, quadrant.
     const SHIFT: f64 = 6_755_399_441_055_744.0;
     let k = (x * FRAC_2_PI + SHIFT) - SHIFT;

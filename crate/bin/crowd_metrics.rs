@@ -23,7 +23,7 @@ use steering::cli::crowd_metrics::CrowdMetricsCli;
 
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{seek_tag, CrowdConfig, PaperTest};
-use steering::crowd::Crowd;
+use steering::crowd::world::Crowd;
 
 fn fmt(v: Option<f32>, digits: usize) -> String {
     v.map_or_else(|| "–".to_owned(), |x| format!("{x:.digits$}"))

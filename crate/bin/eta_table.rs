@@ -17,7 +17,7 @@ use std::time::Instant;
 
 use clap::Parser;
 use steering::cli::eta_table::EtaTableCli;
-use steering::table::generate::TableSpec;
+use steering::funnelling::table::spec::TableSpec;
 
 fn main() -> ExitCode {
     match generate(&EtaTableCli::parse()) {
@@ -49,7 +49,7 @@ fn generate(cli: &EtaTableCli) -> Result<(), String> {
         reachable,
         100.0 * reachable as f64 / table.len() as f64,
         bytes.len(),
-        steering::table::crc32(&bytes[..bytes.len() - 4]),
+        steering::funnelling::table::codec::crc32(&bytes[..bytes.len() - 4]),
         spec.key(),
     );
     Ok(())

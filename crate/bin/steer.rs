@@ -2,20 +2,23 @@
 //! `steer --help`, `steer run --help`, …).
 //!
 //! ```text
-//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed]
+//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed|seek]
 //! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
 //! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
+//! steer envelope [--n N] [--seed S] [--json FILE] [--table FILE] [--standard JSON] [--only NAMES] [--brief] [--vehicle VEHICLE.json] [--queries N]
+//! steer avoid [--seeds N] [--seed S] [--only NAMES] [--replan-every N] [--write-presets DIR] [--table FILE] [--threads N]
 //! ```
-//! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
+//! `run` simulates a scenario file (schema: `crate/world/scenario.rs`)
 //! and streams the per-step pose, speeds and mode of every agent plus its
 //! metrics; `--controller` overrides the scenario's controller. Its η table
 //! is `--table` or the scenario's `table` (built for its vehicle, else an
 //! error), else `tables/eta.bin` if it matches the vehicle, else the
 //! matching table from the cache (`steering::cli::table_cache`), built
-//! there if missing (issue 14). `envelope --vehicle FILE` scales the
+//! there if missing. `envelope --vehicle FILE` scales the
 //! envelope study to a vehicle and prints its per-vehicle measures.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
-//! prints the acceptance figures of the funnelling issue.
+//! prints reach, orientation on entry, errors, length against Dubins and
+//! limit violations for each.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
 //! controllers, then the seeded random region-goal study, and prints the
 //! comparison of paper 001 (path length, integrated |curvature|, reach).
@@ -31,17 +34,17 @@ use std::process::ExitCode;
 use std::time::Instant;
 
 use clap::Parser;
+use steering::base::metrics::PathMetrics;
 use steering::cli::steer::{
     AvoidArgs, Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli,
 };
 use steering::cli::trajectory::{check_out_path, create_out, stream_run};
-use steering::funnel::{FunnelConfig, MuBound};
-use steering::metrics::PathMetrics;
-use steering::region_study::{compare, Comparison, RegionStudy};
-use steering::relaxed::{Controller, ControllerKind};
-use steering::scenario::Scenario;
-use steering::study::{summarise, ReachStudy};
-use steering::table::EtaTable;
+use steering::funnelling::config::{FunnelConfig, MuBound};
+use steering::funnelling::controller::{Controller, ControllerKind};
+use steering::funnelling::table::lookup::EtaTable;
+use steering::studies::reach::{summarise, ReachStudy};
+use steering::studies::region::{compare, Comparison, RegionStudy};
+use steering::world::scenario::Scenario;
 
 fn load_table(path: &Path) -> Result<EtaTable, String> {
     let shown = path.display();
@@ -56,7 +59,7 @@ fn load_table(path: &Path) -> Result<EtaTable, String> {
     EtaTable::from_bytes(&bytes).map_err(|e| format!("{shown}: {e}"))
 }
 
-/// The table `steer run` runs with (issue 14): `--table` or the
+/// The table `steer run` runs with: `--table` or the
 /// scenario's `table` must match the vehicle (a mismatch is an error);
 /// otherwise the committed table if it matches, else the cache's
 /// (`steering::cli::table_cache`), built if missing. Never a table built
@@ -130,6 +133,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     };
     let s = stream_run(&sc, &table, args.every, format, &mut out, &mut progress)
         .map_err(|e| format!("{scenario}: {e}"))?;
+    out.commit()?;
     println!(
         "steer: {} ({}) — {} agents, {} steps, {} finished all goals, {} limit violations -> {}",
         sc.name,
@@ -143,11 +147,11 @@ fn run(args: &RunArgs) -> Result<(), String> {
     Ok(())
 }
 
-/// `steer envelope`: the envelope study (`steering::funnelling::envelope`).
+/// `steer envelope`: the envelope study (`steering::studies::envelope`).
 fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
-    use steering::funnelling::envelope::EnvelopeStudy;
+    use steering::studies::envelope::EnvelopeStudy;
     let p = match &args.vehicle {
-        None => steering::vehicle::VehicleParams::default(),
+        None => steering::base::vehicle::VehicleParams::default(),
         Some(path) => {
             let text = std::fs::read_to_string(path)
                 .map_err(|e| format!("cannot read {}: {e}", path.display()))?;
@@ -179,16 +183,24 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     if let Some(cfg) = args.standard_config()? {
         for v in &mut vs {
             match &mut v.controller {
-                steering::relaxed::Controller::Standard(f) if v.name == "standard" => *f = cfg,
-                steering::relaxed::Controller::Relaxed(f, _) if v.name == "relaxed" => *f = cfg,
+                steering::funnelling::controller::Controller::Standard(f)
+                    if v.name == "standard" =>
+                {
+                    *f = cfg
+                }
+                steering::funnelling::controller::Controller::Relaxed(f, _)
+                    if v.name == "relaxed" =>
+                {
+                    *f = cfg
+                }
                 _ => {}
             }
         }
     }
     let report = study.run_all(&table, &p, &vs);
     if args.vehicle.is_some() {
-        use steering::funnelling::vehicle_study::{accuracy, oriented_far};
-        let r = steering::table::generate::turn_radius(&p);
+        use steering::studies::vehicle::{accuracy, oriented_far};
+        let r = steering::funnelling::table::spec::turn_radius(&p);
         let acc = accuracy(&table, &p, args.queries as usize, args.seed, 4.0);
         println!(
             "vehicle: vMax {} m/s, turning radius R = {r:.3} m (× {:.4} the pedestrian's), speeds × {:.4}; table key {}",
@@ -226,7 +238,7 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     };
     print!("{}", report.tables(detail));
     println!(
-        "\nissue 13 targets (seed {}):\n{}",
+        "\nenvelope targets (seed {}):\n{}",
         args.seed,
         report.targets()
     );
@@ -245,7 +257,7 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
     };
     let table_path = &args.table;
     let table = load_table(table_path)?;
-    let p = steering::vehicle::VehicleParams::default();
+    let p = steering::base::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
     println!(
         "reach study: {} scenarios, seed {}, D in [{}, {}] m, D_tol {} m, eps_tol {:.0} deg, v_d {} m/s, limit {} s",
@@ -273,7 +285,7 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
         (MuBound::TurningRadius { factor: 4.0 }, 2.0, 0.25),
         (MuBound::TurningRadius { factor: 6.0 }, 2.0, 0.25),
         (MuBound::TurningRadius { factor: 8.0 }, 2.0, 0.25),
-        // The default with the paper's gain 1 (issue 19: the gain's effect alone).
+        // The default with the paper's gain 1: the gain's effect alone.
         (MuBound::TurningRadius { factor: 8.0 }, 1.0, 0.25),
         (MuBound::Constant, 2.0, 0.25),
     ];
@@ -341,7 +353,7 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     let dir = args.scenarios.display();
     let rcfg = args.relaxed_config()?;
     let table = load_table(table_path)?;
-    let p = steering::vehicle::VehicleParams::default();
+    let p = steering::base::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
     println!("Relaxed settings: {rcfg:?}");
     println!("Paper 001 presets (per agent, whole run; reach = finished every goal):");
@@ -390,19 +402,19 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
             study.run_all(&table, &p, &Controller::Relaxed(f, rcfg)),
         )
     })?;
-    let pick = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
+    let pick = |v: &[steering::studies::region::RegionRun]| -> Vec<(PathMetrics, bool)> {
         v.iter().map(|r| (r.path, r.reached)).collect()
     };
     print_row("random", &compare(&pick(&rs), &pick(&rr)));
     let both: Vec<usize> = (0..rs.len().min(rr.len()))
         .filter(|&i| rs[i].reached && rr[i].reached)
         .collect();
-    let sub = |v: &[steering::region_study::RegionRun]| -> Vec<(PathMetrics, bool)> {
+    let sub = |v: &[steering::studies::region::RegionRun]| -> Vec<(PathMetrics, bool)> {
         both.iter().map(|&i| (v[i].path, v[i].reached)).collect()
     };
     print_row("random, both reached", &compare(&sub(&rs), &sub(&rr)));
-    let mean = |v: &[steering::region_study::RegionRun],
-                f: fn(&steering::region_study::RegionRun) -> f32| {
+    let mean = |v: &[steering::studies::region::RegionRun],
+                f: fn(&steering::studies::region::RegionRun) -> f32| {
         v.iter().map(|r| f64::from(f(r))).sum::<f64>() / v.len().max(1) as f64
     };
     println!(
@@ -422,8 +434,8 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
 /// `steer avoid`: the avoidance benchmarks, every method on the same
 /// seeds, one table row per benchmark and method; or `--write-presets`.
 fn avoid(args: &AvoidArgs) -> Result<(), String> {
-    use steering::avoidance::benchmarks::{study, Bench};
-    use steering::avoidance::AvoidanceMethod;
+    use steering::avoidance::config::AvoidanceMethod;
+    use steering::studies::avoidance::{study, Bench};
     let benches = args.benches()?;
     if let Some(dir) = &args.write_presets {
         for b in &benches {
@@ -431,7 +443,7 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
             let name = format!("avoid_{}", b.name());
             let mut sc = sc;
             if !b.seeded() {
-                sc.description = format!("{} With ORCA avoidance (issue 18).", sc.description);
+                sc.description = format!("{} With ORCA avoidance.", sc.description);
             }
             sc.name = name.clone();
             let text = serde_json::to_string_pretty(&sc).map_err(|e| e.to_string())? + "\n";
@@ -446,7 +458,7 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
         "avoidance benchmarks: {} seeded runs per benchmark and method from seed {} (paper figures once); radius {} m; avoidance planned every {} step(s); deadlock = unfinished and < 0.05 m/s for 10 s",
         args.seeds,
         args.seed,
-        steering::avoidance::benchmarks::BODY_RADIUS,
+        steering::studies::avoidance::BODY_RADIUS,
         args.replan_every
     );
     println!("| benchmark | method | runs | reach | oriented entries | runs finished | median finish s | length / off (median, max) | min distance m | runs with overlap | overlap pair-steps (max at once) | obstacle contacts | deadlocked agents (runs) | violations | NaN |");

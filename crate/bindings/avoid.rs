@@ -1,4 +1,4 @@
-//! The avoidance (issue 18) through the lab's binding: the method of the
+//! The avoidance through the lab's binding: the method of the
 //! world in force (presets carry theirs, `scenarios/avoid_*.json`), the
 //! obstacles as a flat array for drawing and dragging (`obstacles` /
 //! `setObstacles`, the same five floats per obstacle), and the overlap
@@ -8,7 +8,7 @@ use wasm_bindgen::prelude::*;
 
 use super::boundary::js_err;
 use super::lab::Lab;
-use crate::avoidance::{AvoidanceMethod, Obstacle};
+use crate::avoidance::{config::AvoidanceMethod, config::Obstacle};
 
 #[wasm_bindgen]
 impl Lab {
@@ -38,7 +38,7 @@ impl Lab {
     }
 
     /// Steps between an agent's avoidance plans
-    /// ([`crate::avoidance::AvoidanceConfig::replan_every`]).
+    /// ([`crate::avoidance::config::AvoidanceConfig::replan_every`]).
     #[wasm_bindgen(js_name = avoidanceReplanEvery)]
     pub fn avoidance_replan_every(&self) -> u32 {
         self.world.avoidance.replan_every

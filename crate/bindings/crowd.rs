@@ -14,7 +14,7 @@ use crate::bindings::boundary::{from_js, js_err, to_js};
 
 use crate::crowd::boid_seek::Seek;
 use crate::crowd::config::CrowdConfig;
-use crate::crowd::Crowd;
+use crate::crowd::world::Crowd;
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_CROWD_TYPES: &'static str = r#"
@@ -264,7 +264,7 @@ impl CrowdLab {
         self.crowd.last_overlaps() as f64
     }
 
-    /// Issue 17 (the crowd's stepping workers): the complete state, flat
+    /// The complete state, for the crowd's stepping workers: flat
     /// `[x0, y0, …, x(n−1), y(n−1), vx0, vy0, …]` (positions, then
     /// velocities).
     #[must_use]
@@ -325,14 +325,14 @@ impl CrowdLab {
         out
     }
 
-    /// Issue 17, the workers' hand-back without copies: views of the
+    /// The workers' hand-back without copies: views of the
     /// core's own memory, `[indices of the last stepStrip's boids
     /// (ascending), every boid's positions (x, y), every boid's velocities]`.
     /// The worker copies the owned boids straight into its state buffer
     /// (all of them in two bulk copies when it owns every boid) instead of
     /// taking [`CrowdLab::owned_indices`] and [`CrowdLab::owned_state`]
-    /// (two allocations and copies out of the core, then a copy in JS:
-    /// ≈ 2 of the ≈ 3.3 ms a 100,000-boid hand-back took in Node).
+    /// (two allocations and copies out of the core, then a copy in JS: most
+    /// of a hand-back's time in a big crowd).
     ///
     /// The views are valid until the next call into the core (one that
     /// allocates may grow the memory and detach them): read them at once.

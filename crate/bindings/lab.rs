@@ -1,6 +1,6 @@
 //! The JavaScript boundary: the one module that knows about wasm-bindgen.
 //!
-//! Rules kept here (issue 5):
+//! Rules kept here:
 //! - thin: conversion only, no steering logic; every value from JavaScript
 //!   is validated and turned into a `JsError` with a readable message, never
 //!   a panic (indices are checked, configs go through the core's `validate`);
@@ -19,16 +19,18 @@ use wasm_bindgen::prelude::*;
 use super::lab_types::{
     AgentConfig, ArcOut, GhostOut, GoalConfig, InternalsOut, ScenarioInfo, TableInfo,
 };
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
-use crate::funnel::{FunnelConfig, Internals, Mode};
-use crate::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
-use crate::relaxed::{ControllerKind, RelaxedConfig};
-use crate::rng::Rng;
-use crate::scenario::Scenario;
-use crate::seek::ReachLimits;
-use crate::table::generate::TableSpec;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
+use crate::funnelling::relaxed::RelaxedConfig;
+use crate::funnelling::seek::ReachLimits;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::TableSpec;
+use crate::funnelling::update::{Internals, Mode, Update};
+use crate::world::scenario::Scenario;
 use crate::world::{provisional_plan, World, STATE_STRIDE};
 
 /// The crate version, to show on the page and check the package loaded.
@@ -39,7 +41,7 @@ pub fn version() -> String {
 }
 
 /// The core's validation ranges, one per user-settable field
-/// ([`crate::funnelling::ranges::ALL`]): the page derives its URL decoder,
+/// ([`crate::base::ranges::ALL`]): the page derives its URL decoder,
 /// sliders and number inputs from them, so it accepts exactly what the
 /// core accepts.
 ///
@@ -47,10 +49,10 @@ pub fn version() -> String {
 /// Never in practice (plain numbers and strings).
 #[wasm_bindgen(unchecked_return_type = "FieldRange[]")]
 pub fn ranges() -> Result<JsValue, JsError> {
-    to_js(&crate::funnelling::ranges::ALL.as_slice())
+    to_js(&crate::base::ranges::ALL.as_slice())
 }
 
-/// The coordinate rule of [`crate::funnelling::precision`]: an agent and
+/// The coordinate rule of [`crate::world::precision`]: an agent and
 /// its goals stay within `min(⌊stepScale·v·dt⌋, ⌊toleranceScale·D_tol⌋,
 /// coordMax)` metres (v its slowest goal speed). The page bounds its
 /// positions with it, as it bounds the desired speed by the max speed.
@@ -59,7 +61,7 @@ pub fn ranges() -> Result<JsValue, JsError> {
 /// Never in practice (plain numbers).
 #[wasm_bindgen(unchecked_return_type = "PrecisionRule")]
 pub fn precision() -> Result<JsValue, JsError> {
-    use crate::funnelling::precision as p;
+    use crate::world::precision as p;
     to_js(&super::lab_types::PrecisionRule {
         step_scale: p::STEP_RESOLUTION_SCALE,
         tolerance_scale: p::TOLERANCE_RESOLUTION_SCALE,
@@ -69,7 +71,7 @@ pub fn precision() -> Result<JsValue, JsError> {
 
 /// A JavaScript number that must be a whole number in `r` (compared in
 /// f64: f32 cannot tell 2³² from 2³² − 1).
-pub(crate) fn whole(r: &crate::funnelling::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
+pub(crate) fn whole(r: &crate::base::ranges::FieldRange, v: f64) -> Result<u64, JsError> {
     if v.is_finite() && v.fract() == 0.0 && v >= r.min && v <= r.max {
         Ok(v as u64)
     } else {
@@ -112,7 +114,7 @@ fn field_samples(
     }
 }
 
-/// Points a ghost path keeps at most ([`crate::ghost`]).
+/// Points a ghost path keeps at most ([`crate::funnelling::ghost`]).
 const GHOST_POINTS: usize = 256;
 
 /// What a lab knows of the table it waits for ([`Lab::without_table`]):
@@ -127,8 +129,8 @@ struct Expected {
 #[wasm_bindgen]
 pub struct Lab {
     /// Shared by the labs [`Lab::fork`] makes (one copy in memory, ~10 MB).
-    /// `None` until the table has arrived (issue 17: the first frame is
-    /// drawn without it; see [`Lab::without_table`]).
+    /// `None` until the table has arrived (the first frame is drawn
+    /// without it; see [`Lab::without_table`]).
     table: Option<Rc<EtaTable>>,
     /// The table a lab without one waits for.
     expected: Expected,
@@ -206,7 +208,7 @@ impl Lab {
     }
 
     /// A lab for the default vehicle whose η table has not arrived yet
-    /// (issue 17: the page draws its first frame while the table loads).
+    /// (the page draws its first frame while the table loads).
     /// Agents, goals, presets, edits and settings work as usual; until
     /// [`Lab::set_table`] the internals are the provisional plan (the goal
     /// measured from the vehicle, γ its bearing: seek steering; the mode
@@ -421,8 +423,8 @@ impl Lab {
 
 /// Every world the lab holds (new, forked, cleared, a scenario's) goes
 /// through here: without the agents' path metrics, which no binding reads
-/// (issue 17: about a twentieth of an update; the states are the same
-/// bits, `World::set_metrics`).
+/// (they cost a square root, an angle difference and the limit checks per
+/// agent per step; the states are the same bits, `World::set_metrics`).
 fn lab_world(mut world: World) -> World {
     world.set_metrics(false);
     world
@@ -519,7 +521,7 @@ impl Lab {
     /// first, for a caller that wants the answer before the work.
     #[wasm_bindgen(js_name = checkRoom)]
     pub fn check_room(&self, n: f64) -> Result<(), JsError> {
-        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
+        let n = whole(&crate::base::ranges::AGENTS, n)?;
         self.world
             .check_room(n as usize)
             .map_err(|e| js_err("random agents", e))
@@ -539,8 +541,8 @@ impl Lab {
         extent: f32,
         speed: f32,
     ) -> Result<(), JsError> {
-        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
-        let seed = whole(&crate::funnelling::ranges::SEED, seed)?;
+        let n = whole(&crate::base::ranges::AGENTS, n)?;
+        let seed = whole(&crate::base::ranges::SEED, seed)?;
         self.world
             .spawn_random(n as usize, seed, extent, speed)
             .map_err(|e| js_err("random agents", e))
@@ -571,8 +573,8 @@ impl Lab {
         self.buf.clone()
     }
 
-    /// [`Lab::state`] written into `out` (issue 17: a stepping worker's
-    /// slice of the page's shared buffer) with one copy out of the core's
+    /// [`Lab::state`] written into `out` (a stepping worker's slice of the
+    /// page's shared buffer) with one copy out of the core's
     /// memory, instead of a `Vec` clone, a new JS array and a copy of that.
     ///
     /// # Errors
@@ -588,8 +590,8 @@ impl Lab {
 
     /// One step ([`Lab::step`] of 1), then [`Lab::state`] written into
     /// `out` as [`Lab::state_into`] writes it: each agent's record as soon
-    /// as it has stepped (issue 17: a stepping worker's step and copy in one
-    /// pass over its agents; `World::step_writing`).
+    /// as it has stepped (a stepping worker's step and copy in one pass
+    /// over its agents; `World::step_writing`).
     ///
     /// # Errors
     /// No η table yet, or `out` not exactly [`Lab::count`] ×
@@ -640,7 +642,7 @@ impl Lab {
     }
 
     /// The predicted seek path of agent `i`'s current update (paper 000
-    /// Fig. 1c, [`crate::ghost::update_ghost`]): from its state towards the
+    /// Fig. 1c, [`crate::funnelling::ghost::update_ghost`]): from its state towards the
     /// point its controller asked the η table about, at the queried speed
     /// (or the fallback v_dt where the table says unreachable). `points`
     /// holds x, y pairs (at most 256 points).
@@ -679,7 +681,7 @@ impl Lab {
 
     /// The predicted seek path from any state (position, heading θ, speed
     /// v, angular speed ω) towards the point (`tx`, `ty`) at desired speed
-    /// `v_d`: the table generator's simulation ([`crate::ghost::seek_ghost`]).
+    /// `v_d`: the table generator's simulation ([`crate::funnelling::ghost::seek_ghost`]).
     #[wasm_bindgen(js_name = ghostFrom, unchecked_return_type = "Ghost")]
     #[allow(clippy::too_many_arguments)]
     pub fn ghost_from(
@@ -696,9 +698,11 @@ impl Lab {
         let s = VehicleState::new(Vec2::new(x, y), theta, v, omega);
         s.validate(&self.world.params)
             .map_err(|e| js_err("ghost state", e))?;
-        crate::range::check_range("ghost.tx", tx, -1e6, 1e6).map_err(|e| js_err("ghost", e))?;
-        crate::range::check_range("ghost.ty", ty, -1e6, 1e6).map_err(|e| js_err("ghost", e))?;
-        crate::range::check_range("ghost.vD", v_d, 0.0, self.world.params.v_max)
+        crate::base::range::check_range("ghost.tx", tx, -1e6, 1e6)
+            .map_err(|e| js_err("ghost", e))?;
+        crate::base::range::check_range("ghost.ty", ty, -1e6, 1e6)
+            .map_err(|e| js_err("ghost", e))?;
+        crate::base::range::check_range("ghost.vD", v_d, 0.0, self.world.params.v_max)
             .map_err(|e| js_err("ghost", e))?;
         self.ghost.clear();
         let g = seek_ghost(
@@ -755,14 +759,14 @@ impl Lab {
             // its last update did.
             a.internals
         } else {
-            let mut mem = a.memory;
-            self.world.config.plan(
-                self.table()?,
-                &self.world.params,
-                &a.state,
-                &a.goal_now,
-                &mut mem,
-            )
+            let (mut mem, mut state) = (a.memory, a.state);
+            self.world.config.plan(&mut Update {
+                table: self.table()?,
+                params: &self.world.params,
+                state: &mut state,
+                goal: &a.goal_now,
+                memory: &mut mem,
+            })
         })
     }
 
@@ -782,7 +786,7 @@ impl Lab {
 #[wasm_bindgen]
 impl Lab {
     /// Replaces the world with a scenario file's (scenarios/*.json, see
-    /// crate::scenario); returns its name, description and bounding box.
+    /// crate::world::scenario); returns its name, description and bounding box.
     #[wasm_bindgen(js_name = loadScenario, unchecked_return_type = "ScenarioInfo")]
     pub fn load_scenario(&mut self, json: &str) -> Result<JsValue, JsError> {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;

@@ -7,14 +7,15 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use crate::funnel::{Goal, Internals};
-use crate::ghost::Ghost;
-use crate::vehicle::VehicleParams;
-use crate::world::{GoalMotion, GoalSpec, SwitchRule};
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::ghost::Ghost;
+use crate::funnelling::goal::Goal;
+use crate::funnelling::update::Internals;
+use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_TYPES: &'static str = r#"
-/** One user-settable field's accepted range (crate::funnelling::ranges): the
+/** One user-settable field's accepted range (crate::base::ranges): the
  *  key as errors name it (`vMax`, `goal.dTol`, `funnel.gain`), the closed
  *  interval [min, max] in SI units and radians, whole numbers only when
  *  `integer`, and `atMost`: a field whose current value also bounds this one
@@ -28,14 +29,14 @@ export interface FieldRange {
   atMost: string | null;
   what: string;
 }
-/** Where f32 positions resolve an agent's steps (crate::funnelling::precision):
+/** Where f32 positions resolve an agent's steps (crate::world::precision):
  *  |coordinate| ≤ min(⌊stepScale·v·dt⌋, ⌊toleranceScale·D_tol⌋, coordMax), in f32. */
 export interface PrecisionRule {
   stepScale: number;
   toleranceScale: number;
   coordMax: number;
 }
-/** Vehicle limits and seek gains (crate::vehicle::VehicleParams). Units: m, s, rad. */
+/** Vehicle limits and seek gains (crate::base::vehicle::VehicleParams). Units: m, s, rad. */
 export interface VehicleParams {
   dt: number;
   vMax: number;
@@ -47,7 +48,7 @@ export interface VehicleParams {
   kd: number;
   integrator: "euler" | "semiImplicitEuler";
 }
-/** How the modulation μ is bounded (crate::funnel::MuBound). `literal`: the
+/** How the modulation μ is bounded (crate::funnelling::config::MuBound). `literal`: the
  *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at
  *  π/2; `turningRadius`: atan(factor·max(R_min, minBoundRadius) / D), the
  *  default (factor 8); `constant`: π/2 (does not vanish with distance). */
@@ -57,7 +58,7 @@ export type MuBound =
   | { kind: "turningRadius"; factor: number }
   | { kind: "constant" };
 /** The funnelling controller's settings, shared by every agent
- *  (crate::funnel::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
+ *  (crate::funnelling::config::FunnelConfig). μ = −gain·Δη (gain in [0, 100], default 2),
  *  bounded by `bound`; Position_only once |Δη| < seekThreshold·ε_tol
  *  (seekThreshold in [0, 1], default 0.25). */
 export interface FunnelConfig {
@@ -71,7 +72,7 @@ export interface FunnelConfig {
   /** The terminal line pursuit (default on; null or absent: off). */
   terminal?: TerminalConfig | null;
 }
-/** The terminal line pursuit (crate::funnelling::approach::Terminal): carrot
+/** The terminal line pursuit (crate::funnelling::config::Terminal): carrot
  *  `lookahead` seconds of travel ahead on the goal's line; starts within
  *  `range` carrot distances of the disk when |β − θ| < `heading` (rad). */
 export interface TerminalConfig {
@@ -79,7 +80,7 @@ export interface TerminalConfig {
   heading: number;
   range: number;
 }
-/** Relaxed funnelling's settings (crate::relaxed::RelaxedConfig). `aim`:
+/** Relaxed funnelling's settings (crate::funnelling::relaxed::RelaxedConfig). `aim`:
  *  "entry", the disk's entry point (default, as the standard controller), or
  *  "paperArc", paper 001 Fig. 7's relaxed point on the ring arc 𝒜. Margins
  *  in (0, 1]. */
@@ -89,7 +90,7 @@ export interface RelaxedConfig {
   orientationMargin?: number;
   endEta?: "linear" | "multilinear";
 }
-/** An oriented goal (crate::funnel::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
+/** An oriented goal (crate::funnelling::goal::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
 export interface GoalConfig {
   x: number;
   y: number;
@@ -109,7 +110,7 @@ export interface AgentConfig {
   omega?: number;
   goals: GoalConfig[];
 }
-/** What one controller update computed (crate::funnel::Internals). Angles in rad. */
+/** What one controller update computed (crate::funnelling::update::Internals). Angles in rad. */
 export interface Internals {
   /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
   mode: 0 | 1 | 2 | 3;
@@ -129,13 +130,13 @@ export interface Internals {
   vQuery: number;
   /** Relaxed funnelling (paper 001 Fig. 7), vehicle frame: arc 𝒜 = [alphaMin, alphaMax] on the ring
    *  `radius`, chosen α_r, final-orientation span F = [fMin, fMax] (may pass ±π), searched interval
-   *  T = [tMin, tMax], Fig. 7 branch (crate::relaxed::Fig7Branch: 0 none … 8 entry point). */
+   *  T = [tMin, tMax], Fig. 7 branch (crate::funnelling::relaxed::Fig7Branch: 0 none … 8 entry point). */
   arc?: {
     alphaMin: number; alphaMax: number; alphaR: number; radius: number;
     fMin: number; fMax: number; tMin: number; tMax: number; branch: number;
   } | null;
 }
-/** A predicted seek path (crate::ghost): `points` x, y pairs (world, m; start first, on arrival the
+/** A predicted seek path (crate::funnelling::ghost): `points` x, y pairs (world, m; start first, on arrival the
  *  crossing of the reach circle last); η and the final direction (world) in rad, NaN when not reached. */
 export interface Ghost {
   reached: boolean;
@@ -168,8 +169,8 @@ export interface ScenarioInfo {
   name: string;
   description: string;
   source: string;
-  /** What the paper claims for this figure, and what we measure (issue 19;
-   *  empty for scenarios that do not say). */
+  /** What the paper claims for this figure, and what we measure (empty
+   *  for scenarios that do not say). */
   claim: string;
   measured: string;
   /** Non-empty when the scenario's vehicle differs from the table's. */

@@ -6,14 +6,14 @@
 
 use wasm_bindgen::prelude::*;
 
-use crate::funnel::Mode as CoreMode;
+use crate::funnelling::update::Mode as CoreMode;
 use crate::world::{StateField as CoreField, STATE_STRIDE};
 
 /// The control mode (paper 000 Fig. 5), as `Lab.state()` and
-/// `Lab.internals()` give it: `crate::funnel::Mode`.
+/// `Lab.internals()` give it: `crate::funnelling::update::Mode`.
 #[wasm_bindgen]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(missing_docs)] // the paper's names; see crate::funnel::Mode
+#[allow(missing_docs)] // the paper's names; see crate::funnelling::update::Mode
 pub enum Mode {
     EndOfSteering = 0,
     OrientationOnly = 1,
@@ -25,7 +25,7 @@ pub enum Mode {
 /// floats per agent): `crate::world::StateField`.
 #[wasm_bindgen]
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
-#[allow(missing_docs)] // the quantities of crate::funnel::Internals and the goal
+#[allow(missing_docs)] // the quantities of crate::funnelling::update::Internals and the goal
 pub enum StateField {
     X = 0,
     Y = 1,

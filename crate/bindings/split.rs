@@ -1,5 +1,5 @@
-//! What the lab's stepping workers call (issue 17, point 2): the world's
-//! slices ([`crate::funnelling::world_split`]) and a hash of the state, so
+//! What the lab's stepping workers call: the world's
+//! slices ([`crate::world::split`]) and a hash of the state, so
 //! the page can check N workers against one core.
 
 use wasm_bindgen::prelude::*;
@@ -45,8 +45,8 @@ impl Lab {
         start: u32,
         end: u32,
     ) -> Result<(), JsError> {
-        let n = whole(&crate::funnelling::ranges::AGENTS, n)?;
-        let seed = whole(&crate::funnelling::ranges::SEED, seed)?;
+        let n = whole(&crate::base::ranges::AGENTS, n)?;
+        let seed = whole(&crate::base::ranges::SEED, seed)?;
         self.world
             .spawn_random_kept(
                 n as usize,

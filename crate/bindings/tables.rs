@@ -1,4 +1,4 @@
-//! η tables built in the browser (issue 14): what the page's Web Workers
+//! η tables built in the browser: what the page's Web Workers
 //! call to build the table of the vehicle in use, split across workers.
 //! Thin: the core's [`TableSpec`] does the work ([`TableSpec::encode_slice`]
 //! per worker, [`TableSpec::assemble_encoded`] once), so a table built here
@@ -12,11 +12,11 @@
 use serde::Serialize;
 use wasm_bindgen::prelude::*;
 
+use crate::base::vehicle::VehicleParams;
 use crate::bindings::boundary::{from_js, js_err, to_js};
+use crate::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
+use crate::funnelling::table::{format::AXES, lookup::EtaTable};
 use crate::funnelling::vehicle_file::REFERENCE;
-use crate::table::generate::{TableSpec, DEFAULT_COUNTS};
-use crate::table::{EtaTable, AXES};
-use crate::vehicle::VehicleParams;
 
 fn spec(params: JsValue, counts: Option<Vec<u32>>) -> Result<TableSpec, JsError> {
     let p: VehicleParams = from_js("vehicle parameters", params)?;

@@ -2,7 +2,7 @@
 //! `WanderLab` class the gallery page drives.
 //!
 //! Same rules as [`crate::bindings`]: conversion only, every configuration
-//! goes through the core's validation (a [`crate::wander::WanderError`]
+//! goes through the core's validation (a [`crate::wander::error::WanderError`]
 //! becomes a `JsError` with its message, never a panic), configuration
 //! objects carry real TypeScript types (snake_case, as in the preset
 //! files), traces cross as `Float32Array`. A configuration and its seed give
@@ -12,7 +12,7 @@ use wasm_bindgen::prelude::*;
 
 use crate::bindings::boundary::{from_js, js_err, to_js};
 
-use crate::wander::{WanderConfig, WanderPreset, Wanderer};
+use crate::wander::{config::WanderConfig, pipeline::WanderPreset, pipeline::Wanderer};
 
 #[wasm_bindgen(typescript_custom_section)]
 const TS_WANDER_TYPES: &'static str = r#"
@@ -84,7 +84,7 @@ export type WanderSource =
   | { kind: "mix"; parts: { weight: number; source: WanderSource }[] };
 /** Timed transitions (§5): hold each command for a fixed or random number of steps. */
 export type WanderHold = { kind: "fixed"; every: number } | { kind: "random"; min: number; max: number };
-/** A whole wander behaviour (crate::wander::WanderConfig). */
+/** A whole wander behaviour (crate::wander::config::WanderConfig). */
 export interface WanderConfig {
   seed?: number;
   agent?: WanderAgent;

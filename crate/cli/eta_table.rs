@@ -1,12 +1,12 @@
 //! `eta-table` arguments: where to write the η table and how densely to
-//! sample each axis ([`crate::table::generate`]).
+//! sample each axis ([`crate::funnelling::table::generate`]).
 
 use std::path::PathBuf;
 
 use clap::Parser;
 
 use super::pool::PoolArgs;
-use crate::table::AXES;
+use crate::funnelling::table::format::AXES;
 
 /// Generates the η table for a vehicle (default: the pedestrian of the
 /// committed table; axes scale with the vehicle's turning radius and
@@ -35,7 +35,7 @@ pub const MAX_AXIS_COUNT: usize = 4096;
 
 /// Parses `ND,NA,NS,NV,NVD`: five integers in `[2, MAX_AXIS_COUNT]` whose
 /// product (the entries) is at most the loader's
-/// [`MAX_ENTRIES`](crate::table::format::MAX_ENTRIES).
+/// [`MAX_ENTRIES`](crate::funnelling::table::format::MAX_ENTRIES).
 ///
 /// # Errors
 /// A message naming what is wrong.
@@ -60,7 +60,7 @@ pub fn parse_counts(s: &str) -> Result<[usize; AXES], String> {
         ));
     }
     let entries: usize = c.iter().product();
-    let max = crate::table::format::MAX_ENTRIES;
+    let max = crate::funnelling::table::format::MAX_ENTRIES;
     if entries > max {
         return Err(format!(
             "{entries} entries, more than a table may hold ({max})"
@@ -75,9 +75,9 @@ impl EtaTableCli {
     ///
     /// # Errors
     /// An unreadable file, or a refused field, named.
-    pub fn vehicle_params(&self) -> Result<crate::vehicle::VehicleParams, String> {
+    pub fn vehicle_params(&self) -> Result<crate::base::vehicle::VehicleParams, String> {
         match &self.vehicle {
-            None => Ok(crate::vehicle::VehicleParams::default()),
+            None => Ok(crate::base::vehicle::VehicleParams::default()),
             Some(path) => {
                 let shown = path.display();
                 let text = std::fs::read_to_string(path)
@@ -93,7 +93,7 @@ impl EtaTableCli {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::table::generate::DEFAULT_COUNTS;
+    use crate::funnelling::table::spec::DEFAULT_COUNTS;
 
     #[test]
     fn the_default_counts_are_the_committed_tables() {

@@ -1,5 +1,5 @@
 //! `--threads N`: the size of the rayon pool a study or the table generator
-//! runs on ([`crate::parallel`]). Results never depend on it; it only
+//! runs on ([`crate::base::parallel`]). Results never depend on it; it only
 //! trades wall time against sharing the machine.
 
 use clap::Args;

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand};
 
 use super::pool::PoolArgs;
-use crate::relaxed::ControllerKind;
+use crate::funnelling::controller::ControllerKind;
 
 /// The funnelling runner: simulate a scenario, or run a seeded study.
 #[derive(Parser, Clone, Debug, PartialEq)]
@@ -27,9 +27,9 @@ pub enum Command {
     Reach(ReachArgs),
     /// Standard vs relaxed funnelling: paper 001 presets, then random region goals.
     Relaxed(RelaxedArgs),
-    /// The envelope study (issue 13): tolerances × speed × distance, static, moving and chained goals.
+    /// The envelope study: tolerances × speed × distance, static, moving and chained goals.
     Envelope(EnvelopeArgs),
-    /// Avoidance benchmarks (issue 18): circle swap, corridor, doorway, Fig. 6 / Fig. 8; off vs separation vs ORCA.
+    /// Avoidance benchmarks: circle swap, corridor, doorway, Fig. 6 / Fig. 8; off vs separation vs ORCA.
     Avoid(AvoidArgs),
 }
 
@@ -46,7 +46,7 @@ pub struct AvoidArgs {
     #[arg(long, value_name = "NAMES")]
     pub only: Option<String>,
     /// Steps between an agent's avoidance plans, 1 (every step) to 4.
-    #[arg(long, value_name = "N", default_value_t = crate::avoidance::AvoidanceConfig::default().replan_every, value_parser = parse_replan_every)]
+    #[arg(long, value_name = "N", default_value_t = crate::avoidance::config::AvoidanceConfig::default().replan_every, value_parser = parse_replan_every)]
     pub replan_every: u32,
     /// Write the benchmark presets (seed `--seed`, ORCA) into DIR as `avoid_*.json` and stop.
     #[arg(long, value_name = "DIR")]
@@ -80,8 +80,8 @@ impl AvoidArgs {
     ///
     /// # Errors
     /// A name that is not a benchmark.
-    pub fn benches(&self) -> Result<Vec<crate::avoidance::benchmarks::Bench>, String> {
-        let all = crate::avoidance::benchmarks::Bench::ALL.to_vec();
+    pub fn benches(&self) -> Result<Vec<crate::studies::avoidance::Bench>, String> {
+        let all = crate::studies::avoidance::Bench::ALL.to_vec();
         let Some(only) = &self.only else {
             return Ok(all);
         };
@@ -102,7 +102,7 @@ impl AvoidArgs {
 /// `steer run`.
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct RunArgs {
-    /// Scenario file (schema: `crate/funnelling/scenario.rs`).
+    /// Scenario file (schema: `crate/world/scenario.rs`).
     #[arg(value_name = "SCENARIO.json")]
     pub scenario: PathBuf,
     /// Trajectory output, streamed while simulating; the extension
@@ -133,10 +133,10 @@ pub struct RunArgs {
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct ReachArgs {
     /// Number of random scenarios, 1 to 1,000,000.
-    #[arg(long, value_name = "N", default_value_t = crate::study::ReachStudy::default().n, value_parser = parse_study_n)]
+    #[arg(long, value_name = "N", default_value_t = crate::studies::reach::ReachStudy::default().n, value_parser = parse_study_n)]
     pub n: usize,
     /// Seed.
-    #[arg(long, value_name = "S", default_value_t = crate::study::ReachStudy::default().seed)]
+    #[arg(long, value_name = "S", default_value_t = crate::studies::reach::ReachStudy::default().seed)]
     pub seed: u64,
     /// η table.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
@@ -150,10 +150,10 @@ pub struct ReachArgs {
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct RelaxedArgs {
     /// Number of random region goals, 1 to 1,000,000.
-    #[arg(long, value_name = "N", default_value_t = crate::region_study::RegionStudy::default().n, value_parser = parse_study_n)]
+    #[arg(long, value_name = "N", default_value_t = crate::studies::region::RegionStudy::default().n, value_parser = parse_study_n)]
     pub n: usize,
     /// Seed.
-    #[arg(long, value_name = "S", default_value_t = crate::region_study::RegionStudy::default().seed)]
+    #[arg(long, value_name = "S", default_value_t = crate::studies::region::RegionStudy::default().seed)]
     pub seed: u64,
     /// η table.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
@@ -163,7 +163,7 @@ pub struct RelaxedArgs {
     pub scenarios: PathBuf,
     /// Where the relaxed controller aims (default: the relaxed controller's, entry).
     #[arg(long, value_name = "entry|paper-arc", value_parser = parse_aim)]
-    pub aim: Option<crate::relaxed::RelaxedAim>,
+    pub aim: Option<crate::funnelling::relaxed::RelaxedAim>,
     /// Relaxed setting `diskMargin` (default: the relaxed controller's).
     #[arg(long, value_name = "F")]
     pub disk_margin: Option<f32>,
@@ -205,7 +205,7 @@ pub fn parse_study_n(s: &str) -> Result<usize, String> {
 }
 
 /// Smallest `steer envelope --n`: the moving and chained groups get N/5
-/// runs each, and an empty group printed rows of NaN.
+/// runs each, and an empty group would print rows of NaN.
 pub const MIN_ENVELOPE_N: usize = 5;
 
 /// Parses `steer envelope --n`: [`MIN_ENVELOPE_N`] to [`MAX_STUDY_N`].
@@ -236,10 +236,10 @@ pub fn parse_controller(s: &str) -> Result<ControllerKind, String> {
 ///
 /// # Errors
 /// Neither `entry` nor `paper-arc`.
-pub fn parse_aim(s: &str) -> Result<crate::relaxed::RelaxedAim, String> {
+pub fn parse_aim(s: &str) -> Result<crate::funnelling::relaxed::RelaxedAim, String> {
     match s {
-        "entry" => Ok(crate::relaxed::RelaxedAim::Entry),
-        "paper-arc" => Ok(crate::relaxed::RelaxedAim::PaperArc),
+        "entry" => Ok(crate::funnelling::relaxed::RelaxedAim::Entry),
+        "paper-arc" => Ok(crate::funnelling::relaxed::RelaxedAim::PaperArc),
         _ => Err(format!("`{s}` is neither entry nor paper-arc")),
     }
 }
@@ -270,7 +270,7 @@ pub struct EnvelopeArgs {
     /// Print the summary and the targets only, not the per-cell tables.
     #[arg(long)]
     pub brief: bool,
-    /// Vehicle file (issue 14; e.g. `scenarios/vehicles/car.json`): the
+    /// Vehicle file (e.g. `scenarios/vehicles/car.json`): the
     /// study's distances, tolerances and speeds are scaled to its turning
     /// radius and v_max (the tables stay in pedestrian-equivalent units),
     /// the table is `--table` if built for it, else the cached or newly
@@ -290,8 +290,8 @@ impl RelaxedArgs {
     ///
     /// # Errors
     /// A margin out of range, named.
-    pub fn relaxed_config(&self) -> Result<crate::relaxed::RelaxedConfig, String> {
-        let mut rcfg = crate::relaxed::RelaxedConfig::default();
+    pub fn relaxed_config(&self) -> Result<crate::funnelling::relaxed::RelaxedConfig, String> {
+        let mut rcfg = crate::funnelling::relaxed::RelaxedConfig::default();
         if let Some(aim) = self.aim {
             rcfg.aim = aim;
         }
@@ -311,11 +311,13 @@ impl EnvelopeArgs {
     ///
     /// # Errors
     /// Not a `FunnelConfig`, or a value out of range.
-    pub fn standard_config(&self) -> Result<Option<crate::funnel::FunnelConfig>, String> {
+    pub fn standard_config(
+        &self,
+    ) -> Result<Option<crate::funnelling::config::FunnelConfig>, String> {
         let Some(json) = &self.standard else {
             return Ok(None);
         };
-        let cfg: crate::funnel::FunnelConfig =
+        let cfg: crate::funnelling::config::FunnelConfig =
             serde_json::from_str(json).map_err(|e| format!("--standard: {e}"))?;
         cfg.validate().map_err(|e| format!("--standard: {e}"))?;
         Ok(Some(cfg))
@@ -325,8 +327,8 @@ impl EnvelopeArgs {
     ///
     /// # Errors
     /// A name that is not a variant.
-    pub fn variants(&self) -> Result<Vec<crate::funnelling::envelope::Variant>, String> {
-        let mut vs = crate::funnelling::envelope::variants().to_vec();
+    pub fn variants(&self) -> Result<Vec<crate::studies::envelope::Variant>, String> {
+        let mut vs = crate::studies::envelope::variants().to_vec();
         if let Some(only) = &self.only {
             let known: Vec<&str> = vs.iter().map(|v| v.name).collect();
             if let Some(bad) = only.split(',').find(|n| !known.contains(n)) {

@@ -1,4 +1,4 @@
-//! The native η-table cache (issue 14): `steer run` on a scenario whose
+//! The native η-table cache: `steer run` on a scenario whose
 //! vehicle is not the committed table's builds the matching table once and
 //! keeps it, keyed by [`TableSpec::key`] (the hash of every build
 //! parameter and axis value, the same key the browser's IndexedDB cache
@@ -17,9 +17,9 @@
 
 use std::path::{Path, PathBuf};
 
-use crate::table::generate::{TableSpec, DEFAULT_COUNTS};
-use crate::table::EtaTable;
-use crate::vehicle::VehicleParams;
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::{TableSpec, DEFAULT_COUNTS};
 
 /// Where a table came from.
 #[derive(Clone, Debug, PartialEq, Eq)]

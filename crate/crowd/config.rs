@@ -34,13 +34,13 @@ use crate::crowd::path::Path;
 /// Most boids a crowd accepts (keeps buffers within a browser's memory).
 pub const MAX_BOIDS: usize = 1_000_000;
 
-/// Most steps in a batch run's warm-up or measurement window (issue 16:
-/// `measure_steps = 4294967295` ran for hours with no output); the paper
-/// presets use 1,500 + 6,000.
+/// Most steps in a batch run's warm-up or measurement window (an unbounded
+/// `measure_steps`, e.g. 4294967295, would run for hours with no output);
+/// the paper presets use 1,500 + 6,000.
 pub const MAX_RUN_STEPS: u32 = 1_000_000;
 
 /// Most boid-steps in a batch run, `boids × (warmup_steps +
-/// measure_steps)`: about 2 minutes at 130 ns per boid step.
+/// measure_steps)`: minutes of a native run, not hours.
 pub const MAX_BOID_STEPS: u64 = 1_000_000_000;
 
 /// Most points in a path.
@@ -261,7 +261,7 @@ impl CrowdConfig {
         Ok(())
     }
 
-    /// Checks that a batch run ([`crate::crowd::Crowd::run_measured`], the
+    /// Checks that a batch run ([`crate::crowd::world::Crowd::run_measured`], the
     /// `crowd-metrics` table) stays under [`MAX_BOID_STEPS`]; an
     /// interactive crowd (the page) steps as long as it is shown.
     ///

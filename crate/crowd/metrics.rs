@@ -1,4 +1,4 @@
-//! Per-run measures of crowded path following (issue 6, after paper 003's
+//! Per-run measures of crowded path following (after paper 003's
 //! Results, which are only pictures: we put numbers on what they show).
 //!
 //! * **Lap time** — steps between two successive forward crossings of the

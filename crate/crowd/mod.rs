@@ -7,11 +7,11 @@
 //! | [`path`] | "Path following – improved path" | polyline path with a radius; the normal-point rule |
 //! | [`path_follow`] | "Path following" | predict ahead, find the normal point, target ahead on the path |
 //! | [`boid_seek`] | "Seek" | Reynolds and Parker seeks as interchangeable strategies |
-//! | [`separation`] | "Separation" | neighbour grid (not O(n²)), separation, overlap counts |
-//! | [`world`] | all | [`Crowd`]: the boid world stepped one paper frame at a time |
-//! | [`config`] | "Testing" | [`CrowdConfig`] and the paper's Tests I–IV presets |
+//! | [`separation`] | "Separation" | separation over the neighbour grid of [`crate::base::grid`] (not O(n²)), overlap counts |
+//! | [`world`] | all | [`Crowd`](world::Crowd): the boid world stepped one paper frame at a time |
+//! | [`config`] | "Testing" | [`CrowdConfig`](config::CrowdConfig) and the paper's Tests I–IV presets |
 //! | [`metrics`] | "Results" | lap time, path deviation, overlaps: numbers on what the figures show |
-//! | [`error`] | — | [`CrowdError`] |
+//! | [`error`] | — | [`CrowdError`](error::CrowdError) |
 
 pub mod boid_seek;
 pub mod config;
@@ -21,7 +21,3 @@ pub mod path;
 pub mod path_follow;
 pub mod separation;
 pub mod world;
-
-pub use config::CrowdConfig;
-pub use error::CrowdError;
-pub use world::*;

@@ -243,7 +243,7 @@ impl Path {
     /// to the lowest segment index). O(segments).
     #[must_use]
     pub fn normal_point(&self, p: Vec2) -> NormalPoint {
-        // Issue 17 (every boid, every step): zipped slices instead of
+        // Runs for every boid, every step: zipped slices instead of
         // indexing (no bounds checks) and `f32::clamp`'s comparisons
         // written out (the same result, NaN kept, without its `min ≤ max`
         // assertion: `len` > 0 by construction); the arc length is formed

@@ -27,14 +27,15 @@
 
 use glam::Vec2;
 
+use crate::base::grid::NeighbourGrid;
+use crate::base::rng::Rng;
 use crate::crowd::boid_seek::Seek;
 use crate::crowd::config::{CrowdConfig, PathConfig, MAX_BOIDS};
 use crate::crowd::error::{check_range, CrowdError};
 use crate::crowd::metrics::{CrowdMetrics, MetricsAccumulator};
 use crate::crowd::path::Path;
 use crate::crowd::path_follow::PathFollow;
-use crate::crowd::separation::{count_overlaps, separate, separate_owned, NeighbourGrid};
-use crate::rng::Rng;
+use crate::crowd::separation::{count_overlaps, separate, separate_owned};
 
 /// Most points kept for the highlighted lap trace; longer laps are
 /// decimated (every other point dropped, sampling stride doubled).
@@ -64,7 +65,7 @@ pub struct Crowd {
     trace_stride: u32,
     trace_tick: u32,
     last_overlaps: u64,
-    /// Issue 17's strip steps: which boids this copy steps, and the grid's members.
+    /// Strip steps ([`Crowd::step_strip`]): which boids this copy steps, and the grid's members.
     owned: Vec<bool>,
     members: Vec<u32>,
 }
@@ -180,7 +181,7 @@ impl Crowd {
         self.record_trace();
     }
 
-    /// Issue 17: one step of the boids whose x at the step's start lies in
+    /// One step of the boids whose x at the step's start lies in
     /// `[lo, hi)` (a NaN x counts as −∞; `hi = +∞` takes +∞), as one
     /// worker's share of a world split into vertical strips. Separation
     /// reads every boid within reach of an owned one (the strip and a halo
@@ -272,9 +273,10 @@ impl Crowd {
         (p, steer, sep)
     }
 
-    /// Issue 17: loads a complete state (positions and velocities, flat,
-    /// two floats per boid each, for the present count) and the step
-    /// count; the trace and the measures are kept.
+    /// Loads a complete state (positions and velocities, flat, two floats
+    /// per boid each, for the present count) and the step count, as the
+    /// page's stepping workers hand it back; the trace and the measures
+    /// are kept.
     ///
     /// # Errors
     /// A length other than `2 × count`, named by field; nothing changes.
@@ -288,7 +290,7 @@ impl Crowd {
         Ok(())
     }
 
-    /// Issue 17: a step run elsewhere (in workers): counts it and records
+    /// A step run elsewhere (in workers): counts it and records
     /// the traced boid's new position `p` in the lap trace, as
     /// [`Crowd::step`] would have.
     pub fn observe_step(&mut self, p: Vec2) {
@@ -471,8 +473,8 @@ impl Crowd {
         });
     }
 
-    /// Switches metric recording (on by default; off saves about a third of
-    /// a step).
+    /// Switches metric recording (on by default; off skips the per-step
+    /// measures, a large share of a step).
     pub fn set_metrics_enabled(&mut self, on: bool) {
         self.metrics_on = on;
     }

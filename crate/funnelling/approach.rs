@@ -1,6 +1,6 @@
 //! What every funnelling update does before and after choosing *where* to
 //! aim (paper 000 Figs. 4–5; paper 001 §4.1): the part the standard
-//! ([`crate::funnel`]) and the relaxed ([`crate::relaxed`]) controllers
+//! ([`crate::funnelling::funnel`]) and the relaxed ([`crate::funnelling::relaxed`]) controllers
 //! share, written once so the two never drift apart.
 //!
 //! An update begins ([`Approach::begin`]) by measuring the goal in the
@@ -16,17 +16,18 @@
 //! speed `v_dt`), and, when an orientation correction is needed, the bounded
 //! modulation μ of Fig. 4 around the aim direction ([`Approach::funnel`]).
 
-use crate::minmax::MinMax;
 use core::cell::Cell;
 use core::ops::ControlFlow;
 
 use glam::Vec2;
-use serde::{Deserialize, Serialize};
 
-use crate::angle::{diff, wrap};
-use crate::funnel::{Aim, FunnelConfig, FunnelMemory, Goal, Internals, Mode};
-use crate::table::{EtaTable, Lookup};
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::{diff, wrap};
+use crate::base::minmax::MinMax;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::config::{Aim, FunnelConfig, Terminal};
+use crate::funnelling::goal::{BetaDir, FunnelMemory, Goal};
+use crate::funnelling::table::lookup::{EtaTable, Lookup};
+use crate::funnelling::update::{Internals, Mode, Update};
 
 /// Speed cap for final halting: the speed from which the vehicle can
 /// still brake to rest at the target with 80 % of its deceleration.
@@ -65,12 +66,12 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 }
 
 /// The position-tolerance phase of paper 000 Fig. 5, shared by the
-/// standard and the relaxed controllers ([`crate::relaxed`]): latches
+/// standard and the relaxed controllers ([`crate::funnelling::relaxed`]): latches
 /// [`FunnelMemory::position_met`] from the distance `d` to the goal centre
 /// and, once met, fills `out` with End_of_Steering or Orientation_only.
 /// Returns true when the position tolerance is met (then `out` is final).
 ///
-/// Halting goals (issue 13): End_of_Steering promises that the vehicle
+/// Halting goals: End_of_Steering promises that the vehicle
 /// comes to *rest* inside both tolerances, so both tests look at the rest
 /// pose, not only the current one. The position counts as met only when
 /// the whole braking disk lies inside the tolerance (`d` plus
@@ -83,23 +84,24 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 /// Orientation_only keeps turning towards β while braking. Non-halting
 /// goals keep the paper's test on the current pose.
 ///
-/// Goals moving by themselves (linear or circular motion; issue 13) are
-/// never latched: the paper's sequence, position then orientation, has
-/// the vehicle brake and turn inside the disk, and a moving disk walks
-/// off meanwhile (tune seed 1: End_of_Steering was declared outside it in
-/// 19.5 % of moving runs). End_of_Steering is declared only while the
-/// vehicle is inside the disk *and* faces β; a pass through the disk
-/// unoriented is counted ([`FunnelMemory::passes`]) and the approach goes
-/// on, led to where the goal will be ([`lead`]) along a runway that each
-/// pass lengthens ([`Approach::aim_depth`]). Tune seed 1: 100 % of
-/// declarations inside both tolerances, 99.7 % of moving goals finished
-/// (99.5 % latched), 84.6 % entered oriented (54.0 %).
+/// Goals moving by themselves (linear or circular motion) are never
+/// latched: the paper's sequence, position then orientation, has the
+/// vehicle brake and turn inside the disk, and a moving disk walks off
+/// meanwhile, so End_of_Steering would be declared outside it.
+/// End_of_Steering is declared only while the vehicle is inside the disk
+/// *and* faces β, so always inside both tolerances (the envelope study
+/// counts it, `steer envelope`); a pass through the disk unoriented is
+/// counted ([`FunnelMemory::passes`]) and the approach goes on, led to
+/// where the goal will be ([`lead`]) along a runway that each pass
+/// lengthens ([`Approach::aim_depth`]).
 ///
 /// A vehicle that goes round a moving goal without entering its disk
-/// counts laps ([`LapCount`], [`FunnelMemory::lap`]), and each lap
-/// lowers the speed the goal is approached with ([`lap_speed`]; issue 13:
-/// 6 of 2,000 moving goals, 27 of 10,000 in `examples/orbits.rs`, tune
-/// seed 1, were orbited for the whole time limit and never entered).
+/// counts laps ([`LapCount`](crate::funnelling::goal::LapCount),
+/// [`FunnelMemory::lap`]), and each lap lowers the speed the goal is
+/// approached with ([`lap_speed`]): at full speed a vehicle can orbit a
+/// small moving disk for the whole time limit without entering it
+/// (`examples/orbits.rs` lists the moving-goal runs of a seed that never
+/// enter).
 #[inline]
 pub fn tolerance_phase(
     p: &VehicleParams,
@@ -162,176 +164,45 @@ pub fn tolerance_phase(
     false
 }
 
-/// The laps of a vehicle circling a goal moving by itself without entering
-/// its disk ([`FunnelMemory::lap`]), and what counts them. Three ways round count:
-/// - a full turn of the heading, signed: the vehicle circles the goal or
-///   the point it aims at;
-/// - a *near miss*: the vehicle passes the goal (crosses the line through
-///   its centre across β, going β's way) beside the disk, within a
-///   turning radius at the desired speed: it came in along β but
-///   laterally off, and must come round again;
-/// - a lap's length of travel, `2π` turning radii at the desired speed
-///   plus `D_tol`, without coming closer to the goal than before: the
-///   vehicle hovers near the goal (or near its runway) as fast as it
-///   moves, getting no closer.
-///
-/// Each count starts afresh after a lap, and on entering the disk. The
-/// same state twice (the relaxed controller's fallback plans again)
-/// counts nothing. Constant cost: a few products and one square root.
-#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
-pub struct LapCount {
-    /// Laps so far.
-    pub laps: u8,
-    /// The heading turned (signed, rad) since the last lap was counted
-    /// or the disk was last entered.
-    turned: f32,
-    /// The heading at the previous update, rad (`turned` adds the change).
-    last_theta: f32,
-    /// `last_theta` and `last_pos` hold the previous update's (false until
-    /// the first update).
-    started: bool,
-    /// The position at the previous update, m.
-    last_pos: Vec2,
-    /// The least distance to the goal since the last lap, m.
-    best_d: f32,
-    /// The distance travelled since `best_d` last fell, m.
-    travel: f32,
-    /// The vehicle was ahead of the goal along β at the previous update
-    /// (a near miss crosses from behind to ahead beside the disk).
-    ahead: bool,
-}
-
-impl LapCount {
-    /// Counts this update (vehicle `s`, goal `g` at distance `d`, β's
-    /// direction `u`, turning radius at the desired speed `radius`).
-    #[inline]
-    fn observe(&mut self, s: &VehicleState, g: &Goal, u: Vec2, radius: f32, d: f32) {
-        if self.started && s.pos == self.last_pos {
-            return;
-        }
-        let r = s.pos - g.pos;
-        let ahead = r.dot(u) >= 0.0;
-        if d < g.d_tol || !self.started || d < self.best_d {
-            self.best_d = d;
-            self.travel = 0.0;
-        } else {
-            self.travel += (s.pos - self.last_pos).length();
-        }
-        if d < g.d_tol {
-            self.turned = 0.0;
-        } else if self.started {
-            self.turned += diff(s.theta, self.last_theta);
-            let missed = ahead && !self.ahead && r.perp_dot(u).abs() < g.d_tol + radius;
-            let stalled = self.travel > core::f32::consts::TAU * radius + g.d_tol;
-            if missed || stalled || self.turned.abs() >= core::f32::consts::TAU {
-                self.laps = self.laps.saturating_add(1);
-                self.turned = 0.0;
-                self.travel = 0.0;
-                self.best_d = d;
-            }
-        }
-        self.ahead = ahead;
-        self.last_theta = s.theta;
-        self.last_pos = s.pos;
-        self.started = true;
-    }
-}
-
 /// The desired speed a goal moving by itself is approached with after
 /// `laps` laps around it ([`FunnelMemory::lap`]): `v_d / (1 + laps/2)`,
 /// not below the slower of `v_d` and the larger of 0.5 m/s (scaled with
 /// the vehicle, the envelope's slowest desired speed) and twice the
 /// goal's speed (a goal is never caught below its own speed).
 ///
-/// Why (issue 13): the orbits were near misses at speed. A 0.1 m disk at
-/// 1.8–2 m/s is six steps wide and the vehicle turns on a 2.2–2.7 m
-/// radius; the terminal pursuit brought it in along β but it passed
-/// 1–3 cm outside the disk, came round on the same
-/// wide loop and missed again, lap after lap (left and right loops in
-/// turn for some), at full speed: the table's proactive speed `v_dt`
-/// (paper 000 §3–4) judges a *static* point reachable and never slowed
-/// it. Slower, the turning radius and the pursuit's carrot
-/// ([`Terminal::look`], which follows this speed) shrink, the lateral
-/// offset decays over a shorter run-in, and the next approach enters:
-/// the paper's proactive speed adaptation, driven by what the vehicle
-/// did rather than by the table. Only goals moving by themselves and
-/// only after a lap: every other trajectory keeps its bits. Tune seed 1:
-/// moving goals never entered 6 → 0 of 2,000 (standard and relaxed),
-/// oriented on entry 84.6 → 85.5 %, length/Dubins p90 2.47 → 2.29;
-/// `examples/orbits.rs -- 1 10000`: 27 → 0.
+/// Why: such orbits are near misses at speed. A 0.1 m disk at 1.8–2 m/s
+/// is six steps wide and the vehicle turns on a 2.2–2.7 m radius; the
+/// terminal pursuit brings it in along β but it can pass 1–3 cm outside
+/// the disk, come round on the same wide loop and miss again, lap after
+/// lap (left and right loops in turn for some), at full speed: the
+/// table's proactive speed `v_dt` (paper 000 §3–4) judges a *static*
+/// point reachable and never slows it. Slower, the turning radius and the
+/// pursuit's carrot ([`Terminal::look`], which follows this speed)
+/// shrink, the lateral offset decays over a shorter run-in, and the next
+/// approach enters: the paper's proactive speed adaptation, driven by
+/// what the vehicle did rather than by the table. Only goals moving by
+/// themselves and only after a lap: no other trajectory depends on it.
+/// `examples/orbits.rs -- 1 10000` lists the
+/// moving-goal runs of tune seed 1 that never enter the disk.
 #[inline]
 #[must_use]
 pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
     if laps == 0 {
         return v_d;
     }
-    let sc = crate::table::generate::VehicleScale::of(p);
+    let sc = crate::funnelling::table::spec::VehicleScale::of(p);
     let floor = v_d.at_most((0.5 * sc.speed).at_least(2.0 * g.vel.length()));
     (v_d / (1.0 + 0.5 * f32::from(laps))).at_least(floor)
 }
 
-/// The terminal line pursuit: the last stretch before the tolerance disk,
-/// steered along the goal's line instead of by the table.
-///
-/// Why: the η table predicts the heading on reaching a point, and close to
-/// a point that prediction is ill-conditioned. Seeking a point at 0.3 m
-/// with a lateral offset of 1 cm already means a heading 2° off, so at
-/// ε_tol 2° the funnelled approaches that were right to within the
-/// table's interpolation error still entered the disk 2–4° off (issue 13,
-/// tune seed: 67 % oriented on entry at ε_tol 2°, D ≥ 5 m). Once the
-/// vehicle is behind the disk, close to the line through the goal along β
-/// and already nearly facing β, it pursues a carrot on that line one
-/// `lookahead`-second of travel ahead of its projection (pure pursuit):
-/// the lateral offset and the heading error decay together, and the disk
-/// is entered along β. Measured on the envelope (tune seed 1): median
-/// entry error 4.4° → 2.9°, ε_tol 2° cells at D ≥ 5 m 73 % → 85 % at
-/// worst. It replaces neither the table nor the funnel: a vehicle that is
-/// not nearly lined up is funnelled as before.
-#[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
-#[serde(default, deny_unknown_fields, rename_all = "camelCase")]
-pub struct Terminal {
-    /// Carrot distance ahead of the projection, as seconds of travel at
-    /// the current speed (at least 0.5 m/s), s.
-    pub lookahead: f32,
-    /// Largest heading error |β − θ| at which the stage starts, rad.
-    pub heading: f32,
-    /// The stage starts within this many carrot distances of the disk.
-    pub range: f32,
-}
-
-impl Terminal {
-    /// The carrot distance, m: `lookahead` seconds at the current speed,
-    /// the goal's desired speed if higher, and at least 0.5 m/s (seconds
-    /// and speed scaled with the vehicle, [`crate::table::generate::VehicleScale`]).
-    #[inline]
-    #[must_use]
-    pub fn look(&self, p: &VehicleParams, s: &VehicleState, g: &Goal) -> f32 {
-        // Seconds and the 0.5 m/s floor are the pedestrian's, scaled with
-        // the vehicle (×1 for the pedestrian; issue 14).
-        let sc = crate::table::generate::VehicleScale::of(p);
-        self.lookahead * sc.time() * s.v.at_least(g.speed).at_least(0.5 * sc.speed)
-    }
-}
-
-impl Default for Terminal {
-    fn default() -> Self {
-        Self {
-            lookahead: 1.0,
-            heading: 0.5,
-            range: 1.0,
-        }
-    }
-}
-
-/// Where to aim for a goal in motion (issue 13): the goal as it will be
+/// Where to aim for a goal in motion: the goal as it will be
 /// when the vehicle, going straight at speed `v`, meets it.
 ///
 /// Why: the η table predicts the heading on reaching a *fixed* point. A
 /// vehicle funnelled towards where a moving goal is now arrives where it
-/// was, facing β but behind it, then chases it from the wrong side: on the
-/// envelope (tune seed 1, goals at up to 0.4 m/s) 54 % of moving goals
-/// were entered oriented against 83 % of static ones, and 10 in 2,000 were
-/// never entered. Led to the interception point, the funnel shapes the
+/// was, facing β but behind it, then chases it from the wrong side:
+/// fewer moving goals are entered oriented than static ones, and some
+/// are never entered. Led to the interception point, the funnel shapes the
 /// approach to where the goal will be. The interception time τ solves
 /// |r + v_g τ| = v τ (r the goal's offset, v_g its velocity); when the goal
 /// is about as fast as the vehicle or faster, τ = D / v. The path is a
@@ -367,59 +238,11 @@ pub fn seen_from(s: &VehicleState, point: Vec2) -> (f32, f32, f32) {
     let rel = point - s.pos;
     let d = rel.length();
     let bearing = if d > 1e-6 {
-        crate::trig::atan2(rel.y, rel.x)
+        crate::base::trig::atan2(rel.y, rel.x)
     } else {
         s.theta
     };
     (d, bearing, diff(bearing, s.theta))
-}
-
-/// The unit vector of a goal's orientation β, kept in the agent's
-/// [`FunnelMemory`] from one update to the next.
-///
-/// Why (issue 17): the entry aim and the terminal pursuit need β's
-/// direction every update, and [`crate::trig::sin_cos`] (f64, for bits that
-/// are the same natively and in wasm) was about a tenth of a world step
-/// (`examples/world_bench.rs`, 1,000 agents: 186 → 170 ns per agent update
-/// without it). A goal's β changes only with the goal (or every step for
-/// a goal that follows an agent or circles), so the vector is recomputed
-/// only when β's bits differ from the kept ones: the same vector, the same
-/// bits. A cache, not state: any two compare equal, and it is not
-/// serialised.
-#[derive(Clone, Copy, Debug)]
-pub struct BetaDir {
-    /// β's bits, `u32::MAX` (a NaN no valid goal has) when empty.
-    beta: u32,
-    dir: Vec2,
-}
-
-impl Default for BetaDir {
-    fn default() -> Self {
-        Self {
-            beta: u32::MAX,
-            dir: Vec2::NAN,
-        }
-    }
-}
-
-impl PartialEq for BetaDir {
-    fn eq(&self, _: &Self) -> bool {
-        true
-    }
-}
-
-impl Eq for BetaDir {}
-
-impl BetaDir {
-    /// `(cos β, sin β)`: kept, or computed and kept.
-    #[inline]
-    pub fn unit(&mut self, beta: f32) -> Vec2 {
-        if beta.to_bits() != self.beta {
-            self.dir = crate::trig::unit(beta);
-            self.beta = beta.to_bits();
-        }
-        self.dir
-    }
 }
 
 /// One update's view of its goal, once the tolerance phase has let it
@@ -460,13 +283,10 @@ impl<'a> Approach<'a> {
     /// approach and the internals filled so far (`d`, `alpha`, `gamma` =
     /// bearing, `v_dt` = `v_d`, reachable).
     #[inline(always)]
-    pub fn begin(
-        table: &'a EtaTable,
-        p: &'a VehicleParams,
-        s: &'a VehicleState,
-        g: &Goal,
-        mem: &'a mut FunnelMemory,
-    ) -> ControlFlow<Internals, (Self, Internals)> {
+    pub fn begin(u: &'a mut Update<'_>) -> ControlFlow<Internals, (Self, Internals)> {
+        let (table, p, g): (&'a EtaTable, &'a VehicleParams, &Goal) = (u.table, u.params, u.goal);
+        let s: &'a VehicleState = &*u.state;
+        let mem: &'a mut FunnelMemory = &mut *u.memory;
         let (d, bearing, alpha) = seen_from(s, g.pos);
         let mut v_d = g.speed;
         if g.halting {
@@ -576,10 +396,10 @@ impl<'a> Approach<'a> {
     /// point's depth, or for a goal in motion ([`Goal::vel`]) the start
     /// of a *runway* inside the terminal pursuit's reach.
     ///
-    /// Why: near a moving goal, the vehicle aimed at the disk fell in
-    /// beside it and rode along, facing the goal's way instead of β, for
-    /// as long as the goal moved (issue 13, tune seed 1: 4.6 % of moving
-    /// goals never finished, nearly all with D_tol ≤ 0.25 m). A static
+    /// Why: near a moving goal, a vehicle aimed at the disk falls in
+    /// beside it and rides along, facing the goal's way instead of β, for
+    /// as long as the goal moves (on the tune seed 1 of the envelope study,
+    /// mostly goals with D_tol ≤ 0.25 m). A static
     /// goal stops such a vehicle: it brakes inside and turns (paper 000
     /// §5); a moving one walks off meanwhile. Aimed at the runway start,
     /// the funnel brings the vehicle onto β's line behind the goal, and
@@ -605,17 +425,17 @@ impl<'a> Approach<'a> {
     /// β's line one carrot distance ([`Terminal::look`]) ahead of the
     /// vehicle's projection.
     ///
-    /// Why (issue 13): a vehicle that reached the runway start unaligned
-    /// sought it at close range, and a goal coming against β carried the
-    /// point on nearly as fast as the vehicle could follow: the vehicle
-    /// hovered at it, turning this way and that, never facing β (tune
-    /// seed 1, a goal at 0.37 m/s and a vehicle asked for 0.5 m/s: 150 s;
-    /// slowing down cannot help, the vehicle is at its floor). There the
-    /// runway has done its work: pursuing the line turns the vehicle onto
-    /// it, facing the goal that comes to meet it, and the terminal pursuit
-    /// takes over. Without the two conditions the carrot cost goals that
-    /// the funnel brings round in its own time (two large disks of the
-    /// tune seed were never finished).
+    /// Why: a vehicle that reaches the runway start unaligned seeks it at
+    /// close range, and a goal coming against β carries the point on
+    /// nearly as fast as the vehicle can follow: seeking it, the vehicle
+    /// would hover at it, turning this way and that, never facing β (on
+    /// tune seed 1, a goal at 0.37 m/s and a vehicle asked for 0.5 m/s, for
+    /// the whole 150 s; slowing down cannot help, the vehicle is at its
+    /// floor). There the runway has done its work: pursuing the line turns
+    /// the vehicle onto it, facing the goal that comes to meet it, and the
+    /// terminal pursuit takes over. The two conditions keep the carrot
+    /// from goals that the funnel brings round in its own time (without
+    /// them, large disks of the tune seed are never finished).
     #[inline]
     #[must_use]
     pub fn seen_aim(&self, g: &Goal, t: Option<&Terminal>) -> (f32, f32, f32) {
@@ -666,8 +486,8 @@ impl<'a> Approach<'a> {
     /// heading error). Constant cost: the heading test, then (nearly
     /// facing β only) β's sin/cos and two dot products, and when it
     /// steers one atan2. The heading is tested first so that most updates
-    /// skip the sin/cos: computing it up front cost 15 % of an update
-    /// (1,482 against 1,289 instructions, `examples/icount.rs`).
+    /// skip the sin/cos, a noticeable share of an update's instructions
+    /// (`examples/icount.rs` counts them).
     #[inline]
     pub fn terminal(&self, t: &Terminal, g: &Goal, out: &mut Internals) -> bool {
         let s = self.s;

@@ -6,11 +6,10 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals};
-use crate::relaxed::{RelaxedConfig, RelaxedInternals};
-use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::update::{Internals, Update};
 
 /// Which controller steers the agents of a [`crate::world::World`].
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
@@ -55,43 +54,35 @@ impl ControllerKind {
     /// One update's plan with this controller (no move): what a world
     /// without avoidance and one with it both ask each agent. `ri` is
     /// written by the relaxed controller only.
-    #[allow(clippy::too_many_arguments)] // the two configs and the agent's parts
     #[inline]
     pub fn plan(
         self,
         funnel: &FunnelConfig,
         relaxed: &RelaxedConfig,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
+        u: &mut Update<'_>,
         ri: &mut RelaxedInternals,
     ) -> Internals {
         match self {
-            Self::Standard => funnel.plan(table, p, s, g, mem),
-            Self::Seek => funnel.plain_seek().plan(table, p, s, &g.unoriented(), mem),
-            Self::Relaxed => relaxed.plan(funnel, table, p, s, g, mem, ri),
+            Self::Standard => funnel.plan(u),
+            Self::Seek => funnel
+                .plain_seek()
+                .plan(&mut u.towards(&u.goal.unoriented())),
+            Self::Relaxed => relaxed.plan(funnel, u, ri),
         }
     }
 
     /// One update with this controller: [`ControllerKind::plan`] and the
     /// move (the committed seek step every controller ends with).
-    #[allow(clippy::too_many_arguments)] // as `plan`
     #[inline]
     pub fn step(
         self,
         funnel: &FunnelConfig,
         relaxed: &RelaxedConfig,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &mut VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
+        u: &mut Update<'_>,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        let out = self.plan(funnel, relaxed, table, p, s, g, mem, ri);
-        seek_step_committed(p, s, out.gamma, out.v_dt);
+        let out = self.plan(funnel, relaxed, u, ri);
+        seek_step_committed(u.params, u.state, out.gamma, out.v_dt);
         out
     }
 }
@@ -118,35 +109,19 @@ impl Controller {
     /// One update with whichever controller; `ri` is reset for the
     /// standard one.
     #[inline]
-    pub fn step(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &mut VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
-        ri: &mut RelaxedInternals,
-    ) -> Internals {
+    pub fn step(&self, u: &mut Update<'_>, ri: &mut RelaxedInternals) -> Internals {
         if let Self::Standard(_) = self {
             *ri = RelaxedInternals::default();
         }
         let (kind, f, r) = self.parts();
-        kind.step(f, &r, table, p, s, g, mem, ri)
+        kind.step(f, &r, u, ri)
     }
 
     /// One plan (no motion), for the benches.
     #[inline]
     #[must_use]
-    pub fn plan(
-        &self,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
-        ri: &mut RelaxedInternals,
-    ) -> Internals {
+    pub fn plan(&self, u: &mut Update<'_>, ri: &mut RelaxedInternals) -> Internals {
         let (kind, f, r) = self.parts();
-        kind.plan(f, &r, table, p, s, g, mem, ri)
+        kind.plan(f, &r, u, ri)
     }
 }

@@ -1,4 +1,4 @@
-//! The predicted seek path ("ghost", issue 15): where plain seek would take
+//! The predicted seek path ("ghost"): where plain seek would take
 //! the vehicle from its current state to a point, and the final direction
 //! it would arrive with — the path whose end defines η (paper 000 §3,
 //! Fig. 1c; paper 001 §3, Fig. 2).
@@ -11,7 +11,7 @@
 //!
 //! Design: the path is not re-implemented. It is
 //! [`simulate_reach_traced`], the very simulation the table generator runs
-//! ([`crate::table`]), with a visitor that keeps the positions; η and the
+//! ([`crate::funnelling::table`]), with a visitor that keeps the positions; η and the
 //! outcome are therefore bit-identical to the generator's for the same
 //! inputs (`tests/ghost.rs`). The number of points is bounded: positions are
 //! appended to a caller's buffer, and whenever `max_points` is reached every
@@ -31,10 +31,11 @@
 
 use glam::Vec2;
 
-use crate::funnel::{Goal, Internals};
-use crate::seek::{simulate_reach_traced, ReachLimits, ReachOutcome};
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::goal::Goal;
+use crate::funnelling::seek::{simulate_reach_traced, ReachLimits, ReachOutcome};
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::Internals;
 
 /// Fewest points a ghost may be asked to keep (start, a middle, the end).
 pub const MIN_GHOST_POINTS: usize = 4;
@@ -133,12 +134,12 @@ pub fn seek_ghost(
         }
     }
     let d0 = target - start.pos;
-    let radial0 = crate::trig::atan2(d0.y, d0.x);
+    let radial0 = crate::base::trig::atan2(d0.y, d0.x);
     match outcome {
         ReachOutcome::Reached { eta, time, length } => Ghost {
             reached: true,
             eta,
-            final_dir: crate::angle::wrap(radial0 + eta),
+            final_dir: crate::base::angle::wrap(radial0 + eta),
             time,
             length,
             speed: v_d,
@@ -190,7 +191,10 @@ pub fn update_ghost(
     out.clear();
     let (target, v) = if inter.aim_d > 0.0 {
         let dir = s.theta + inter.aim_alpha;
-        (s.pos + crate::trig::unit(dir) * inter.aim_d, inter.v_query)
+        (
+            s.pos + crate::base::trig::unit(dir) * inter.aim_d,
+            inter.v_query,
+        )
     } else {
         (g.pos, g.speed.max(table.axis(4)[0]))
     };

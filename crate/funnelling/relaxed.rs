@@ -5,11 +5,12 @@
 //! `Goal::d_tol`) and an orientation interval T = [β − τ, β + τ]
 //! (τ = `Goal::eps_tol`): any point of the disk is a valid target and any
 //! final orientation in T is valid. The standard controller
-//! ([`crate::funnel`]) still aims at the disk centre and at β exactly,
+//! ([`crate::funnelling::funnel`]) still aims at the disk centre and at β exactly,
 //! which curves paths artificially (paper 001 Fig. 6b). The relaxed
 //! controller instead, every update:
 //!
-//! 1. takes the table ring (a sampled distance `R` of [`EtaTable::distances`])
+//! 1. takes the table ring (a sampled distance `R` of
+//!    [`EtaTable::distances`](crate::funnelling::table::lookup::EtaTable::distances))
 //!    nearest the disk centre and intersects it with the disk: the
 //!    restricted arc 𝒜 = [α_min, α_max] of candidate directions (paper 001
 //!    §4.2.3: the search is restricted to keep the cost constant);
@@ -36,7 +37,7 @@
 //!   vehicle), so 𝒜 is clipped at ±π on the side of the centre's bearing.
 //! - **Vehicle inside the disk**: the position is met; orientation is then
 //!   completed exactly as in the standard controller
-//!   ([`crate::funnel::tolerance_phase`]).
+//!   ([`crate::funnelling::approach::tolerance_phase`]).
 //! - **Margins**: the relaxed point lies on the disk boundary at the arc
 //!   ends and Δη = 0 only puts the prediction at T's edge, so the search
 //!   uses a shrunk disk and interval (`disk_margin`, `orientation_margin`)
@@ -49,30 +50,30 @@
 //!   (Δη at α_r, hence seek or funnel) is re-measured with the full lookup.
 //!
 //! Two readings of *where* to aim ([`RelaxedAim`]), measured side by side
-//! on the envelope of issue 13 (tune seed 1, held-out seed 2):
+//! by the envelope study (`steer envelope`: tune seed 1, held-out seed 2;
+//! variants `relaxed` and `relaxed-paper-arc`):
 //! - [`RelaxedAim::PaperArc`], the paper's literal reading above. Its
 //!   relaxed point lies on the ring through the disk, ~D ahead, and is
 //!   chosen afresh every update at the edge of T, so it slides as the
-//!   vehicle moves and the heading on *entering* the disk drifts: 42 % of
-//!   runs enter oriented against 56 % for the standard controller (tune
-//!   seed, 600 runs). The paper's design cannot orient on entry as well
-//!   as standard: letting any aim point slide across the disk cost 5–8
-//!   points of the entry rate in every variant tried.
+//!   vehicle moves and the heading on *entering* the disk drifts: fewer
+//!   runs enter oriented than with the standard controller. An aim point
+//!   that slides across the disk costs oriented entries, so the paper's
+//!   design cannot orient on entry as well as standard.
 //! - [`RelaxedAim::Entry`], the default: aim at the *entry point* of the
 //!   disk, `d_tol − r_reach` before the centre along β (`r_reach` the
 //!   table's reach radius, so reaching it in the table's sense is entering
 //!   the disk), a point fixed in the world; no orientation correction
 //!   while the prediction lies inside T shrunk to `orientation_margin`·τ.
 //!   The table then predicts the heading at entry, which is what a region
-//!   goal asks for: 70 % oriented on entry against 56 % standard (tune
-//!   seed), the same as standard for disks no larger than `r_reach`,
-//!   where the entry point is the centre.
+//!   goal asks for. The standard controller aims there too by default
+//!   ([`crate::funnelling::config::Aim::Entry`]); for disks no larger than
+//!   `r_reach` the entry point is the centre.
 //!
 //! Neither aim orbits near the disk. Closer than the first sampled ring
-//! `D_η` the paper's relaxed point fell inside the vehicle's turning
-//! circle and was sought at full speed (issue 13: 5–8 % of runs circled
-//! it for 150 s); below `D_η` both now seek at the orbit-free speed, like
-//! the standard controller.
+//! `D_η` the paper's relaxed point can fall inside the vehicle's turning
+//! circle, and sought at full speed it would be circled for the whole time
+//! limit; below `D_η` both aims seek at the orbit-free speed, like the
+//! standard controller.
 //!
 //! Cost: constant per update, no allocation — paper arc: two cheap η
 //! reads, one full lookup, the μ bound's interpolation and a ≤ 16-sample
@@ -83,20 +84,21 @@ use core::ops::ControlFlow;
 
 use serde::{Deserialize, Serialize};
 
-use crate::angle::{diff, wrap};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
+use crate::base::angle::{diff, wrap};
+use crate::base::vehicle::ParamError;
 use crate::funnelling::approach::Approach;
-pub use crate::funnelling::controller::{Controller, ControllerKind};
-use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::goal::Goal;
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::update::{Internals, Mode, Update};
 
 /// How η is evaluated at the two ends of the restricted arc 𝒜.
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
 #[serde(rename_all = "camelCase")]
 pub enum EndEta {
     /// The paper's cheaper reading (§4.2.4): linear in α on the ring,
-    /// nearest sample on ω, v_c, v_d ([`EtaTable::eta_ring_linear`]).
+    /// nearest sample on ω, v_c, v_d
+    /// ([`EtaTable::eta_ring_linear`](crate::funnelling::table::lookup::EtaTable::eta_ring_linear)).
     #[default]
     Linear,
     /// The full multilinear interpolation (16 non-zero corners on a ring).
@@ -125,9 +127,9 @@ pub struct RelaxedConfig {
     /// Fraction of the disk radius searched ([`RelaxedAim::PaperArc`]) for the relaxed point (0, 1].
     pub disk_margin: f32,
     /// Fraction of τ used for the interval T searched (0, 1]. Default
-    /// 0.25, like the standard controller's seek threshold: with 0.8 the
-    /// prediction sat at T's edge and entries fell just outside it (paper
-    /// arc: 38.3 % oriented on entry with 0.8, 46.8 % with 0.25, tune seed).
+    /// 0.25, like the standard controller's seek threshold: with a margin
+    /// near 1 (0.8) the prediction sits at T's edge and entries fall just
+    /// outside it (chosen on the envelope study's tune seed 1).
     pub orientation_margin: f32,
     /// η at the arc ends.
     pub end_eta: EndEta,
@@ -356,7 +358,7 @@ impl RelaxedConfig {
     /// # Errors
     /// The offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        use crate::funnelling::ranges as r;
+        use crate::base::ranges as r;
         r::DISK_MARGIN.check(self.disk_margin)?;
         r::ORIENTATION_MARGIN.check(self.orientation_margin)?;
         Ok(())
@@ -368,24 +370,20 @@ impl RelaxedConfig {
     /// disk centre and `eta`, `delta_eta`, `mu`, `gamma` to the relaxed
     /// point (Δη re-measured against T with the full lookup's η).
     #[must_use]
-    #[allow(clippy::too_many_arguments)]
     pub fn plan(
         &self,
         funnel: &FunnelConfig,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
+        u: &mut Update<'_>,
         ri: &mut RelaxedInternals,
     ) -> Internals {
         *ri = RelaxedInternals::default();
-        let (a, mut out) = match Approach::begin(table, p, s, g, mem) {
+        let (a, mut out) = match Approach::begin(u) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
+        let (table, s) = (a.table, a.s);
         // Aim at the goal as the vehicle will meet it (approach::lead).
-        let (g_now, led) = (g, a.goal);
+        let led = a.goal;
         let g = &led;
         let (d, alpha_c) = (a.d, a.alpha);
         // A goal that follows an agent: the paper's relaxed point, as the
@@ -398,7 +396,7 @@ impl RelaxedConfig {
             // radius D, whose ends the vehicle keeps circling: seek the
             // centre at the orbit-free speed, as the standard does.
             ri.branch = Fig7Branch::Fallback;
-            return funnel.plan(table, p, s, g_now, mem);
+            return funnel.plan(u);
         }
         // 1. The restricted arc 𝒜 on the ring nearest the disk centre.
         let r = self.disk_margin * g.d_tol;
@@ -415,7 +413,7 @@ impl RelaxedConfig {
         }
         let cos_h = ((ring * ring + d * d - r * r) / (2.0 * ring * d)).clamp(-1.0, 1.0);
         // acos from the deterministic atan2 (libm's acos differs per target).
-        let h = crate::trig::atan2((1.0 - cos_h * cos_h).max(0.0).sqrt(), cos_h);
+        let h = crate::base::trig::atan2((1.0 - cos_h * cos_h).max(0.0).sqrt(), cos_h);
         let a_min = (alpha_c - h).max(-PI);
         let a_max = (alpha_c + h).min(PI);
         // 2. F from η at the two arc ends.
@@ -433,7 +431,7 @@ impl RelaxedConfig {
         };
         let (Some(e0), Some(e1)) = ends else {
             ri.branch = Fig7Branch::Fallback;
-            return funnel.plan(table, p, s, g, mem);
+            return funnel.plan(&mut u.towards(&led));
         };
         let f_min = a_min + e0;
         let f_max = f_min + wrap(a_max + e1 - f_min);
@@ -442,7 +440,7 @@ impl RelaxedConfig {
         let tau = self.orientation_margin * g.eps_tol;
         let c = relaxed_direction(a_min, a_max, f_min, f_max, tc, tau);
         let dir = s.theta + c.alpha_r;
-        let point = s.pos + crate::trig::unit(dir) * ring;
+        let point = s.pos + crate::base::trig::unit(dir) * ring;
         *ri = RelaxedInternals {
             branch: c.branch,
             ring,
@@ -475,14 +473,14 @@ impl RelaxedConfig {
 
     /// [`RelaxedAim::Entry`] once the position tolerance is not met: the
     /// standard update aimed at the disk's entry point
-    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnel::Aim::Entry`]),
+    /// ([`FunnelConfig::aim_and_funnel`] with [`crate::funnelling::config::Aim::Entry`]),
     /// with the orientation interval T shrunk to `orientation_margin`·τ as
     /// its seek threshold: no correction while the predicted heading lies
     /// inside it, else a correction towards β itself (correcting only to
-    /// T's edge left entries just outside it: 67.8 % oriented on entry
-    /// against 69.7 % re-centred, tune seed). The standard controller took
-    /// this aim over (issue 13), so on a disk goal the two now coincide;
-    /// the paper's relaxed point is [`RelaxedAim::PaperArc`].
+    /// T's edge leaves entries just outside it; envelope study, tune seed
+    /// 1). The standard controller aims at the entry point by default as
+    /// well, so on a disk goal the two coincide; the paper's relaxed point
+    /// is [`RelaxedAim::PaperArc`].
     fn plan_entry(
         &self,
         funnel: &FunnelConfig,
@@ -492,7 +490,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         let cfg = FunnelConfig {
-            aim: crate::funnel::Aim::Entry,
+            aim: crate::funnelling::config::Aim::Entry,
             seek_threshold: self.orientation_margin,
             ..*funnel
         };
@@ -521,19 +519,14 @@ impl RelaxedConfig {
     }
 
     /// One relaxed update: plan, then one seek step.
-    #[allow(clippy::too_many_arguments)]
     pub fn step(
         &self,
         funnel: &FunnelConfig,
-        table: &EtaTable,
-        p: &VehicleParams,
-        s: &mut VehicleState,
-        g: &Goal,
-        mem: &mut FunnelMemory,
+        u: &mut Update<'_>,
         ri: &mut RelaxedInternals,
     ) -> Internals {
-        let out = self.plan(funnel, table, p, s, g, mem, ri);
-        seek_step_committed(p, s, out.gamma, out.v_dt);
+        let out = self.plan(funnel, u, ri);
+        seek_step_committed(u.params, u.state, out.gamma, out.v_dt);
         out
     }
 }

@@ -5,16 +5,16 @@
 //! heading error, `ω̇ = Kp·α − Kd·ω`, where α is the angle from the forward
 //! direction to the *heading direction*: the radial direction to the target
 //! in plain seek mode, the modulated direction γ in funnelling
-//! (crate::funnel). The forward one tracks the desired speed, relaxed to
+//! (crate::funnelling::funnel). The forward one tracks the desired speed, relaxed to
 //! `v_dr = min(v_d, A/|ω|)` so that the normal acceleration stays bounded;
 //! the vehicle model ([`VehicleParams::integrate`]) enforces every limit.
 
-use crate::minmax::MinMax;
+use crate::base::minmax::MinMax;
 use glam::Vec2;
 
-use crate::angle::{diff, wrap};
-use crate::trig;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::{diff, wrap};
+use crate::base::trig;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 
 /// Commanded angular acceleration of the PD heading controller, towards
 /// absolute heading `heading` (rad).
@@ -148,7 +148,7 @@ pub fn simulate_reach(
 /// vehicle passes: the start, each step's, and on arrival the point where
 /// the path crosses the reach circle (interpolated like the heading, or the
 /// end of the straight run the early exit skips). The one simulation behind
-/// both the η table ([`crate::table`]) and the predicted seek path the
+/// both the η table ([`crate::funnelling::table`]) and the predicted seek path the
 /// pages draw ([`crate::funnelling::ghost`]); with a no-op `visit` it is
 /// `simulate_reach` itself (the call is generic and inlined).
 pub fn simulate_reach_traced(

@@ -1,4 +1,4 @@
-//! Vehicle files (issue 14): `eta-table --vehicle FILE`, `steer envelope
+//! Vehicle files: `eta-table --vehicle FILE`, `steer envelope
 //! --vehicle FILE` and the lab's reference vehicles read one JSON object,
 //! the scenarios' `vehicle` schema ([`VehicleParams`], camelCase keys,
 //! unknown keys refused, missing keys the pedestrian's) either bare or
@@ -20,8 +20,8 @@
 
 use serde::Deserialize;
 
-use crate::table::generate::check_vehicle;
-use crate::vehicle::VehicleParams;
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::table::spec::check_vehicle;
 
 /// A parsed vehicle file.
 #[derive(Clone, Debug, PartialEq)]

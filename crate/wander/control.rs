@@ -22,8 +22,8 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, WanderError};
-use crate::angle;
-use crate::trig;
+use crate::base::angle;
+use crate::base::trig;
 
 /// Which angular quantity the command sets (paper §1).
 #[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize)]

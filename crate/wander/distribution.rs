@@ -16,7 +16,7 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, in_range_u, positive, WanderError};
 use super::noise;
-use crate::rng::Rng;
+use crate::base::rng::Rng;
 
 /// Which distribution a random source draws from.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

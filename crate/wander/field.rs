@@ -21,9 +21,9 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{in_range, in_range_u, WanderError};
 use super::noise;
-use crate::angle;
-use crate::rng::Rng;
-use crate::trig;
+use crate::base::angle;
+use crate::base::rng::Rng;
+use crate::base::trig;
 
 /// How grid vectors are drawn.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]

@@ -23,8 +23,8 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, in_range_u, positive, WanderError, WORLD_LIMIT};
 use super::time_fn::Shape;
-use crate::rng::Rng;
-use crate::trig;
+use crate::base::rng::Rng;
+use crate::base::trig;
 
 /// Most points a generated path may have.
 pub const MAX_POINTS: u64 = 200_000;
@@ -367,6 +367,6 @@ impl PathFollower {
         }
         let target = self.point_at(s + self.dir * self.lookahead);
         let d = target - pos;
-        crate::angle::diff(trig::atan2(d.y, d.x), heading)
+        crate::base::angle::diff(trig::atan2(d.y, d.x), heading)
     }
 }

@@ -18,7 +18,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range, in_range_u, WanderError};
-use crate::rng::Rng;
+use crate::base::rng::Rng;
 
 /// A transition-table source.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

@@ -15,9 +15,9 @@
 //! | [`markov`] | §6 | transition tables, two-table variant |
 //! | [`response`] | §6 | a transition table read as a smooth 2D response curve |
 //! | [`generated_path`] | §7 | fractal and circle-with-sines paths, following |
-//! | [`config`] | all | [`WanderConfig`]: the JSON configuration of a pipeline and its validation |
-//! | [`pipeline`] | all | [`Wanderer`]: the pipeline built from a config, stepped, traced; presets |
-//! | [`error`] | — | [`WanderError`] |
+//! | [`config`] | all | [`WanderConfig`](config::WanderConfig): the JSON configuration of a pipeline and its validation |
+//! | [`pipeline`] | all | [`Wanderer`](pipeline::Wanderer): the pipeline built from a config, stepped, traced; presets |
+//! | [`error`] | — | [`WanderError`](error::WanderError) |
 
 pub mod config;
 pub mod control;
@@ -31,6 +31,3 @@ pub mod pipeline;
 pub mod response;
 pub mod time_fn;
 pub mod timed;
-
-pub use error::WanderError;
-pub use pipeline::{WanderConfig, WanderPreset, Wanderer};

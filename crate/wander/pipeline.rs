@@ -16,7 +16,7 @@
 //! table and the path follower produce angles directly.
 //!
 //! Everything random comes from one seeded [`Rng`] (streams per concern),
-//! and every angle function is the deterministic one from [`crate::trig`],
+//! and every angle function is the deterministic one from [`crate::base::trig`],
 //! so a config and a seed give the same trajectory bit for bit natively and
 //! in WebAssembly. A step allocates nothing: the trace is a preallocated
 //! ring buffer.
@@ -33,7 +33,7 @@ use super::generated_path::PathFollower;
 use super::markov::Markov;
 use super::time_fn::TimeFn;
 use super::timed::Hold;
-use crate::rng::Rng;
+use crate::base::rng::Rng;
 
 /// A built source.
 #[derive(Clone, Debug, PartialEq)]
@@ -167,7 +167,7 @@ impl Wanderer {
         let mut build = Rng::with_stream(config.seed, 0x57a7);
         let mut agent = Agent {
             pos: Vec2::new(config.agent.x, config.agent.y),
-            heading: crate::angle::wrap(config.agent.heading_deg.to_radians()),
+            heading: crate::base::angle::wrap(config.agent.heading_deg.to_radians()),
             speed: config.agent.speed,
         };
         let source = Source::build(&config.source, &mut build, &mut agent)?;

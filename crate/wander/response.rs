@@ -22,7 +22,7 @@
 //! P(next < 15°) for a current angle of 14.9° against 15.1° differs by
 //! 0.75 with the paper's table and under 0.01 with the curve.
 
-use crate::rng::Rng;
+use crate::base::rng::Rng;
 
 /// Ranges a response curve accepts (segments are kept on the stack).
 pub const MAX_RANGES: usize = 16;

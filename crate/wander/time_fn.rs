@@ -19,8 +19,8 @@ use serde::{Deserialize, Serialize};
 
 use super::error::{finite, in_range_u, positive, WanderError};
 use super::noise;
-use crate::rng::Rng;
-use crate::trig;
+use crate::base::rng::Rng;
+use crate::base::trig;
 
 /// A noise sequence over steps, used as an envelope or a blend.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]

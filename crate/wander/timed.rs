@@ -11,7 +11,7 @@
 use serde::{Deserialize, Serialize};
 
 use super::error::{in_range_u, WanderError};
-use crate::rng::Rng;
+use crate::base::rng::Rng;
 
 /// When the command may change.
 #[derive(Clone, Debug, PartialEq, Eq, Serialize, Deserialize)]

@@ -1,13 +1,13 @@
-//! The generator's reach simulations run several at a time, interleaved
-//! (issue 14: the table build in the browser had to fit in 3 s).
+//! The generator's reach simulations run several at a time, interleaved,
+//! so that a table build takes less time natively.
 //!
 //! # Problem
-//! One step of [`crate::seek::simulate_reach`] is a chain of dependent
+//! One step of [`crate::funnelling::seek::simulate_reach`] is a chain of dependent
 //! operations: position → bearing (`atan2`, a division and a polynomial) →
 //! PD command → angular speed → heading → `sin_cos` (a degree-12 polynomial
 //! in f64) → position. Each waits for the one before, so a lone simulation
-//! leaves the processor idle most of the time: measured 34 ns per step
-//! natively, about 150 cycles, for about 100 instructions. The pedestrian's
+//! leaves the processor idle most of the time: a step takes several
+//! cycles for each of its about 100 instructions. The pedestrian's
 //! table is 42 million steps (car 75 million at its own step, robot 21 million).
 //!
 //! # Design
@@ -21,25 +21,23 @@
 //! target was unreachable (paper 001 Fig. 3c), else the next entry, so no
 //! lane idles while work remains.
 //!
-//! Measured, one thread, CPU time: natively 26 % faster than one at a time
-//! (pedestrian 1.46 → 1.07 s, car 2.55 → 1.88 s at the same step). In wasm
-//! V8 showed no gain (pedestrian at v_max 1.2: 2.25 s with four lanes,
-//! 2.17 s with two, against 2.08 s for the plain per-entry path; measured
-//! beside an inline rounding since reverted), so [`TableSpec::entries`]
-//! uses this module natively only.
+//! Natively, one thread, this is faster than one simulation at a time
+//! (`eta-table --threads 1` times a build); in wasm V8 gains nothing from
+//! two or four lanes over the plain per-entry path, so
+//! [`TableSpec::entries`] uses this module natively only.
 //!
 //! # Fallback
 //! [`TableSpec::entry`] keeps the one-at-a-time path (tests compare the two).
 
 use glam::Vec2;
 
-use crate::angle::{diff, wrap};
-use crate::minmax::MinMax;
-use crate::table::{FLAG_ETA_VALID, FLAG_REACHABLE};
-use crate::trig;
-use crate::vehicle::{Integrator, VehicleParams, VehicleState};
+use crate::base::angle::{diff, wrap};
+use crate::base::minmax::MinMax;
+use crate::base::trig;
+use crate::base::vehicle::{Integrator, VehicleParams, VehicleState};
+use crate::funnelling::table::{format::FLAG_ETA_VALID, format::FLAG_REACHABLE};
 
-use super::generate::{Entry, TableSpec};
+use super::spec::{Entry, TableSpec};
 
 /// Simulations advanced together.
 pub const LANES: usize = 4;
@@ -181,9 +179,10 @@ fn heading_move(
 /// Rounds of [`Batch::rounds`] per call. Why a bound: V8 runs a wasm
 /// function in its baseline compiler (Liftoff) until it returns and tiers
 /// it up for the *next* call (no on-stack replacement), so one call that
-/// ran a worker's whole slice stayed at baseline speed: measured 6.1 s
-/// against 3.5 s with `node --no-liftoff` for the same slice. Short calls
-/// reach the optimised code after the first few.
+/// ran a worker's whole slice would stay at baseline speed, far slower
+/// than the optimised code (`node --no-liftoff` shows the difference).
+/// Short calls reach the optimised code after the first few; natively the
+/// bound costs nothing.
 const ROUNDS_PER_CALL: u32 = 2048;
 
 /// The simulations in flight over a range of entries.
@@ -366,8 +365,8 @@ pub fn entries(spec: &TableSpec, range: core::ops::Range<usize>) -> Vec<Option<E
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::table::generate::TableSpec;
-    use crate::vehicle::VehicleParams;
+    use crate::base::vehicle::VehicleParams;
+    use crate::funnelling::table::spec::TableSpec;
 
     /// The interleaved lanes give every entry the one-at-a-time
     /// simulation's bits: both integrators, reachable, fallback and

@@ -13,14 +13,13 @@ use super::format::{
     HEADER_LEN, MAGIC, MAX_ENTRIES,
 };
 use super::lookup::EtaTable;
-use crate::vehicle::{Integrator, VehicleParams};
+use crate::base::vehicle::{Integrator, VehicleParams};
 
 /// CRC-32 (IEEE 802.3, reflected, polynomial 0xEDB88320), through
-/// `crc32fast` (issue 17: the page checks the 3.2 MB table before its first
-/// frame; a byte at a time took 7 ms natively and several times that in
-/// wasm, `crc32fast`'s slice-by-16 fallback — SIMD-free, so the same
-/// everywhere — a fraction of it). `crc32_bytewise` is the reference the
-/// tests compare with.
+/// `crc32fast`: the page checks the 3.2 MB table before its first frame,
+/// and `crc32fast`'s slice-by-16 fallback (SIMD-free, so the same
+/// everywhere) takes a fraction of a byte-at-a-time loop's time, natively
+/// and in wasm. `crc32_bytewise` is the reference the tests compare with.
 #[must_use]
 pub fn crc32(bytes: &[u8]) -> u32 {
     crc32fast::hash(bytes)
@@ -381,7 +380,7 @@ mod tests {
     fn crc32_is_the_standard_one_at_every_length() {
         assert_eq!(crc32(b"123456789"), 0xCBF4_3926);
         assert_eq!(crc32(b""), 0);
-        let mut r = crate::rng::Rng::new(3);
+        let mut r = crate::base::rng::Rng::new(3);
         let data: Vec<u8> = (0..3000).map(|_| (r.next_u32() & 0xFF) as u8).collect();
         for n in (0..64).chain([255, 1000, 2999, 3000]) {
             assert_eq!(crc32(&data[..n]), bytewise(&data[..n]), "length {n}");

@@ -12,7 +12,7 @@
 
 use core::fmt;
 
-use crate::vehicle::{Integrator, VehicleParams};
+use crate::base::vehicle::{Integrator, VehicleParams};
 
 /// File magic, the first 8 bytes.
 pub const MAGIC: [u8; 8] = *b"STEERETA";

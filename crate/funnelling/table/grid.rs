@@ -3,8 +3,8 @@
 //!
 //! The table's axes are non-uniform on purpose (dense near, u² speeds,
 //! anisotropic α), so the interval holding a coordinate is not one division
-//! away. A binary search costs a dozen unpredictable branches per axis and
-//! was, measured under callgrind, a quarter of a funnelling update. Instead
+//! away. A binary search costs a dozen unpredictable branches per axis, a
+//! large share of a funnelling update's instructions. Instead
 //! each axis keeps a uniform grid of buckets over its range, at most half
 //! as wide as its narrowest interval, so a bucket holds at most one
 //! sample. Per bucket it stores the one sample inside it (if any) and the
@@ -12,13 +12,13 @@
 //! reciprocal width): the interval of `x` is then one bucket read and one
 //! comparison away, with no loop, no branch and no second table read
 //! (storing a count of earlier samples instead, and the intervals apart,
-//! cost 10 instructions more per axis under callgrind). The
+//! costs more instructions per axis). The
 //! bucket of a sample is computed at load time with the very arithmetic a
 //! query uses, so rounding can never put a query on the wrong side of a
 //! sample. An axis too uneven for the bucket cap falls back to a binary
 //! search (correct, slower; no committed table has one).
 
-use crate::minmax::MinMax;
+use crate::base::minmax::MinMax;
 use core::f32::consts::TAU;
 
 /// Most buckets per axis (guards the allocation for odd axes).
@@ -180,9 +180,10 @@ impl Axis {
     /// [`Axis::locate`] without the periodic wrap, for an axis known not
     /// to be periodic, and with the clamp flag returned rather than
     /// accumulated through a reference: a lookup's five searches then keep
-    /// one flag in a register (callgrind, `examples/icount.rs`: the flag's
-    /// five stores and the five `periodic` tests were a fifth of
-    /// [`EtaTable::lookup`](super::EtaTable::lookup)'s axis searches).
+    /// one flag in a register (the flag's five stores and the five
+    /// `periodic` tests would be a noticeable share of
+    /// [`EtaTable::lookup`](crate::funnelling::table::lookup::EtaTable::lookup)'s
+    /// axis searches; `examples/icount.rs` counts them under callgrind).
     #[inline(always)]
     #[must_use]
     pub fn locate_linear(&self, v: f32) -> (AxisPos, bool) {

@@ -1,17 +1,18 @@
-//! The η table's parameter key (issue 14): one 64-bit FNV-1a hash of
+//! The η table's parameter key: one 64-bit FNV-1a hash of
 //! everything a table's bytes depend on (format version, integrator, the
 //! 11 build parameters, every axis value and the generator's time step
 //! when it is not the vehicle's), written as 16 hex digits.
 //!
-//! Why: tables are now built on demand for any vehicle, and cached
+//! Why: tables are built on demand for any vehicle, and cached
 //! (natively in a directory, in the browser in IndexedDB). A cache keyed
 //! by this hash can only ever return a table built for exactly these
 //! limits; the key is recomputed from a cached file's own header before it
 //! is used, so a renamed or stale file is rebuilt, never used silently.
 //! The same function runs natively and in wasm, so both caches agree.
 
-use super::generate::{generator_dt, TableSpec};
-use super::{BuildParams, EtaTable, AXES, FORMAT_VERSION};
+use super::format::{BuildParams, AXES, FORMAT_VERSION};
+use super::lookup::EtaTable;
+use super::spec::{generator_dt, TableSpec};
 
 const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 const FNV_PRIME: u64 = 0x0000_0100_0000_01b3;

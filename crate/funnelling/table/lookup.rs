@@ -4,7 +4,7 @@
 //! The table samples the seek controller's final radial-tangential angle η
 //! over five axes: target distance `D`, radial angle `α`, current angular
 //! speed, current forward speed `v_c` and desired speed `v_d`. See
-//! `tables/README.md` for the byte layout and [`crate::table::generate`] for the
+//! `tables/README.md` for the byte layout and [`crate::funnelling::table::generate`] for the
 //! generator and the choice of axes.
 //!
 //! The angular-speed axis is stored *normalised*: `s = ω_c / min(ω_max,
@@ -13,9 +13,9 @@
 
 use super::format::{BuildParams, TableError, AXES, FLAG_ETA_VALID, FLAG_REACHABLE};
 use super::grid::{Axis, AxisPos};
-use crate::angle::wrap;
-use crate::minmax::MinMax;
-use crate::trig;
+use crate::base::angle::wrap;
+use crate::base::minmax::MinMax;
+use crate::base::trig;
 use glam::Vec4;
 
 /// One entry in memory, laid out for a branch-free blend: η as a unit
@@ -156,7 +156,7 @@ pub struct Lookup {
 }
 
 impl EtaTable {
-    /// Builds a table from generated data (used by [`crate::table::generate`]).
+    /// Builds a table from generated data (used by [`crate::funnelling::table::generate`]).
     ///
     /// # Errors
     /// The same validation as [`EtaTable::from_bytes`].
@@ -211,7 +211,7 @@ impl EtaTable {
         &self.params
     }
 
-    /// Sample values of axis `k` (see [`AXIS_NAMES`](super::AXIS_NAMES)).
+    /// Sample values of axis `k` (see [`AXIS_NAMES`](crate::funnelling::table::format::AXIS_NAMES)).
     #[must_use]
     pub fn axis(&self, k: usize) -> &[f32] {
         &self.axes[k]
@@ -297,8 +297,9 @@ impl EtaTable {
     ///
     /// Bounds: [`Grid::holds`] checks the position against the sample
     /// counts (ten comparisons) and the cells reads are then unchecked.
-    /// Why: the 16 per-pair checks (overflow, then length) were ~100 of a
-    /// lookup's 834 instructions (callgrind, `examples/icount.rs`).
+    /// Why: the 16 per-pair checks (overflow, then length) would be a
+    /// noticeable share of a lookup's instructions (`examples/icount.rs`
+    /// counts them under callgrind).
     /// Positions outside the grid (none from [`Axis::locate`]) take the
     /// checked path.
     #[inline]

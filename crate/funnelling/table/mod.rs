@@ -5,13 +5,14 @@
 //!
 //! | module | paper | what |
 //! |---|---|---|
-//! | [format](mod@format) | 000 §3 | the file's header: [`BuildParams`], [`TableError`], layout constants |
+//! | [format](mod@format) | 000 §3 | the file's header: [`BuildParams`](format::BuildParams), [`TableError`](format::TableError), layout constants |
 //! | [`codec`] | 000 §3 | the bytes: CRC-32, validation of every field, to/from bytes |
-//! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`] in memory: cells, the multilinear blend, [`Lookup`] |
+//! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`](lookup::EtaTable) in memory: cells, the multilinear blend, [`Lookup`](lookup::Lookup) |
 //! | [`grid`] | — | where a query falls on a sampled axis, in constant time |
 //! | [`key`] | — | the parameter key (hash of build parameters and axes) that table caches are keyed by |
-//! | [`generate`] | 000 §3 | the generator: the same seek code, anisotropic axes, mirror symmetry |
-//! | [`batch`] | 000 §3 | the generator's reach simulations interleaved several at a time, the same bits |
+//! | [`spec`] | 000 §3 | what the table samples: anisotropic axes scaled with the vehicle, one entry's reach simulation (the same seek code), mirror symmetry |
+//! | [`batch`] | 000 §3 | the entries' reach simulations interleaved several at a time, the same bits |
+//! | [`generate`] | 000 §3 | the whole table in parallel, and a browser worker's slice of it |
 
 pub mod batch;
 pub mod codec;
@@ -20,7 +21,4 @@ pub mod generate;
 pub mod grid;
 pub mod key;
 pub mod lookup;
-
-pub use codec::crc32;
-pub use format::*;
-pub use lookup::{EtaTable, Lookup};
+pub mod spec;

@@ -1,9 +1,9 @@
-//! The envelope study (issue 13): oriented arrival measured over the whole
-//! operating envelope a user of the lab can reach, not at one operating
-//! point. [`crate::study`] samples one point (D_tol 0.25 m, ε_tol 5°,
-//! 1.3 m/s, D 1–30 m); the defaults tuned there did much worse on random
+//! The envelope study: oriented arrival measured over the whole operating
+//! envelope a user of the lab can reach, not at one operating point.
+//! [`crate::studies::reach`] samples one point (D_tol 0.25 m, ε_tol 5°,
+//! 1.3 m/s, D 1–30 m); settings tuned there do much worse on random
 //! targets drawn over the sliders' range, so this is the study the
-//! controller is tuned on (one seed) and judged on (another, held out).
+//! controller is tuned on (seed 1) and judged on (seed 2, held out).
 //!
 //! Every run is a one-agent [`World`], stepped exactly as the lab and
 //! `steer run` step it (goal queues, moving goals, the braking after the
@@ -34,23 +34,32 @@
 //! inside D_tol) and the entry error, End_of_Steering declared with both
 //! tolerances met, for halting runs the rest pose inside both tolerances,
 //! finished (every goal done), path length over the Dubins length (radius
-//! at the desired speed, [`crate::dubins`]), non-finite values and limit
-//! violations ([`crate::metrics`]), and orbits (never enters).
+//! at the desired speed, [`crate::base::dubins`]), non-finite values and limit
+//! violations ([`crate::base::metrics`]), and orbits (never enters).
+//!
+//! | module | what |
+//! |---|---|
+//! | this one | the sampled envelope, the variants, one run and its record |
+//! | [`report`] | per-cell summaries, the runs of every variant, the parallel run |
+//! | [`tables`] | markdown tables per cell, the targets, the per-cell JSON |
 
 use core::f32::consts::PI;
 
 use glam::Vec2;
 use serde::Serialize;
 
-use crate::angle::diff;
-use crate::dubins;
-use crate::funnel::{FunnelConfig, Goal, Mode, MuBound};
-use crate::relaxed::{Controller, ControllerKind, RelaxedAim, RelaxedConfig};
-use crate::rng::Rng;
-use crate::table::generate::VehicleScale;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
-use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use crate::base::angle::diff;
+use crate::base::dubins;
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::config::{FunnelConfig, MuBound};
+use crate::funnelling::controller::{Controller, ControllerKind};
+use crate::funnelling::goal::Goal;
+use crate::funnelling::relaxed::{RelaxedAim, RelaxedConfig};
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::VehicleScale;
+use crate::funnelling::update::Mode;
+use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 /// Position tolerances sampled, m.
 pub const D_TOLS: [f32; 5] = [0.1, 0.25, 0.5, 1.0, 2.0];
@@ -122,14 +131,15 @@ pub fn literal_config() -> FunnelConfig {
         bound: MuBound::Literal,
         gain: 1.0,
         seek_threshold: 1.0,
-        aim: crate::funnel::Aim::Centre,
+        aim: crate::funnelling::config::Aim::Centre,
         min_bound_radius: 0.0,
         terminal: None,
     }
 }
 
 /// Paper 001 Fig. 7 read literally: the relaxed point on the ring arc 𝒜,
-/// T searched over 0.8 of τ (the relaxed settings before issue 13).
+/// T searched over 0.8 of τ, without the tuned margin of
+/// [`RelaxedConfig::orientation_margin`]'s default.
 #[must_use]
 pub fn literal_relaxed_config() -> RelaxedConfig {
     RelaxedConfig {
@@ -204,7 +214,7 @@ pub struct EnvelopeStudy {
     pub n_chain: usize,
     /// Time limit per goal, s (at scale 1; multiplied by the time scale).
     pub max_time: f32,
-    /// The vehicle's scale (issue 14, [`EnvelopeStudy::for_vehicle`]):
+    /// The vehicle's scale ([`EnvelopeStudy::for_vehicle`]):
     /// sampled distances and tolerances are multiplied by `scale.length`,
     /// speeds by `scale.speed`. The records keep the pedestrian-equivalent
     /// values (divided back), so the tables' cells are the same for every
@@ -250,11 +260,11 @@ fn random_goal(
     let d = log_uniform(r, d_range) * scale.length;
     let bearing = r.range(-PI, PI);
     Goal {
-        pos: from + crate::trig::unit(bearing) * d,
+        pos: from + crate::base::trig::unit(bearing) * d,
         beta: r.range(-PI, PI),
         // A robot's smallest tolerance (0.1 × 0.0625 m) is below the
         // core's D_tol range: run at its minimum (0.01 m).
-        d_tol: (pick(r, &D_TOLS) * scale.length).max(crate::ranges::GOAL_D_TOL.min as f32),
+        d_tol: (pick(r, &D_TOLS) * scale.length).max(crate::base::ranges::GOAL_D_TOL.min as f32),
         eps_tol: pick(r, &EPS_TOLS_DEG).to_radians(),
         speed: pick(r, &SPEEDS) * scale.speed,
         halting,
@@ -298,7 +308,7 @@ impl EnvelopeStudy {
             }
             GoalKind::Moving => {
                 let g = random_goal(&mut r, start.pos, D_RANGE, false, self.scale);
-                let velocity = crate::trig::unit(r.range(-PI, PI))
+                let velocity = crate::base::trig::unit(r.range(-PI, PI))
                     * (r.range(0.0, GOAL_SPEED_MAX) * self.scale.speed);
                 vec![GoalSpec {
                     motion: GoalMotion::Linear { velocity },
@@ -499,7 +509,5 @@ pub fn run(
     rec
 }
 
-mod report;
-mod tables;
-
-pub use report::*;
+pub mod report;
+pub mod tables;

@@ -4,12 +4,12 @@
 use serde::Serialize;
 
 use super::{EnvelopeStudy, GoalKind, RunRecord};
-use crate::metrics::percentile;
+use crate::base::metrics::percentile;
 #[cfg(not(target_arch = "wasm32"))]
 use {
     super::{run, EnvScenario, Variant},
-    crate::table::EtaTable,
-    crate::vehicle::VehicleParams,
+    crate::base::vehicle::VehicleParams,
+    crate::funnelling::table::lookup::EtaTable,
 };
 
 /// Summary of a set of runs (a group, a cell).

@@ -1,4 +1,5 @@
-//! Seeded random region-goal scenarios (paper 001 §5; issue 4 acceptance):
+//! Seeded random region-goal scenarios (paper 001 §5; the relaxed
+//! controller's acceptance figures):
 //! the same start and region goal run with the standard and the relaxed
 //! controller, compared on path length and integrated |curvature|, and
 //! checked for reach (ends inside the disk with a heading inside T).
@@ -8,13 +9,15 @@ use core::f32::consts::PI;
 
 use glam::Vec2;
 
-use crate::angle::diff;
-use crate::funnel::{FunnelMemory, Goal, Mode};
-use crate::metrics::PathMetrics;
-use crate::relaxed::{Controller, RelaxedInternals};
-use crate::rng::Rng;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::metrics::PathMetrics;
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::controller::Controller;
+use crate::funnelling::goal::{FunnelMemory, Goal};
+use crate::funnelling::relaxed::RelaxedInternals;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Mode, Update};
 
 /// The random family: start at the origin heading +x with a random
 /// admissible (v, ω); disk centre at D ∈ `d_range` in any direction,
@@ -88,7 +91,14 @@ pub fn run_region(
     let steps = (max_time / p.dt) as u32;
     for k in 0..steps {
         let prev = s;
-        let out = ctl.step(table, p, &mut s, goal, &mut mem, &mut ri);
+        let mut u = Update {
+            table,
+            params: p,
+            state: &mut s,
+            goal,
+            memory: &mut mem,
+        };
+        let out = ctl.step(&mut u, &mut ri);
         if out.mode == Mode::EndOfSteering {
             r.ended = true;
             r.time = k as f32 * p.dt;
@@ -124,7 +134,7 @@ impl RegionStudy {
         (
             VehicleState::new(Vec2::ZERO, 0.0, v, w),
             Goal {
-                pos: crate::trig::unit(bearing) * d,
+                pos: crate::base::trig::unit(bearing) * d,
                 beta,
                 d_tol: radius,
                 eps_tol: tau,
@@ -137,10 +147,10 @@ impl RegionStudy {
 
     /// Runs the whole study with `ctl`: in parallel on the current rayon
     /// pool natively, sequentially on wasm32; results in scenario order,
-    /// independent of the thread count ([`crate::parallel`]).
+    /// independent of the thread count ([`crate::base::parallel`]).
     #[must_use]
     pub fn run_all(&self, table: &EtaTable, p: &VehicleParams, ctl: &Controller) -> Vec<RegionRun> {
-        crate::parallel::map_indices(self.n, |i| {
+        crate::base::parallel::map_indices(self.n, |i| {
             let (s, g) = self.scenario(p, i);
             run_region(table, p, ctl, s, &g, self.max_time)
         })

@@ -1,13 +1,13 @@
 //! One table of validation ranges for every user-settable number of the
-//! funnelling lab (issue 16, "one source for ranges").
+//! funnelling lab.
 //!
-//! Why: the ranges used to be written three times, in the core's
-//! `validate` functions, in the lab's URL decoder and in its sliders, and
-//! they disagreed: `#vd=50` and `#vmax=0.05` passed the page and were then
-//! refused by the core (an empty playground), `#vd=0` gave an agent that
-//! never moves. Here each field is one [`FieldRange`] constant; the core's
-//! validation ([`VehicleParams::validate`](crate::vehicle::VehicleParams::validate),
-//! [`Goal::validate`](crate::funnel::Goal::validate), the funnel, relaxed,
+//! Why: the core's `validate` functions, the lab's URL decoder and its
+//! sliders must agree. Written three times they drift apart: a range the
+//! page accepts and the core refuses (`#vd=50`, `#vmax=0.05`) leaves an
+//! empty playground, and one the page accepts too widely (`#vd=0`) gives
+//! an agent that never moves. Here each field is one [`FieldRange`] constant; the core's
+//! validation ([`VehicleParams::validate`](crate::base::vehicle::VehicleParams::validate),
+//! [`Goal::validate`](crate::funnelling::goal::Goal::validate), the funnel, relaxed,
 //! scenario and world-edit checks) calls [`FieldRange::check`] on it, and
 //! the bindings export [`ALL`] (`ranges()`), from which the page derives its
 //! URL decoder, sliders and number inputs.
@@ -293,7 +293,7 @@ pub const EXTENT: FieldRange = range(
     "half-side of the random agents' square",
 );
 
-// Avoidance between agents and static obstacles (issue 18, `AvoidanceConfig`,
+// Avoidance between agents and static obstacles (`AvoidanceConfig`,
 // `Obstacle`).
 /// Body radius of every agent (overlap = closer than two radii).
 pub const AVOID_RADIUS: FieldRange =
@@ -445,16 +445,6 @@ mod tests {
                 assert_ne!(q.key, r.key, "duplicate key");
             }
         }
-    }
-
-    #[test]
-    fn a_desired_speed_of_zero_is_refused_in_files_too() {
-        let text = r#"{"name": "z", "agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0, "speed": 0}]}]}"#;
-        let e = crate::scenario::Scenario::from_json(text).unwrap_err();
-        assert_eq!(
-            e.to_string(),
-            "scenario is inconsistent: agent 0: goal.speed = 0 is outside [0.01, 2]"
-        );
     }
 
     #[test]

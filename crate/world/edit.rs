@@ -1,6 +1,5 @@
-//! Edits of a running world (issue 12: the logic of the lab page's drags,
-//! sliders and performance runs lives in the core, the bindings only
-//! convert): a pose reset or a new goal queue restarts the agent's queue and
+//! Edits of a running world (the logic of the lab page's drags, sliders
+//! and performance runs lives in the core, the bindings only convert): a pose reset or a new goal queue restarts the agent's queue and
 //! its mode memory (paper 000 Fig. 5's Position_only latch), and the seeded
 //! random crowd of the performance runs. Every edit validates first and
 //! changes nothing when it refuses, so a front end can pass user input
@@ -8,21 +7,21 @@
 
 use glam::Vec2;
 
-use crate::funnel::{FunnelMemory, Goal};
-use crate::funnelling::precision;
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
-use crate::world::{Agent, GoalMotion, GoalSpec, SwitchRule, World};
+use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::goal::{FunnelMemory, Goal};
+use crate::world::precision;
+use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent, World};
 
 /// Fastest a goal may move by itself, m/s: each component of a linear
-/// velocity ([`crate::funnelling::ranges::MOTION_VX`]), and the tangential
-/// speed `radius·|ω|` of a circling goal (issue 16: a circle of 1e6 m at
-/// 100 rad/s moved its goal at 1e8 m/s).
-pub const MAX_GOAL_MOTION_SPEED: f32 = crate::funnelling::ranges::MOTION_VX.max as f32;
+/// velocity ([`crate::base::ranges::MOTION_VX`]), and the tangential
+/// speed `radius·|ω|` of a circling goal (each factor within its own
+/// range, a circle of 1e6 m at 100 rad/s would move its goal at 1e8 m/s).
+pub const MAX_GOAL_MOTION_SPEED: f32 = crate::base::ranges::MOTION_VX.max as f32;
 
 /// Agents a world may hold: the lab's playground agent and
-/// [`AGENTS`](crate::funnelling::ranges::AGENTS)' largest count of random
+/// [`AGENTS`](crate::base::ranges::AGENTS)' largest count of random
 /// agents (the page's performance runs go to 100,000).
-pub const MAX_AGENTS: usize = crate::funnelling::ranges::AGENTS.max as usize + 1;
+pub const MAX_AGENTS: usize = crate::base::ranges::AGENTS.max as usize + 1;
 
 /// Goals queued per agent by [`World::spawn_random`] (minutes of funnelling).
 pub const RANDOM_GOALS: usize = 16;
@@ -76,7 +75,7 @@ impl GoalSpec {
     /// # Errors
     /// The first value out of range (NaN included), named.
     pub fn validate(&self, p: &VehicleParams) -> Result<(), ParamError> {
-        use crate::funnelling::ranges as r;
+        use crate::base::ranges as r;
         self.goal.validate(p)?;
         self.check_halting()?;
         match self.motion {
@@ -92,7 +91,7 @@ impl GoalSpec {
                 r::MOTION_CY.check(center.y)?;
                 r::MOTION_ANGULAR_SPEED.check(angular_speed)?;
                 let radius = (self.goal.pos - center).length();
-                crate::vehicle::check_range(
+                crate::base::vehicle::check_range(
                     "motion tangential speed (radius·|angularSpeed|)",
                     radius * angular_speed.abs(),
                     0.0,
@@ -161,7 +160,7 @@ impl World {
     /// # Errors
     /// No such agent, or a pose out of range (NaN included).
     pub fn set_pose(&mut self, i: usize, pos: Vec2, theta: f32) -> Result<(), EditError> {
-        let s = VehicleState::new(pos, crate::angle::wrap(theta), 0.0, 0.0);
+        let s = VehicleState::new(pos, crate::base::angle::wrap(theta), 0.0, 0.0);
         self.agent(i)?;
         s.validate(&self.params)?;
         precision::check_agent(&self.params, pos, &self.agents[i].goals, None)?;
@@ -180,8 +179,8 @@ impl World {
             g.validate(&self.params)?;
         }
         precision::check_agent(&self.params, self.agents[i].state.pos, &goals, None)?;
-        self.facing -= usize::from(super::world::faces(&self.agents[i].goals));
-        self.facing += usize::from(super::world::faces(&goals));
+        self.facing -= usize::from(super::faces(&self.agents[i].goals));
+        self.facing += usize::from(super::faces(&goals));
         self.agents[i].goals = goals;
         self.restart(i);
         Ok(())
@@ -207,8 +206,8 @@ impl World {
         self.spawn_random_kept(n, seed, extent, speed, 0..n)
     }
 
-    /// [`World::spawn_random`]'s agents `keep` only (issue 17: a stepping
-    /// worker's slice): the same agents, bit for bit, without building the
+    /// [`World::spawn_random`]'s agents `keep` only (a stepping worker's
+    /// slice): the same agents, bit for bit, without building the
     /// others (their random draws are made and dropped).
     ///
     /// # Errors
@@ -222,16 +221,16 @@ impl World {
         keep: core::ops::Range<usize>,
     ) -> Result<(), EditError> {
         use core::f32::consts::PI;
-        crate::funnelling::ranges::EXTENT
+        crate::base::ranges::EXTENT
             .check(extent)
             .map_err(ParamError::Range)?;
-        crate::vehicle::check_range("speed", speed, f32::MIN, f32::MAX)?;
+        crate::base::vehicle::check_range("speed", speed, f32::MIN, f32::MAX)?;
         self.check_room(n)?;
         // At least 0.1 m/s, unless the vehicle is slower: `clamp` panics
         // when its lower end is above the upper (v_max 0.05 did, in wasm).
         let speed = speed.clamp(0.1f32.min(self.params.v_max), self.params.v_max);
-        let mut rng = crate::rng::Rng::new(seed);
-        let point = |rng: &mut crate::rng::Rng| {
+        let mut rng = crate::base::rng::Rng::new(seed);
+        let point = |rng: &mut crate::base::rng::Rng| {
             Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
         };
         for k in 0..n {
@@ -263,7 +262,7 @@ impl World {
 #[cfg(test)]
 mod tests {
     use super::*;
-    use crate::funnel::FunnelConfig;
+    use crate::funnelling::config::FunnelConfig;
 
     #[test]
     fn random_agents_of_a_vehicle_slower_than_a_tenth_of_a_metre_per_second() {

@@ -1,7 +1,7 @@
-//! The avoidance benchmarks (issue 18) and the seeded study behind
+//! The avoidance benchmarks and the seeded study behind
 //! `steer avoid`: each scenario is built from a seed (small jitter of the
 //! start poses), run once per method on the same seed, and measured
-//! ([`crate::avoidance::proximity`]); path lengths are compared with the
+//! ([`crate::world::proximity`]); path lengths are compared with the
 //! avoidance-free run of the same seed.
 //!
 //! - **circle swap**: N agents on a circle (spaced 2.5 body diameters
@@ -15,14 +15,15 @@
 use core::f32::consts::{PI, TAU};
 
 use crate::avoidance::config::{AvoidanceConfig, AvoidanceMethod, Obstacle};
-use crate::avoidance::proximity::Proximity;
-use crate::funnel::FunnelConfig;
-use crate::relaxed::{ControllerKind, RelaxedConfig};
-use crate::rng::Rng;
-use crate::scenario::{AgentSpec, GoalFile, Scenario};
-use crate::table::EtaTable;
-use crate::vehicle::VehicleParams;
-use crate::world::{GoalMotion, SwitchRule};
+use crate::base::rng::Rng;
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::relaxed::RelaxedConfig;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::world::proximity::Proximity;
+use crate::world::scenario::{AgentSpec, GoalFile, Scenario};
+use crate::world::{goals::GoalMotion, goals::SwitchRule};
 
 /// Body radius used by the benchmarks, m.
 pub const BODY_RADIUS: f32 = 0.3;
@@ -43,7 +44,7 @@ pub enum Bench {
 }
 
 impl Bench {
-    /// The issue's list.
+    /// Every benchmark, in the order `steer avoid` reports them.
     pub const ALL: [Bench; 7] = [
         Bench::CircleSwap(8),
         Bench::CircleSwap(32),
@@ -54,7 +55,7 @@ impl Bench {
         Bench::Fig8,
     ];
 
-    /// Short name (`circle-32`, `corridor`, …): the preset file's suffix.
+    /// Short name (`circle32`, `corridor`, …): the preset file's suffix.
     #[must_use]
     pub fn name(self) -> String {
         match self {
@@ -100,7 +101,7 @@ fn empty(name: String, description: &str, duration: f32) -> Scenario {
     Scenario {
         name,
         description: description.into(),
-        source: "issue 18 benchmark".into(),
+        source: "avoidance benchmark".into(),
         duration,
         vehicle: VehicleParams::default(),
         funnel: FunnelConfig::default(),
@@ -162,9 +163,9 @@ pub fn circle_swap(n: usize, seed: u64) -> Scenario {
     for i in 0..n {
         let phi = TAU * (i as f32 + rng.range(-0.1, 0.1)) / n as f32;
         let ri = r + rng.range(-0.05, 0.05);
-        let u = crate::trig::unit(phi);
+        let u = crate::base::trig::unit(phi);
         let (x, y) = (ri * u.x, ri * u.y);
-        let out = crate::angle::wrap(phi + PI);
+        let out = crate::base::angle::wrap(phi + PI);
         sc.agents
             .push(agent(x, y, out, goal(-r * u.x, -r * u.y, out)));
     }
@@ -175,10 +176,10 @@ pub fn circle_swap(n: usize, seed: u64) -> Scenario {
 /// other in a corridor 4 m wide and 12 m long, from an open space at one end to
 /// one at the other, arriving facing along the corridor. Each group keeps
 /// its formation translated (its front column goes deepest) on a 2 m
-/// lattice of targets: with targets 1 m apart (the first layout) the first
-/// arrivals halted in a wall across the corridor that the rest of their
-/// own group could not pass, a blockage of the layout for any controller
-/// without a path planner, not an avoidance deadlock.
+/// lattice of targets: with targets 1 m apart the first arrivals would
+/// halt in a wall across the corridor that the rest of their own group
+/// cannot pass, a blockage of the layout for any controller without a
+/// path planner, not an avoidance deadlock.
 #[must_use]
 pub fn corridor(seed: u64) -> Scenario {
     let mut rng = Rng::with_stream(seed, 19);
@@ -417,9 +418,9 @@ pub fn summarise(r: &[RunReport], base: &[RunReport]) -> CellSummary {
         entries: r.iter().map(|x| u64::from(x.entries)).sum(),
         oriented: r.iter().map(|x| u64::from(x.oriented)).sum(),
         finished_runs: finish.len(),
-        median_finish: crate::metrics::percentile(&mut finish, 0.5),
+        median_finish: crate::base::metrics::percentile(&mut finish, 0.5),
         max_length_ratio: ratio.iter().copied().fold(f32::NAN, f32::max),
-        median_length_ratio: crate::metrics::percentile(&mut ratio, 0.5),
+        median_length_ratio: crate::base::metrics::percentile(&mut ratio, 0.5),
         min_distance: r
             .iter()
             .map(|x| x.min_distance)
@@ -454,7 +455,7 @@ pub fn study(
         AvoidanceMethod::Separation,
         AvoidanceMethod::Orca,
     ];
-    let all = crate::parallel::map_indices(n * methods.len(), |k| {
+    let all = crate::base::parallel::map_indices(n * methods.len(), |k| {
         let (s, m) = (k / methods.len(), methods[k % methods.len()]);
         let mut sc = bench.scenario(seed0 + s as u64, m);
         sc.avoidance.replan_every = replan_every;

@@ -5,15 +5,15 @@
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::funnel::{FunnelMemory, Goal};
-use crate::vehicle::{ParamError, VehicleState};
+use crate::base::vehicle::{ParamError, VehicleState};
+use crate::funnelling::goal::{FunnelMemory, Goal};
 
 /// How a goal moves (paper 000 §1: "a possibly moving target").
 ///
 /// A goal that moves by itself ([`GoalMotion::Linear`] with a non-zero
 /// velocity, [`GoalMotion::Circle`] with a non-zero angular speed) cannot be
-/// `halting` (issue 13): it never stops, so no rest pose lies inside its
-/// tolerances for long; [`World::add_agent`], scenario files and the lab
+/// `halting`: it never stops, so no rest pose lies inside its
+/// tolerances for long; [`World::add_agent`](crate::world::World::add_agent), scenario files and the lab
 /// refuse the combination ([`GoalSpec::check_halting`]). A
 /// [`GoalMotion::FaceAgent`] goal may halt: the agent it follows can stop.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize, Default)]
@@ -132,7 +132,7 @@ impl GoalSpec {
                 angular_speed,
             } => {
                 let r0 = self.goal.pos - center;
-                let rot = crate::trig::unit(angular_speed * t);
+                let rot = crate::base::trig::unit(angular_speed * t);
                 let r = rot.rotate(r0);
                 g.pos = center + r;
                 g.beta = self.goal.beta + angular_speed * t;

@@ -1,14 +1,15 @@
-//! What an avoidance run is measured by (issue 18), accumulated step by
+//! What an avoidance run is measured by, accumulated step by
 //! step: the smallest distance between two agents' centres, overlapping
 //! pairs (centres closer than two body radii; counted per step), contacts
 //! with obstacles (closer than one radius), deadlocks (an agent not
 //! finished and slower than 0.05 m/s for 10 s in a row), and whether each
 //! goal's tolerance disk was entered oriented (|θ − β| ≤ ε_tol at the
 //! first step inside it, or the goal completed). Pairs are found through
-//! the crowd's grid, so measuring costs about as much as avoiding.
+//! the neighbour grid ([`crate::base::grid`]), so measuring costs about
+//! as much as avoiding.
 
-use crate::angle::diff;
-use crate::crowd::separation::NeighbourGrid;
+use crate::base::angle::diff;
+use crate::base::grid::NeighbourGrid;
 use crate::world::World;
 
 /// Speed under which an unfinished agent counts as stuck, m/s.

@@ -8,7 +8,7 @@
 //! choose the commanded accelerations; [`VehicleParams::integrate`] clamps
 //! them into the admissible set, so no controller bug can break a limit.
 
-use crate::minmax::MinMax;
+use crate::base::minmax::MinMax;
 use core::fmt;
 
 use glam::Vec2;
@@ -135,12 +135,12 @@ pub(crate) fn check_range(
 
 impl VehicleParams {
     /// Rejects NaN and out-of-range values (every range excludes 0; the
-    /// ranges are [`crate::funnelling::ranges`]'s) with a typed error.
+    /// ranges are [`crate::base::ranges`]'s) with a typed error.
     ///
     /// # Errors
     /// The first offending field.
     pub fn validate(&self) -> Result<(), ParamError> {
-        use crate::funnelling::ranges as r;
+        use crate::base::ranges as r;
         r::DT.check(self.dt)?;
         r::V_MAX.check(self.v_max)?;
         r::ACCEL_MAX.check(self.accel_max)?;
@@ -206,12 +206,12 @@ impl VehicleParams {
         let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
         match self.integrator {
             Integrator::Euler => {
-                s.pos += crate::trig::unit(s.theta) * (v0 * dt);
-                s.theta = crate::angle::wrap(s.theta + w0 * dt);
+                s.pos += crate::base::trig::unit(s.theta) * (v0 * dt);
+                s.theta = crate::base::angle::wrap(s.theta + w0 * dt);
             }
             Integrator::SemiImplicitEuler => {
-                s.theta = crate::angle::wrap(s.theta + w1 * dt);
-                s.pos += crate::trig::unit(s.theta) * (v1 * dt);
+                s.theta = crate::base::angle::wrap(s.theta + w1 * dt);
+                s.pos += crate::base::trig::unit(s.theta) * (v1 * dt);
             }
         }
         s.v = v1;
@@ -249,7 +249,7 @@ impl VehicleState {
     #[inline]
     #[must_use]
     pub fn forward(&self) -> Vec2 {
-        crate::trig::unit(self.theta)
+        crate::base::trig::unit(self.theta)
     }
 
     /// True when every field is finite and the state satisfies `p`'s limits
@@ -273,7 +273,7 @@ impl VehicleState {
     /// # Errors
     /// A [`ParamError`] naming the offending field.
     pub fn validate(&self, p: &VehicleParams) -> Result<(), ParamError> {
-        use crate::funnelling::ranges as r;
+        use crate::base::ranges as r;
         r::POS_X.check(self.pos.x)?;
         r::POS_Y.check(self.pos.y)?;
         r::THETA.check(self.theta)?;

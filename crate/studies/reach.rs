@@ -1,18 +1,21 @@
-//! Reproducible measurement campaigns (issue acceptance figures): seeded
+//! Reproducible measurement campaigns (the acceptance figures of paper
+//! 000's funnelling, one operating point): seeded
 //! random reach scenarios for the funnelling controller, run to the end and
 //! summarised. Shared by the tests and by `steer reach`.
 
 use glam::Vec2;
 
-use crate::angle::diff;
-use crate::dubins;
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Mode};
-use crate::metrics::{percentile, PathMetrics};
-use crate::rng::Rng;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::dubins;
+use crate::base::metrics::{percentile, PathMetrics};
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::goal::{FunnelMemory, Goal};
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Mode, Update};
 
-/// The random scenario family of the funnelling issue: static targets at
+/// The random scenario family of the acceptance figures: static targets at
 /// D in [1, 30] m, any bearing and β, initial v in [0, v_max], initial ω
 /// admissible; `D_tol` = 0.25 m, `ε_tol` = 5°, desired speed 1.3 m/s.
 #[derive(Clone, Copy, Debug, PartialEq)]
@@ -89,7 +92,13 @@ pub fn run(
     let mut mem = FunnelMemory::default();
     for k in 0..steps {
         let prev = s;
-        let out = cfg.step(table, p, &mut s, goal, &mut mem);
+        let out = cfg.step(&mut Update {
+            table,
+            params: p,
+            state: &mut s,
+            goal,
+            memory: &mut mem,
+        });
         if !entered && (goal.pos - prev.pos).length() < goal.d_tol {
             entered = true;
             let e = diff(goal.beta, prev.theta).abs();
@@ -154,7 +163,7 @@ impl ReachStudy {
         let w = r.range(-1.0, 1.0) * p.omega_limit(v);
         let start = VehicleState::new(Vec2::ZERO, 0.0, v, w);
         let goal = Goal {
-            pos: crate::trig::unit(bearing) * d,
+            pos: crate::base::trig::unit(bearing) * d,
             beta,
             d_tol: self.d_tol,
             eps_tol: self.eps_tol,
@@ -167,7 +176,7 @@ impl ReachStudy {
 
     /// Runs the whole study: in parallel on the current rayon pool natively,
     /// sequentially on wasm32; results in scenario order, independent of
-    /// the thread count ([`crate::parallel`]).
+    /// the thread count ([`crate::base::parallel`]).
     #[must_use]
     pub fn run_all(
         &self,
@@ -175,7 +184,7 @@ impl ReachStudy {
         p: &VehicleParams,
         cfg: &FunnelConfig,
     ) -> Vec<RunResult> {
-        crate::parallel::map_indices(self.n, |i| {
+        crate::base::parallel::map_indices(self.n, |i| {
             let (s, g) = self.scenario(p, i);
             run(table, p, cfg, s, &g, self.max_time)
         })

@@ -1,10 +1,11 @@
 //! The envelope report as people read it: markdown tables per cell, the
-//! issue-13 targets, and the per-cell JSON.
+//! targets the controllers are held to, and the per-cell JSON.
 
 use core::fmt::Write as _;
 
+use super::report::missed;
 use super::report::{summarise, CellSummary, EnvelopeReport, MISSES_KEPT};
-use super::{missed, GoalKind, RunRecord, BANDS, D_TOLS, EPS_TOLS_DEG, SPEEDS};
+use super::{GoalKind, RunRecord, BANDS, D_TOLS, EPS_TOLS_DEG, SPEEDS};
 
 /// The static cells of `runs` in distance band `band` (`None`: all D):
 /// (ε_tol in degrees, column, column value, summary) for every ε_tol ×
@@ -181,8 +182,10 @@ impl EnvelopeReport {
         worst
     }
 
-    /// The issue-13 targets against this report, markdown (standard =
-    /// `standard`, relaxed = `relaxed`).
+    /// The targets against this report, markdown (standard = `standard`,
+    /// relaxed = `relaxed`): oriented entries at D ≥ 5 m per cell and over
+    /// all D, End_of_Steering inside both tolerances, halting runs at rest
+    /// inside both, relaxed reach without orbits.
     #[must_use]
     pub fn targets(&self) -> String {
         let get = |name: &str, kind: GoalKind| {

@@ -1,4 +1,4 @@
-//! What a vehicle's table is worth (issue 14): the measures each reference
+//! What a vehicle's table is worth: the measures each reference
 //! vehicle is reported with, in the vehicle's own units (distances in
 //! turning radii `R = v_max / min(ω_max, A/v_max)`, speeds in fractions of
 //! `v_max`), so one set of targets serves every vehicle.
@@ -9,11 +9,12 @@
 //!   η jumps no fixed grid follows: `tests/table_accuracy.rs`); median and
 //!   p95 of the error over queries both call reachable, and the share of
 //!   all queries whose reachability the table gets right.
-//! - [`oriented_far`]: from an [`EnvelopeStudy`] scaled to the vehicle,
+//! - [`oriented_far`]: from an
+//!   [`EnvelopeStudy`](crate::studies::envelope::EnvelopeStudy) scaled to the vehicle,
 //!   reach over every static run and oriented entries of the runs with
 //!   `D ≥ 5 R` at ε_tol 5°.
 //!
-//! Targets (issue 14): median ≤ 0.2°, p95 ≤ 2°, reach ≥ 99.5 %, oriented
+//! Targets: median ≤ 0.2°, p95 ≤ 2°, reach ≥ 99.5 %, oriented
 //! ≥ 95 %. `steer envelope --vehicle FILE` prints them; `tests/
 //! vehicle_study.rs` asserts a fast slice.
 
@@ -22,14 +23,15 @@ use core::f32::consts::PI;
 use glam::Vec2;
 use serde::Serialize;
 
-use super::envelope::{GoalKind, VariantReport};
-use crate::angle::diff;
-use crate::metrics::percentile;
-use crate::rng::Rng;
-use crate::seek::{simulate_reach, ReachLimits, ReachOutcome};
-use crate::table::generate::turn_radius;
-use crate::table::EtaTable;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::metrics::percentile;
+use crate::base::rng::Rng;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::seek::{simulate_reach, ReachLimits, ReachOutcome};
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::turn_radius;
+use crate::studies::envelope::report::VariantReport;
+use crate::studies::envelope::GoalKind;
 
 /// Interpolation accuracy of a table.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize)]
@@ -76,12 +78,12 @@ pub fn accuracy(
         max_time: bp.max_time,
     };
     let d_min = d_min_radii * turn_radius(p);
-    let out = crate::parallel::map_indices(n, |i| {
+    let out = crate::base::parallel::map_indices(n, |i| {
         let [d, a, w, v, vd] = query(table, p, seed, i, d_min);
         let sim = simulate_reach(
             p,
             VehicleState::new(Vec2::ZERO, 0.0, v, w),
-            crate::trig::unit(a) * d,
+            crate::base::trig::unit(a) * d,
             vd,
             &lim,
         );

@@ -1,12 +1,12 @@
-//! Where f32 positions still resolve one step (issue 16): the coordinate
+//! Where f32 positions still resolve one step: the coordinate
 //! range an agent and its goals must lie in, from the agent's slowest
 //! goal speed and the time step.
 //!
 //! Problem: positions are f32 (DESIGN §8: the same bits natively and in
 //! wasm). One step moves `s = v·dt`; far from the origin the spacing of
 //! f32 numbers (ulp, `2^(e−24)` for `|x| < 2^e`) approaches `s` and every
-//! step is rounded: at x = 999,980 m a 1.3 m/s agent did not move at all,
-//! at 300,000 m it stopped 0.44 m short. Validation admitted ±1e6 m.
+//! step is rounded: at x = 999,980 m a 1.3 m/s agent does not move at
+//! all, at 300,000 m it stops 0.44 m short.
 //!
 //! Measured (a 20 m oriented reach, start at rest, goal 16 m ahead and
 //! 12 m aside with β = 90°, D_tol 0.25 m, ε_tol 5°; path length against
@@ -16,8 +16,8 @@
 //! at 3 km, +1.7 % at 10 km; 0.01 m/s within 0.6 % at 1 km, +7.8 % at 3 km;
 //! past `ulp ≈ 2s` the agent freezes and never finishes. Tight position
 //! tolerances need their own resolution: a halting goal with D_tol 0.01 m
-//! at dt 5 ms and 1.3 m/s finished at 8 km but not at 16 km, although the
-//! step rule allowed 13.6 km. Runs whose D_tol is near 0.01 m can also sit
+//! at dt 5 ms and 1.3 m/s finishes at 8 km but not at 16 km, although the
+//! step rule alone would allow 13.6 km. Runs whose D_tol is near 0.01 m can also sit
 //! on a near miss (a loop or not), so their length is not monotonic in x
 //! (e.g. 1.3 m/s, D_tol 0.01 m at dt 1/60 s: one loop at the origin, none
 //! from 2 km on); that is sensitivity, not resolution.
@@ -33,10 +33,10 @@
 //! [`World::add_agent`](crate::world::World::add_agent) and in the world
 //! edits. A linear goal keeps moving: a scenario (which has a duration)
 //! checks where it ends; in an open-ended world (the lab) a goal that
-//! drifts beyond the limit is steered with coarser steps, as before.
+//! drifts beyond the limit is steered with coarser steps.
 
-use crate::vehicle::{check_range, ParamError, VehicleParams};
-use crate::world::{GoalMotion, GoalSpec};
+use crate::base::vehicle::{check_range, ParamError, VehicleParams};
+use crate::world::{goals::GoalMotion, goals::GoalSpec};
 
 /// Largest |coordinate| anywhere, m (f32 spacing there: 6.25 cm).
 pub const COORD_MAX: f32 = 1e6;

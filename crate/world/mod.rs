@@ -1,18 +1,42 @@
-//! A world of agents, each with its own state, goal queue and funnelling
-//! memory, stepped together (paper 000 §6: moving targets, successive
-//! targets, many entities). Stepping allocates nothing: the only buffer,
-//! a snapshot of the agents' states for goals that follow other agents, is
-//! sized when agents are added.
+//! The world above the controllers (paper 000 §6: moving targets,
+//! successive targets, many entities): agents, each with its own state,
+//! goal queue and funnelling memory, stepped together, with or without
+//! avoidance. Stepping allocates nothing: the only buffer, a snapshot of
+//! the agents' states for goals that follow other agents, is sized when
+//! agents are added.
+//!
+//! | module | paper | what |
+//! |---|---|---|
+//! | this one | 000 §6 | [`World`] and [`Agent`]: many agents with goal queues, the plain step, the state records |
+//! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
+//! | [`edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`avoid_step`] | 000 §7 | the step with avoidance: plan every funnel, avoid, step |
+//! | [`split`] | 000 §6, Fig. 6 | a world split into contiguous slices that step alone (facing links kept inside one), for the lab's stepping workers |
+//! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
+//! | [`precision`] | — | the coordinate range where f32 resolves a quarter of one step (slowest goal speed × dt), measured; checked on every agent and goal |
+//! | [`proximity`] | — | avoidance metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |
 
-use crate::avoidance::{AvoidanceConfig, AvoidanceMethod, Avoider, Obstacle};
-use crate::funnel::{FunnelConfig, FunnelMemory, Goal, Internals, Mode};
-use crate::metrics::PathMetrics;
-use crate::relaxed::{ControllerKind, RelaxedConfig, RelaxedInternals};
-use crate::seek::{seek_step, seek_step_committed};
-use crate::table::EtaTable;
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
+pub mod avoid_step;
+pub mod edit;
+pub mod goals;
+pub mod precision;
+pub mod proximity;
+pub mod scenario;
+pub mod split;
 
-pub use crate::funnelling::goals::{GoalMotion, GoalSpec, SwitchRule, MOVING_HALTING};
+use crate::avoidance::{
+    avoider::Avoider, config::AvoidanceConfig, config::AvoidanceMethod, config::Obstacle,
+};
+use crate::base::metrics::PathMetrics;
+use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::goal::{FunnelMemory, Goal};
+use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
+use crate::funnelling::seek::{seek_step, seek_step_committed};
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Internals, Mode, Update};
+use crate::world::goals::{GoalMotion, GoalSpec, SwitchRule};
 
 /// One agent.
 #[derive(Clone, Debug, PartialEq)]
@@ -40,12 +64,10 @@ pub struct Agent {
     pub metrics: PathMetrics,
     /// Time at which the last goal was completed, s.
     pub finished_at: Option<f32>,
-    /// `goals[current]` kept inside the agent (issue 17): a step reads the
-    /// current goal from the agent's own record, which the per-agent loop
-    /// streams through, instead of from the queue's own allocation, a cache
-    /// miss per agent per step in a big world (`perf` at 50,000 agents:
-    /// `GoalSpec::at` 22 % of the native world step, nearly all the load
-    /// of the spec). Same bits. Every change of `goals` or `current` goes
+    /// `goals[current]` kept inside the agent: a step reads the current
+    /// goal from the agent's own record, which the per-agent loop streams
+    /// through, instead of from the queue's own allocation, a cache miss
+    /// per agent per step in a big world. Same bits. Every change of `goals` or `current` goes
     /// through [`Agent::refresh_spec`] ([`World::queues_changed`] for
     /// direct changes); debug builds check it at each plan.
     pub(crate) spec: GoalSpec,
@@ -104,7 +126,7 @@ pub struct World {
     pub agents: Vec<Agent>,
     /// Simulated time, s.
     pub time: f32,
-    /// Avoidance between agents and of the obstacles (issue 18; off by
+    /// Avoidance between agents and of the obstacles (off by
     /// default). Set with [`World::set_avoidance`].
     pub avoidance: AvoidanceConfig,
     /// Static obstacles (avoided when the avoidance is on).
@@ -113,9 +135,9 @@ pub struct World {
     /// Agents whose queue holds a goal facing an agent
     /// ([`GoalMotion::FaceAgent`]), the only goals that read the snapshot:
     /// while there are none and the avoidance (which reads it too) is off,
-    /// a step takes no snapshot (issue 17: a pass over every agent's record
-    /// before the update pass, about a third of the loop's own samples in
-    /// `perf` at 50,000 agents; same bits). Kept by every edit of a queue.
+    /// a step takes no snapshot (a pass over every agent's record before
+    /// the update pass, a large share of the loop's own cost in a big
+    /// world; same bits). Kept by every edit of a queue.
     pub(crate) facing: usize,
     pub(crate) preferred: Vec<(f32, f32)>,
     /// The avoidance's buffers and this step's commands.
@@ -154,10 +176,10 @@ impl World {
     /// metrics ([`Agent::metrics`]: length, curvature, limit checks), which
     /// only studies, the command line and tests read.
     ///
-    /// Issue 17: the lab's page never reads them, and adding them was about
-    /// a twentieth of its update (a square root, an angle difference and the
-    /// limit checks per agent per step). The states are the same bits
-    /// either way: nothing in a step reads the metrics.
+    /// The lab's page never reads them, and keeping them costs a square
+    /// root, an angle difference and the limit checks per agent per step.
+    /// The states are the same bits either way: nothing in a step reads
+    /// the metrics.
     pub fn set_metrics(&mut self, on: bool) {
         self.metrics_on = on;
     }
@@ -212,7 +234,7 @@ impl World {
         for g in &goals {
             g.validate(&self.params)?;
         }
-        crate::funnelling::precision::check_agent(&self.params, state.pos, &goals, None)?;
+        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
         let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
         let internals = if goals.is_empty() {
             Internals {
@@ -247,8 +269,8 @@ impl World {
     /// Fills every agent's internals (and relaxed internals) with what its
     /// controller chooses for the current state — the plan the next
     /// [`World::step`] makes — without moving anything or changing the mode
-    /// memory (issue 13: the first trajectory row reports a mode that is
-    /// true at t = 0). [`World::add_agent`] has no η table, so until this
+    /// memory (so the first trajectory row reports a mode that is true at
+    /// t = 0). [`World::add_agent`] has no η table, so until this
     /// runs (or the first step) a new agent's internals are provisional:
     /// exact inside the tolerance, else Funnelling towards the goal centre.
     /// Call it after adding agents or changing the controller (stepping
@@ -283,8 +305,8 @@ impl World {
 
     /// [`World::step`], then the records [`World::write_state`] writes,
     /// each written as soon as its agent has stepped, while the agent's
-    /// memory is at hand (issue 17: a stepping worker's step and state in
-    /// one pass over the agents instead of two; the same floats).
+    /// memory is at hand (a stepping worker's step and state in one pass
+    /// over the agents instead of two; the same floats).
     pub fn step_writing(&mut self, table: &EtaTable, out: &mut Vec<f32>) {
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
         self.step_each(table, |i, a| {
@@ -428,16 +450,16 @@ impl Planner<'_> {
         a.goal_now = goal;
         let mut kept = a.memory;
         let mem = if advance { &mut a.memory } else { &mut kept };
-        a.internals = self.kind.plan(
-            self.funnel,
-            self.relaxed,
-            self.table,
-            self.p,
-            &a.state,
-            &goal,
-            mem,
-            &mut a.relaxed,
-        );
+        let mut u = Update {
+            table: self.table,
+            params: self.p,
+            state: &mut a.state,
+            goal: &goal,
+            memory: mem,
+        };
+        a.internals = self
+            .kind
+            .plan(self.funnel, self.relaxed, &mut u, &mut a.relaxed);
         spec
     }
 }
@@ -475,24 +497,26 @@ pub(crate) fn faces(goals: &[GoalSpec]) -> bool {
 /// the goal measured from the vehicle, and the position-tolerance phase of
 /// paper 000 Fig. 5, which settles the mode inside the tolerance; outside,
 /// Funnelling towards the centre until the table is consulted. Also what
-/// the lab shows before its table has arrived (issue 17: first frame).
+/// the lab shows before its table has arrived (its first frame).
 #[must_use]
 pub fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Internals {
     let rel = g.pos - s.pos;
     let d = rel.length();
     let bearing = if d > 1e-6 {
-        crate::trig::atan2(rel.y, rel.x)
+        crate::base::trig::atan2(rel.y, rel.x)
     } else {
         s.theta
     };
     let mut out = Internals {
         mode: Mode::Funnelling,
         d,
-        alpha: crate::angle::diff(bearing, s.theta),
+        alpha: crate::base::angle::diff(bearing, s.theta),
         gamma: bearing,
         v_dt: if g.halting {
-            g.speed
-                .min(crate::funnel::halting_speed(p, d - 0.9 * g.d_tol))
+            g.speed.min(crate::funnelling::approach::halting_speed(
+                p,
+                d - 0.9 * g.d_tol,
+            ))
         } else {
             g.speed
         },
@@ -500,7 +524,7 @@ pub fn provisional_plan(p: &VehicleParams, s: &VehicleState, g: &Goal) -> Intern
         ..Default::default()
     };
     let mut mem = FunnelMemory::default();
-    crate::funnel::tolerance_phase(p, s, g, &mut mem, d, &mut out);
+    crate::funnelling::approach::tolerance_phase(p, s, g, &mut mem, d, &mut out);
     out
 }
 

@@ -1,5 +1,5 @@
-//! Splitting a world into slices that step on their own (issue 17, point
-//! 2: the lab steps its agents in Web Workers, each owning a slice).
+//! Splitting a world into slices that step on their own (the lab steps
+//! its agents in Web Workers, each owning a slice).
 //!
 //! Problem: [`World::step`] reads every agent's state from a snapshot taken
 //! at the start of the step, and updates each agent from its own state, its
@@ -20,12 +20,12 @@
 //! between workers; keeping linked agents together needs none.
 //!
 //! Fallback: a world whose agents are coupled (avoidance on: every agent
-//! reads its neighbours; issue 18) is one slice.
+//! reads its neighbours) is one slice.
 
 use core::ops::Range;
 
-use crate::avoidance::AvoidanceMethod;
-use crate::world::{GoalMotion, World};
+use crate::avoidance::config::AvoidanceMethod;
+use crate::world::{goals::GoalMotion, World};
 
 /// Why a world cannot keep only a range of its agents; nothing is changed.
 #[derive(Clone, Debug, PartialEq, Eq)]

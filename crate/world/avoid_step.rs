@@ -1,14 +1,15 @@
-//! The world's step with avoidance on (issue 18): every funnel plans, the
-//! avoidance adjusts the plans together, then every agent steps. With
-//! avoidance off [`World::step`] keeps its own loop (same bits as before).
+//! The world's step with avoidance on: every funnel plans, the avoidance
+//! adjusts the plans together, then every agent steps. With avoidance off
+//! [`World::step`] keeps its own loop, so a world without avoidance steps
+//! to the same bits whether or not this module exists.
 
-use crate::angle::diff;
 use crate::avoidance::config::{validate_obstacles, AvoidanceConfig, AvoidanceMethod, Obstacle};
 use crate::avoidance::patience;
-use crate::seek::seek_step_committed;
-use crate::table::EtaTable;
-use crate::vehicle::ParamError;
-use crate::vehicle::{VehicleParams, VehicleState};
+use crate::base::angle::diff;
+use crate::base::vehicle::ParamError;
+use crate::base::vehicle::{VehicleParams, VehicleState};
+use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::table::lookup::EtaTable;
 use crate::world::World;
 
 impl World {
@@ -104,7 +105,7 @@ impl World {
 }
 
 /// Half-width of the band around the ±π seam of the heading error in
-/// which [`avoidance_step`] keeps the current turn direction: 45° (the
+/// which the avoidance's seek step keeps the current turn direction: 45° (the
 /// funnel's own step keeps it within 10°, `seek::TURN_COMMIT_WINDOW`).
 pub const AVOID_TURN_COMMIT_WINDOW: f32 = core::f32::consts::FRAC_PI_4;
 
@@ -112,16 +113,16 @@ pub const AVOID_TURN_COMMIT_WINDOW: f32 = core::f32::consts::FRAC_PI_4;
 /// PD law, with the current turn kept while the agent is at rest (below
 /// `STUCK_SPEED`) and the error is within [`AVOID_TURN_COMMIT_WINDOW`] of
 /// ±π. Only near obstacles: in open space (paper 000 Fig. 6 with ORCA) it
-/// kept two agents at rest turning round for good. Why wider than the
-/// funnel's: an agent at rest behind a wall,
-/// facing away from its way, was told to turn to headings 156° one way and
-/// 161° the other on alternate steps (the funnel's γ and the goal's
-/// direction, as the wall test flipped), and sat turning neither way for
-/// good (doorway, tune seed 1007).
+/// would keep two agents at rest turning round for good. Why wider than
+/// the funnel's: an agent at rest behind a wall, facing away from its way,
+/// can be told to turn to headings 156° one way and 161° the other on
+/// alternate steps (the funnel's γ and the goal's direction, as the wall
+/// test flips), and with the funnel's window sits turning neither way for
+/// good (the doorway benchmark, tune seed 1007).
 #[inline]
 fn avoidance_step(p: &VehicleParams, s: &mut VehicleState, heading: f32, speed: f32) {
     let e = diff(heading, s.theta);
-    let e = if s.v < crate::avoidance::avoider::STUCK_SPEED
+    let e = if s.v < crate::avoidance::stalled::STUCK_SPEED
         && e.abs() > core::f32::consts::PI - AVOID_TURN_COMMIT_WINDOW
         && e * s.omega < 0.0
     {

@@ -33,12 +33,14 @@ use core::fmt;
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
-use crate::avoidance::{AvoidanceConfig, Obstacle};
-use crate::funnel::{FunnelConfig, Goal};
-use crate::funnelling::precision;
-use crate::relaxed::{ControllerKind, RelaxedConfig};
-use crate::vehicle::{ParamError, VehicleParams, VehicleState};
-use crate::world::{GoalMotion, GoalSpec, SwitchRule, World};
+use crate::avoidance::{config::AvoidanceConfig, config::Obstacle};
+use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::goal::Goal;
+use crate::funnelling::relaxed::RelaxedConfig;
+use crate::world::precision;
+use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, World};
 
 /// A scenario file.
 #[derive(Clone, Debug, PartialEq, Serialize, Deserialize)]
@@ -52,7 +54,7 @@ pub struct Scenario {
     /// Which paper figure it reproduces, if any.
     #[serde(default)]
     pub source: String,
-    /// What the paper claims for that figure (issue 19), in a sentence.
+    /// What the paper claims for that figure, in a sentence.
     #[serde(default)]
     pub claim: String,
     /// What we measure, with the test that asserts it (`tests/fidelity.rs`)
@@ -65,7 +67,7 @@ pub struct Scenario {
     /// Vehicle parameters (defaults: pedestrian).
     #[serde(default)]
     pub vehicle: VehicleParams,
-    /// The η table to run with (issue 14), relative to the scenario file;
+    /// The η table to run with, relative to the scenario file;
     /// it must have been built for `vehicle` (`eta-table --vehicle`).
     /// Without it `steer run` uses the committed table if it matches the
     /// vehicle, else builds the matching one or loads it from its cache.
@@ -82,7 +84,7 @@ pub struct Scenario {
     /// Relaxed-controller settings.
     #[serde(default)]
     pub relaxed: RelaxedConfig,
-    /// Avoidance between agents and of the obstacles (issue 18): `method`
+    /// Avoidance between agents and of the obstacles: `method`
     /// off (default), separation or orca, the body `radius` and settings
     /// ([`AvoidanceConfig`]).
     #[serde(default, skip_serializing_if = "is_default_avoidance")]
@@ -168,19 +170,18 @@ fn default_speed() -> f32 {
     1.3
 }
 
-/// Longest scenario, s ([`crate::funnelling::ranges::DURATION`]).
-pub const MAX_DURATION: f32 = crate::funnelling::ranges::DURATION.max as f32;
+/// Longest scenario, s ([`crate::base::ranges::DURATION`]).
+pub const MAX_DURATION: f32 = crate::base::ranges::DURATION.max as f32;
 
-/// Most agents in a scenario ([`crate::funnelling::ranges::AGENTS`]).
-pub const MAX_SCENARIO_AGENTS: usize = crate::funnelling::ranges::AGENTS.max as usize;
+/// Most agents in a scenario ([`crate::base::ranges::AGENTS`]).
+pub const MAX_SCENARIO_AGENTS: usize = crate::base::ranges::AGENTS.max as usize;
 
 /// Most goals queued per agent in a scenario.
 pub const MAX_GOALS: usize = 10_000;
 
-/// Most agent-steps (agents × duration / dt) in a scenario: 1e9 is about
-/// 7 minutes of simulation at 0.4 µs per agent update; 1,000 agents ×
-/// 3,600 s at 60 Hz is 2.16e8 (issue 16: 100,000 agents × 3,600 s, 2.2e10,
-/// was admitted).
+/// Most agent-steps (agents × duration / dt) in a scenario: 1e9 keeps a
+/// run to minutes, not hours (100,000 agents × 3,600 s at 60 Hz, 2.2e10,
+/// is refused); 1,000 agents × 3,600 s at 60 Hz is 2.16e8.
 pub const MAX_AGENT_STEPS: u64 = 1_000_000_000;
 
 /// Refuses structs written as positional arrays (serde accepts
@@ -297,7 +298,7 @@ impl Scenario {
         self.avoidance.validate()?;
         crate::avoidance::config::validate_obstacles(&self.obstacles)
             .map_err(ScenarioError::Invalid)?;
-        crate::funnelling::ranges::DURATION
+        crate::base::ranges::DURATION
             .check(self.duration)
             .map_err(ParamError::Range)?;
         let n = self.agents.len();
@@ -365,7 +366,7 @@ impl Scenario {
         for (i, a) in self.agents.iter().enumerate() {
             let st = VehicleState::new(
                 Vec2::new(a.x, a.y),
-                crate::angle::wrap(a.theta_deg.to_radians()),
+                crate::base::angle::wrap(a.theta_deg.to_radians()),
                 a.v,
                 a.omega,
             );
@@ -380,5 +381,21 @@ impl Scenario {
     #[must_use]
     pub fn steps(&self) -> u32 {
         (self.duration / self.vehicle.dt).round() as u32
+    }
+}
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    /// The desired-speed range of `base::ranges` holds in files too.
+    #[test]
+    fn a_desired_speed_of_zero_is_refused_in_files_too() {
+        let text = r#"{"name": "z", "agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0, "speed": 0}]}]}"#;
+        let e = Scenario::from_json(text).unwrap_err();
+        assert_eq!(
+            e.to_string(),
+            "scenario is inconsistent: agent 0: goal.speed = 0 is outside [0.01, 2]"
+        );
     }
 }

@@ -1,0 +1,18 @@
+//! The seeded studies behind the figures: whole batches of runs over the
+//! operating envelope, summarised per cell. They sit above the world and
+//! the controllers, and are compiled only with the `studies` feature (the
+//! command line and the tests have it; the page's wasm does not).
+//!
+//! | module | paper | what |
+//! |---|---|---|
+//! | [`reach`] | 000 §5 | seeded reach study behind the acceptance figures |
+//! | [`region`] | 001 §5 | seeded region-goal study: standard vs relaxed |
+//! | [`envelope`] | 000 §4–6, 001 §4 | the whole operating envelope: tolerances × speed × distance, static, moving and chained goals, both controllers |
+//! | [`vehicle`] | 000 §3, §5 | per-vehicle measures in the vehicle's units: η interpolation error, reachability agreement, reach and oriented entries at D ≥ 5 turning radii |
+//! | [`avoidance`] | 000 §7, 001 §7 | the avoidance benchmark scenarios (circle swap, corridor, doorway, paper figures) and the seeded study behind `steer avoid` |
+
+pub mod avoidance;
+pub mod envelope;
+pub mod reach;
+pub mod region;
+pub mod vehicle;
