@@ -73,7 +73,7 @@ function tables(): Plugin {
   };
 }
 
-/** Issue 17: the lab's HTML starts compiling the core's SIMD build before
+/** The lab's HTML starts compiling the core's SIMD build before
  *  its scripts run (index.html); this puts the built asset's URL (hashed,
  *  the one src/wasm.ts would fetch) in place of `%CORE_SIMD_WASM%`, or the
  *  package's own file in the dev server. */
@@ -103,7 +103,7 @@ function jsLiteral(v: unknown): string {
   return `{${entries.map(([k, x]) => `${JSON.stringify(k)}:${jsLiteral(x)}`).join(",")}}`;
 }
 
-/** Issue 17, the first drawn frame (src/lab/firstframe.ts): the core, run
+/** The first drawn frame (src/lab/firstframe.ts): the core, run
  *  here in Node, builds the default playground as src/lab/sim.ts does
  *  (`Lab.withoutTable`, the playground agent, the controller settings) and
  *  its state at t = 0, the agent's internals and predicted seek path go
@@ -116,7 +116,8 @@ async function firstFrameScript(): Promise<string> {
     bundle({
       input, platform: format === "iife" ? "browser" : "node", logLevel: "warn", write: false, output: { format, minify: format === "iife" },
       // The inline script takes the core's enums from its glue, not its classes (no wasm there): their
-      // top-level `Symbol.dispose` lines and registries would keep them (31 → 22 KB minified).
+      // top-level `Symbol.dispose` lines and registries would keep them
+      // in the minified script.
       plugins: [{
         name: "glue-enums-only",
         transform: (code: string, id: string) =>

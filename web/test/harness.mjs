@@ -175,7 +175,6 @@ export async function countPixels(page, { selector, index = 0, around = null, co
   }, { selector, index, around, png, tests });
 }
 
-/** A screenshot of `page` as artifacts/`name`.png. */
 /** Strips COOP/COEP from every response of `context`: its pages are not
  *  cross-origin isolated (no SharedArrayBuffer; workers fall back to messages). */
 export const unisolated = (context) =>
@@ -187,6 +186,7 @@ export const unisolated = (context) =>
     await route.fulfill({ response: res, headers });
   });
 
+/** A screenshot of `page` as artifacts/`name`.png. */
 export const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
 
 /** A mouse drag on the lab's canvas from `from` to `to` (CSS pixels in the
