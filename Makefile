@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget
+	test-e2e-learn test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget
 
 setup: setup-rust setup-browser setup-web
 
@@ -116,6 +116,12 @@ test-e2e-gallery: setup-browser web-build-test
 test-e2e-learn: setup-browser web-build-test
 	node web/test/e2e-learn.mjs
 
+# axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
+# 390×844: no serious or critical violation; also prints the learn page's
+# bytes fetched and first contentful paint.
+test-e2e-axe: setup-browser web-build-test
+	node web/test/e2e-axe.mjs
+
 # Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build-test
@@ -166,7 +172,7 @@ bench-wasm-native: setup-web wasm
 	node web/test/wasmnative.mjs 10000
 	node web/test/wasmnative.mjs 100000
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf test-e2e-avoid
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid
 	@echo "make test: all suites passed"
 
 demo: setup web-build

@@ -24,6 +24,12 @@ export function modeColour(mode: number): string {
   return mode === Mode.EndOfSteering ? COLOURS.end : mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
 }
 
+/** The mode's colour for text on the page's paper (the drawing's grey and
+ *  red darkened to a 4.5:1 contrast, WCAG AA). */
+function modeTextColour(mode: number): string {
+  return mode === Mode.EndOfSteering ? "#5f646c" : mode === Mode.OrientationOnly ? COLOURS.orientation : "#b3141c";
+}
+
 export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
   const start = { x: -4, y: -2, theta: 0 };
   const target = { x: 2, y: 1 };
@@ -45,7 +51,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     li.querySelector("code")!.textContent = d.test;
     const b = li.querySelector("b")!;
     b.textContent = MODE_NAMES[d.mode] ?? "";
-    b.style.color = modeColour(d.mode);
+    b.style.color = modeTextColour(d.mode);
     diagram.append(li);
   }
   const fig = new LiveFigure(host, {
