@@ -39,6 +39,33 @@ const inked = (page, name) =>
     colour: (r, g, b) => Math.max(r, g, b) - Math.min(r, g, b) > 60,
   });
 
+/** Every live number of section `name`: [data-live, text]. */
+const liveNumbers = (page, name) =>
+  page.$$eval(`#${name} [data-live]`, (els) => els.filter((e) => e.dataset.live !== "none").map((e) => [e.dataset.live, e.textContent]));
+
+/** The checks a figure must pass after playing to its end (each section,
+ *  at the page's width `w`): no live number blank ("—", "…") or
+ *  "unreachable" for the set-up the page starts in, both while the last
+ *  picture holds and after the rewind; every handle at least 24 CSS px. */
+async function playedChecks(page, w) {
+  for (const name of Object.keys(DRAGS)) {
+    await check(`${w}: ${name} after playing to the end shows its quantities, handles ≥ 24 px`, async () => {
+      await page.locator(`#${name}`).scrollIntoViewIfNeeded();
+      await page.evaluate((n) => window.__learn.finish(n), name);
+      await settle(page);
+      // ("unreachable" is a blank for η itself; section 3's reachability
+      // may say it of the probe, with the v_dt that fixes it.)
+      const blank = (nums) => nums.filter(([k, t]) => /—|…/.test(t ?? "") || (k !== "table-reach" && /unreachable/.test(t ?? "")));
+      assert.deepEqual(blank(await liveNumbers(page, name)), [], "at the end");
+      await page.waitForFunction((n) => document.querySelector(`[data-figure="${n}"] .fig-clock`).textContent === "t 0.0 s", name, { timeout: 5000 });
+      assert.deepEqual(blank(await liveNumbers(page, name)), [], "after the rewind");
+      for (const box of await page.locator(`[data-figure="${name}"] .handle`).evaluateAll((hs) => hs.map((h) => h.getBoundingClientRect()).map((r) => ({ w: r.width, h: r.height })))) {
+        assert.ok(box.w >= 24 && box.h >= 24, `handle ${box.w}×${box.h}`);
+      }
+    });
+  }
+}
+
 const liveText = (page, name) => page.locator(`[data-live="${name}"]`).first().textContent();
 
 async function dragHandle(page, section, handle, by) {
@@ -171,6 +198,17 @@ try {
   allProblems.push(...problems);
   await context.close();
 
+  // ------------------------------------------------------------ desktop: played to the end
+  {
+    const { page, problems, context } = await openPage(browser, { width: 1440, height: 900 }, 1, { reducedMotion: "reduce" });
+    await page.goto(`${url}learn.html`);
+    assert.equal(await waitLearn(page), null);
+    await playedChecks(page, "desktop");
+    await check("desktop, played: no console errors", async () => assert.deepEqual(problems, []));
+    allProblems.push(...problems);
+    await context.close();
+  }
+
   // ------------------------------------------------------------ autoplay without reduced motion
   {
     const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 });
@@ -204,6 +242,7 @@ try {
         await page.locator(`#${name}`).screenshot({ path: resolve(artifacts, `learn-${name}-390.png`) });
       });
     }
+    await playedChecks(page, "phone");
     await check("phone: no console errors", async () => assert.deepEqual(problems, []));
     allProblems.push(...problems);
     await context.close();

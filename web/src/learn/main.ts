@@ -25,6 +25,8 @@ export interface LearnHook {
   figures: string[];
   /** Frames drawn per figure. */
   frames(): Record<string, number>;
+  /** Runs figure `name` to its end at once, as Play would (then it rewinds). */
+  finish(name: string): void;
 }
 
 declare global {
@@ -53,6 +55,7 @@ if (import.meta.env.MODE === "test") {
     get error() { return status.error; },
     figures: status.figures,
     frames: () => Object.fromEntries(figures.map((f) => [f.spec.name, f.frames])),
+    finish: (name) => figures.find((f) => f.spec.name === name)?.finish(),
   };
 }
 

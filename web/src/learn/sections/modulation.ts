@@ -67,6 +67,9 @@ export function modulationSection(host: HTMLElement, base: Lab): LiveFigure {
     },
     numbers() {
       const f = inter && inter.mode === 3;
+      // Near the end the vehicle seeks (no modulation): the prose keeps the
+      // last funnelling state it showed.
+      if (!f && run.time > 0) return;
       live("mod-deta", deg(inter?.deltaEta ?? NaN));
       live("mod-mu", deg(inter?.mu ?? NaN));
       live("mod-mumax", f ? deg(inter!.muMax) : "— (not funnelling)");

@@ -100,6 +100,9 @@ export function regionSection(host: HTMLElement, base: Lab): LiveFigure {
     numbers() {
       const a = inter?.arc;
       const searched = a && a.branch > 0 && a.branch < 7;
+      // Once the run is inside the disk there is no arc left to search:
+      // the prose keeps the last search it showed.
+      if (!searched && relaxed.time > 0) return;
       live("region-arc", searched ? `[${deg(a.alphaMin)}, ${deg(a.alphaMax)}]` : "—");
       live("region-F", searched ? `[${deg(a.fMin)}, ${deg(a.fMax)}]` : "—");
       live("region-T", searched ? `[${deg(a.tMin)}, ${deg(a.tMax)}]` : "—");
