@@ -242,6 +242,18 @@ try {
         await page.locator(`#${name}`).screenshot({ path: resolve(artifacts, `learn-${name}-390.png`) });
       });
     }
+    await check("phone: the figure stays in view while its paragraphs are read", async () => {
+      for (const name of Object.keys(DRAGS)) {
+        const paras = page.locator(`#${name} .prose p`);
+        for (let k = 0; k < await paras.count(); k++) {
+          await paras.nth(k).evaluate((p) => p.scrollIntoView({ block: "end" }));
+          await settle(page);
+          const fig = await page.locator(`[data-figure="${name}"] canvas`).boundingBox();
+          assert.ok(fig.y >= -1 && fig.y + fig.height <= 844, `${name} paragraph ${k + 1}: canvas at ${fig.y}..${fig.y + fig.height}`);
+          if (k === 1) await page.screenshot({ path: resolve(artifacts, `learn-${name}-390-reading.png`) });
+        }
+      }
+    });
     await playedChecks(page, "phone");
     await check("phone: no console errors", async () => assert.deepEqual(problems, []));
     allProblems.push(...problems);
