@@ -123,6 +123,15 @@ export function angleArc(ctx: CanvasRenderingContext2D, v: View, x: number, y: n
   ctx.restore();
 }
 
+/** `text` at `dist` CSS px from a world point along world angle `angle`
+ *  (names an arrow at its tip). */
+export function tipLabel(ctx: CanvasRenderingContext2D, v: View, x: number, y: number, angle: number, dist: number, text: string, colour: string): void {
+  const p = v.toScreen(x, y);
+  ctx.save();
+  haloText(ctx, text, p.x + Math.cos(angle) * dist, p.y - Math.sin(angle) * dist, colour);
+  ctx.restore();
+}
+
 /** A scale bar in the bottom-left corner: a round length (0.5, 1, 2 or 5 m)
  *  near 80 CSS px long. */
 export function scaleBar(ctx: CanvasRenderingContext2D, v: View): void {

@@ -8,6 +8,7 @@ import { $, showMessage, showVersion } from "../page";
 import { RangeTable } from "../lab/fields";
 import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
 import { setLinkContext, type LiveFigure } from "./figure";
+import { defineSymbols, typesetText } from "./glossary";
 import { challengesSection } from "./sections/challenges";
 import { etaSection } from "./sections/eta";
 import { modesSection } from "./sections/modes";
@@ -60,6 +61,7 @@ if (import.meta.env.MODE === "test") {
 }
 
 async function start(): Promise<void> {
+  defineSymbols(document);
   showVersion(await loadCore());
   // The table in byte planes (src/tableplanes.ts: less than half the gzipped bytes).
   const lab = await createLab("tables/eta.planes");
@@ -68,6 +70,7 @@ async function start(): Promise<void> {
     figures.push(build($(`fig-${name}`), lab));
     status.figures.push(name);
   }
+  for (const l of document.querySelectorAll(".fig-controls label > .name")) l.innerHTML = typesetText(l.textContent ?? "");
   status.ready = true;
 }
 

@@ -8,6 +8,7 @@ import { slider } from "../../controls";
 import { Mode, StateField, type Internals, type Lab } from "../../wasm";
 import { backdrop, COLOURS, deg, drawTarget, MODE_NAMES, path, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
+import { typesetText } from "../glossary";
 import { goal, labState, live, Run } from "../run";
 
 const DEG = Math.PI / 180;
@@ -48,7 +49,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     const li = document.createElement("li");
     li.dataset["mode"] = String(d.mode);
     li.innerHTML = `<code></code> → <b></b>`;
-    li.querySelector("code")!.textContent = d.test;
+    li.querySelector("code")!.innerHTML = typesetText(d.test);
     const b = li.querySelector("b")!;
     b.textContent = MODE_NAMES[d.mode] ?? "";
     b.style.color = modeTextColour(d.mode);
