@@ -8,8 +8,8 @@ WASM_PACK_VERSION := 0.15.1
 WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"/,"",$$3); print $$3; exit}' Cargo.lock)
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
-	wasm web-build test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget
+	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
+	test-e2e-learn test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget
 
 setup: setup-rust setup-browser setup-web
 
@@ -65,8 +65,18 @@ wasm: setup-rust
 	@gzip -9 -c web/pkg/steering_bg.wasm | wc -c | awk '{print "wasm gzipped: " $$1 " bytes"}'
 	@ls -l web/pkg/steering_simd_bg.wasm | awk '{print "wasm (simd128) size: " $$5 " bytes"}'
 
+# web/dist, the shipped build: no test hook in it (checked: HOOK_NAMES, the
+# test hooks' globals and their own method names).
+HOOK_NAMES := __lab|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
+	if grep -rnoE --include='*.js' --include='*.html' '\b($(HOOK_NAMES))\b' web/dist; then echo "web/dist holds test hooks (above)"; exit 1; fi
+
+# web/dist-test: the same pages with their test hooks (`vite build --mode
+# test`: window.__lab, __crowd, __learn, __wander), which the browser suites
+# and the benches drive.
+web-build-test: setup-web wasm
+	cd web && npx vite build --mode test --logLevel warn
 
 # The bindings in headless Chromium (webdriver.json carries the flags).
 # Then the golden-hash suites again in the SIMD build: the shipped simd128
@@ -93,29 +103,35 @@ test-protocol: setup-web
 	cd web && node test/protocol.mjs
 
 # Playwright (playwright-core + Debian's chromium) against the built page.
-test-e2e: setup-browser web-build
+test-e2e: setup-browser web-build-test
 	node web/test/e2e.mjs
 
 # Playwright against the gallery pages (crowd.html, wander.html); also prints
 # the crowd's step cost (boids stepped per 16.7 ms frame at 300/3,000/30,000).
-test-e2e-gallery: setup-browser web-build
+test-e2e-gallery: setup-browser web-build-test
 	node web/test/e2e-gallery.mjs
 
 # Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
-test-e2e-learn: setup-browser web-build
+test-e2e-learn: setup-browser web-build-test
 	node web/test/e2e-learn.mjs
+
+# axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
+# 390×844: no serious or critical violation; also prints the learn page's
+# bytes fetched and first contentful paint.
+test-e2e-axe: setup-browser web-build-test
+	node web/test/e2e-axe.mjs
 
 # Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
-test-e2e-vehicle: setup-browser web-build
+test-e2e-vehicle: setup-browser web-build-test
 	node web/test/e2e-vehicle.mjs
 
 # Avoidance in the lab: the page plays the circle swap and reads the core's
 # overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
 # dragged by mouse and finger, the link; screenshots in artifacts/.
-test-e2e-avoid: setup-browser web-build
+test-e2e-avoid: setup-browser web-build-test
 	node web/test/e2e-avoid.mjs
 
 # Performance paths in the browser: the SIMD core where the engine has SIMD, the
@@ -123,7 +139,7 @@ test-e2e-avoid: setup-browser web-build
 # ?draw=gl: headless WebGL is software, where the pages keep 2D sprites);
 # the lab stepped in Web Workers (shared memory, by message without
 # cross-origin isolation, facing pairs) equals one core after 120 steps.
-test-e2e-perf: setup-browser web-build
+test-e2e-perf: setup-browser web-build-test
 	node web/test/e2e-perf.mjs
 
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
@@ -131,21 +147,22 @@ test-e2e-perf: setup-browser web-build
 # stepped per 16.7 ms frame at 10k / 30k / 100k with 0, 1 and N workers.
 # First the time to the first frame, 9 fresh loads (median, p90, where the
 # time went); BENCH_WEB_ARGS="--base DIR" alternates them with another
-# build's dist, e.g. main's built into /tmp (README, figures).
+# build's test dist (web/dist-test), e.g. main's built into /tmp.
 BENCH_WEB_ARGS ?=
-bench-web: setup-browser web-build bench-wasm-native
+bench-web: setup-browser web-build-test bench-wasm-native
 	node web/test/perf.mjs 1000,10000 $(BENCH_WEB_ARGS)
 
 # CPU per drawn state per thread group (the workers, the page's
 # thread, the rest; Linux /proc) on the lab at 100,000 agents and the crowd
 # at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need
-# (BENCH_BUDGET_ARGS="--base DIR": against another build's dist, same run).
-bench-budget: setup-browser web-build
+# (BENCH_BUDGET_ARGS="--base DIR": against another build's test dist,
+# web/dist-test, same run; a build older than the test mode: its web/dist).
+bench-budget: setup-browser web-build-test
 	node web/test/budget.mjs $(BENCH_BUDGET_ARGS)
 
 # η table build in Chromium's Web Workers and the cached reload,
 # per reference vehicle, REPS fresh contexts each (median, max, host load).
-bench-tables: setup-browser web-build
+bench-tables: setup-browser web-build-test
 	node web/test/bench-tables.mjs
 
 # The same funnelling world natively (examples/world_bench.rs) and
@@ -156,7 +173,7 @@ bench-wasm-native: setup-web wasm
 	node web/test/wasmnative.mjs 10000
 	node web/test/wasmnative.mjs 100000
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol test-e2e test-e2e-gallery test-e2e-learn test-e2e-vehicle test-e2e-perf test-e2e-avoid
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid
 	@echo "make test: all suites passed"
 
 demo: setup web-build

@@ -14,14 +14,9 @@ use wasm_bindgen::JsValue;
 use wasm_bindgen_test::*;
 
 mod common;
-use common::{crowd_golden_cases, crowd_hash_step, fnv, FNV_OFFSET, WANDER_PRESETS};
+use common::{crowd_golden_cases, crowd_hash_step, fnv, message, FNV_OFFSET, WANDER_PRESETS};
 
 wasm_bindgen_test_configure!(run_in_browser);
-
-fn message(e: wasm_bindgen::JsError) -> String {
-    let v: JsValue = e.into();
-    js_sys::Error::from(v).message().into()
-}
 
 /// A Rust value as the page would hand it over (a plain JS object).
 fn js<T: serde::Serialize>(v: &T) -> JsValue {

@@ -13,12 +13,10 @@ use wasm_bindgen_test::*;
 
 wasm_bindgen_test_configure!(run_in_browser);
 
-static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
+mod common;
+use common::message;
 
-fn message(e: wasm_bindgen::JsError) -> String {
-    let v: JsValue = e.into();
-    js_sys::Error::from(v).message().into()
-}
+static TABLE: &[u8] = include_bytes!("../tables/eta.bin");
 
 fn get(v: &JsValue, k: &str) -> JsValue {
     js_sys::Reflect::get(v, &k.into()).unwrap()

@@ -41,7 +41,11 @@ fn native_small_tables_match_the_golden_crcs() {
 }
 
 #[cfg(target_arch = "wasm32")]
+mod common;
+
+#[cfg(target_arch = "wasm32")]
 mod browser {
+    use super::common::message;
     use super::*;
     use steering::bindings::tables::{assemble_table, table_job, table_key_of, table_slice};
     use wasm_bindgen::JsValue;
@@ -52,11 +56,6 @@ mod browser {
     fn js<T: serde::Serialize>(v: &T) -> JsValue {
         v.serialize(&serde_wasm_bindgen::Serializer::json_compatible())
             .unwrap()
-    }
-
-    fn message(e: wasm_bindgen::JsError) -> String {
-        let v: JsValue = e.into();
-        js_sys::Error::from(v).message().into()
     }
 
     fn build(p: &JsValue, counts: Option<Vec<u32>>, n: u32) -> Vec<u8> {

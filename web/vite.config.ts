@@ -8,26 +8,17 @@ import type { IncomingMessage, ServerResponse } from "node:http";
 import { pathToFileURL } from "node:url";
 import { build as bundle } from "rolldown";
 import type { firstFrameData } from "./src/lab/firstdata";
+import { toPlanes } from "./src/tableplanes.ts";
 
 const TABLES = resolve(import.meta.dirname, "../tables");
 
-/** Gzipped tables by file, compressed once (issue 17: 3.2 MB → 1.2 MB on
- *  the wire; 0.54 MB as byte planes, `NAME.planes`). */
+/** Gzipped tables by file, compressed once (the byte planes, `NAME.planes`,
+ *  gzip to less than half of `NAME.bin`; src/tableplanes.ts). */
 const gzipped = new Map<string, { mtimeMs: number; body: Buffer }>();
 
-/** The byte planes of `b`: src/tableplanes.ts's `toPlanes` (the page's
- *  `fromPlanes` rejoins them; the e2e suite loads the table this way). */
-function toPlanes(b: Uint8Array): Uint8Array {
-  const m = b.length >>> 2;
-  const out = new Uint8Array(b.length);
-  for (let i = 0; i < m; i++) for (let j = 0; j < 4; j++) out[j * m + i] = b[4 * i + j]!;
-  out.set(b.subarray(4 * m), 4 * m);
-  return out;
-}
-
 /** A table file's bytes as served: `NAME.planes` is `NAME.bin` in byte
- *  planes (issue 17, src/tableplanes.ts: same bytes once rejoined, 2.2×
- *  smaller gzipped). */
+ *  planes (the page's `fromPlanes` rejoins them; the e2e suite loads the
+ *  table this way). */
 function tableBytes(file: string, planes: boolean): Buffer {
   const b = readFileSync(file);
   return planes ? Buffer.from(toPlanes(b)) : b;
@@ -82,7 +73,7 @@ function tables(): Plugin {
   };
 }
 
-/** Issue 17: the lab's HTML starts compiling the core's SIMD build before
+/** The lab's HTML starts compiling the core's SIMD build before
  *  its scripts run (index.html); this puts the built asset's URL (hashed,
  *  the one src/wasm.ts would fetch) in place of `%CORE_SIMD_WASM%`, or the
  *  package's own file in the dev server. */
@@ -112,7 +103,7 @@ function jsLiteral(v: unknown): string {
   return `{${entries.map(([k, x]) => `${JSON.stringify(k)}:${jsLiteral(x)}`).join(",")}}`;
 }
 
-/** Issue 17, the first drawn frame (src/lab/firstframe.ts): the core, run
+/** The first drawn frame (src/lab/firstframe.ts): the core, run
  *  here in Node, builds the default playground as src/lab/sim.ts does
  *  (`Lab.withoutTable`, the playground agent, the controller settings) and
  *  its state at t = 0, the agent's internals and predicted seek path go
@@ -125,7 +116,8 @@ async function firstFrameScript(): Promise<string> {
     bundle({
       input, platform: format === "iife" ? "browser" : "node", logLevel: "warn", write: false, output: { format, minify: format === "iife" },
       // The inline script takes the core's enums from its glue, not its classes (no wasm there): their
-      // top-level `Symbol.dispose` lines and registries would keep them (31 → 22 KB minified).
+      // top-level `Symbol.dispose` lines and registries would keep them
+      // in the minified script.
       plugins: [{
         name: "glue-enums-only",
         transform: (code: string, id: string) =>
@@ -141,7 +133,7 @@ async function firstFrameScript(): Promise<string> {
   core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
   const data = make(core);
   const code = (await bundleTs(resolve(src, "first.ts"), "iife")).output[0].code.replace(/<\/(script)/gi, "<\\/$1");
-  return `window.__labFirstFrame=${jsLiteral(data)};\n${code}`;
+  return `window.__firstFrameData=${jsLiteral(data)};\n${code}`;
 }
 
 function firstFrame(): Plugin {
@@ -165,25 +157,71 @@ function firstFrame(): Plugin {
   };
 }
 
+/** The lab's pages: their file, title and own stylesheets, and their link
+ *  in the navigation every page shows, in this order. */
+const PAGES = [
+  { file: "index.html", title: "funnelling control", nav: "Funnelling", css: [] },
+  { file: "crowd.html", title: "crowded path following", nav: "Crowd path following", css: ["./src/gallery.css"] },
+  { file: "wander.html", title: "random steering gallery", nav: "Random steering gallery", css: ["./src/gallery.css"] },
+  { file: "learn.html", title: "learn funnelling", nav: "Learn", css: ["./src/learn/learn.css"] },
+] as const;
+
+/** Every page's head and navigation, from PAGES: `<!-- lab:head -->` and
+ *  `<!-- lab:nav -->` in a page's HTML, filled in before Vite reads its
+ *  stylesheets (dev server and build alike). */
+function pageFrame(): Plugin {
+  return {
+    name: "steering-page-frame",
+    transformIndexHtml: {
+      order: "pre",
+      handler(html, ctx) {
+        const file = basename(ctx.filename);
+        const page = PAGES.find((p) => p.file === file);
+        if (!page) throw new Error(`${file} is not one of the lab's pages (vite.config.ts, PAGES)`);
+        const head = [
+          `<meta charset="utf-8" />`,
+          `<meta name="viewport" content="width=device-width, initial-scale=1" />`,
+          `<link rel="icon" href="data:," />`,
+          `<title>The steering lab — ${page.title}</title>`,
+          ...["./src/style.css", ...page.css].map((href) => `<link rel="stylesheet" href="${href}" />`),
+        ];
+        const links = PAGES.map((p) => `<a href="./${p.file}"${p === page ? ` aria-current="page"` : ""}>${p.nav}</a>`);
+        const nav = [`<h1>The steering lab</h1>`, `<nav class="labnav" aria-label="lab pages">`, ...links.map((a) => `  ${a}`), `</nav>`];
+        const fill = (marker: string, lines: string[]) => (text: string) =>
+          text.replace(new RegExp(`^( *)<!-- ${marker} -->$`, "m"), (_, indent: string) => lines.map((l) => indent + l).join("\n"));
+        const out = fill("lab:nav", nav)(fill("lab:head", head)(html));
+        if (out.includes("<!-- lab:")) throw new Error(`${file}: a lab:head or lab:nav marker was not filled`);
+        return out;
+      },
+    },
+  };
+}
+
 // Cross-origin isolation gives performance.now() 5 µs resolution (instead
 // of 100 µs), which the HUD's µs-per-update figure needs.
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
 
-export default defineConfig({
+/** The e2e suites' and the benches' build (`vite build --mode test`):
+ *  the pages with their test hooks (`import.meta.env.MODE === "test"`),
+ *  beside the shipped dist/, which holds none of them. */
+const TEST_MODE = "test";
+
+export default defineConfig(({ mode }) => ({
   base: "./",
-  plugins: [tables(), coreWasmUrl(), firstFrame()],
+  plugins: [pageFrame(), tables(), coreWasmUrl(), firstFrame()],
   server: { host: "127.0.0.1", fs: { allow: [".."] }, headers: ISOLATION },
   preview: { host: "127.0.0.1", headers: ISOLATION },
-  // The η-table workers (issue 14) import the wasm module: ES workers.
+  // The η-table workers import the wasm module: ES workers.
   worker: { format: "es" },
   build: {
+    outDir: mode === TEST_MODE ? "dist-test" : "dist",
     target: "es2022",
     sourcemap: false,
-    // The gallery pages (crowd path following, random steering) and the learn
-    // page (issue 15) beside the funnelling lab.
+    // The gallery pages (crowd path following, random steering) and the
+    // learn page beside the funnelling lab.
     rolldownOptions: {
-      // Issue 17: the code the pages share in one chunk (was four beside each
-      // page's own: fewer requests before the lab's core takes over).
+      // The code the pages share in one chunk (not one copy beside each
+      // page's own): fewer requests before the lab's core takes over.
       output: { codeSplitting: { groups: [{ name: "shared", test: /[\\/](src|pkg)[\\/]|preload-helper|modulepreload-polyfill/, minShareCount: 2 }] } },
       input: {
         index: resolve(import.meta.dirname, "index.html"),
@@ -193,4 +231,4 @@ export default defineConfig({
       },
     },
   },
-});
+}));

@@ -210,3 +210,11 @@ pub fn crowd_hash_step(h: &mut u64, pos: &[f32], vel: &[f32]) {
     fnv(h, pos);
     fnv(h, vel);
 }
+
+/// The message of an error a binding returned, as the page reads it
+/// (`Error.message`): what the browser suites compare.
+#[cfg(target_arch = "wasm32")]
+pub fn message(e: wasm_bindgen::JsError) -> String {
+    let v: wasm_bindgen::JsValue = e.into();
+    js_sys::Error::from(v).message().into()
+}

@@ -15,7 +15,7 @@ export function download(name: string, blob: Blob): void {
 }
 
 export function downloadPng(canvas: HTMLCanvasElement): void {
-  // With the WebGL agent layer over it (issue 17), the picture is both layers.
+  // With the WebGL agent layer over it, the picture is both layers.
   withGlLayer(canvas).toBlob((b) => {
     if (b) download("steering-lab.png", b);
   }, "image/png");

@@ -1,4 +1,4 @@
-// Agents by the hundred thousand (issue 17): one WebGL2 instanced draw of
+// Agents by the hundred thousand: one WebGL2 instanced draw of
 // oriented triangles, read straight from the core's typed arrays (no loop
 // over agents in JavaScript), on a WebGL2 canvas laid over the page's 2D
 // canvas (same box, transparent, pointer-events: none), so everything else

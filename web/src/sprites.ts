@@ -1,7 +1,7 @@
 // Agents drawn by the hundred or the ten thousand, the same way on every
 // page: oriented triangles (one canvas path for all of them) for small
-// crowds, pixel sprites beyond. Filling paths costs ~20 µs per agent in
-// software-rasterised Chromium; writing pixels costs well under 1 µs.
+// crowds, pixel sprites beyond: in software-rasterised Chromium a filled
+// path costs far more per agent than writing its few pixels.
 
 import type { Surface } from "./canvas";
 
@@ -21,9 +21,9 @@ export function abgr(hex: string): number {
 }
 
 /** Headings a sprite's nose can point to: a two-pixel nose shows no finer
- *  step. Issue 17: cos and sin per agent, and `Math.round`, were two
- *  thirds of stamping 100,000 funnelling agents (Node: 6.4 → 2.3 ms per
- *  frame with this table and rounding by `+ 0.5 | 0`, the same blocks). */
+ *  step. A table of their unit vectors and rounding by `+ 0.5 | 0` stand
+ *  for cos, sin and `Math.round` per agent, which would be most of the
+ *  cost of stamping agents by the hundred thousand (the same blocks). */
 export const HEADINGS = 256;
 
 /** Screen unit vectors (y down) of the [`HEADINGS`] headings, x then y. */
@@ -49,16 +49,15 @@ interface Layer {
   img: ImageData;
   px: Uint32Array;
   /** The layer's width in pixels, read once: `canvas.width` is a DOM call,
-   *  and `stamp` runs per agent (issue 17: 100,000 a frame). */
+   *  and `stamp` runs per agent (up to hundreds of thousands a frame). */
   w: number;
 }
 
 /** The (2r+1)² block of `colour` centred on pixel offset `o` of `px`, a
- *  layer `W` pixels wide. Issue 17 (the crowd's 150,000 boids stamped up
- *  to 40 times a second on the page's thread, beside two stepping
- *  workers): the usual 3 × 3 block written out, and the caller's rounding
- *  by `+ 0.5 | 0` (every pixel kept at a positive index): 3.7 → 2.2 ms per
- *  150,000 stamps in Node, the same pixels. */
+ *  layer `W` pixels wide: the usual 3 × 3 block written out, and the
+ *  caller's rounding by `+ 0.5 | 0` (every pixel kept at a positive
+ *  index), as this runs per agent on the page's thread, beside the
+ *  stepping workers; the same pixels as the general loop. */
 function block(px: Uint32Array, W: number, o: number, r: number, colour: number): void {
   if (r === 1) {
     px[o - W - 1] = colour;
@@ -95,12 +94,10 @@ export class PixelSprites {
       canvas.height = H;
       // A layer only the CPU writes (`willReadFrequently`: a bitmap in
       // memory, not a GPU texture): putImageData is a copy, and the one
-      // upload is drawImage's. Issue 17, the crowd's 150,000 boids in
-      // headless Chromium (software GL), this against the GPU-backed
-      // layer, alternating, 4 rounds: 1 worker 66,553–84,014 →
-      // 68,610–90,663 boids stepped + drawn per frame (medians 74,300 →
-      // 80,700), 2 workers 67,935–72,241 → 77,167–90,431 (70,900 →
-      // 79,000). The visible canvas made software too was slower.
+      // upload is drawImage's. With a GPU-backed layer every putImageData
+      // is an upload of its own, and the page's frames (and the workers'
+      // core) pay for it; the visible canvas made software too is slower
+      // still (`make bench-web`'s crowd rows compare them).
       const ctx = canvas.getContext("2d", { willReadFrequently: true });
       if (!ctx) return false;
       const img = ctx.createImageData(W, H);
@@ -129,10 +126,8 @@ export class PixelSprites {
   /** Per table heading (indexed as [`HEADING_UNITS`], by [`headingAt`]):
    *  the offsets from a sprite's centre pixel, in this layer's rows, of the
    *  two nose pixels `stamp` writes for that heading and `nose`: the tip,
-   *  then the midpoint. Issue 17: the nose's float arithmetic per agent
-   *  was about a third of stamping 100,000 funnelling agents (Node, the
-   *  lab's loop: 2.5–3.9 → 1.6–3.0 ms a frame, the same pixels for a
-   *  random 100,000); a sprite at integer (sx, sy) has its tip at
+   *  then the midpoint: the nose's float arithmetic per agent would be
+   *  about a third of stamping them. A sprite at integer (sx, sy) has its tip at
    *  sx + ⌊ux·nose + ½⌋ (likewise y), the midpoint at sx + ⌊(dx + 1) / 2⌋.
    *  `stamp` rounds sx + ux·nose + ½ as one sum, which can round the other
    *  way within an ulp of an integer: 54 of 12 million (heading, nose,

@@ -1,14 +1,13 @@
-// The η table on the wire (issue 17, "a faster start"): the file's 4-byte
-// words split into four byte planes (byte 0 of every word, then byte 1, …;
-// the 0–3 trailing bytes as they are). Lossless — the core gets the very
-// bytes of tables/eta.bin, so every η and every golden hash is unchanged —
-// but the planes compress far better: the f32 exponents and high mantissa
-// bytes repeat where the low bytes are noise. gzip -6: 1.215 MB → 0.541 MB
-// (brotli 0.479 MB). A quantised table (η as i16, speed as u16) was
-// measured too: 0.475 MB gzipped with its planes, arrival figures equal
-// on the held-out seed, but its η differ in the last bits, so trajectories
-// and the golden hashes would change for 12 % fewer bytes
-// (web/test/table-quant.mjs, README figures).
+// The η table on the wire: the file's 4-byte words split into four byte
+// planes (byte 0 of every word, then byte 1, …; the 0–3 trailing bytes as
+// they are). Lossless: the core gets the very bytes of tables/eta.bin, so
+// every η and every golden hash is the same. The planes compress far
+// better (the f32 exponents and high mantissa bytes repeat where the low
+// bytes are noise): gzipped, less than half the plain file. A quantised
+// table would be smaller still, but its η differ in the last bits, so the
+// trajectories and the golden hashes would change (web/test/table-quant.mjs
+// measures it). The server (vite.config.ts) makes the planes with
+// `toPlanes`, the page rejoins them with `fromPlanes`.
 
 const LITTLE = new Uint8Array(new Uint32Array([1]).buffer)[0] === 1;
 
@@ -21,7 +20,7 @@ export function toPlanes(b: Uint8Array): Uint8Array {
   return out;
 }
 
-/** The file's bytes from its planes (about 5 ms for the 3.3 MB table). */
+/** The file's bytes from its planes (whole words at a time where the host is little-endian). */
 export function fromPlanes(p: Uint8Array): Uint8Array {
   const m = p.length >>> 2;
   const out = new Uint8Array(p.length);

@@ -55,8 +55,8 @@ const SIMD_PROBE = new Uint8Array([
   0, 97, 115, 109, 1, 0, 0, 0, 1, 5, 1, 96, 0, 1, 123, 3, 2, 1, 0, 10, 10, 1, 8, 0, 65, 0, 253, 15, 253, 98, 11,
 ]);
 
-/** Which build of the core runs: "simd128" (issue 17: the core compiled
- *  with WebAssembly SIMD, same bits) where the engine has SIMD, else
+/** Which build of the core runs: "simd128" (the core compiled with
+ *  WebAssembly SIMD, same bits) where the engine has SIMD, else
  *  "baseline". Set by loadCore. */
 export let coreBuild: "simd128" | "baseline" | null = null;
 
@@ -69,7 +69,7 @@ export function loadCore(): Promise<string> {
     // byte-identical); the baseline module is init()'s default.
     if (!simd) return init().then(() => version());
     const url = new URL("../pkg/steering_simd_bg.wasm", import.meta.url);
-    // Issue 17: the lab page starts compiling the SIMD build from its HTML,
+    // The lab page starts compiling the SIMD build from its HTML,
     // while the scripts load (index.html); taken here, else fetched now
     // (globalThis: workers load the core too).
     const early = (globalThis as { __coreCompile?: Promise<WebAssembly.Module> }).__coreCompile;
@@ -90,7 +90,7 @@ export function loadCore(): Promise<string> {
  *  draws before its table, `Lab.withoutTable`). Throws an Error whose
  *  message is fit to show on the page. */
 export async function createLab(tableUrl: string): Promise<Lab> {
-  // The fetch runs while the core instantiates (issue 17).
+  // The fetch runs while the core instantiates.
   const fetching = fetchTable(tableUrl);
   await loadCore();
   const bytes = await fetching;
@@ -101,8 +101,8 @@ export async function createLab(tableUrl: string): Promise<Lab> {
   }
 }
 
-/** Starts fetching the η table (issue 17: the lab's first frame does not
- *  wait for it, see `Lab.withoutTable`); a `.planes` URL is the file in
+/** Starts fetching the η table (the lab's first frame does not wait for
+ *  it, see `Lab.withoutTable`); a `.planes` URL is the file in
  *  byte planes (tableplanes.ts), rejoined here. Rejects with a message fit
  *  to show. */
 export function fetchTable(tableUrl: string): Promise<Uint8Array> {

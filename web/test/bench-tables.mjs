@@ -1,4 +1,4 @@
-// `make bench-tables` (issue 14): the η table build in headless Chromium
+// `make bench-tables`: the η table build in headless Chromium
 // (Web Workers, the page animating) and the cached reload, per reference
 // vehicle, over several fresh browser contexts (empty IndexedDB each).
 // Prints every run, median and max per vehicle and the host load

@@ -1,4 +1,4 @@
-// Issue 17: where the CPU goes per drawn state, and what the ≥ 100,000
+// Where the CPU goes per drawn state, and what the ≥ 100,000
 // agents (boids) per 16.7 ms frame target would take on this machine.
 //
 // The frame counts of `perf.mjs` say how far a page is from the target;
@@ -25,8 +25,9 @@
 // the base's (agents per frame, CPU per drawn state, the page's thread).
 // Usage: node web/test/budget.mjs [--base DIR]...  (after `make web-build`; `make bench-budget`)
 import { existsSync, readdirSync, readFileSync } from "node:fs";
+import { parseArgs } from "node:util";
 import { cpus } from "node:os";
-import { serveBuilds, launch, openPage, waitReady, loadCrowd, takeBases, rotated } from "./harness.mjs";
+import { serveBuilds, launch, openPage, waitReady, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
 
 if (!existsSync("/proc/self/task")) {
   console.error("budget.mjs: needs Linux's /proc (per-thread CPU time)");
@@ -95,12 +96,8 @@ function sample(root) {
   return out;
 }
 
-const args = process.argv.slice(2);
-const baseDirs = takeBases(args);
-if (args.length) {
-  console.error(`budget.mjs: unknown argument(s) ${args.join(" ")} (usage: node web/test/budget.mjs [--base DIR]...)`);
-  process.exit(2);
-}
+const { values } = parseArgs({ options: BASE_OPTION });
+const baseDirs = values.base;
 const { builds, close } = await serveBuilds(baseDirs, process.env.DIST);
 const browser = await launch();
 // Playwright starts the browser as this process's child: its processes are

@@ -1,20 +1,20 @@
 // Crowd step cost in Node at 30,000 boids (Test IV pathway, Parker 10 %, metrics on, as the
 // crowd page's bench), separation on / off, for each wasm package directory given (e.g. a
 // baseline built from an older commit and web/pkg): rounds alternate between packages, best of 5.
-// Issue 17's anomaly: `node web/test/crowdstep.mjs /path/to/old/pkg web/pkg`.
-// Issue 17's breakdown: `--n 100000` boids, `--scaled` (Test IV density: pathway scaled by
+// Usage: `node web/test/crowdstep.mjs /path/to/old/pkg web/pkg`; options:
+// `--n 100000` boids, `--scaled` (Test IV density: pathway scaled by
 // n / 300, as `cargo bench --bench crowd`; separation on, metrics on / off instead of
 // separation on / off), `--simd` (the package's steering_simd_bg.wasm); also prints the
 // cost of copying positions + velocities out.
 import { readFileSync } from "node:fs";
 import { resolve } from "node:path";
-const args = process.argv.slice(2);
-const flag = (f) => { const k = args.indexOf(f); if (k < 0) return false; args.splice(k, 1); return true; };
-const nAt = args.indexOf("--n");
-const N = nAt >= 0 ? Number(args.splice(nAt, 2)[1]) : 30000;
-const scaled = flag("--scaled");
-const simd = flag("--simd");
-const pkgs = args;
+import { parseArgs } from "node:util";
+const { values, positionals: pkgs } = parseArgs({
+  allowPositionals: true,
+  options: { n: { type: "string", default: "30000" }, scaled: { type: "boolean", default: false }, simd: { type: "boolean", default: false } },
+});
+const N = Number(values.n);
+const { scaled, simd } = values;
 const libs = [];
 for (const pkg of pkgs) {
   const core = await import(resolve(pkg) + "/steering.js");

@@ -1,4 +1,4 @@
-// Playwright for issue 18 (avoidance in the lab), against the built page in
+// Playwright for avoidance in the lab, against the built page in
 // Debian's headless Chromium. The page's own loop plays the antipodal circle
 // swap (32 agents, preset avoid_circle32) while a sampler in the page reads
 // the core's overlap count (`Lab.overlaps`, pairs closer than two body
@@ -8,11 +8,10 @@
 // obstacles; a mouse and a finger drag obstacles (pointer events with
 // capture) and the core's obstacles move; added obstacles survive a reload
 // through the link; a malformed link is refused field by field. Screenshots
-// at desktop and 390 px widths in artifacts/. Prints "e2e-avoid: N passed, M failed".
-import { serve, launch, openPage, checks, shot, waitReady, settle, dragOnLab as mouseDrag } from "./harness.mjs";
+// at desktop and 390 px widths in artifacts/. A node:test suite (harness.mjs `check`).
+import { serve, launch, openPage, check, shot, waitReady, settle, dragOnLab as mouseDrag } from "./harness.mjs";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-avoid");
 
 /** Plays the loaded preset in the page until every agent has finished or
  *  `maxSimS` of simulated time passed (or, with `stopOnOverlap`, the first
@@ -252,4 +251,3 @@ try {
   await browser.close();
   await server.close();
 }
-finish();

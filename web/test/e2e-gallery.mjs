@@ -7,13 +7,12 @@
 // wander.html: loads without console errors, every panel draws every tile
 // (non-blank canvases), a knob rebuilds, a bad JSON edit shows the core's
 // message. Screenshots go to artifacts/ (gitignored).
-// Prints "e2e-gallery: N passed, M failed".
-import { serve, launch, openPage, checks, shot, settle, artifacts, unisolated } from "./harness.mjs";
+// A node:test suite (harness.mjs `check`).
+import { serve, launch, openPage, check, shot, settle, artifacts, unisolated, countPixels } from "./harness.mjs";
 import { resolve } from "node:path";
 import { writeFileSync } from "node:fs";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-gallery");
 
 async function waitCrowd(page) {
   await page.waitForFunction(() => {
@@ -23,23 +22,12 @@ async function waitCrowd(page) {
   return page.evaluate(() => window.__crowd.error);
 }
 
-/** Share of non-background pixels of a canvas (read from a copy). */
+/** Share of a canvas's pixels that are not its background (its top-left pixel's colour). */
 async function inked(page, selector, index = 0) {
-  return page.evaluate(({ selector, index }) => {
-    const c = document.querySelectorAll(selector)[index];
-    const copy = document.createElement("canvas");
-    copy.width = c.width;
-    copy.height = c.height;
-    const ctx = copy.getContext("2d", { willReadFrequently: true });
-    ctx.drawImage(c, 0, 0);
-    const d = ctx.getImageData(0, 0, c.width, c.height).data;
-    const [r0, g0, b0] = [d[0], d[1], d[2]];
-    let ink = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      if (Math.abs(d[i] - r0) + Math.abs(d[i + 1] - g0) + Math.abs(d[i + 2] - b0) > 30) ink++;
-    }
-    return ink / (d.length / 4);
-  }, { selector, index });
+  const n = await countPixels(page, { selector, index }, {
+    ink: (r, g, b, bg) => Math.abs(r - bg[0]) + Math.abs(g - bg[1]) + Math.abs(b - bg[2]) > 30,
+  });
+  return n.ink / n.total;
 }
 
 const { server, url } = await serve();
@@ -307,7 +295,7 @@ try {
     await context.close();
   }
 
-  // ------------------------------------------------- crowd in workers (issue 17)
+  // ------------------------------------------------- crowd in workers
   {
     const owned = (page) => page.waitForFunction(() => { const w = window.__crowd.workers(); return !w.starting && window.__crowd.idle(); }, null, { timeout: 60000 });
     const pause = async (page) => {
@@ -548,4 +536,3 @@ try {
 }
 writeFileSync(resolve(artifacts, "gallery-perf.json"), JSON.stringify(report, null, 2));
 if (allProblems.length) console.log(allProblems.join("\n"));
-finish();

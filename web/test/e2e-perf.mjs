@@ -1,4 +1,4 @@
-// Issue 17's browser checks (`make test-e2e-perf`), against web/dist in
+// The browser checks of speed (`make test-e2e-perf`), against the test build in
 // Debian's headless Chromium: the SIMD build of the core loads where the
 // engine has WebAssembly SIMD and the baseline build where it has not (SIMD
 // hidden from WebAssembly.validate), and both run the lab, the crowd and the
@@ -9,11 +9,10 @@
 // WebGL layer would be read back every frame), so the GL checks force it
 // with `?draw=gl` and allow the one "GPU stall due to ReadPixels" warning
 // that software compositing then prints; `?draw=2d` forces the sprites. Screenshots at 1280 and 390 px in artifacts/perf-gl-*.
-// Prints "e2e-perf: N passed, M failed".
-import { serve, launch, openPage, checks, waitReady, shot, settle, unisolated } from "./harness.mjs";
+// A node:test suite (harness.mjs `check`).
+import { serve, launch, openPage, check, waitReady, shot, settle, unisolated, countPixels } from "./harness.mjs";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-perf");
 
 /** The core's wasm files the page fetched (Vite adds a hash to the name). */
 const wasmFetched = (page) =>
@@ -52,23 +51,11 @@ try {
     });
   }
 
-  /** Pixels of what the page shows over `sel`'s box (both canvas layers, as
-   *  composited: a screenshot, decoded in the page) within `tol` of [r, g, b]. */
-  const colourPixels = async (page, sel, rgb, tol = 40) => {
-    const png = await page.screenshot({ clip: await page.locator(sel).boundingBox() });
-    return page.evaluate(async ({ b64, rgb, tol }) => {
-      const bytes = Uint8Array.from(atob(b64), (c) => c.charCodeAt(0));
-      const img = await createImageBitmap(new Blob([bytes], { type: "image/png" }));
-      const c = document.createElement("canvas");
-      c.width = img.width;
-      c.height = img.height;
-      const ctx = c.getContext("2d", { willReadFrequently: true });
-      ctx.drawImage(img, 0, 0);
-      const d = ctx.getImageData(0, 0, c.width, c.height).data;
-      let n = 0;
-      for (let i = 0; i < d.length; i += 4) if (Math.abs(d[i] - rgb[0]) + Math.abs(d[i + 1] - rgb[1]) + Math.abs(d[i + 2] - rgb[2]) < tol) n++;
-      return n;
-    }, { b64: png.toString("base64"), rgb, tol });
+  /** Pixels of what the page shows over `sel`'s box (every canvas layer,
+   *  as composited) within `tol` of [r, g, b]. */
+  const colourPixels = async (page, selector, rgb, tol = 40) => {
+    const near = new Function("r", "g", "b", `return Math.abs(r - ${rgb[0]}) + Math.abs(g - ${rgb[1]}) + Math.abs(b - ${rgb[2]}) < ${tol};`);
+    return (await countPixels(page, { selector, composited: true }, { near })).near;
   };
 
   /** Problems other than software compositing's ReadPixels notice (forced GL only). */
@@ -120,7 +107,7 @@ try {
     assert.deepEqual(real(problems), []);
     await context.close();
   });
-  // Issue 17, point 2: the world stepped in Web Workers (?workers=N).
+  // The world stepped in Web Workers (?workers=N).
   const base = url.replace(/\/?$/, "/");
   /** Opens the lab at `query` + `hash`; waits for the workers (if any) to own the world. */
   const openLab = async (query, hash, isolated = true) => {
@@ -257,7 +244,7 @@ try {
     await context.close();
   });
 
-  // Issue 17, the first drawn frame: the default page draws its scene from
+  // The first drawn frame: the default page draws its scene from
   // the HTML (src/lab/firstframe.ts) before its scripts and core arrive; the
   // core's first frame, the η table held back (the clock at t = 0), must be
   // the same picture, pixel for pixel, from the same state, bit for bit.
@@ -282,7 +269,7 @@ try {
         return { w: c.width, h: c.height, hash: hsh.toString(16) };
       });
       await page.goto(url, { waitUntil: "commit" });
-      await page.waitForFunction(() => window.__labFirst !== undefined, null, { timeout: 30000 });
+      await page.waitForFunction(() => window.__firstFrame !== undefined, null, { timeout: 30000 });
       assert.equal(await page.evaluate(() => window.__lab), undefined, "the page's modules ran before the first frame");
       const first = await pixels();
       await shot(page, `first-frame-${w}`);
@@ -293,10 +280,10 @@ try {
       await shot(page, `first-frame-core-${w}`);
       assert.deepEqual(core, first, "the core's first frame differs from the HTML's");
       const hashes = await page.evaluate(async () => {
-        const u = new Uint32Array(window.__labFirst.state.buffer);
+        const u = new Uint32Array(window.__firstFrame.state.buffer);
         let h = 0x811c9dc5;
         for (const x of u) for (let b = 0; b < 32; b += 8) h = Math.imul(h ^ ((x >>> b) & 0xff), 0x01000193) >>> 0;
-        return { first: h.toString(16).padStart(8, "0"), core: window.__lab.stateHash(), firstMs: window.__lab.firstFrameMs, ff: window.__labFirst.ms };
+        return { first: h.toString(16).padStart(8, "0"), core: window.__lab.stateHash(), firstMs: window.__lab.firstFrameMs, ff: window.__firstFrame.ms };
       });
       assert.equal(hashes.first, hashes.core);
       assert.equal(hashes.firstMs, hashes.ff, "window.__lab.firstFrameMs is the HTML's frame");
@@ -313,7 +300,7 @@ try {
       const { page, problems, context } = await openPage(browser);
       await page.goto(`${url.replace(/\/?$/, "/")}${at}`);
       assert.equal(await waitReady(page, 60000), null);
-      assert.equal(await page.evaluate(() => window.__labFirst), undefined, at);
+      assert.equal(await page.evaluate(() => window.__firstFrame), undefined, at);
       assert.ok(Number.isFinite(await page.evaluate(() => window.__lab.firstFrameMs)), at);
       assert.deepEqual(problems, []);
       await context.close();
@@ -323,4 +310,3 @@ try {
   await browser.close();
   await server.close();
 }
-finish();

@@ -1,4 +1,4 @@
-// Browser end-to-end test of issue 14 (η tables for the vehicle in use),
+// Browser end-to-end test of η tables for the vehicle in use,
 // against the built page (web/dist) in Debian's headless Chromium:
 // - a preset with a vehicle limit in the link really runs with it
 //   (`#preset=p000_fig1_seek&vmax=0.05`: the core's vMax and the agents'
@@ -13,12 +13,11 @@
 // - a build whose workers cannot load the core (wasm requests refused)
 //   ends in an error the page shows, not at 0 % for ever;
 // - the reference vehicles (select "vehicle"): the car's table built;
-// - no console errors. Prints the build and cache timings (README figures)
-//   and "e2e-vehicle: N passed, M failed". Screenshots in artifacts/.
-import { serve, launch, openPage, checks, shot, waitReady, settle } from "./harness.mjs";
+// - no console errors. Prints the build and cache timings; a node:test
+//   suite (harness.mjs `check`). Screenshots in artifacts/.
+import { serve, launch, openPage, check, shot, waitReady, settle } from "./harness.mjs";
 import assert from "node:assert/strict";
 
-const { check, finish } = checks("e2e-vehicle");
 const { server, url } = await serve();
 const browser = await launch();
 const timings = {};
@@ -144,4 +143,3 @@ try {
   await browser.close();
   await server.close();
 }
-finish();

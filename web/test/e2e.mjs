@@ -4,8 +4,8 @@
 // and orientation handles; presets; keyboard; the controller section (μ
 // bound, gain, seek threshold) reaching the core and the URL; URL state round
 // trip and a malformed link; a corrupt table shows a readable message. Screenshots go
-// to artifacts/ (gitignored). Prints "e2e: N passed, M failed".
-import { serve, launch, openPage, checks, shot, waitReady, settle, dragOnLab as drag, artifacts } from "./harness.mjs";
+// to artifacts/ (gitignored). A node:test suite (harness.mjs `check`).
+import { serve, launch, openPage, check, shot, waitReady, settle, dragOnLab as drag, artifacts, countPixels } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
@@ -14,35 +14,14 @@ import { readFileSync, copyFileSync } from "node:fs";
 const CORE_DEFAULT = { bound: { kind: "turningRadius", factor: 8 }, gain: 2, seekThreshold: 0.25, aim: "entry", minBoundRadius: 1, terminal: { lookahead: 1, heading: 0.5, range: 1 } };
 const coreFunnel = (page) => page.evaluate(() => JSON.parse(JSON.stringify(window.__lab.funnel())));
 
-const { check, finish } = checks("e2e");
 
 /** Canvas-pixel colour census around a CSS-pixel point of the lab canvas. */
-async function colours(page, at, radius) {
-  return page.evaluate(({ at, radius }) => {
-    const c = document.getElementById("lab");
-    // Read a copy: repeated getImageData on the page's own context would
-    // (rightly) make Chromium warn about readbacks.
-    const copy = document.createElement("canvas");
-    copy.width = c.width;
-    copy.height = c.height;
-    const ctx = copy.getContext("2d", { willReadFrequently: true });
-    ctx.drawImage(c, 0, 0);
-    const k = c.width / c.getBoundingClientRect().width;
-    const x0 = Math.max(0, Math.round((at.x - radius) * k));
-    const y0 = Math.max(0, Math.round((at.y - radius) * k));
-    const w = Math.min(c.width - x0, Math.round(2 * radius * k));
-    const h = Math.min(c.height - y0, Math.round(2 * radius * k));
-    const d = ctx.getImageData(x0, y0, w, h).data;
-    let red = 0, blue = 0, grey = 0;
-    for (let i = 0; i < d.length; i += 4) {
-      const [r, g, b] = [d[i], d[i + 1], d[i + 2]];
-      if (r > 170 && g < 90 && b < 90) red++;
-      else if (b > 160 && r < 90 && g < 140) blue++;
-      else if (Math.abs(r - 138) < 12 && Math.abs(g - 143) < 12 && Math.abs(b - 152) < 12) grey++;
-    }
-    return { red, blue, grey };
-  }, { at, radius });
-}
+const colours = (page, at, radius) =>
+  countPixels(page, { selector: "#lab", around: { at, radius } }, {
+    red: (r, g, b) => r > 170 && g < 90 && b < 90,
+    blue: (r, g, b) => b > 160 && r < 90 && g < 140,
+    grey: (r, g, b) => Math.abs(r - 138) < 12 && Math.abs(g - 143) < 12 && Math.abs(b - 152) < 12,
+  });
 
 const { server, url } = await serve();
 const browser = await launch();
@@ -87,7 +66,7 @@ try {
     assert.ok(st.vehicle);
   });
 
-  await check("the HUD: running numbers rewritten at most 15 times a second (issue 17), a pause at once, a step within 1/15 s", async () => {
+  await check("the HUD: running numbers rewritten at most 15 times a second, a pause at once, a step within 1/15 s", async () => {
     await page.evaluate(() => window.__lab.setPaused(false));
     const seen = await page.evaluate(
       () =>
@@ -326,7 +305,7 @@ try {
     await p5.context.close();
   });
 
-  // Issue 17: the first frame does not wait for the η table. The table's
+  // The first frame does not wait for the η table. The table's
   // response is held back: the scene at t = 0 is drawn (seek steering, the
   // "loading" badge), a drag made meanwhile is kept, and when the table is
   // let through the same scene funnels from t = 0 with the link's state.
@@ -390,7 +369,7 @@ try {
     assert.ok(e && /η table/.test(e), String(e));
     const text = await p4.page.locator("#message").textContent();
     assert.match(text, /η table .* rejected/);
-    // Issue 17: the scene drawn before the table stays, held at t = 0.
+    // The scene drawn before the table stays, held at t = 0.
     await p4.page.waitForFunction(() => /table\s+none/.test(document.getElementById("hud").textContent));
     assert.equal(await p4.page.evaluate(() => window.__lab.live()), false);
     await shot(p4.page, "07-corrupt-table-message");
@@ -525,7 +504,7 @@ try {
       await page.waitForTimeout(1500);
       await shot(page, `08-preset-${name}`);
       assert.ok(page.url().includes(`preset=${encodeURIComponent(name)}`) || page.url().includes(`preset=${name}`));
-      // Issue 19: every paper preset states its claim and our measurement.
+      // Every paper preset states its claim and our measurement.
       if (/^p\d{3}_fig/.test(name)) {
         assert.match(await page.locator("#caption .claim").textContent(), /^Paper: ./);
         assert.match(await page.locator("#caption .measured").textContent(), /^Ours: ./);
@@ -533,7 +512,7 @@ try {
     });
   }
 
-  await check("the preset menu groups presets by paper and figure (issue 19)", async () => {
+  await check("the preset menu groups presets by paper and figure", async () => {
     const groups = await page.locator("#preset optgroup").evaluateAll((gs) => gs.map((g) => g.label));
     assert.ok(groups.includes("Paper 000 · Fig. 1") && groups.includes("Paper 001 · Fig. 11"), groups.join(" | "));
     const inFig11 = await page.locator('#preset optgroup[label="Paper 001 · Fig. 11"] option').count();
@@ -559,4 +538,3 @@ try {
   await browser.close();
   await server.close();
 }
-finish();

@@ -1,14 +1,19 @@
-// Shared by the e2e and perf scripts: serves web/dist with Vite's preview
-// server on 127.0.0.1 and launches Debian's Chromium via playwright-core.
+// Shared by the e2e and perf scripts: serves the test build (web/dist-test,
+// `make web-build-test`: the pages with their test hooks) with Vite's
+// preview server on 127.0.0.1 and launches Debian's Chromium via
+// playwright-core.
 import { preview } from "vite";
 import { chromium } from "playwright-core";
 import { fileURLToPath } from "node:url";
 import { dirname, resolve } from "node:path";
 import { mkdirSync } from "node:fs";
 import { spawn } from "node:child_process";
+import { test } from "node:test";
 
 export const webDir = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 export const artifacts = resolve(webDir, "../artifacts");
+/** The build the suites drive: the pages with their test hooks. */
+export const testDist = resolve(webDir, "dist-test");
 mkdirSync(artifacts, { recursive: true });
 
 export const CHROMIUM_ARGS = [
@@ -23,29 +28,26 @@ export const CHROMIUM_ARGS = [
   "--no-first-run",
 ];
 
-/** Serves web/dist, or `outDir` (another build's dist, e.g. a baseline). */
-export async function serve(outDir) {
+/** Serves web/dist-test, or `outDir` (another build's, e.g. a baseline). */
+export async function serve(outDir = testDist) {
   const server = await preview({
     root: webDir,
     configFile: resolve(webDir, "vite.config.ts"),
     logLevel: "warn",
     preview: { host: "127.0.0.1", port: 0, strictPort: false },
-    ...(outDir ? { build: { outDir: resolve(outDir) } } : {}),
+    build: { outDir: resolve(outDir) },
   });
   const url = server.resolvedUrls?.local?.[0];
   if (!url) throw new Error("vite preview gave no URL");
   return { server, url };
 }
 
-/** Takes every `--base DIR` (repeatable) out of `args` (in place): the
- *  dists of other builds to measure beside this one in the same run. */
-export function takeBases(args) {
-  const dirs = [];
-  for (let at = args.indexOf("--base"); at >= 0; at = args.indexOf("--base")) dirs.push(args.splice(at, 2)[1]);
-  return dirs;
-}
+/** The `--base DIR` option of the benches (repeatable, node:util
+ *  parseArgs): the dists of other builds to measure beside this one in the
+ *  same run. */
+export const BASE_OPTION = { base: { type: "string", multiple: true, default: [] } };
 
-/** Serves this build (web/dist, or `outDir`) and each base dist: `url`,
+/** Serves this build (web/dist-test, or `outDir`) and each base dist: `url`,
  *  `bases` ({ dir, url, server }), `builds` ([name, url], "this" first) and
  *  `close()` for every server. The benches' same-run baselines. */
 export async function serveBuilds(baseDirs, outDir) {
@@ -67,7 +69,7 @@ export function rotated(builds, round) {
 }
 
 /** As serve, but from a child process (test/serve.mjs): the server's work
- *  then does not wait on the harness's own (issue 17, perf.mjs --child). */
+ *  then does not wait on the harness's own (perf.mjs --server child). */
 export function serveChild(outDir) {
   const child = spawn(process.execPath, [resolve(webDir, "test/serve.mjs"), outDir ? resolve(outDir) : ""], { stdio: ["ignore", "pipe", "inherit"] });
   return new Promise((ok, fail) => {
@@ -126,33 +128,53 @@ export function settle(page) {
   return page.evaluate(() => new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(() => r()))));
 }
 
-/** Named checks that do not stop the run (CHECK=text: those named with it): each prints `ok - name` or
- *  `not ok - name` with the first lines of the stack; `finish` prints
- *  "`suite`: N passed, M failed" and exits non-zero on any failure. */
-export function checks(suite) {
-  let passed = 0;
-  let failed = 0;
-  return {
-    async check(name, f) {
-      // CHECK=text runs only the checks whose name contains it.
-      if (process.env.CHECK && !name.includes(process.env.CHECK)) return;
-      try {
-        await f();
-        passed++;
-        console.log(`ok - ${name}`);
-      } catch (e) {
-        failed++;
-        console.log(`not ok - ${name}\n  ${String(e && e.stack ? e.stack : e).split("\n").slice(0, 6).join("\n  ")}`);
-      }
-    },
-    finish() {
-      console.log(`${suite}: ${passed} passed, ${failed} failed`);
-      process.exit(failed === 0 ? 0 : 1);
-    },
-  };
+/** One test of a suite, on node:test (its runner prints each result and,
+ *  at the end, the suite's pass / fail counts; a failure sets the exit
+ *  code): awaited in turn, so a suite's tests share its browser and run in
+ *  order. CHECK=text runs only the tests whose name contains it (the rest
+ *  are reported skipped). */
+export function check(name, f) {
+  const only = process.env.CHECK;
+  return test(name, { skip: only && !name.includes(only) ? `CHECK=${only}` : false }, () => f());
 }
 
-/** A screenshot of `page` as artifacts/`name`.png. */
+/** Counts the pixels of the canvas `selector` (`index`: which match) per
+ *  class: `classes` maps a name to a test `(r, g, b, first) => boolean`
+ *  (run in the page; `first`: the top-left pixel's [r, g, b], the
+ *  background). `around`: only the square of CSS-pixel half-side `radius`
+ *  about `at`. `composited`: what the page shows over the canvas's box (a
+ *  screenshot: every layer, WebGL included) instead of the canvas's own
+ *  pixels. The canvas is read from a copy: repeated getImageData on the
+ *  page's own context makes Chromium warn about readbacks. Returns the
+ *  count per class and `total`, the pixels looked at. */
+export async function countPixels(page, { selector, index = 0, around = null, composited = false }, classes) {
+  const tests = Object.entries(classes).map(([k, f]) => [k, String(f)]);
+  const png = composited ? (await page.screenshot({ clip: await page.locator(selector).nth(index).boundingBox() })).toString("base64") : null;
+  return page.evaluate(async ({ selector, index, around, png, tests }) => {
+    const c = document.querySelectorAll(selector)[index];
+    const src = png ? await createImageBitmap(new Blob([Uint8Array.from(atob(png), (ch) => ch.charCodeAt(0))], { type: "image/png" })) : c;
+    const copy = document.createElement("canvas");
+    copy.width = src.width;
+    copy.height = src.height;
+    const ctx = copy.getContext("2d", { willReadFrequently: true });
+    ctx.drawImage(src, 0, 0);
+    let [x0, y0, w, h] = [0, 0, copy.width, copy.height];
+    if (around) {
+      const k = copy.width / c.getBoundingClientRect().width;
+      x0 = Math.max(0, Math.round((around.at.x - around.radius) * k));
+      y0 = Math.max(0, Math.round((around.at.y - around.radius) * k));
+      w = Math.min(copy.width - x0, Math.round(2 * around.radius * k));
+      h = Math.min(copy.height - y0, Math.round(2 * around.radius * k));
+    }
+    const d = ctx.getImageData(x0, y0, w, h).data;
+    const first = [d[0], d[1], d[2]];
+    const fs = tests.map(([k, text]) => [k, (0, eval)(`(${text})`)]);
+    const counts = Object.fromEntries(tests.map(([k]) => [k, 0]));
+    for (let i = 0; i < d.length; i += 4) for (const [k, f] of fs) if (f(d[i], d[i + 1], d[i + 2], first)) counts[k]++;
+    return { ...counts, total: d.length / 4 };
+  }, { selector, index, around, png, tests });
+}
+
 /** Strips COOP/COEP from every response of `context`: its pages are not
  *  cross-origin isolated (no SharedArrayBuffer; workers fall back to messages). */
 export const unisolated = (context) =>
@@ -164,6 +186,7 @@ export const unisolated = (context) =>
     await route.fulfill({ response: res, headers });
   });
 
+/** A screenshot of `page` as artifacts/`name`.png. */
 export const shot = (page, name) => page.screenshot({ path: resolve(artifacts, `${name}.png`) });
 
 /** A mouse drag on the lab's canvas from `from` to `to` (CSS pixels in the

@@ -4,31 +4,37 @@
 // (URL flag n=N, no trails or overlays) in headless Chromium. For each N,
 // waits 0.5 s, then samples ~2 s with performance.now(): mean rAF interval,
 // mean and p95 work per frame (core step + drawing) and core step time.
-// Issue 18: the largest N again with each avoidance method of AVOID
+// Then the largest N again with each avoidance method of AVOID
 // (default separation,orca; the second argument), beside the same run's avoidance-off figures.
-import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, takeBases, rotated } from "./harness.mjs";
+import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
+import { parseArgs } from "node:util";
 import { resolve } from "node:path";
 import { loadavg } from "node:os";
 
-const args = process.argv.slice(2);
-// `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
-// into /tmp) is served beside this one and the first-frame loads and the
-// crowd rows alternate between them, in rotating order.
-const baseDirs = takeBases(args);
-const loadsAt = args.indexOf("--loads");
-const LOADS = loadsAt >= 0 ? Number(args.splice(loadsAt, 2)[1]) : 9;
-// `--server inproc|child|both` (issue 17): the first-frame loads' builds
-// served by a preview server in this process (the default, as before), by
-// one in a child process (test/serve.mjs: a user's server does not share
-// the browser driver's event loop), or both, alternating in one run.
-const serverAt = args.indexOf("--server");
-const SERVER = serverAt >= 0 ? args.splice(serverAt, 2)[1] : "inproc";
+const { values: opts, positionals } = parseArgs({
+  allowPositionals: true,
+  options: {
+    // `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
+    // into /tmp) is served beside this one and the first-frame loads and the
+    // crowd rows alternate between them, in rotating order.
+    ...BASE_OPTION,
+    loads: { type: "string", default: "9" },
+    // `--server inproc|child|both`: the first-frame loads' builds served by a
+    // preview server in this process (the default), by one in a child
+    // process (test/serve.mjs: a user's server does not share the browser
+    // driver's event loop), or both, alternating in one run.
+    server: { type: "string", default: "inproc" },
+  },
+});
+const baseDirs = opts.base;
+const LOADS = Number(opts.loads);
+const SERVER = opts.server;
 if (!["inproc", "child", "both"].includes(SERVER)) throw new Error(`--server: inproc, child or both, not ${SERVER}`);
 // An empty size list ("") runs the first-frame loads alone.
-const sizes = (args[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const sizes = (positionals[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
 const onlyFirst = sizes.length === 0;
 const onlyWorkers = process.env.ONLY_WORKERS === "1";
-// ONLY_CROWD=1: the crowd page's rows alone (issue 17, crowd boids per frame).
+// ONLY_CROWD=1: the crowd page's rows alone (crowd boids per frame).
 // CROWD_SIZES (30000,100000,150000,200000), CROWD_ROUNDS (3), CROWD_MODES (0,1,N: page's thread, 1 worker, a worker per core).
 const onlyCrowd = process.env.ONLY_CROWD === "1";
 const { url, bases, builds, close } = await serveBuilds(baseDirs);
@@ -101,10 +107,10 @@ try {
   for (const key of keys) console.log(`  ${key.padEnd(28)} ${sides.map(([n]) => f(q(rows[n].map((r) => r[key]), 0.5)).padStart(6)).join(" / ")}`);
   }
 
-  // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl, issue 17:
+  // Above 2,000 agents also with the WebGL2 layer forced (?draw=gl:
   // headless WebGL is software, so the page's own choice is the 2D sprites).
   const runs = onlyWorkers || onlyFirst || onlyCrowd ? [] : sizes.flatMap((n) => (n > 2000 ? [[n, ""], [n, "gl"]] : [[n, ""]]));
-  const avoids = onlyWorkers || onlyFirst || onlyCrowd ? [] : (args[1] ?? "separation,orca").split(",").filter((m) => m !== "");
+  const avoids = onlyWorkers || onlyFirst || onlyCrowd ? [] : (positionals[1] ?? "separation,orca").split(",").filter((m) => m !== "");
   const largest = Math.max(...sizes);
   for (const m of avoids) runs.push([largest, "", m]);
   for (const [n, draw, avoid] of runs) {
@@ -128,7 +134,7 @@ try {
     if (problems.length) { bad++; console.log(problems.join("\n")); }
     await context.close();
   }
-  // Issue 17, point 2: funnelling agents stepped per 16.7 ms frame with the
+  // Funnelling agents stepped per 16.7 ms frame with the
   // world on the page's thread (workers=0), in one worker and in as many as
   // the browser reports cores, same run, alternating by size; ratios to the
   // page's thread and to one worker. Agents stepped per frame = agent
@@ -193,7 +199,7 @@ try {
     );
   }
 
-  // Issue 17, the crowd target: boids stepped + drawn per 16.7 ms frame at
+  // The crowd: boids stepped + drawn per 16.7 ms frame at
   // Test IV's density (Parker 10 %, separation, pathway scaled by n / 300:
   // `window.__crowd.loadScaled`), the crowd on the page's thread
   // (workers=0), in one worker and in as many as the browser reports cores,

@@ -6,21 +6,23 @@
 // "page" raises the target every frame, takes a state (`take`), checks
 // that its buffer holds that step (every 61st float, all slices), draws
 // for a while, and checks it again: a buffer handed to a later step while drawn would show
-// there (the issue 17 DEPTH change: the page may take a state DEPTH
-// behind the newest, so the workers protect that many more buffers).
+// there (the page may take a state DEPTH behind the newest, so the workers
+// protect that many more buffers).
 // Then: states drawn in order, none skipped at a step per frame (at 1–3
 // steps a frame, a faster clock, the page takes a frame's worth on), and
 // every worker ending after the same step. The lab's protocol
 // (`runIndependent`, 2 and 3 workers) and the crowd's (`runContinuing`,
 // its barrier; a worker also checks that the step it reads from is whole).
 //
-// Usage: node test/protocol.mjs   (about 25 s; exits 1 on a failure)
+// Usage: node test/protocol.mjs   (about 25 s; node:test, exits 1 on a failure)
 
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { join } from "node:path";
 import { Worker } from "node:worker_threads";
 import { transformWithOxc } from "vite";
+import assert from "node:assert/strict";
+import { test } from "node:test";
 
 const here = new URL(".", import.meta.url).pathname;
 const dir = mkdtempSync(join(tmpdir(), "protocol-"));
@@ -137,21 +139,21 @@ async function run(mod, protocol, workers, seed, speeds) {
   if (new Set(ends).size !== 1) errors.push(`${protocol} ×${workers}: workers ended after steps ${ends.join(", ")}`);
   if (!speeds && jobs.skipped !== 0) errors.push(`${protocol} ×${workers}: ${jobs.skipped} states skipped at a step per frame`);
   if (drawn < FRAMES / 4) errors.push(`${protocol} ×${workers}: only ${drawn} states drawn in ${FRAMES} frames`);
-  console.log(`DEPTH ${P.DEPTH} LEAD ${P.LEAD}, ${protocol} ×${workers}${speeds ? ", 1–3 steps a frame" : ""}: ${drawn} states drawn in order of ${ends[0]} stepped, ${FRAMES} frames; ${errors.length ? "FAILED" : "ok"}`);
+  console.log(`# DEPTH ${P.DEPTH} LEAD ${P.LEAD}, ${protocol} ×${workers}${speeds ? ", 1–3 steps a frame" : ""}: ${drawn} states drawn in order of ${ends[0]} stepped, ${FRAMES} frames; ${errors.length ? "FAILED" : "ok"}`);
   return errors;
 }
 
-const errors = [];
 // The committed DEPTH and LEAD, then others (the protocol is written for any).
 for (const [depth, lead] of [[null, null], [1, 1], [2, 2]]) {
   const mod = moduleFor(depth, lead);
   for (const [protocol, workers, seed] of [["independent", 2, 1], ["independent", 3, 2], ["barrier", 2, 3], ["barrier", 3, 4]]) {
-    for (const speeds of [false, true]) errors.push(...(await run(mod, protocol, workers, seed, speeds)));
+    for (const speeds of [false, true]) {
+      const name = `DEPTH ${depth ?? "as committed"}${lead === null ? "" : ` LEAD ${lead}`}, ${protocol} ×${workers}${speeds ? ", 1–3 steps a frame" : ", a step a frame"}`;
+      await test(name, async () => {
+        const errors = await run(mod, protocol, workers, seed, speeds);
+        assert.deepEqual(errors.slice(0, 20), []);
+      });
+    }
   }
 }
 rmSync(dir, { recursive: true, force: true });
-if (errors.length) {
-  console.error(errors.slice(0, 20).join("\n"));
-  process.exit(1);
-}
-console.log("protocol: all ok");

@@ -5,6 +5,7 @@ import { readFileSync, readdirSync } from "node:fs";
 import { fileURLToPath } from "node:url";
 import { dirname, resolve } from "node:path";
 import assert from "node:assert/strict";
+import { test } from "node:test";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const pkg = resolve(here, "../pkg");
@@ -12,26 +13,13 @@ const root = resolve(here, "../..");
 const core = await import(resolve(pkg, "steering.js"));
 core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
 
-let passed = 0;
-let failed = 0;
-function check(name, f) {
-  try {
-    f();
-    passed++;
-    console.log(`ok - ${name}`);
-  } catch (e) {
-    failed++;
-    console.log(`not ok - ${name}\n  ${e && e.stack ? e.stack : e}`);
-  }
-}
-
-check("version is the crate's", () => {
+test("version is the crate's", () => {
   const cargo = readFileSync(resolve(root, "Cargo.toml"), "utf8");
   const v = /^version = "([^"]+)"/m.exec(cargo)[1];
   assert.equal(core.version(), v);
 });
 
-check("seeded samples are deterministic Float32Arrays", () => {
+test("seeded samples are deterministic Float32Arrays", () => {
   const a = core.randomSamples(3, 16);
   assert.ok(a instanceof Float32Array);
   assert.equal(a.length, 16);
@@ -40,7 +28,7 @@ check("seeded samples are deterministic Float32Arrays", () => {
 
 const table = readFileSync(resolve(root, "tables/eta.bin"));
 
-check("the committed table loads; a corrupt one throws a readable Error", () => {
+test("the committed table loads; a corrupt one throws a readable Error", () => {
   const lab = new core.Lab(new Uint8Array(table));
   const info = lab.tableInfo();
   assert.ok(info.entries > 10000 && info.distances.length > 2 && info.dEta > 0);
@@ -50,7 +38,7 @@ check("the committed table loads; a corrupt one throws a readable Error", () => 
   assert.throws(() => new core.Lab(new Uint8Array(10)), (e) => e instanceof Error && /η table/.test(e.message));
 });
 
-check("agents step; state() is a Float32Array of stride stateStride()", () => {
+test("agents step; state() is a Float32Array of stride stateStride()", () => {
   const lab = new core.Lab(new Uint8Array(table));
   const g = { x: 5, y: 2, beta: Math.PI / 2, dTol: 0.3, epsTol: 0.17, speed: 1.3, halting: true, relaxed: false };
   lab.addAgent({ x: -3, y: 0, theta: 0, goals: [g] });
@@ -67,7 +55,7 @@ check("agents step; state() is a Float32Array of stride stateStride()", () => {
   assert.ok(field instanceof Float32Array && field.length % 4 === 0 && field.length > 400);
 });
 
-check("every preset scenario loads and runs", () => {
+test("every preset scenario loads and runs", () => {
   const lab = new core.Lab(new Uint8Array(table));
   const dir = resolve(root, "scenarios");
   const files = readdirSync(dir).filter((f) => f.endsWith(".json"));
@@ -79,6 +67,3 @@ check("every preset scenario loads and runs", () => {
     assert.ok(lab.state().every(Number.isFinite), f);
   }
 });
-
-console.log(`smoke: ${passed} passed, ${failed} failed`);
-process.exit(failed === 0 ? 0 : 1);

@@ -1,4 +1,4 @@
-// Issue 17, point 4: would a quantised η table load faster, and what would
+// Would a quantised η table load faster, and what would
 // it cost in accuracy? Reads tables/eta.bin (format v1: η f32 × N, speed
 // f32 × N, flags u8 × N), and for each storage variant prints the bytes
 // raw / gzip -6 (what the server sends) / brotli, the gunzip time in Node,
@@ -11,9 +11,11 @@ import { readFileSync, writeFileSync, mkdirSync } from "node:fs";
 import { gzipSync, gunzipSync, brotliCompressSync, constants } from "node:zlib";
 import { resolve, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
+import { parseArgs } from "node:util";
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
-const out = resolve(process.argv[2] ?? "/tmp/eta-quant");
+const { positionals } = parseArgs({ allowPositionals: true });
+const out = resolve(positionals[0] ?? "/tmp/eta-quant");
 mkdirSync(out, { recursive: true });
 const bytes = readFileSync(resolve(root, "tables/eta.bin"));
 const dv = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);

@@ -1,4 +1,4 @@
-// Seeded fuzz of the lab's URL decoder (issue 16): ≥ 10,000 mutated
+// Seeded fuzz of the lab's URL decoder: ≥ 10,000 mutated
 // fragments (known and random keys; values such as NaN, Infinity, 1e999,
 // 0x10, empty, huge, negative, unicode digits, 5,000 characters, bad
 // percent-encoding; duplicated keys) through `decodeState`, bundled from the
@@ -9,13 +9,14 @@
 // for the random agents (and, for small counts, spawning them), the η field
 // view; every key whose value was not taken has a message naming it; and the
 // state re-encodes to a fragment that decodes with no message to the same
-// state. Issue 18: the avoidance method (`avoid`) and the obstacles (`obs`)
-// too, set in the core with setAvoidance / setObstacles. Prints "urlfuzz: N cases, M refused values, T ms".
+// state. The avoidance method (`avoid`) and the obstacles (`obs`)
+// too, set in the core with setAvoidance / setObstacles. Prints "urlfuzz: N cases, M refused values, T ms" (node:test).
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { fileURLToPath, pathToFileURL } from "node:url";
 import { dirname, resolve, join } from "node:path";
 import assert from "node:assert/strict";
+import { test } from "node:test";
 import { rolldown } from "rolldown";
 
 const here = dirname(fileURLToPath(import.meta.url));
@@ -169,63 +170,64 @@ function coreSteps(st, step) {
   assert.ok(lab.state().every(Number.isFinite), "state finite after a step");
 }
 
-const t0 = performance.now();
-let refused = 0;
-let accepted = 0;
-let withObstacles = 0;
-let withAvoid = 0;
-const failures = [];
-for (let c = 0; c < CASES; c++) {
-  const frag = fragment();
-  try {
-    const { state: st, problems } = page.decodeState(frag, PRESETS, table, defaults);
-    refused += problems.length;
-    assert.ok(problems.every((p) => typeof p === "string" && p.length > 0 && p.length < 400), "messages are short and non-empty");
-    coreAccepts(st);
-    accepted++;
-    if (st.obstacles !== null && st.obstacles.length > 0) withObstacles++;
-    if (st.avoidance !== null) withAvoid++;
-    // Every numeric key whose (first) value was not taken is named in a message.
-    const raw = frag.startsWith("#") ? frag.slice(1) : frag;
-    let params = null;
-    try { decodeURIComponent(raw); params = new URLSearchParams(raw); } catch { /* the whole link is refused, with a message */ }
-    if (raw.trim() === "") assert.deepEqual(problems, [], "a blank fragment is the default state");
-    else if (params === null) assert.ok(problems.length > 0, "bad encoding has a message");
-    else {
+test(`${CASES} mutated fragments (seed ${SEED}): decoded without a throw, accepted by the core, refusals named, re-encoded cleanly`, () => {
+  const t0 = performance.now();
+  let refused = 0;
+  let accepted = 0;
+  let withObstacles = 0;
+  let withAvoid = 0;
+  const failures = [];
+  for (let c = 0; c < CASES; c++) {
+    const frag = fragment();
+    try {
+      const { state: st, problems } = page.decodeState(frag, PRESETS, table, defaults);
+      refused += problems.length;
+      assert.ok(problems.every((p) => typeof p === "string" && p.length > 0 && p.length < 400), "messages are short and non-empty");
+      coreAccepts(st);
+      accepted++;
+      if (st.obstacles !== null && st.obstacles.length > 0) withObstacles++;
+      if (st.avoidance !== null) withAvoid++;
+      // Every numeric key whose (first) value was not taken is named in a message.
+      const raw = frag.startsWith("#") ? frag.slice(1) : frag;
+      let params = null;
+      try { decodeURIComponent(raw); params = new URLSearchParams(raw); } catch { /* the whole link is refused, with a message */ }
+      if (raw.trim() === "") assert.deepEqual(problems, [], "a blank fragment is the default state");
+      else if (params === null) assert.ok(problems.length > 0, "bad encoding has a message");
+      else {
+        for (const f of page.FIELDS) {
+          const t = params.get(f.url);
+          if (t === null) continue;
+          const v = page.parseDecimal(t, table.get(f.core).integer);
+          const got = f.get(st, defaults) * f.scale;
+          const taken = v !== null && Math.abs(got - v) <= 1e-9 * Math.max(1, Math.abs(v));
+          if (!taken) assert.ok(problems.some((p) => p.startsWith(`${f.url}=`) || p.startsWith(`${f.url}:`)), `${f.url}="${t.slice(0, 30)}" not taken and not reported: ${JSON.stringify(problems)}`);
+        }
+        const avoid = params.get("avoid");
+        if (avoid !== null && st.avoidance !== avoid) assert.ok(problems.some((p) => p.startsWith("avoid=")), `avoid="${avoid}" not taken and not reported`);
+        if (params.get("obs") !== null && st.obstacles === null) assert.ok(problems.some((p) => p.startsWith("obs:")), "obs not taken and not reported");
+        for (const k of params.keys()) {
+          if (!NUM_KEYS.includes(k) && !OTHER_KEYS.includes(k)) assert.ok(problems.some((p) => p.includes("unknown field")), `unknown ${k.slice(0, 20)} not reported`);
+        }
+      }
+      // What the page writes back decodes, silently, to the same state.
+      const again = page.decodeState(page.encodeState(st, table, defaults), PRESETS, table, defaults);
+      assert.deepEqual(again.problems, [], "the rewritten URL is clean");
       for (const f of page.FIELDS) {
-        const t = params.get(f.url);
-        if (t === null) continue;
-        const v = page.parseDecimal(t, table.get(f.core).integer);
-        const got = f.get(st, defaults) * f.scale;
-        const taken = v !== null && Math.abs(got - v) <= 1e-9 * Math.max(1, Math.abs(v));
-        if (!taken) assert.ok(problems.some((p) => p.startsWith(`${f.url}=`) || p.startsWith(`${f.url}:`)), `${f.url}="${t.slice(0, 30)}" not taken and not reported: ${JSON.stringify(problems)}`);
+        const a = f.get(st, defaults) * f.scale;
+        const b = f.get(again.state, defaults) * f.scale;
+        assert.ok(Math.abs(a - b) <= 1e-4 * Math.max(1, Math.abs(a)) + 1e-4, `${f.url}: ${a} → ${b}`);
       }
-      const avoid = params.get("avoid");
-      if (avoid !== null && st.avoidance !== avoid) assert.ok(problems.some((p) => p.startsWith("avoid=")), `avoid="${avoid}" not taken and not reported`);
-      if (params.get("obs") !== null && st.obstacles === null) assert.ok(problems.some((p) => p.startsWith("obs:")), "obs not taken and not reported");
-      for (const k of params.keys()) {
-        if (!NUM_KEYS.includes(k) && !OTHER_KEYS.includes(k)) assert.ok(problems.some((p) => p.includes("unknown field")), `unknown ${k.slice(0, 20)} not reported`);
+      assert.equal(again.state.avoidance, st.avoidance, "avoid round trip");
+      assert.equal(again.state.obstacles === null, st.obstacles === null, "obs round trip");
+      if (st.obstacles !== null) {
+        assert.equal(again.state.obstacles.length, st.obstacles.length, "obs count round trip");
+        st.obstacles.forEach((v, i) => assert.ok(Math.abs(v - again.state.obstacles[i]) <= 1e-4 * Math.max(1, Math.abs(v)), `obs[${i}]: ${v} → ${again.state.obstacles[i]}`));
       }
+    } catch (e) {
+      failures.push(`${JSON.stringify(frag.slice(0, 200))}: ${e && e.message ? e.message.slice(0, 300) : e}`);
     }
-    // What the page writes back decodes, silently, to the same state.
-    const again = page.decodeState(page.encodeState(st, table, defaults), PRESETS, table, defaults);
-    assert.deepEqual(again.problems, [], "the rewritten URL is clean");
-    for (const f of page.FIELDS) {
-      const a = f.get(st, defaults) * f.scale;
-      const b = f.get(again.state, defaults) * f.scale;
-      assert.ok(Math.abs(a - b) <= 1e-4 * Math.max(1, Math.abs(a)) + 1e-4, `${f.url}: ${a} → ${b}`);
-    }
-    assert.equal(again.state.avoidance, st.avoidance, "avoid round trip");
-    assert.equal(again.state.obstacles === null, st.obstacles === null, "obs round trip");
-    if (st.obstacles !== null) {
-      assert.equal(again.state.obstacles.length, st.obstacles.length, "obs count round trip");
-      st.obstacles.forEach((v, i) => assert.ok(Math.abs(v - again.state.obstacles[i]) <= 1e-4 * Math.max(1, Math.abs(v)), `obs[${i}]: ${v} → ${again.state.obstacles[i]}`));
-    }
-  } catch (e) {
-    failures.push(`${JSON.stringify(frag.slice(0, 200))}: ${e && e.message ? e.message.slice(0, 300) : e}`);
   }
-}
-const ms = performance.now() - t0;
-for (const f of failures.slice(0, 10)) console.log(`not ok - ${f}`);
-console.log(`urlfuzz: ${CASES} cases (seed ${SEED}), ${accepted} states built in the core (${withObstacles} with obstacles, ${withAvoid} with a method), ${refused} refused values reported, ${failures.length} failures, ${ms.toFixed(0)} ms`);
-process.exit(failures.length === 0 ? 0 : 1);
+  const ms = performance.now() - t0;
+  console.log(`# urlfuzz: ${CASES} cases (seed ${SEED}), ${accepted} states built in the core (${withObstacles} with obstacles, ${withAvoid} with a method), ${refused} refused values reported, ${failures.length} failures, ${ms.toFixed(0)} ms`);
+  assert.deepEqual(failures.slice(0, 10), []);
+});

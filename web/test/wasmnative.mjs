@@ -1,4 +1,4 @@
-// Issue 17: wasm / native per funnelling agent update, in one run. The same
+// Wasm / native per funnelling agent update, in one run. The same
 // workload — the lab's performance world (spawnRandom: N agents, seed 1,
 // extent √N·1.5 m, 1.3 m/s, 16 goals each), warmed up, then rounds of
 // STEPS steps — natively (`examples/world_bench.rs`, release) and in Node on
@@ -15,18 +15,16 @@ import { fileURLToPath } from "node:url";
 import { dirname, resolve } from "node:path";
 import { existsSync } from "node:fs";
 import { pathToFileURL } from "node:url";
+import { parseArgs } from "node:util";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, "../..");
-const args = process.argv.slice(2);
-const pkgs = [];
-let native = resolve(root, "target/release/examples/world_bench");
-const pos = [];
-for (let k = 0; k < args.length; k++) {
-  if (args[k] === "--pkg") pkgs.push(resolve(args[++k]));
-  else if (args[k] === "--native") native = resolve(args[++k]);
-  else pos.push(args[k]);
-}
+const { values, positionals: pos } = parseArgs({
+  allowPositionals: true,
+  options: { pkg: { type: "string", multiple: true, default: [] }, native: { type: "string", default: resolve(root, "target/release/examples/world_bench") } },
+});
+const pkgs = values.pkg.map((d) => resolve(d));
+const native = resolve(values.native);
 if (!pkgs.length) pkgs.push(resolve(here, "../pkg"));
 const builds = pkgs.flatMap((dir) =>
   ["steering_bg.wasm", "steering_simd_bg.wasm"].filter((f) => existsSync(resolve(dir, f))).map((f) => ({ dir, wasm: resolve(dir, f) })),

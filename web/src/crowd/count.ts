@@ -1,21 +1,21 @@
-// The boid count's limits on the crowd page (issue 16, raised in issue 17):
-// the page's largest count, above which a typed count is refused with a
-// message, and the heavy count, above which the page asks before it runs.
+// The boid count's limits on the crowd page: the page's largest count,
+// above which a typed count is refused with a message, and the heavy
+// count, above which the page asks before it runs.
 //
-// Measured in headless Chromium on the 2-core CI machine (README):
-// - the page's own pathway (its density grows with the count): Test IV,
-//   Parker 10 %, one step per frame on the page's thread ran 10,000 boids at
-//   54 fps (step 8.9 ms + draw 3.2 ms) and 20,000 at 22 fps: 15,000 is
-//   about the most that keeps 30 fps. From 20,000 boids the crowd steps in
-//   workers (stepper.ts): the page keeps drawing, new states come slower.
+// The heavy counts are where a 2-core machine stops giving 30 new states a
+// second (`make bench-web`'s crowd rows measure them):
+// - the page's own pathway (its density grows with the count, so does the
+//   separation's work per boid): about 15,000 boids; from 20,000 the crowd
+//   steps in workers (stepper.ts), the page keeps drawing but new states
+//   come slower;
 // - Test IV density (the panel's switch scales the pathway with the
-//   count): `make bench-web`'s crowd rows (HEAVY_DENSE_BOIDS below).
+//   count): HEAVY_DENSE_BOIDS below.
 
 import { parseDecimal } from "../controls";
 
 /** Largest boid count the page runs (the core allows more: `MAX_BOIDS`). */
 export const PAGE_MAX_BOIDS = 200_000;
-/** Counts above this ran below 30 fps here (see above): asked for first. */
+/** Counts above this give fewer than 30 new states a second (see above): asked for first. */
 export const HEAVY_BOIDS = 15_000;
 /** The same at Test IV density (pathway scaled with the count). */
 export const HEAVY_DENSE_BOIDS = 100_000;

@@ -1,4 +1,4 @@
-// One crowd stepping worker (issue 17, point 3): holds a copy of the whole
+// One crowd stepping worker: holds a copy of the whole
 // crowd (CrowdLab built from the page's configuration, metrics off) and on
 // each step loads the last complete state (positions, then velocities),
 // steps the boids of its vertical strip [lo, hi) (`stepStrip`: separation

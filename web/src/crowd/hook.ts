@@ -1,9 +1,15 @@
-// window.__crowd: what the end-to-end test reads and drives, and the step
-// cost measurement behind it (bench).
+// window.__crowd, in the test build only (`vite build --mode test`, the
+// e2e suites' and the benches' build; main.ts installs it under
+// `import.meta.env.MODE === "test"`, so the shipped bundle holds none of
+// it): what the tests read and drive, read from the page's session and the
+// loop's counters, and the step cost measurement behind it (bench).
 
+import { fnvHex } from "../fnv";
 import type { Vec } from "../view";
 import { CrowdLab, type CrowdConfig, type CrowdMetrics, type CrowdSeek } from "../wasm";
+import type { CrowdPage } from "./app";
 import { isDefaultPreset } from "./presets";
+import type { CrowdSession } from "./session";
 
 /** Per-N step cost, from CrowdHook.bench. */
 export interface BenchRow {
@@ -17,7 +23,7 @@ export interface BenchRow {
   boidsPerFrame: number;
 }
 
-/** Issue 17: how the crowd is stepped (window.__crowd.workers()). */
+/** How the crowd is stepped (window.__crowd.workers()). */
 export interface CrowdWorkersInfo {
   mode: "main" | "shared" | "messages";
   workers: number;
@@ -81,14 +87,6 @@ export interface CrowdHook {
   toScreen(x: number, y: number): Vec;
   /** Step cost (metrics on, as on the page) at each boid count, three set-ups (see BenchRow), timed with performance.now. */
   bench(counts: number[], minMs: number): BenchRow[];
-  /** Issue 17: counters the loop keeps (perfReset / perfStats read them). */
-  workerUpdates: number;
-  workerSteps: number;
-  /** Wall ms of the workers' jobs, and of the slowest worker's stepping in them. */
-  workerJobMs: number;
-  workerStepMs: number;
-  drawnFrames: number;
-  workMs: number[];
   workers(): CrowdWorkersInfo;
   /** FNV-1a (hex) of the drawn state, positions then velocities. */
   stateHash(): string;
@@ -105,16 +103,6 @@ export interface CrowdHook {
   loadScaled(n: number): void;
   perfReset(): void;
   perfStats(): CrowdPerf;
-}
-
-/** FNV-1a over the bytes of `arrays` (hex). */
-export function fnvHex(...arrays: Float32Array[]): string {
-  let h = 0x811c9dc5;
-  for (const a of arrays) {
-    const b = new Uint8Array(a.buffer, a.byteOffset, a.byteLength);
-    for (let k = 0; k < b.length; k++) h = Math.imul(h ^ (b[k] ?? 0), 0x01000193);
-  }
-  return (h >>> 0).toString(16).padStart(8, "0");
 }
 
 /** Test IV Parker 10 % with `n` boids, pathway scaled by n / 300 (Test IV's density). */
@@ -161,4 +149,117 @@ export function bench(presets: readonly CrowdConfig[], counts: number[], minMs: 
     }
   }
   return rows;
+}
+
+/** Installs window.__crowd over `page` (its probe: the frames' work record). */
+export function installHook(page: CrowdPage): void {
+  const s = page.session;
+  const stats = page.stats;
+  let workMs: number[] = [];
+  page.probe = (ms) => void workMs.push(ms);
+  const skipped = (): number => s.stepper?.skipped ?? 0;
+  let at = { t: 0, frames: 0, updates: 0, drawn: 0, skipped: 0, steps: 0, jobMs: 0, stepMs: 0 };
+  const hook: CrowdHook = {
+    get ready() { return page.ready; },
+    get error() { return page.error; },
+    get frames() { return stats.frames; },
+    get playing() { return s.playing; },
+    get stepMs() { return stats.stepMs; },
+    get drawMs() { return stats.drawMs; },
+    get fps() { return stats.fps; },
+    get preset() { return s.preset; },
+    count: () => s.lab?.count() ?? 0,
+    time: () => s.lab?.time() ?? 0,
+    pathPoints: () => Array.from(s.lab?.pathPoints() ?? []),
+    pathRadius: () => s.lab?.pathRadius() ?? 0,
+    seek: () => (s.lab ? s.lab.config().seek : null),
+    separation: () => (s.lab ? s.lab.config().separation : false),
+    selected: () => s.editor.selected,
+    metrics: () => (s.lab ? s.lab.metrics() : null),
+    toScreen: (x, y) => s.view.toScreen(x, y),
+    bench: (counts, minMs) => bench(page.presets, counts, minMs),
+    workers: () => workersInfo(s),
+    stateHash: () => {
+      const l = s.lab;
+      if (!l) return "";
+      return fnvHex(s.stepper?.active ? s.stepper.state : l.state());
+    },
+    snapshot: () => {
+      s.syncFromWorkers();
+      const l = s.lab;
+      if (!l) throw new Error("no crowd");
+      return { config: l.config(), state: Array.from(l.state()), time: l.time() };
+    },
+    reference: (snap, edit, steps) => reference(snap, edit, steps),
+    runSteps: async (n) => {
+      const st = s.stepper;
+      if (st?.active) {
+        // A job runs any number of steps with shared memory, one by message.
+        const per = st.shared ? n : 1;
+        for (let k = 0; k < n; k += per) await st.step(Math.min(per, n - k));
+      } else s.lab?.step(n);
+      s.dirty = true;
+    },
+    idle: () => !s.stepper?.active || (s.stepper.ready && s.stepper.idle),
+    skippedSteps: skipped,
+    loadScaled: (n) => {
+      const c = scaledConfig(page.presets, n);
+      if (c) s.load(c, true);
+    },
+    perfReset: () => {
+      workMs = [];
+      at = { t: performance.now(), frames: stats.frames, updates: stats.updates, drawn: stats.drawnFrames, skipped: skipped(), steps: stats.steps, jobMs: stats.jobMs, stepMs: stats.workerStepMs };
+    },
+    perfStats: () => {
+      const now = performance.now();
+      const frames = stats.frames - at.frames;
+      const w = [...workMs].sort((a, b) => a - b);
+      const steps = Math.max(1, stats.steps - at.steps);
+      return {
+        frames,
+        spanMs: now - at.t,
+        updates: stats.updates - at.updates,
+        drawnFrames: stats.drawnFrames - at.drawn,
+        skippedSteps: skipped() - at.skipped,
+        meanIntervalMs: (now - at.t) / Math.max(1, frames),
+        meanWorkMs: w.reduce((a, b) => a + b, 0) / Math.max(1, w.length),
+        p95WorkMs: w[Math.min(w.length - 1, Math.floor(0.95 * w.length))] ?? 0,
+        jobMsPerStep: (stats.jobMs - at.jobMs) / steps,
+        workerMsPerStep: (stats.workerStepMs - at.stepMs) / steps,
+      };
+    },
+  };
+  window.__crowd = hook;
+}
+
+/** How the session's crowd is stepped. */
+function workersInfo(s: CrowdSession): CrowdWorkersInfo {
+  const st = s.stepper;
+  const on = st?.active === true;
+  return {
+    mode: on && st ? (st.shared ? "shared" : "messages") : "main",
+    workers: on && st ? st.workers : 0,
+    wanted: s.workersWanted,
+    crossOriginIsolated: globalThis.crossOriginIsolated === true,
+    cores: navigator.hardwareConcurrency || 0,
+    starting: on && st ? !st.ready : false,
+    error: st?.error ?? null,
+    owned: on && st ? st.owned : [],
+    shares: on && st ? st.shares() : [],
+    startMs: st?.startMs ?? 0,
+  };
+}
+
+/** The hash `snap` reaches on one core after `edit` and `steps` steps. */
+function reference(snap: CrowdSnapshot, edit: { boids?: number; path?: number[] }, steps: number): string {
+  const l = new CrowdLab(snap.config);
+  try {
+    l.loadState(new Float32Array(snap.state), snap.time);
+    if (edit.boids !== undefined) l.setBoidCount(edit.boids);
+    if (edit.path) l.setPathPoints(new Float32Array(edit.path));
+    l.step(steps);
+    return fnvHex(l.state());
+  } finally {
+    l.free();
+  }
 }

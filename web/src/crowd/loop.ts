@@ -3,11 +3,11 @@
 // metrics panel and the one-line HUD; step/draw/fps figures per second.
 
 import type { Surface } from "../canvas";
-import type { CrowdHook } from "./hook";
+import type { CrowdPage } from "./app";
 import { drawCrowd } from "./render";
-import type { CrowdSession } from "./session";
 
-export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hook: CrowdHook): void {
+export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): void {
+  const { session: s, stats } = page;
   let stepAcc = 0;
   /** Workers: their steps and the slowest worker's ms in the window. */
   let wSteps = 0;
@@ -24,24 +24,25 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
     const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
     const st = s.stepper?.active ? s.stepper : null;
     if (st) {
-      // Issue 17: workers step; this frame takes the newest complete state
-      // (before asking for more: the workers then leave its buffer alone),
-      // asks (never waits) and draws it.
+      // Workers step: this frame takes the newest complete state (before
+      // asking for more: the workers then leave its buffer alone), asks
+      // (never waits) and draws it.
       st.poll();
       if (n > 0) st.request(n);
       if (!s.playing) s.singleSteps = 0;
       st.pump();
       const d = st.takeCompleted();
-      hook.workerSteps += d.steps;
-      hook.workerJobMs += d.ms;
-      hook.workerStepMs += d.workerMs;
-      hook.workerUpdates += d.steps * st.count;
+      stats.steps += d.steps;
+      stats.jobMs += d.ms;
+      stats.workerStepMs += d.workerMs;
+      stats.updates += d.steps * st.count;
       wSteps += d.steps;
       wMs += d.workerMs;
     } else if (n > 0) {
       lab.step(n);
       if (!s.playing) s.singleSteps = 0;
-      hook.workerUpdates += n * lab.count();
+      stats.steps += n;
+      stats.updates += n * lab.count();
       s.dirty = true;
     }
     const t1 = performance.now();
@@ -62,20 +63,20 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         hover: s.editor.hover,
       });
       s.dirty = false;
-      hook.drawnFrames++;
+      stats.drawnFrames++;
     }
     const t2 = performance.now();
-    hook.workMs.push(t2 - t0);
+    page.probe?.(t2 - t0);
     stepAcc += t1 - t0;
     drawAcc += t2 - t1;
     frameAcc++;
-    hook.frames++;
+    stats.frames++;
     if (now - windowStart >= 1000) {
       // With workers: the slowest worker's ms per step (the page's share is in draw).
-      hook.stepMs = s.stepper?.active ? (wSteps > 0 ? wMs / wSteps : 0) : stepAcc / frameAcc;
+      stats.stepMs = s.stepper?.active ? (wSteps > 0 ? wMs / wSteps : 0) : stepAcc / frameAcc;
       wSteps = wMs = 0;
-      hook.drawMs = drawAcc / frameAcc;
-      hook.fps = (1000 * frameAcc) / (now - windowStart);
+      stats.drawMs = drawAcc / frameAcc;
+      stats.fps = (1000 * frameAcc) / (now - windowStart);
       stepAcc = drawAcc = frameAcc = 0;
       windowStart = now;
     }
@@ -90,9 +91,9 @@ export function runLoop(s: CrowdSession, surface: Surface, hud: HTMLElement, hoo
         `${lab.count().toLocaleString("en")} boids`,
         seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
         c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
-        `${hook.fps.toFixed(0)} fps`,
-        st ? `step ${hook.stepMs.toFixed(1)} ms in ${st.workers} worker${st.workers === 1 ? "" : "s"}` : `step ${hook.stepMs.toFixed(2)} ms`,
-        `draw ${hook.drawMs.toFixed(2)} ms`,
+        `${stats.fps.toFixed(0)} fps`,
+        st ? `step ${stats.stepMs.toFixed(1)} ms in ${st.workers} worker${st.workers === 1 ? "" : "s"}` : `step ${stats.stepMs.toFixed(2)} ms`,
+        `draw ${stats.drawMs.toFixed(2)} ms`,
       ].join("  ·  ");
     }
   };

@@ -8,8 +8,9 @@ import { setupCanvas } from "../canvas";
 import { button } from "../controls";
 import { downloadPng } from "../download";
 import { $, showMessage, showVersion } from "../page";
-import { CrowdLab, errorText, loadCore, type CrowdConfig } from "../wasm";
-import { bench, fnvHex, scaledConfig, type CrowdHook } from "./hook";
+import { CrowdLab, errorText, loadCore } from "../wasm";
+import type { CrowdPage } from "./app";
+import { installHook } from "./hook";
 import { attachCanvas, attachKeys } from "./input";
 import { runLoop } from "./loop";
 import { buildPanel } from "./panel";
@@ -18,116 +19,16 @@ import { CrowdSession } from "./session";
 
 const s = new CrowdSession();
 const canvas = $<HTMLCanvasElement>("crowd");
-let presets: CrowdConfig[] = [];
-
-const hook: CrowdHook = {
+const page: CrowdPage = {
   ready: false,
   error: null,
-  frames: 0,
-  get playing() {
-    return s.playing;
-  },
-  stepMs: 0,
-  drawMs: 0,
-  fps: 0,
-  get preset() {
-    return s.preset;
-  },
-  count: () => s.lab?.count() ?? 0,
-  time: () => s.lab?.time() ?? 0,
-  pathPoints: () => Array.from(s.lab?.pathPoints() ?? []),
-  pathRadius: () => s.lab?.pathRadius() ?? 0,
-  seek: () => (s.lab ? s.lab.config().seek : null),
-  separation: () => (s.lab ? s.lab.config().separation : false),
-  selected: () => s.editor.selected,
-  metrics: () => (s.lab ? s.lab.metrics() : null),
-  toScreen: (x, y) => s.view.toScreen(x, y),
-  bench: (counts, minMs) => bench(presets, counts, minMs),
-  workerUpdates: 0,
-  workerSteps: 0,
-  workerJobMs: 0,
-  workerStepMs: 0,
-  drawnFrames: 0,
-  workMs: [],
-  workers: () => {
-    const st = s.stepper;
-    const on = st?.active === true;
-    return {
-      mode: on && st ? (st.shared ? "shared" : "messages") : "main",
-      workers: on && st ? st.workers : 0,
-      wanted: s.workersWanted,
-      crossOriginIsolated: globalThis.crossOriginIsolated === true,
-      cores: navigator.hardwareConcurrency || 0,
-      starting: on && st ? !st.ready : false,
-      error: st?.error ?? null,
-      owned: on && st ? st.owned : [],
-      shares: on && st ? st.shares() : [],
-      startMs: st?.startMs ?? 0,
-    };
-  },
-  stateHash: () => {
-    const l = s.lab;
-    if (!l) return "";
-    const st = s.stepper?.active ? s.stepper.state : l.state();
-    return fnvHex(st);
-  },
-  snapshot: () => {
-    s.syncFromWorkers();
-    const l = s.lab;
-    if (!l) throw new Error("no crowd");
-    return { config: l.config(), state: Array.from(l.state()), time: l.time() };
-  },
-  reference: (snap, edit, steps) => {
-    const l = new CrowdLab(snap.config);
-    try {
-      l.loadState(new Float32Array(snap.state), snap.time);
-      if (edit.boids !== undefined) l.setBoidCount(edit.boids);
-      if (edit.path) l.setPathPoints(new Float32Array(edit.path));
-      l.step(steps);
-      return fnvHex(l.state());
-    } finally {
-      l.free();
-    }
-  },
-  runSteps: async (n) => {
-    const st = s.stepper;
-    if (st?.active) {
-      // A job runs any number of steps with shared memory, one by message.
-      const per = st.shared ? n : 1;
-      for (let k = 0; k < n; k += per) await st.step(Math.min(per, n - k));
-    } else s.lab?.step(n);
-    s.dirty = true;
-  },
-  idle: () => !s.stepper?.active || (s.stepper.ready && s.stepper.idle),
-  skippedSteps: () => s.stepper?.skipped ?? 0,
-  loadScaled: (n) => {
-    const c = scaledConfig(presets, n);
-    if (c) s.load(c, true);
-  },
-  perfReset: () => {
-    hook.workMs = [];
-    perfAt = { t: performance.now(), frames: hook.frames, updates: hook.workerUpdates, drawn: hook.drawnFrames, skipped: hook.skippedSteps(), steps: hook.workerSteps, jobMs: hook.workerJobMs, stepMs: hook.workerStepMs };
-  },
-  perfStats: () => {
-    const now = performance.now();
-    const frames = hook.frames - perfAt.frames;
-    const w = [...hook.workMs].sort((a, b) => a - b);
-    return {
-      frames,
-      spanMs: now - perfAt.t,
-      updates: hook.workerUpdates - perfAt.updates,
-      drawnFrames: hook.drawnFrames - perfAt.drawn,
-      skippedSteps: hook.skippedSteps() - perfAt.skipped,
-      meanIntervalMs: (now - perfAt.t) / Math.max(1, frames),
-      meanWorkMs: w.reduce((a, b) => a + b, 0) / Math.max(1, w.length),
-      p95WorkMs: w[Math.min(w.length - 1, Math.floor(0.95 * w.length))] ?? 0,
-      jobMsPerStep: (hook.workerJobMs - perfAt.jobMs) / Math.max(1, hook.workerSteps - perfAt.steps),
-      workerMsPerStep: (hook.workerStepMs - perfAt.stepMs) / Math.max(1, hook.workerSteps - perfAt.steps),
-    };
-  },
+  session: s,
+  presets: [],
+  stats: { frames: 0, drawnFrames: 0, steps: 0, updates: 0, jobMs: 0, workerStepMs: 0, stepMs: 0, drawMs: 0, fps: 0 },
+  probe: null,
 };
-let perfAt = { t: 0, frames: 0, updates: 0, drawn: 0, skipped: 0, steps: 0, jobMs: 0, stepMs: 0 };
-window.__crowd = hook;
+// The test build's window.__crowd; the shipped build drops this line and hook.ts.
+if (import.meta.env.MODE === "test") installHook(page);
 
 const transport = $("transport");
 const playBtn = button(transport, "play", "Pause", "play / pause (space)", () => s.setPlaying(!s.playing));
@@ -143,13 +44,14 @@ attachCanvas(canvas, s);
 async function start(): Promise<void> {
   try {
     showVersion(await loadCore());
-    presets = CrowdLab.paperPresets();
+    page.presets = CrowdLab.paperPresets();
   } catch (e) {
-    hook.error = errorText(e);
-    showMessage(`could not load the steering core: ${hook.error}`, "error");
+    page.error = errorText(e);
+    showMessage(`could not load the steering core: ${page.error}`, "error");
     return;
   }
   const sel = $<HTMLSelectElement>("preset");
+  const presets = page.presets;
   const index = fillPresetMenu(sel, presets);
   sel.value = String(index);
   sel.addEventListener("change", () => {
@@ -159,8 +61,8 @@ async function start(): Promise<void> {
 
   const first = presets[index];
   if (!first) {
-    hook.error = "the core has no crowd presets";
-    showMessage(hook.error, "error");
+    page.error = "the core has no crowd presets";
+    showMessage(page.error, "error");
     return;
   }
   s.panel = buildPanel($("panel"), {
@@ -210,8 +112,8 @@ async function start(): Promise<void> {
     s.dirty = true;
   });
   s.load(first, true);
-  hook.ready = true;
-  runLoop(s, surface, $("hud"), hook);
+  page.ready = true;
+  runLoop(page, surface, $("hud"));
 }
 
 void start();

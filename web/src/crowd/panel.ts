@@ -37,7 +37,7 @@ export interface PanelActions {
   radius(r: number): void;
   closed(c: boolean): void;
   speed(stepsPerFrame: number): void;
-  /** Issue 17: count changes scale the pathway (Test IV's boids per length). */
+  /** Count changes scale the pathway (Test IV's boids per length). */
   density(on: boolean): void;
   showTrace(on: boolean): void;
   showHandles(on: boolean): void;
@@ -76,8 +76,8 @@ function fmt(v: number | null, digits: number, unit = ""): string {
   return v === null ? "—" : `${v.toFixed(digits)}${unit}`;
 }
 
-export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelActions): Panel {
-  // Strategy.
+/** The seek select, the separation switch and its weight. */
+function steeringSection(parent: HTMLElement, initial: PanelState, a: PanelActions): (s: PanelState) => void {
   const strat = section(parent, "Steering");
   const seekRow = document.createElement("label");
   seekRow.className = "numrow";
@@ -105,8 +105,18 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
     },
   });
   help(strat).textContent = "Weight 1 is the paper's literal separation sum; the presets use 0.05.";
+  return (s) => {
+    seekSel.selectedIndex = seekIndex(s.seek);
+    sep.set(s.separation);
+    sepOn = s.separation;
+    weight = s.weight;
+    w.set(s.weight);
+  };
+}
 
-  // Crowd.
+/** The boid count (slider, number box, quick counts; a heavy count asks
+ *  first), the density switch and the steps per frame. */
+function crowdSection(parent: HTMLElement, initial: PanelState, a: PanelActions): (boids: number) => void {
   const crowd = section(parent, "Crowd");
   let boids = initial.boids;
   /** Test IV density on: count changes scale the pathway (other limits, ./count). */
@@ -149,27 +159,13 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
     if (countOut) countOut.textContent = n.toLocaleString("en");
   };
   count.el.querySelector("input")?.addEventListener("input", () => showCount(Number(num.value)));
-  const numRow = document.createElement("label");
-  numRow.className = "numrow";
-  numRow.append("boid count");
-  const num = document.createElement("input");
-  num.type = "number";
-  num.id = "boids";
-  num.min = "0";
-  num.max = String(PAGE_MAX_BOIDS);
-  num.step = "1";
-  num.value = String(initial.boids);
-  // A text box reads what was typed: type=number hides "1e6" and "0x10" behind "".
-  num.type = "text";
-  num.inputMode = "numeric";
-  num.addEventListener("change", () => askBoids(num.value));
-  numRow.append(num);
+  const num = countBox(crowd, initial.boids, askBoids);
   const note = document.createElement("div");
   note.id = "boids-msg";
   note.className = "field-msg";
   note.setAttribute("role", "alert");
   note.hidden = true;
-  crowd.append(numRow, note);
+  crowd.append(note);
   const quick = row(crowd);
   for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
     button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => askBoids(String(n)));
@@ -181,8 +177,34 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   slider(crowd, {
     id: "speed", label: "steps / frame", unit: "", min: 1, max: 20, step: 1, value: 1, digits: 0, onInput: a.speed,
   });
+  return (n) => {
+    note.hidden = true;
+    showBoids(n);
+  };
+}
 
-  // Path.
+/** The boid count's text box; `ask` gets what was typed. */
+function countBox(parent: HTMLElement, value: number, ask: (text: string) => void): HTMLInputElement {
+  const numRow = document.createElement("label");
+  numRow.className = "numrow";
+  numRow.append("boid count");
+  const num = document.createElement("input");
+  num.id = "boids";
+  num.min = "0";
+  num.max = String(PAGE_MAX_BOIDS);
+  num.step = "1";
+  num.value = String(value);
+  // A text box reads what was typed: type=number hides "1e6" and "0x10" behind "".
+  num.type = "text";
+  num.inputMode = "numeric";
+  num.addEventListener("change", () => ask(num.value));
+  numRow.append(num);
+  parent.append(numRow);
+  return num;
+}
+
+/** The pathway's radius, whether it is closed, and its point buttons. */
+function pathSection(parent: HTMLElement, initial: PanelState, a: PanelActions): (s: PanelState) => void {
   const path = section(parent, "Pathway");
   const radius = slider(path, {
     id: "radius", label: "radius", unit: "u", min: 2, max: 150, step: 1, value: initial.radius, digits: 0, onInput: a.radius,
@@ -193,8 +215,34 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   button(prow, "remove-point", "Remove point", "remove the selected path point (also Delete)", a.removePoint);
   button(prow, "fit", "Fit view", "fit the pathway in the canvas", a.fit);
   help(path).innerHTML = "Drag a point to move it; double-click a segment to add one; click a point and press <kbd>Delete</kbd> to remove it. Drag elsewhere to pan, wheel to zoom.";
+  return (s) => {
+    radius.set(s.radius);
+    closed.set(s.closed);
+  };
+}
 
-  // Display.
+/** The metrics since their reset, as text. */
+function metricsText(m: CrowdMetrics, overlapsNow: number, boids: number): string {
+  return [
+    `steps measured   ${m.steps}`,
+    `laps timed       ${m.laps}`,
+    `mean lap         ${fmt(m.mean_lap_steps, 1, " steps")}`,
+    `mean distance    ${fmt(m.mean_distance, 2, " u")}`,
+    `p95 distance     ${fmt(m.p95_distance, 2, " u")}`,
+    `outside radius   ${m.outside_share === null ? "—" : `${(100 * m.outside_share).toFixed(2)} %`}`,
+    `mean offset      ${fmt(m.mean_offset, 2, " u")} (+ left)`,
+    `overlaps / step  ${fmt(m.overlapping_pairs_per_step, 2)} (now ${overlapsNow})`,
+    `trace spread     ${fmt(m.trace_spread, 2, " u")}`,
+    `steer / sep      ${fmt(m.mean_steer, 3)} / ${fmt(m.mean_separation, 3)}`,
+    `boids            ${boids.toLocaleString("en")}`,
+  ].join("\n");
+}
+
+export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelActions): Panel {
+  const setSteering = steeringSection(parent, initial, a);
+  const setBoids = crowdSection(parent, initial, a);
+  const setPath = pathSection(parent, initial, a);
+
   const disp = section(parent, "Display");
   checkbox(disp, "show-trace", "lap trace", true, a.showTrace);
   checkbox(disp, "show-handles", "path points", true, a.showHandles);
@@ -202,7 +250,6 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
   button(drow, "new-trace", "Another boid", "highlight another random boid's lap", a.newTrace);
   button(drow, "png", "PNG", "download the canvas as PNG", a.png);
 
-  // Metrics.
   const met = section(parent, "Metrics (since reset)");
   const pre = document.createElement("pre");
   pre.className = "metrics";
@@ -214,36 +261,17 @@ export function buildPanel(parent: HTMLElement, initial: PanelState, a: PanelAct
 
   const panel: Panel = {
     set(s) {
-      seekSel.selectedIndex = seekIndex(s.seek);
-      sep.set(s.separation);
-      sepOn = s.separation;
-      weight = s.weight;
-      w.set(s.weight);
-      note.hidden = true;
-      showBoids(s.boids);
-      radius.set(s.radius);
-      closed.set(s.closed);
+      setSteering(s);
+      setBoids(s.boids);
+      setPath(s);
     },
     metricsOff(why) {
       pre.textContent = why;
     },
     showMetrics(m, overlapsNow, boids) {
-      pre.textContent = [
-        `steps measured   ${m.steps}`,
-        `laps timed       ${m.laps}`,
-        `mean lap         ${fmt(m.mean_lap_steps, 1, " steps")}`,
-        `mean distance    ${fmt(m.mean_distance, 2, " u")}`,
-        `p95 distance     ${fmt(m.p95_distance, 2, " u")}`,
-        `outside radius   ${m.outside_share === null ? "—" : `${(100 * m.outside_share).toFixed(2)} %`}`,
-        `mean offset      ${fmt(m.mean_offset, 2, " u")} (+ left)`,
-        `overlaps / step  ${fmt(m.overlapping_pairs_per_step, 2)} (now ${overlapsNow})`,
-        `trace spread     ${fmt(m.trace_spread, 2, " u")}`,
-        `steer / sep      ${fmt(m.mean_steer, 3)} / ${fmt(m.mean_separation, 3)}`,
-        `boids            ${boids.toLocaleString("en")}`,
-      ].join("\n");
+      pre.textContent = metricsText(m, overlapsNow, boids);
     },
   };
   panel.set(initial);
   return panel;
 }
-

@@ -1,7 +1,7 @@
 // Draws the crowd: the pathway band (its radius), the centre line, the
 // path's editable points, the highlighted boid's lap and the boids. Boids are
 // oriented triangles up to TRIANGLE_LIMIT, beyond that 2×2-pixel squares; in
-// both cases one path and one fill for all boids (10,000 boids draw in ~1 ms).
+// both cases one path and one fill for all boids, not one per boid.
 
 import { beginFrame, type Surface } from "../canvas";
 import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
@@ -40,7 +40,7 @@ function drawSprites(s: Surface, view: View, pos: Float32Array, vel: Float32Arra
   const nose = 3 * k;
   const m = r + Math.ceil(nose) + 1;
   const n = pos.length >> 1;
-  // Issue 17 (100,000 boids and more): rounding by `| 0` after a float
+  // Per boid, by the hundred thousand: rounding by `| 0` after a float
   // range test (no Math.round, no overflow), sqrt not hypot.
   for (let i = 0; i < n; i++) {
     const fx = ox + (pos[2 * i] ?? 0) * sc;
@@ -108,7 +108,7 @@ export function drawCrowd(s: Surface, view: View, sc: CrowdScene): void {
   const vel = sc.velocities;
   const n = pos.length >> 1;
   if (n > GL_THRESHOLD && !FORCE_2D && glSprites.draw(s, view, pos, vel, n, { stride: 2, x: 0, y: 1, theta: null, colour: null }, [COLOURS.boid], 3)) {
-    // Issue 17: one WebGL2 instanced draw, headings from the velocities.
+    // One WebGL2 instanced draw, headings from the velocities.
     markPath(s.canvas, "webgl2");
   } else if (n <= TRIANGLE_LIMIT) {
     glSprites.hide();

@@ -25,7 +25,7 @@ export class CrowdSession {
   panel: Panel | null = null;
   readonly view = new View(PAPER_UNITS);
   readonly editor: PathEditor;
-  /** Issue 17: the crowd stepped in workers (null: never started). */
+  /** The crowd stepped in workers (null: never started). */
   stepper: CrowdStepper | null = null;
   /** Workers asked for at the present count (URL or default). */
   workersWanted = 0;

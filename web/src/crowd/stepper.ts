@@ -1,4 +1,4 @@
-// The crowd stepped across cores (issue 17, point 3): N crowd workers
+// The crowd stepped across cores: N crowd workers
 // (crowd.worker.ts) on the one worker layer (../workers/pool.ts, `each`:
 // task i to worker i), each stepping the boids of one vertical strip.
 //
@@ -14,10 +14,10 @@
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
 //   continuing jobs (../workers/continuing.ts: the workers step on while
 //   the page asks, meeting at a barrier after every step, and the page
-//   draws every state in order, up to DEPTH states behind the newest).
-//   Before, a job ended with every step and the next began only when the
-//   page had handled the answer, after its drawing: at 100,000 boids the
-//   worker idled a few ms per step. The page never waits for a worker.
+//   draws every state in order, up to DEPTH states behind the newest): a
+//   job that ended with every step would leave the workers idle until the
+//   page had handled its answer, after its drawing. The page never waits
+//   for a worker.
 // - Else one step per job: the front state goes to each worker by message
 //   and the stepped boids come back with their indices (transferred),
 //   copied here into the back buffer, then the two swap.
@@ -57,8 +57,9 @@ export interface CrowdReply {
   states: Float32Array | null;
 }
 
-/** Boids from which the page steps the crowd in workers by default
- *  (measured, README: below it the page's thread keeps 60 fps). */
+/** Boids from which the page steps the crowd in workers by default: below
+ *  it the page's thread steps and draws them at 60 fps on a 2-core host
+ *  (`make bench-web`'s crowd rows). */
 export const AUTO_WORKERS_FROM = 20_000;
 
 /** Shared memory: the state buffers (`sab[0..STATES)`, continuing.ts),
@@ -78,16 +79,14 @@ const BALANCE_FLOATS = 3 * MAX_CROWD_WORKERS;
 /** Weight of the last step's rates in the new shares (the rest: the old). */
 const BALANCE_GAIN = 0.3;
 
-/** Issue 17, two workers beside the page's drawing on 2 cores: strips of
- *  equal counts took unequal times (150,000 boids: one worker waited 1–3.5
- *  ms a step for the other on a quiet machine, 3–9 ms on a loaded one:
- *  unequal density, and the page or the compositor taking a core from one
- *  of them). Each strip's next share of the boids follows its worker's
- *  measured boids per ms (smoothed by BALANCE_GAIN, at least a tenth of an
- *  equal share): the slower worker gets fewer (measured: 67,518 and 82,482
- *  boids stepped in 23.15 and 23.33 ms). The split never changes a bit of
- *  the state (strips step their boids as one core would), only who waits.
- *  Writes the new shares into `bal`. */
+/** Strips of equal counts take unequal times (unequal density, and the
+ *  page or the compositor taking a core from one worker), and at the
+ *  barrier the faster worker waits for the slower. Each strip's next share
+ *  of the boids follows its worker's measured boids per ms (smoothed by
+ *  BALANCE_GAIN, at least a tenth of an equal share): the slower worker
+ *  gets fewer, and both finish a step at about the same time. The split
+ *  never changes a bit of the state (strips step their boids as one core
+ *  would), only who waits. Writes the new shares into `bal`. */
 export function rebalance(bal: Float32Array, workers: number): void {
   const rates: number[] = [];
   for (let w = 0; w < workers; w++) {
@@ -112,11 +111,8 @@ const MAX_STEPS_PER_FRAME = 20;
 
 /** `?workers=N` (0 = page's thread) or, unset, from AUTO_WORKERS_FROM boids
  *  a worker per core but one (at least one): the page's drawing keeps a
- *  core (measured on 2 cores at Test IV density, stepped + drawn per
- *  frame, 1 worker / 2 workers: 100,000 boids 99,839 / 99,847, both every
- *  frame; 150,000 120,612 / 131,481; 200,000 118,654 / 133,888; the page's
- *  work per frame 3.0–3.8 against 4.3–5.6 ms; README). A bad value is
- *  reported. */
+ *  core, where it competes with the workers' (`make bench-web`'s crowd rows
+ *  compare 1 worker with one per core). A bad value is reported. */
 export function crowdWorkersWanted(count: number, search = location.search): { n: number; problem: string | null } {
   const auto = count >= AUTO_WORKERS_FROM ? Math.max(1, Math.min(8, (navigator.hardwareConcurrency || 2) - 1)) : 0;
   const raw = new URLSearchParams(search).get("workers");

@@ -1,84 +1,78 @@
-// The lab's avoidance (issue 18): the method in force (the scenario's own,
-// or the one chosen in the panel or the link), the obstacles as last read
-// from the core, and the edits that go to it (method, obstacles dragged,
-// added, removed). A refused edit leaves the core unchanged and says why.
+// The lab's avoidance: the method in force (the scenario's own, or the one
+// chosen in the panel or the link), the obstacles as the world last
+// reported them, and the edits that go to it (method, obstacles dragged,
+// added, removed). The page shows an edit at once; the world's answer
+// (at once on this thread, with the workers' next reply there) then puts
+// its own values in force, and a refusal says why.
 
-import { showMessage } from "../page";
 import type { Drag } from "../pointer";
 import type { Vec, View } from "../view";
-import { errorText, type Lab } from "../wasm";
 import { dragObstacle, pickObstacle, type ObstacleLimits } from "./obstacles";
-import { AVOID_KEYS, type AvoidKey, type LabState } from "./state";
+import type { AvoidKey, LabState } from "./state";
+import type { AvoidInfo, Edit, EditAnswer } from "./worldcalls";
+
+/** Sends an avoidance edit to the world; `answer` gets its reply. */
+export type SendAvoid = (e: Edit & { kind: "avoid" }, answer: (a: EditAnswer) => void) => void;
 
 export class LabAvoidance {
-  /** The method in force in the core. */
+  /** The method in force in the world. */
   method: AvoidKey = "off";
   /** The obstacles in force (lab/obstacles.ts layout). */
   obstacles: number[] = [];
-  /** Steps between an agent's avoidance plans in force in the core. */
+  /** Steps between an agent's avoidance plans in force in the world. */
   replanEvery = 2;
   /** The agents' body radius, m. */
   radius = 0.3;
   /** Called after every change (redraw, URL, the panel's select). */
   onChange: () => void = () => {};
 
-  constructor(private readonly lab: Lab, private readonly st: LabState) {}
+  constructor(private readonly st: LabState, private readonly send: SendAvoid) {}
 
-  /** After a (re)build: the page's choices over the scenario's own, then
-   *  what the core holds. */
-  apply(): void {
-    const { lab, st } = this;
-    try {
-      if (st.avoidance !== null) lab.setAvoidance(st.avoidance);
-      if (st.replanEvery !== null) lab.setAvoidanceReplanEvery(st.replanEvery);
-      if (st.obstacles !== null) lab.setObstacles(new Float32Array(st.obstacles));
-    } catch (e) {
-      showMessage(`Avoidance settings rejected: ${errorText(e)}`, "warn");
-    }
-    this.pull();
-  }
-
-  /** Reads the method, obstacles and radius back from the core. */
-  pull(): void {
-    const m = this.lab.avoidance();
-    this.method = (AVOID_KEYS as readonly string[]).includes(m) ? (m as AvoidKey) : "off";
-    this.obstacles = Array.from(this.lab.obstacles());
-    this.radius = this.lab.avoidanceRadius();
-    this.replanEvery = this.lab.avoidanceReplanEvery();
+  /** What the world holds (after a build, or in answer to an edit). */
+  take(a: AvoidInfo): void {
+    this.method = a.method;
+    this.obstacles = a.obstacles;
+    this.radius = a.radius;
+    this.replanEvery = a.replanEvery;
     this.onChange();
   }
 
   setMethod(m: AvoidKey): void {
-    this.edit("Avoidance", () => {
-      this.lab.setAvoidance(m);
-      this.st.avoidance = m;
+    const was = this.st.avoidance;
+    this.st.avoidance = m;
+    this.method = m;
+    this.edit({ kind: "avoid", method: m }, () => {
+      this.st.avoidance = was;
     });
   }
 
   setReplanEvery(n: number): void {
-    this.edit("Avoidance plan rate", () => {
-      this.lab.setAvoidanceReplanEvery(n);
-      this.st.replanEvery = n;
+    const was = this.st.replanEvery;
+    this.st.replanEvery = n;
+    this.replanEvery = n;
+    this.edit({ kind: "avoid", replanEvery: n }, () => {
+      this.st.replanEvery = was;
     });
   }
 
-  /** The whole list to the core (a drag sends every move). */
+  /** The whole list to the world (a drag sends every move); kept as f32, as the core keeps it. */
   setObstacles(list: number[]): void {
-    this.edit("Obstacles", () => {
-      this.lab.setObstacles(new Float32Array(list));
-      this.st.obstacles = Array.from(this.lab.obstacles());
+    const was = this.st.obstacles;
+    this.obstacles = Array.from(Float32Array.from(list));
+    this.st.obstacles = this.obstacles;
+    this.edit({ kind: "avoid", obstacles: this.obstacles }, () => {
+      this.st.obstacles = was;
     });
   }
 
-  /** One edit to the core: a refusal (nothing changed there) is shown as
-   *  `what rejected: why`; either way the page reads the core back. */
-  private edit(what: string, f: () => void): void {
-    try {
-      f();
-    } catch (e) {
-      showMessage(`${what} rejected: ${errorText(e)}`, "warn");
-    }
-    this.pull();
+  /** Sends `e`; on a refusal `undo` restores the page's state, and either
+   *  way the world's avoidance is taken. */
+  private edit(e: Edit & { kind: "avoid" }, undo: () => void): void {
+    this.send(e, (a) => {
+      if (a.error) undo();
+      if (a.avoid) this.take(a.avoid);
+    });
+    this.onChange();
   }
 }
 

@@ -1,4 +1,4 @@
-// The side panel's avoidance section (issue 18): the method (off,
+// The side panel's avoidance section: the method (off,
 // separation, ORCA) for the world in force, a preset's own until changed;
 // the steps between an agent's plans (the core's range); buttons that add
 // a disc or a wall at the view's centre and remove the last obstacle. The obstacles themselves are dragged on the canvas.

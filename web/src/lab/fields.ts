@@ -1,7 +1,7 @@
 // The lab's numbers and the core's ranges for them (crate/funnelling/ranges.rs,
 // exported as `ranges()`): the URL decoder, the sliders and the number boxes
-// all check a value here, so the page accepts exactly what the core accepts
-// (issue 16). Pure: no wasm at run time, so the Node fuzz test runs it as is.
+// all check a value here, so the page accepts exactly what the core
+// accepts. Pure: no wasm at run time, so the Node fuzz test runs it as is.
 
 import { parseDecimal } from "../controls";
 import type { FieldRange, PrecisionRule } from "../wasm";

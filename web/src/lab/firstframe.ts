@@ -1,9 +1,9 @@
-// Issue 17, the first drawn frame: the default playground drawn while the
-// page's scripts and the wasm core are still on their way.
+// The first drawn frame: the default playground drawn while the page's
+// scripts and the wasm core are still on their way.
 //
-// Problem: the lab's first frame waited for its script chunks, then for the
-// core to compile and build the scene (median ≈ 400 ms after navigation on
-// the 2-core host, of which ≈ 100 ms is a fresh context's parser start).
+// Problem: a first frame drawn by the page's modules waits for its script
+// chunks, then for the core to compile and build the scene (`make
+// bench-web` times where that time goes).
 // Design: the scene at t = 0 of the page without a link (no hash) is always
 // the same: the build (vite.config.ts, `firstFrame`) runs the core itself in
 // Node on that state (`Lab.withoutTable`, the playground agent as sim.ts
@@ -14,10 +14,11 @@
 // as soon as it runs, while the HTML is parsed (its time: the start of the
 // animation frame that shows it; the page's loop times a frame after drawing
 // it, in that frame). The core then builds the same scene from the same
-// state: main.ts checks the core's state against this one bit for bit (a
+// state (recipe.ts, the calls of firstdata.ts): main.ts checks the core's state against this one bit for bit (a
 // warning if they differ; the e2e suite fails on it) and its first frame
 // replaces this one. Fallback: a link with a hash, a `?workers=` page, or a
-// build without the data draws nothing here; the page starts as before.
+// build without the data draws nothing here; the page's own first frame
+// is the first.
 
 import { beginFrame, fitSurface, type Surface } from "../canvas";
 import { View } from "../view";
@@ -28,7 +29,7 @@ import { SceneBuilder, type SceneSource } from "./scene";
 import { defaultState, fitPlayground, type Pose } from "./state";
 import { Trails } from "./trails";
 
-/** What the build writes into index.html (window.__labFirstFrame). */
+/** What the build writes into index.html (window.__firstFrameData). */
 export interface FirstFrameData {
   stride: number;
   /** The core's state records at t = 0 (f32 values). */
@@ -39,7 +40,7 @@ export interface FirstFrameData {
   ghost: { points: number[]; reached: boolean; finalDir: number; slowed: boolean } | null;
 }
 
-/** What was drawn, and when (window.__labFirst; hook.ts and main.ts read it). */
+/** What was drawn, and when (window.__firstFrame; hook.ts and main.ts read it). */
 export interface FirstFrameRecord {
   /** performance.now() after the frame was drawn. */
   ms: number;
@@ -49,8 +50,8 @@ export interface FirstFrameRecord {
 
 declare global {
   interface Window {
-    __labFirstFrame?: FirstFrameData;
-    __labFirst?: FirstFrameRecord;
+    __firstFrameData?: FirstFrameData;
+    __firstFrame?: FirstFrameRecord;
   }
 }
 
@@ -88,15 +89,11 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
       usPerUpdate: 0, time: 0, paused: false,
       pose: (i) => pose(i),
       field: at,
-      stepping: () => false,
       // sim.ts's line while the table loads.
       tableLine: () => "loading… (seek view)",
       steppingLine: () => undefined,
-      lab: {
-        ghost: () => { if (!ghost) throw new Error("no ghost"); return ghost; },
-        etaRing: () => new Float32Array(0),
-        etaField: () => new Float32Array(0),
-      },
+      etaField: () => new Float32Array(0),
+      world: { ghost: () => ghost, ring: () => null },
       avoid: { method: "off", radius: 0, obstacles: [] },
     };
     const scenes = new SceneBuilder(source);
@@ -109,8 +106,7 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
     requestAnimationFrame(() => {
       first.ms = performance.now();
       performance.mark("lab:firstraf");
-      window.__labFirst = first;
-      if (window.__lab && Number.isNaN(window.__lab.firstFrameMs)) window.__lab.firstFrameMs = first.ms;
+      window.__firstFrame = first;
     });
   }
 }

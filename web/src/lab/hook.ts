@@ -1,11 +1,18 @@
-// window.__lab: what the end-to-end tests and the perf harness read and
-// drive, and the frame-time record behind perfStats().
+// window.__lab, in the test build only (`vite build --mode test`, the
+// e2e suites' and the benches' build; main.ts installs it under
+// `import.meta.env.MODE === "test"`, so the shipped bundle holds none of
+// it): what the tests read and drive, read from the page's record
+// (app.ts), and the frame-time record behind perfStats().
 
-import type { FunnelConfig, Internals, VehicleParams } from "../wasm";
+import { fnvHex } from "../fnv";
+import { Mode, StateField, type FunnelConfig, type Internals, type VehicleParams } from "../wasm";
 import type { SteppingInfo } from "../workers/stepping";
+import { cacheKeys } from "../workers/tablecache";
+import type { Vec } from "../view";
+import type { FrameProbe, LabPage, LabParts } from "./app";
 import type { TableStatus } from "./sim";
 import type { Handles } from "./handles";
-import type { Vec } from "../view";
+import { obstacleKnobs } from "./obstacles";
 import { presetNames } from "./presets";
 import { defaultState, type LabState } from "./state";
 
@@ -19,7 +26,7 @@ export interface PerfStats {
   usPerUpdate: number;
   agents: number;
   /** Agent updates finished in the sampled frames, and those frames' wall
-   *  time (issue 17: agents stepped per 16.7 ms = updates / (spanMs / 16.7)). */
+   *  time (agents stepped per 16.7 ms = updates / (spanMs / 16.7)). */
   updates: number;
   spanMs: number;
   /** Frames that drew a newly stepped state. */
@@ -32,10 +39,10 @@ export interface LabHook {
   error: string | null;
   problems: string[];
   version: string;
-  /** performance.now() when the first frame with agents was drawn (issue
-   *  17: before the η table has arrived, the scene at t = 0; for the
-   *  default playground, drawn by the HTML's own script before the core
-   *  is in, src/lab/firstframe.ts). */
+  /** performance.now() when the first frame with agents was drawn (before
+   *  the η table has arrived, the scene at t = 0; for the default
+   *  playground, drawn by the HTML's own script before the core is in,
+   *  src/lab/firstframe.ts). */
   firstFrameMs: number;
   /** performance.now() when the η table was in force and the clock free. */
   tableMs: number;
@@ -55,13 +62,13 @@ export interface LabHook {
   setPaused(p: boolean): void;
   perfReset(): void;
   perfStats(): PerfStats;
-  /** The η table's status (issue 14). */
+  /** The η table's status. */
   table(): TableStatus | null;
   /** The vehicle parameters in force in the core. */
   params(): VehicleParams | null;
   /** Keys in the browser's table cache. */
   cachedTables(): Promise<string[]>;
-  /** Issue 17: how the world is stepped (this thread or N workers). */
+  /** How the world is stepped (this thread or N workers). */
   workers(): SteppingInfo | null;
   /** FNV-1a (hex) of the bits of every agent's state as drawn. */
   stateHash(): string;
@@ -69,7 +76,7 @@ export interface LabHook {
   stepN(k: number): Promise<void>;
   /** Rebuilds the world at t = 0 (workers included) without unpausing. */
   restart(): Promise<void>;
-  /** Issue 18: the avoidance method in force in the core. */
+  /** The avoidance method in force in the world. */
   avoidance(): string | null;
   /** Steps between an agent's avoidance plans in the core. */
   replanEvery(): number;
@@ -93,51 +100,8 @@ declare global {
   }
 }
 
-/** Installs the hook with its not-yet-started answers; start() fills it in. */
-export function installHook(): LabHook {
-  const hook: LabHook = {
-    ready: false,
-    error: null,
-    problems: [],
-    version: "",
-    // Issue 17: the default playground's frame drawn from the HTML (firstframe.ts), if it came first.
-    firstFrameMs: window.__labFirst?.ms ?? NaN,
-    tableMs: NaN,
-    live: () => false,
-    frames: 0,
-    count: () => 0,
-    mode: () => null,
-    table: () => null,
-    params: () => null,
-    cachedTables: () => Promise.resolve([]),
-    workers: () => null,
-    stateHash: () => "",
-    stepN: async () => {},
-    restart: async () => {},
-    avoidance: () => null,
-    replanEvery: () => 0,
-    overlaps: () => 0,
-    obstacles: () => [],
-    obstacleKnobs: () => [],
-    finished: () => 0,
-    simTime: () => 0,
-    viewScale: () => 1,
-    internals: () => null,
-    funnel: () => null,
-    state: () => defaultState(),
-    handles: () => null,
-    setPreset: async () => {},
-    presets: () => presetNames(),
-    setPaused: () => {},
-    perfReset: () => {},
-    perfStats: () => new Perf().stats(0),
-  };
-  window.__lab = hook;
-  return hook;
-}
-
 /** The last 2000 frames' timings (ms) and the core's update cost. */
-export class Perf {
+export class Perf implements FrameProbe {
   private intervals: number[] = [];
   private work: number[] = [];
   private step: number[] = [];
@@ -195,16 +159,58 @@ export class Perf {
   }
 }
 
-/** FNV-1a, 32 bits, over the bit patterns of `a` (the worker/one-core check). */
-export function fnvHex(a: Float32Array): string {
-  const u = new Uint32Array(a.buffer, a.byteOffset, a.length);
-  let h = 0x811c9dc5;
-  for (let i = 0; i < u.length; i++) {
-    const w = u[i] ?? 0;
-    for (let b = 0; b < 32; b += 8) {
-      h ^= (w >>> b) & 0xff;
-      h = Math.imul(h, 0x01000193) >>> 0;
-    }
-  }
-  return h.toString(16).padStart(8, "0");
+/** The hook's answer before the page has started (`parts` null). */
+function started<T>(page: LabPage, f: (p: LabParts) => T, none: T): () => T {
+  return () => (page.parts ? f(page.parts) : none);
+}
+
+/** Installs window.__lab over `page` (its probe: a new Perf). */
+export function installHook(page: LabPage): void {
+  const perf = new Perf();
+  page.probe = perf;
+  const { status, loop } = page;
+  const on = <T>(f: (p: LabParts) => T, none: T): (() => T) => started(page, f, none);
+  const core = (p: LabParts) => p.sim.world.core();
+  const hook: LabHook = {
+    get ready() { return status.ready; },
+    get error() { return status.error; },
+    get problems() { return status.problems; },
+    get version() { return status.version; },
+    get tableMs() { return status.tableAt; },
+    get frames() { return loop.frames; },
+    // The default playground's frame drawn from the HTML (firstframe.ts), if it came first.
+    get firstFrameMs() { return window.__firstFrame?.ms ?? loop.firstDrawnMs; },
+    live: on((p) => p.sim.live, false),
+    count: on((p) => p.sim.count, 0),
+    mode: on((p) => p.sim.internals?.mode ?? null, null),
+    internals: on((p) => p.sim.internals, null),
+    funnel: on((p) => core(p)?.funnel() ?? null, null),
+    state: on((p) => structuredClone(p.sim.st), defaultState()),
+    handles: on((p) => p.handles(), null),
+    setPreset: (name) => page.parts?.transport.setPreset(name) ?? Promise.resolve(),
+    presets: () => presetNames(),
+    setPaused: (b) => page.parts?.transport.setPaused(b),
+    perfReset: () => perf.reset(),
+    perfStats: () => perf.stats(page.parts?.sim.count ?? 0),
+    table: on((p) => ({ ...p.sim.table }), null),
+    params: on((p) => core(p)?.params() ?? p.sim.params(), null),
+    cachedTables: cacheKeys,
+    workers: on((p) => p.sim.stepper?.info(p.sim.workersWanted) ?? null, null),
+    stateHash: on((p) => fnvHex(p.sim.state), ""),
+    stepN: (k) => page.parts?.sim.stepNow(k) ?? Promise.resolve(),
+    restart: () => page.parts?.sim.rebuild(false) ?? Promise.resolve(),
+    avoidance: on((p) => core(p)?.avoidance() ?? p.sim.avoid.method, null),
+    replanEvery: on((p) => core(p)?.avoidanceReplanEvery() ?? p.sim.avoid.replanEvery, 0),
+    overlaps: on((p) => core(p)?.overlaps() ?? 0, 0),
+    obstacles: on((p) => Array.from(core(p)?.obstacles() ?? p.sim.avoid.obstacles), []),
+    obstacleKnobs: (i) => (page.parts ? obstacleKnobs(page.parts.view, page.parts.sim.avoid.obstacles, i) : []),
+    finished: on((p) => {
+      let n = 0;
+      for (let i = 0; i < p.sim.count; i++) if (p.sim.field(i, StateField.Mode) === Mode.EndOfSteering) n++;
+      return n;
+    }, 0),
+    simTime: on((p) => p.sim.time, 0),
+    viewScale: on((p) => p.view.scale, 1),
+  };
+  window.__lab = hook;
 }

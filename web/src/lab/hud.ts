@@ -15,10 +15,10 @@ export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" 
   time: number;
   paused: boolean;
   slow: boolean;
-  /** The η table's status line (issue 14: exact, or approximate while the
+  /** The η table's status line (exact, or approximate while the
    *  table of the limits in force is built). */
   table: string;
-  /** Issue 17: where the world is stepped ("this thread", "2 workers, shared memory"). */
+  /** Where the world is stepped ("this thread", "2 workers, shared memory"). */
   stepping?: string | undefined;
 };
 
@@ -60,11 +60,11 @@ export function renderHud(el: HTMLElement, h: HudData): void {
 /** At most this often, ms, the HUD's running numbers are rewritten. */
 export const HUD_MS = 1000 / 15;
 
-/** The loop's HUD. Issue 17: rewriting its text costs the page a layout,
- *  a paint and a raster of its box, about 1.1 ms of the page's thread per
- *  frame and 0.3 ms of the compositor's at 100,000 agents (`make
- *  bench-budget`, same run: 5.80–6.24 against 4.85–4.94 ms per drawn state
- *  without it), where the stepping workers need every core. Numbers that
+/** The loop's HUD. Rewriting its text costs the page a layout, a paint
+ *  and a raster of its box, on the page's thread and the compositor's, a
+ *  sizeable share of what the page spends per drawn state at 100,000
+ *  agents (`make bench-budget` measures it), where the stepping workers
+ *  need every core. Numbers that
  *  change 60 times a second cannot be read anyway, so while only they
  *  change the text is rewritten at most every {@link HUD_MS} (15 Hz); any
  *  change of its settled part (mode, table, stepping, agents, pause) shows

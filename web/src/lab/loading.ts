@@ -1,4 +1,4 @@
-// Issue 17: the lab draws its first frame before the η table has arrived
+// The lab draws its first frame before the η table has arrived
 // (the scene at t = 0, seek steering). This badge over the canvas says so
 // until the table is in force and the clock runs; it fades out then.
 

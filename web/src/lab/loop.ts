@@ -1,17 +1,18 @@
 // The funnelling page's animation loop: advances the simulation clock by
-// the wall time since the last frame, draws when something changed, and
-// records frame timings for the HUD and window.__lab.perfStats().
+// the wall time since the last frame, draws when something changed, counts
+// the frames drawn and tells the probe (the test build's frame-time record)
+// each frame's timings.
 
 import { beginFrame, type Surface } from "../canvas";
 import type { View } from "../view";
-import type { LabHook, Perf } from "./hook";
+import type { FrameProbe, LoopStats } from "./app";
 import { Hud } from "./hud";
 import { COLOURS, drawScene } from "./render";
 import type { SceneBuilder } from "./scene";
 import type { LabSim } from "./sim";
 
 /** Starts the loop; `since` is when the page's clock started (the first frame's interval). */
-export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, view: View, hudEl: HTMLElement, hook: LabHook, perf: Perf, since: number): void {
+export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, view: View, hudEl: HTMLElement, stats: LoopStats, probe: FrameProbe | null, since: number): void {
   let lastFrame = since;
   let frameMsEma = 0;
   const hud = new Hud(hudEl);
@@ -20,27 +21,27 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
     lastFrame = now;
     const t0 = performance.now();
     const stepped = sim.advance(interval);
-    if (stepped.updates > 0) perf.stepped(stepped.updates, stepped.ms);
+    if (stepped.updates > 0) probe?.stepped(stepped.updates, stepped.ms);
     let drawMs = 0;
-    // With the workers stepping (issue 17), a frame draws only a new state or
-    // an edit: redrawing the same state would take their cores.
-    if (sim.dirty || (!sim.paused && !sim.stepping())) {
+    // A frame draws only a new state, an edit or a new view: redrawing the
+    // same picture would take a core from the stepping workers.
+    if (sim.dirty) {
       beginFrame(surface, COLOURS.background);
-      const inter = sim.internals(sim.shown);
+      const inter = sim.internals;
       const scene = scenes.scene(inter);
       const d0 = performance.now();
       drawScene(surface, view, scene);
       drawMs = performance.now() - d0;
       hud.show(scenes.hud(inter, frameMsEma), now);
       sim.dirty = false;
-      hook.frames++;
-      if (hook.frames === 1) performance.mark("lab:loop");
-      if (Number.isNaN(hook.firstFrameMs) && sim.count > 0) hook.firstFrameMs = performance.now();
+      stats.frames++;
+      if (stats.frames === 1) performance.mark("lab:loop");
+      if (Number.isNaN(stats.firstDrawnMs) && sim.count > 0) stats.firstDrawnMs = performance.now();
     }
     hud.flush(now);
     const work = performance.now() - t0;
     frameMsEma = frameMsEma === 0 ? work : 0.95 * frameMsEma + 0.05 * work;
-    perf.frame(interval, work, stepped.ms, drawMs);
+    probe?.frame(interval, work, stepped.ms, drawMs);
     requestAnimationFrame(frame);
   };
   requestAnimationFrame(frame);

@@ -4,13 +4,15 @@
 import { setupCanvas } from "../canvas";
 import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
-import { errorText, fetchTable, installTable, Lab, loadCore, Mode, precision, ranges, StateField } from "../wasm";
+import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges } from "../wasm";
 import { RangeTable } from "./fields";
 import { obstacleDrags } from "./avoidance";
 import { avoidanceSection } from "./avoidpanel";
 import { attachDrags, handlePositions, type Handles } from "./handles";
-import { obstacleKnobs, obstacleLimits } from "./obstacles";
-import { fnvHex, installHook, Perf } from "./hook";
+import { obstacleLimits } from "./obstacles";
+import { fnvHex } from "../fnv";
+import type { LabPage } from "./app";
+import { installHook } from "./hook";
 import { runLoop } from "./loop";
 import { buildPanel } from "./panel";
 import { presetNames } from "./presets";
@@ -18,24 +20,31 @@ import { HANDLE_PX, SceneBuilder } from "./scene";
 import { LabSim, TABLE_URL } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
-import { cacheKeys, openTableCache } from "../workers/tablecache";
+import { openTableCache } from "../workers/tablecache";
 import { tableBadge } from "./loading";
 
-
-const hook = installHook();
+const page: LabPage = {
+  status: { ready: false, error: null, problems: [], version: "", tableAt: NaN },
+  loop: { frames: 0, firstDrawnMs: NaN },
+  parts: null,
+  probe: null,
+};
+const status = page.status;
+// The test build's window.__lab; the shipped build drops this line and hook.ts.
+if (import.meta.env.MODE === "test") installHook(page);
 performance.mark("lab:main");
 
 async function start(): Promise<void> {
-  // Issue 17: the table's fetch starts with the core's instantiation, and
-  // the first frame does not wait for it (Lab.withoutTable: the scene at
-  // t = 0 with seek steering, the clock held until the table is in).
+  // The table's fetch starts with the core's instantiation, and the first
+  // frame does not wait for it (Lab.withoutTable: the scene at t = 0 with
+  // seek steering, the clock held until the table is in).
   const tableBytes = fetchTable(TABLE_URL);
   // The table cache opens beside the core's loading (a reload with other
   // limits reads its table from there as soon as the lab starts).
   openTableCache();
   const version = await loadCore();
   performance.mark("lab:core");
-  hook.version = version;
+  status.version = version;
   showVersion(version);
   const lab = Lab.withoutTable();
 
@@ -43,7 +52,7 @@ async function start(): Promise<void> {
   const table = new RangeTable(ranges(), precision());
   const decoded = decodeState(location.hash, presetNames(), table, lab.params());
   const st = decoded.state;
-  hook.problems = decoded.problems;
+  status.problems = decoded.problems;
   const title = "Some of the link's state was ignored:";
   if (decoded.problems.length > 0) showMessages(title, decoded.problems, "warn");
   const shown = currentMessage();
@@ -58,10 +67,6 @@ async function start(): Promise<void> {
   const transport = buildTransport(sim);
   const goal = buildPanel(sim, canvas);
   const changed = (): void => {
-    // Workers step worlds without avoidance only (issue 17: every agent is
-    // coupled once it is on); switching it on while they step rebuilds the
-    // world, at t = 0, on this page's core.
-    if (sim.stepping() && sim.avoid.method !== "off") void sim.rebuild(false);
     sim.dirty = true;
     sim.url.save();
   };
@@ -79,43 +84,12 @@ async function start(): Promise<void> {
     redraw: () => { sim.dirty = true; sim.url.save(); },
   }, obstacleDrags(view, sim.avoid, obstacleLimits(table), changed));
 
-  const perf = new Perf();
-  hook.count = () => sim.count;
-  hook.mode = () => sim.internals(sim.shown)?.mode ?? null;
-  hook.internals = () => sim.internals(sim.shown);
-  hook.funnel = () => lab.funnel();
-  hook.state = () => structuredClone(st);
-  hook.handles = handles;
-  hook.setPreset = transport.setPreset;
-  hook.setPaused = transport.setPaused;
-  hook.perfReset = () => perf.reset();
-  hook.perfStats = () => perf.stats(sim.count);
-  hook.table = () => ({ ...sim.table });
-  hook.params = () => lab.params();
-  hook.cachedTables = cacheKeys;
-  hook.workers = () => sim.stepper?.info(sim.workersWanted) ?? null;
-  hook.stateHash = () => fnvHex(sim.state);
-  hook.stepN = (k) => sim.stepN(k);
-  hook.restart = () => sim.rebuild(false);
-  hook.avoidance = () => lab.avoidance();
-  hook.replanEvery = () => lab.avoidanceReplanEvery();
-  hook.overlaps = () => lab.overlaps();
-  hook.obstacles = () => Array.from(lab.obstacles());
-  hook.obstacleKnobs = (i) => obstacleKnobs(view, sim.avoid.obstacles, i);
-  hook.finished = () => {
-    let n = 0;
-    for (let i = 0; i < sim.count; i++) if (sim.field(i, StateField.Mode) === Mode.EndOfSteering) n++;
-    return n;
-  };
-  hook.simTime = () => sim.time;
-  hook.viewScale = () => view.scale;
-
-  hook.live = () => sim.live;
+  page.parts = { sim, view, transport, handles };
   const since = performance.now();
   await sim.rebuild(true);
   performance.mark("lab:scene");
-  // Issue 17: the frame the HTML drew (firstframe.ts) must be this scene.
-  const early = window.__labFirst;
+  // The frame the HTML drew (firstframe.ts) must be this scene.
+  const early = window.__firstFrame;
   if (early && (fnvHex(early.state) !== fnvHex(sim.state) || early.view.scale !== view.scale || early.view.cx !== view.cx || early.view.cy !== view.cy)) {
     console.warn("the first frame drawn from the HTML is not the core's scene at t = 0 (rebuild web/dist)");
   }
@@ -128,7 +102,7 @@ async function start(): Promise<void> {
   }
   transport.setPaused(false);
   const badge = tableBadge(canvas.parentElement ?? document.body);
-  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), hook, perf, since);
+  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since);
 
   // The table: the agents are planned with it and the clock starts.
   const t0 = performance.now();
@@ -139,7 +113,7 @@ async function start(): Promise<void> {
     // A table built or cached for the link's limits may have come first.
     if (!lab.hasTable()) {
       const msg = `The lab cannot run: ${errorText(e)}`;
-      hook.error = msg;
+      status.error = msg;
       sim.tableFailed(msg);
       badge.fail("no η table");
       showMessage(msg, "error");
@@ -147,14 +121,14 @@ async function start(): Promise<void> {
     }
   }
   performance.mark("lab:table");
-  hook.tableMs = performance.now();
+  status.tableAt = performance.now();
   badge.done();
   sim.dirty = true;
-  hook.ready = true;
+  status.ready = true;
 }
 
 start().catch((e: unknown) => {
   const msg = `The lab failed to start: ${errorText(e)}`;
-  hook.error = msg;
+  status.error = msg;
   showMessage(msg, "error");
 });

@@ -1,4 +1,4 @@
-// Static obstacles in the lab (issue 18): discs and wall segments as the
+// Static obstacles in the lab: discs and wall segments as the
 // core lays them out (`Lab.obstacles()` / `setObstacles`, five floats each:
 // kind 0 disc `x, y, radius, 0`, kind 1 segment `x1, y1, x2, y2`), their
 // text in the URL (`obs=d:x,y,r;s:x1,y1,x2,y2`, checked against the core's

@@ -22,7 +22,7 @@ export function findPreset(name: string): Preset | undefined {
 }
 
 /** The menu group of a preset, from its name: `p001_fig11_tol5_relaxed` →
- *  "Paper 001 · Fig. 11" (the texts' own numbering, issue 19); others "Other". */
+ *  "Paper 001 · Fig. 11" (the texts' own numbering); others "Other". */
 export function presetGroup(name: string): string {
   const m = /^p(\d{3})_fig(\d+)([a-z]?)_/.exec(name);
   return m ? `Paper ${m[1]} · Fig. ${m[2]}${m[3] ?? ""}` : "Other";

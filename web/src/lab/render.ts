@@ -278,7 +278,7 @@ const sprites = new PixelSprites();
 const glSprites = new GlSprites();
 
 function drawCrowd(s: Surface, v: View, sc: Scene): void {
-  // Issue 17: above GL_THRESHOLD one WebGL2 instanced draw straight from the state records.
+  // Above GL_THRESHOLD one WebGL2 instanced draw straight from the state records.
   if (sc.count > GL_THRESHOLD && !FORCE_2D) {
     const { X, Y, Theta, Mode: M } = StateField;
     const palette = [COLOURS.end, COLOURS.orientation, COLOURS.vehicle, COLOURS.vehicle];
@@ -320,7 +320,7 @@ function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
   const size = Math.max(5, Math.min(14, 0.45 * v.scale));
   const { X, Y, Theta } = StateField;
   if (sc.bodyRadius !== null && sc.bodyRadius * v.scale >= 3) {
-    // The bodies avoidance keeps apart (issue 18).
+    // The bodies avoidance keeps apart.
     const r = sc.bodyRadius * v.scale;
     ctx.save();
     ctx.strokeStyle = "rgba(43, 43, 43, 0.35)";

@@ -3,16 +3,17 @@
 // relaxed arc), the η ring and field, the playground's editable target.
 // The η field is cached while its three inputs stay the same.
 
-import { Mode, StateField, type Internals, type Lab } from "../wasm";
+import { Mode, StateField, type Internals } from "../wasm";
 import type { LabAvoidance } from "./avoidance";
 import type { HudData } from "./hud";
 import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type GhostDraw, type Overlay, type Scene, type TargetDraw } from "./render";
 import type { LabSim } from "./sim";
+import type { LabWorld } from "./world";
 
 /** Screen length of the orientation/heading handles, CSS px. */
 export const HANDLE_PX = 56;
 
-/** Before the η table has arrived (issue 17) the agents show seek steering:
+/** Before the η table has arrived the agents show seek steering:
  *  the provisional plan's Funnelling (towards the centre, no η yet) is drawn
  *  as Position_only, and turns into Funnelling when the table is in. */
 function seekView(mode: number, live: boolean): number {
@@ -20,10 +21,10 @@ function seekView(mode: number, live: boolean): number {
 }
 
 /** What a scene is built from: the page's simulation (sim.ts), or, for
- *  issue 17's first frame, the core's picture of the default playground at
- *  t = 0 carried in the HTML (firstframe.ts). */
-export type SceneSource = Pick<LabSim, "st" | "count" | "state" | "stride" | "focus" | "shown" | "live" | "pose" | "field" | "stepping" | "trails" | "usPerUpdate" | "time" | "paused" | "tableLine" | "steppingLine"> & {
-  lab: Pick<Lab, "ghost" | "etaRing" | "etaField">;
+ *  the first frame, the core's picture of the default playground at t = 0
+ *  carried in the HTML (firstframe.ts). */
+export type SceneSource = Pick<LabSim, "st" | "count" | "state" | "stride" | "focus" | "shown" | "live" | "pose" | "field" | "trails" | "usPerUpdate" | "time" | "paused" | "tableLine" | "steppingLine" | "etaField"> & {
+  world: Pick<LabWorld, "ghost" | "ring">;
   avoid: Pick<LabAvoidance, "method" | "radius" | "obstacles">;
 };
 
@@ -53,7 +54,7 @@ export class SceneBuilder {
   /** The scene for `inter`, the internals of the followed agent (sim.shown). */
   scene(inter: Internals | null): Scene {
     const { sim } = this;
-    const { st, lab, count } = sim;
+    const { st, count } = sim;
     const who = sim.shown;
     const pose = sim.pose(who);
     let overlay: Overlay | null = null;
@@ -67,15 +68,14 @@ export class SceneBuilder {
       };
     }
     let ring: FieldDraw | null = null;
-    // The ring and the ghost read the page's core, which does not step while workers do (issue 17).
-    if (st.overlays.ring && count > 0 && !sim.stepping()) {
-      ring = { samples: count > who ? lab.etaRing(who) : new Float32Array(0), originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
-    }
+    // The ring and the ghost where the world steps on this thread.
+    const samples = st.overlays.ring && count > 0 ? sim.world.ring(who) : null;
+    if (samples) ring = { samples, originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.ring, dark: COLOURS.ringDark };
     let field: FieldDraw | null = null;
     if (st.overlays.field && count > 0) {
       const key = `${st.field.vC}|${st.field.omegaC}|${st.field.vD}`;
       if (!this.fieldCache || this.fieldCache.key !== key) {
-        const samples = lab.etaField(st.field.vC, st.field.omegaC, st.field.vD);
+        const samples = sim.etaField(st.field.vC, st.field.omegaC, st.field.vD);
         // Empty before the table has arrived: not kept, asked again.
         this.fieldCache = samples.length > 0 ? { key, samples } : null;
       }
@@ -85,14 +85,8 @@ export class SceneBuilder {
       ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: seekView(inter?.mode ?? Mode.Funnelling, sim.live) }
       : null;
     let ghost: GhostDraw | null = null;
-    if (st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD && !sim.stepping()) {
-      try {
-        const g = lab.ghost(who);
-        ghost = { points: g.points, reached: g.reached, finalDir: g.finalDir, slowed: g.slowed };
-      } catch {
-        ghost = null;
-      }
-    }
+    const g = st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD ? sim.world.ghost(who) : null;
+    if (g) ghost = { points: g.points, reached: g.reached, finalDir: g.finalDir, slowed: g.slowed };
     return {
       state: sim.state, stride: sim.stride, count, ghost,
       targets: this.targets(),

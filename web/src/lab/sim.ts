@@ -1,7 +1,8 @@
-// The simulation the funnelling page owns: the core's Lab, the agents'
-// state as last read from it, the clock (play, pause, single steps, slow
-// motion) and the edits that go to the core (goal, pose, limits, controller
-// settings). A rebuild starts the playground or a preset from scratch.
+// The simulation the funnelling page owns: its one world (world.ts: on
+// this thread or in Web Workers), the state last drawn from it, the clock
+// (play, pause, single steps, slow motion) and the edits that go to it
+// (goal, pose, limits, controller settings, avoidance). A rebuild starts
+// the playground or a preset from scratch, wherever it is to step.
 
 import { showMessage } from "../page";
 import type { View } from "../view";
@@ -10,20 +11,23 @@ import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
+import { recipeFor } from "./recipe";
 import { fitPlayground, goalConfig, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
+import { HereWorld, type LabWorld, type Took } from "./world";
+import type { BuildInfo, Edit, EditAnswer, Recipe } from "./worldcalls";
 import { Cancelled } from "../workers/pool";
 import { buildTable, cancelBuild, tableKeyFor } from "../workers/tables";
-import { type Edit, type Recipe, workersWanted, WorldStepper } from "../workers/stepping";
+import { workersWanted, WorkerWorld } from "../workers/stepping";
 
-/** The η table in force against the limits in force (issue 14). */
+/** The η table in force against the limits in force. */
 export interface TableStatus {
   /** `exact`: built for these limits; `building`: the old one, approximate,
    *  while workers build the new one; `error`: no table can be built for
    *  these limits (the old one stays, approximate); `loading`: the page's
-   *  first table is still on its way (issue 17: the scene is drawn, the
-   *  clock holds at t = 0). */
+   *  first table is still on its way (the scene is drawn, the clock holds
+   *  at t = 0). */
   state: "exact" | "building" | "error" | "loading";
   /** Build progress, 0..1. */
   progress: number;
@@ -42,9 +46,9 @@ export interface TableStatus {
   message: string;
 }
 
-/** The committed table in byte planes (issue 17: 0.54 MB gzipped, not
- *  1.2; the same bytes once rejoined, src/tableplanes.ts), fetched by the
- *  page and by the stepping workers. */
+/** The committed table in byte planes (src/tableplanes.ts: the same bytes
+ *  once rejoined, less than half the gzipped size of the plain file),
+ *  fetched by the page and by the stepping workers. */
 export const TABLE_URL = "tables/eta.planes";
 
 const PLAYGROUND_HELP =
@@ -56,13 +60,11 @@ const MAX_STEPS_PER_FRAME = 4;
 
 export class LabSim {
   /** Floats per agent in `state`. */
-  readonly stride = Lab.stateStride();
+  readonly stride: number;
   readonly trails = new Trails(200, 3000);
   readonly defaults: VehicleParams;
   /** The state in the address bar. */
   readonly url: UrlSync;
-  count = 0;
-  state: Float32Array = new Float32Array(0);
   /** The playground's editable agent, or -1 (presets). */
   focus = -1;
   time = 0;
@@ -74,39 +76,67 @@ export class LabSim {
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
   onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
-  /** The η table's status (HUD, window.__lab.table()). */
+  /** The η table's status (the HUD's table line). */
   table: TableStatus;
-  /** Issue 17: the world stepped in Web Workers (null: on this thread). */
-  stepper: WorldStepper | null = null;
+  /** The world: stepped by the page's core (`here`) or by the workers. */
+  world: LabWorld;
+  /** The world stepped by this page's core. */
+  readonly here: HereWorld;
+  /** The stepping workers, once asked for (kept for later worlds). */
+  stepper: WorkerWorld | null = null;
   /** Workers asked for by `?workers=N` or the default for the agent count. */
   workersWanted = 0;
-  private recipe: Recipe | null = null;
   private readonly defaultTableKey: string;
   /** The bytes of a table built for other limits (workers load them too). */
   private tableBytes: { key: string; bytes: Uint8Array } | null = null;
-  /** Avoidance method and obstacles (issue 18). */
+  /** The vehicle limits the world holds (restored when an edit is refused). */
+  private inForce: VehicleParams;
+  /** Avoidance method and obstacles. */
   readonly avoid: LabAvoidance;
   private acc = 0;
   private generation = 0;
   private tableGen = 0;
+  /** The next build steps here (the workers failed while stepping). */
+  private notInWorkers = false;
+  /** Edits made while a world is being built: the new world's, once built. */
+  private waiting: Array<[Edit, (a: EditAnswer) => void]> | null = null;
   /** The URL's view, shown once (the first build); later builds fit when asked. */
   private sharedView: LabState["view"];
 
-  constructor(readonly lab: Lab, readonly st: LabState, private readonly view: View, readonly ranges: RangeTable) {
-    this.defaults = lab.params();
+  /** `core`: the page's core (its η table; the world while no worker steps). */
+  constructor(private readonly core: Lab, readonly st: LabState, private readonly view: View, readonly ranges: RangeTable) {
+    this.stride = Lab.stateStride();
+    this.defaults = core.params();
+    this.inForce = this.defaults;
     this.dt = this.defaults.dt;
     this.sharedView = st.view;
     this.url = new UrlSync(st, view, ranges, this.defaults);
-    this.avoid = new LabAvoidance(lab, st);
-    const key = lab.tableKey();
+    this.avoid = new LabAvoidance(st, (e, answer) => this.editAvoid(e, answer));
+    this.here = new HereWorld(core);
+    this.world = this.here;
+    const key = core.tableKey();
     this.defaultTableKey = key;
-    this.table = { state: lab.hasTable() ? "exact" : "loading", progress: 1, key, wanted: key, ms: 0, cached: false, fetched: false, workers: 0, message: "" };
+    this.table = { state: core.hasTable() ? "exact" : "loading", progress: 1, key, wanted: key, ms: 0, cached: false, fetched: false, workers: 0, message: "" };
   }
 
-  /** Whether the clock can run: the lab has an η table (issue 17: until
-   *  the first one arrives the scene is drawn at t = 0, seek steering). */
+  get count(): number {
+    return this.world.count;
+  }
+
+  /** Every agent's record as drawn: a view of the buffer the world writes. */
+  get state(): Float32Array {
+    return this.world.state;
+  }
+
+  /** Whether the clock can run: the page has an η table (until the first
+   *  one arrives the scene is drawn at t = 0, seek steering). */
   get live(): boolean {
-    return this.lab.hasTable();
+    return this.core.hasTable();
+  }
+
+  /** True when workers step the world. */
+  stepping(): boolean {
+    return this.world !== this.here;
   }
 
   /** The page's table could not be fetched or was refused, and no other
@@ -116,19 +146,21 @@ export class LabSim {
     this.dirty = true;
   }
 
-  /** The page's fetched table arrived (`install` puts it in the core).
-   *  Ignored when a table is already in force (one built or cached for
-   *  the link's limits came first); else the agents are planned with it
-   *  and the clock starts from t = 0: the run is the one a lab made with
+  /** The page's fetched table arrived (`install` puts it in the page's
+   *  core). Ignored when a table is already in force (one built or cached
+   *  for the link's limits came first); else the agents are planned with
+   *  it and the clock starts from t = 0: the run is the one a lab made with
    *  the table runs. Returns whether it was installed. */
   tableArrived(install: () => void, ms: number): boolean {
-    if (this.lab.hasTable()) return false;
+    if (this.core.hasTable()) return false;
     install();
     if (this.table.state === "loading") {
-      const key = this.lab.tableKey();
+      const key = this.core.tableKey();
       this.table = { ...this.table, state: "exact", key, wanted: key, ms, cached: false, fetched: true };
     }
-    this.pull();
+    // The workers fetched the committed table themselves; the page's core holds the world here.
+    this.here.tableChanged();
+    this.dirty = true;
     return true;
   }
 
@@ -166,17 +198,16 @@ export class LabSim {
     if (wanted === this.table.wanted && this.table.state !== "error") return;
     const gen = ++this.tableGen;
     this.table = { ...this.table, wanted, message: "" };
-    if (wanted === this.lab.tableKey()) {
+    if (wanted === this.core.tableKey()) {
       cancelBuild();
-      this.table = { ...this.table, state: this.lab.hasTable() ? "exact" : "loading", progress: 1 };
+      this.table = { ...this.table, state: this.core.hasTable() ? "exact" : "loading", progress: 1 };
       this.dirty = true;
       return;
     }
     this.table = { ...this.table, state: "building", progress: 0 };
     this.dirty = true;
-    const params = this.params();
     buildTable(
-      params,
+      this.params(),
       (f) => {
         if (gen === this.tableGen) {
           this.table.progress = f;
@@ -184,18 +215,17 @@ export class LabSim {
         }
       },
       (bytes, key) => {
-        // A newer request superseded this one: keep the lab's table.
+        // A newer request superseded this one: keep the table in force.
         if (gen !== this.tableGen) throw new Cancelled();
-        this.lab.setTable(bytes, key);
+        this.core.setTable(bytes, key);
         this.tableBytes = { key, bytes };
-        this.toWorkers({ kind: "table", bytes, key });
+        this.world.tableChanged(bytes, key);
       },
     ).then(
       (t) => {
         if (gen !== this.tableGen) return;
         this.table = { ...this.table, state: "exact", progress: 1, key: t.key, ms: t.ms, cached: t.cached, fetched: false, workers: t.workers, phases: t.phases };
-        // A lab's first table plans its agents (Lab.setTable).
-        this.pull();
+        this.dirty = true;
       },
       (e: unknown) => {
         if (e instanceof Cancelled || gen !== this.tableGen) return;
@@ -214,19 +244,12 @@ export class LabSim {
     return goalConfig(this.st);
   }
 
-  /** Reads the agents' state back from the core. */
-  pull(): void {
-    this.count = this.lab.count();
-    this.state = this.stepping() ? (this.stepper as WorldStepper).state : this.lab.state();
-    this.dirty = true;
+  /** The η field around a vehicle at these speeds (the page's table; empty before it). */
+  etaField(vC: number, omegaC: number, vD: number): Float32Array {
+    return this.core.etaField(vC, omegaC, vD);
   }
 
-  /** True when the workers step the world (the page's core only checks edits). */
-  stepping(): boolean {
-    return this.stepper?.active === true;
-  }
-
-  /** The HUD's stepping line (issue 17); null when no workers were asked for. */
+  /** The HUD's stepping line; undefined when no workers were asked for. */
   steppingLine(): string | undefined {
     const s = this.stepper;
     if (!s || this.workersWanted === 0) return undefined;
@@ -236,22 +259,34 @@ export class LabSim {
     return `${i.workers} worker${i.workers === 1 ? "" : "s"}, ${how}${i.starting ? " (starting)" : ""}`;
   }
 
-  /** An edit for the workers too, if they step the world. */
-  private toWorkers(e: Edit): void {
-    if (this.stepping()) (this.stepper as WorldStepper).edit(e);
+  /** `e` to the world; a refusal is shown, then `answer` has the rest. */
+  edit(e: Edit, answer: (a: EditAnswer) => void = () => undefined): void {
+    const told = (a: EditAnswer): void => {
+      if (a.error) showMessage(a.error, "warn");
+      answer(a);
+      this.dirty = true;
+    };
+    if (this.waiting) this.waiting.push([e, told]);
+    else this.world.edit(e, told);
+    this.dirty = true;
   }
 
-  /** Agent i's pose as last read. */
+  /** An avoidance edit. The workers step worlds without avoidance only
+   *  (it couples every agent): a method switched on while they step
+   *  rebuilds the world, at t = 0, on this page's core. */
+  private editAvoid(e: Edit & { kind: "avoid" }, answer: (a: EditAnswer) => void): void {
+    if (this.stepping() && e.method !== undefined && e.method !== "off") void this.rebuild(false);
+    else this.edit(e, answer);
+  }
+
+  /** Agent i's pose as drawn. */
   pose(i: number): Pose {
     const o = i * this.stride;
-    return {
-      x: this.state[o + StateField.X] ?? 0,
-      y: this.state[o + StateField.Y] ?? 0,
-      theta: this.state[o + StateField.Theta] ?? 0,
-    };
+    const s = this.state;
+    return { x: s[o + StateField.X] ?? 0, y: s[o + StateField.Y] ?? 0, theta: s[o + StateField.Theta] ?? 0 };
   }
 
-  /** Agent i's float `f` as last read. */
+  /** Agent i's float `f` as drawn. */
   field(i: number, f: StateField): number | undefined {
     return this.state[i * this.stride + f];
   }
@@ -261,65 +296,44 @@ export class LabSim {
     return this.focus >= 0 ? this.focus : 0;
   }
 
-  /** Internals of agent i, or null (no such agent: the world is being rebuilt). */
-  internals(i: number): Internals | null {
-    if (i < 0 || i >= this.count) return null;
-    if (this.stepping()) return i === this.shown ? (this.stepper as WorldStepper).internals : null;
-    try {
-      return this.lab.internals(i);
-    } catch {
-      return null;
-    }
+  /** The shown agent's internals in the drawn state (null: none yet). */
+  get internals(): Internals | null {
+    return this.count > 0 ? this.world.internals : null;
   }
 
-  /** The page's vehicle limits to the core. A desired speed above a new
+  /** The page's vehicle limits to the world. A desired speed above a new
    *  max speed (or a field-view speed) is first clamped to it, and the
    *  playground's goal updated: the core would refuse the goal, and a reset
    *  would leave an empty playground. Returns what was clamped, with a
-   *  message for its field. A limit the core refuses (none within the
-   *  ranges) restores the previous limits. */
+   *  message for its field. Limits the core refuses (none within the
+   *  ranges) give way to those in force. */
   applyParams(): Array<{ field: LabField; message: string }> {
-    const before = this.lab.params();
     const clamped = clampToLimits(this.ranges, this.st, this.defaults);
-    try {
-      // A mismatched table is labelled approximate in the HUD while the
-      // matching one is built (syncTable), not warned about.
-      this.lab.setParams(this.params());
-      this.toWorkers({ kind: "params", params: this.params() });
-    } catch (e) {
-      showMessage(`Vehicle limits rejected: ${errorText(e)}`, "warn");
-      for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = before[f.limit];
-    }
+    const params = this.params();
+    // A mismatched table is labelled approximate in the HUD while the
+    // matching one is built (syncTable), not warned about.
+    this.edit({ kind: "params", params }, (a) => {
+      if (a.error) this.restoreLimits(this.inForce);
+      else this.inForce = params;
+    });
     this.syncTable();
-    if (clamped.fields.length > 0) {
-      this.dirty = true;
-      this.updateGoal();
-    }
+    if (clamped.fields.length > 0) this.updateGoal();
     return clamped.fields.map((field, i) => ({ field, message: clamped.messages[i] ?? "" }));
   }
 
-  /** The page's controller settings to the core (world-wide, presets included). */
+  private restoreLimits(p: VehicleParams): void {
+    for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = p[f.limit];
+  }
+
+  /** The page's controller settings to the world (presets included). */
   applyFunnel(): void {
-    try {
-      this.lab.setFunnel(funnelConfig(this.st.funnel));
-      this.lab.setRelaxed(relaxedConfig(this.st.funnel));
-      this.toWorkers({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel) });
-    } catch (e) {
-      showMessage(`Controller settings rejected: ${errorText(e)}`, "warn");
-    }
-    this.dirty = true;
+    this.edit({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel) });
   }
 
   /** The focus agent's goal from the page's state. */
   updateGoal(): void {
     if (this.focus < 0) return;
-    try {
-      this.lab.setGoal(this.focus, this.goal());
-      this.toWorkers({ kind: "goal", i: this.focus, goal: this.goal() });
-    } catch (e) {
-      showMessage(`Goal rejected: ${errorText(e)}`, "warn");
-    }
-    this.pull();
+    this.edit({ kind: "goal", i: this.focus, goal: this.goal() });
     this.url.save();
   }
 
@@ -327,20 +341,15 @@ export class LabSim {
   placeVehicle(): void {
     if (this.focus < 0) return;
     const v = this.st.vehicle;
-    try {
-      this.lab.setPose(this.focus, v.x, v.y, v.theta);
-      this.toWorkers({ kind: "pose", i: this.focus, x: v.x, y: v.y, theta: v.theta });
-    } catch (e) {
-      showMessage(`Pose rejected: ${errorText(e)}`, "warn");
-    }
+    this.edit({ kind: "pose", i: this.focus, x: v.x, y: v.y, theta: v.theta });
     this.trails.clearAgent(this.focus);
-    this.pull();
     this.url.save();
   }
 
-  /** Starts over: the preset named in the state, else the playground. */
+  /** Starts over: the preset named in the state, else the playground, on
+   *  this page's core or in workers (`workersWanted`, `?workers=`). */
   async rebuild(fitAsked: boolean): Promise<void> {
-    const { lab, st, view } = this;
+    const { st, view } = this;
     const fit = fitAsked && this.sharedView === null;
     if (this.sharedView) {
       view.cx = this.sharedView.cx;
@@ -349,182 +358,145 @@ export class LabSim {
       this.sharedView = null;
     }
     const gen = ++this.generation;
-    this.stepper?.stop();
-    this.recipe = null;
-    lab.clear();
-    this.pull();
-    this.applyParams();
+    this.world.stop();
+    this.world = this.here;
+    this.waiting = [];
     this.trails.clear();
     this.time = 0;
     this.acc = 0;
     this.focus = -1;
-    if (st.preset) {
-      const p = findPreset(st.preset);
-      try {
-        if (!p) throw new Error(`no preset named ${st.preset}`);
-        const text = await p.load();
-        if (gen !== this.generation) return;
-        const info = lab.loadScenario(text);
-        this.recipe = this.recipeFor({ kind: "scenario", text });
-        // The page's vehicle limits apply to presets too (issue 14:
-        // `#preset=…&vmax=0.05` runs at 0.05 m/s).
-        lab.setParams(this.params());
-        this.onScene(`${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`, false, info.claim, info.measured);
-        if (info.warning) showMessage(`Preset ${st.preset}: ${info.warning}`, "warn");
-        if (fit) view.fit(info.minX, info.minY, info.maxX, info.maxY);
-      } catch (e) {
-        showMessage(`Preset ${st.preset} could not be loaded: ${errorText(e)}`, "error");
-      }
-    } else {
-      this.onScene(PLAYGROUND_HELP, true);
-      const extent = Math.max(10, Math.sqrt(st.agents) * 1.5);
-      try {
-        const agent = { x: st.vehicle.x, y: st.vehicle.y, theta: st.vehicle.theta, goals: [this.goal()] };
-        lab.addAgent(agent);
-        this.focus = 0;
-        const spawn = st.agents > 0 ? { n: st.agents, seed: st.seed, extent, speed: st.speed } : null;
-        if (spawn) lab.spawnRandom(spawn.n, spawn.seed, spawn.extent, spawn.speed);
-        this.recipe = this.recipeFor({ kind: "playground", agent, spawn });
-      } catch (e) {
-        showMessage(`The playground could not be set up: ${errorText(e)}`, "error");
-      }
-      if (fit) {
-        if (st.agents > 0) {
-          const r = extent + 3;
-          view.fit(-r, -r, r, r);
-        } else {
-          fitPlayground(view, st);
-        }
-      }
+    this.dirty = true;
+    // The limits as the world will take them (desired speed ≤ max speed), and their table.
+    clampToLimits(this.ranges, st, this.defaults);
+    this.syncTable();
+    const recipe = await this.recipe();
+    if (gen !== this.generation) return;
+    if (typeof recipe === "string") {
+      showMessage(recipe, "error");
+      this.waiting = null;
+      return;
     }
-    this.applyFunnel();
-    this.avoid.apply();
-    this.dt = lab.params().dt;
-    this.pull();
-    this.trails.record(0, this.state, this.stride, this.count);
-    this.startWorkers();
+    let info: BuildInfo | null = null;
+    const workers = this.workersFor(recipe);
+    if (workers) {
+      info = await workers.start(recipe, 0);
+      if (gen !== this.generation) return;
+      // The page's core steps what the workers cannot: a world with
+      // avoidance, or any world once they have failed.
+      if (workers.error !== null) showMessage(`Stepping in workers failed, stepping here: ${workers.error}`, "warn");
+      if (info) this.world = workers;
+    }
+    info ??= await this.here.start(recipe, 0);
+    this.built(recipe, info, fit);
+    const waiting = this.waiting;
+    this.waiting = null;
+    for (const [e, answer] of waiting) this.world.edit(e, answer);
   }
 
-  /** What the workers replay to build this world (null: they cannot). */
-  private recipeFor(build: Recipe["build"]): Recipe | null {
-    const key = this.lab.tableKey();
-    const bytes = this.tableBytes?.key === key ? this.tableBytes.bytes : null;
-    if (key !== this.defaultTableKey && !bytes) return null;
-    const url = new URL(TABLE_URL, location.href).href;
-    return { table: { key, url, bytes }, params: this.params(), funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel), build };
+  /** What builds the world the state describes (a preset's text loaded),
+   *  or why it cannot be built. */
+  private async recipe(): Promise<Recipe | string> {
+    const { st } = this;
+    const key = this.core.tableKey();
+    const table = { key, url: new URL(TABLE_URL, location.href).href, bytes: this.tableBytes?.key === key ? this.tableBytes.bytes : null };
+    if (!st.preset) return recipeFor(st, this.params(), table, null);
+    const p = findPreset(st.preset);
+    try {
+      if (!p) throw new Error(`no preset named ${st.preset}`);
+      return recipeFor(st, this.params(), table, { name: st.preset, text: await p.load() });
+    } catch (e) {
+      return `Preset ${st.preset} could not be loaded: ${errorText(e)}`;
+    }
   }
 
-  /** Issue 17: hands the world just built to the stepping workers when
-   *  `?workers=N` or the agent count asks for them. The page's core keeps
-   *  its copy for the edits' checks; the workers' states are drawn. */
-  private startWorkers(): void {
-    const wanted = workersWanted(this.count);
+  /** The workers to build `recipe`'s world in, or null: this page's core.
+   *  A preset's agent count is known once built: it goes to workers only
+   *  when `?workers=N` asks. Workers need the table's bytes or its URL. */
+  private workersFor(recipe: Recipe): WorkerWorld | null {
+    const b = recipe.build;
+    const count = b.kind === "playground" ? 1 + (b.spawn?.n ?? 0) : 0;
+    const wanted = workersWanted(count);
     this.workersWanted = wanted.n;
     if (wanted.problem) showMessage(wanted.problem, "warn");
-    if (wanted.n === 0 || !this.recipe || this.count === 0 || this.lab.avoidance() !== "off") return;
-    if (!this.stepper) {
-      this.stepper = new WorldStepper(wanted.n, this.stride);
-      this.stepper.onSwap = (state) => {
-        this.state = state;
-        this.dirty = true;
-      };
+    const coupled = recipe.avoid.method !== null && recipe.avoid.method !== "off";
+    const failed = this.notInWorkers;
+    this.notInWorkers = false;
+    if (wanted.n === 0 || coupled || failed || (recipe.table.key !== this.defaultTableKey && !recipe.table.bytes)) return null;
+    this.stepper ??= new WorkerWorld(wanted.n, this.stride);
+    return this.stepper;
+  }
+
+  /** The new world is in: the page's side of it (messages, caption, view). */
+  private built(recipe: Recipe, info: BuildInfo, fit: boolean): void {
+    for (const m of info.messages) showMessage(m.text, m.level);
+    if (info.paramsRefused) this.restoreLimits(info.params);
+    this.inForce = info.params;
+    this.dt = info.dt;
+    this.avoid.take(info.avoid);
+    const b = recipe.build;
+    if (b.kind === "scenario") {
+      const sc = info.scenario;
+      this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
+      if (fit && sc) this.view.fit(...sc.box);
+    } else {
+      this.focus = info.count > 0 ? 0 : -1;
+      this.onScene(PLAYGROUND_HELP, true);
+      if (fit && b.spawn) {
+        const r = b.spawn.extent + 3;
+        this.view.fit(-r, -r, r, r);
+      } else if (fit) fitPlayground(this.view, this.st);
     }
-    const gen = this.generation;
-    this.stepper.start(this.recipe, this.lab, this.state, this.shown).then(
-      () => {
-        if (gen !== this.generation) return;
-        const s = this.stepper as WorldStepper;
-        if (s.error) {
-          // The page's core steps on from its copy of the world.
-          showMessage(`Stepping in workers failed, stepping here: ${s.error}`, "warn");
-        }
-        this.pull();
-      },
-      () => undefined,
-    );
+    this.trails.record(0, this.state, this.stride, this.count);
+    this.dirty = true;
   }
 
   /** One step, paused afterwards (the caller shows the pause). */
   stepOnce(): void {
-    if (!this.live) return;
-    if (this.stepping()) {
-      void this.stepN(1);
-      return;
-    }
-    this.lab.step(1);
-    this.time += this.dt;
-    this.pull();
-    this.trails.record(this.time, this.state, this.stride, this.count);
+    if (this.live) void this.stepNow(1);
   }
 
   /** Runs the steps that `intervalMs` of wall time is worth (none when
-   *  paused); returns the agent updates done and the ms they took. */
+   *  paused, or before the η table: edits still reach the world); returns
+   *  the agent updates drawn now and the ms they took. */
   advance(intervalMs: number): { updates: number; ms: number } {
-    if (this.count === 0 || !this.live) return { updates: 0, ms: 0 };
-    // Paused, the workers still take the edits (drags) and single steps.
-    if (this.paused) return this.stepping() ? this.advanceInWorkers(0) : { updates: 0, ms: 0 };
-    this.acc += Math.min(0.1, intervalMs / 1000) * (this.st.slow ? 0.25 : 1);
-    let k = Math.floor(this.acc / this.dt);
-    if (k > MAX_STEPS_PER_FRAME) {
-      k = MAX_STEPS_PER_FRAME;
-      this.acc = 0;
-    } else this.acc -= k * this.dt;
-    if (this.stepping()) return this.advanceInWorkers(k);
-    if (k <= 0) return { updates: 0, ms: 0 };
-    const s0 = performance.now();
-    this.lab.step(k);
-    const ms = performance.now() - s0;
-    const updates = k * this.count;
-    const us = (ms * 1000) / updates;
-    this.usPerUpdate = this.usPerUpdate === 0 ? us : 0.9 * this.usPerUpdate + 0.1 * us;
-    this.time += k * this.dt;
-    this.pull();
-    if (this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
-    return { updates, ms };
-  }
-
-  /** Issue 17: asks the workers for `k` steps and takes what they finished
-   *  since the last frame; never waits (the last complete state is drawn). */
-  private advanceInWorkers(k: number): { updates: number; ms: number } {
-    const s = this.stepper as WorldStepper;
-    // Shared memory: this frame's state first (before asking for more: the
-    // workers then leave its buffer alone).
-    s.poll();
-    if (k > 0) s.request(k);
-    s.pump(this.shown);
-    return this.takeFromWorkers();
-  }
-
-  private takeFromWorkers(): { updates: number; ms: number } {
-    const s = this.stepper as WorldStepper;
-    if (!s.fresh) return { updates: 0, ms: 0 };
-    s.fresh = false;
-    const done = s.takeCompleted();
-    this.time += done.steps * this.dt;
-    this.pull();
-    if (done.steps > 0 && this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
-    const updates = done.steps * this.count;
-    if (updates > 0) {
-      // The HUD's cost per update: the slowest worker's stepping time (the
-      // jobs' wall time also holds the hand-over and the wait for a frame).
-      const us = (done.workerMs * 1000) / updates;
-      this.usPerUpdate = this.usPerUpdate === 0 ? us : 0.9 * this.usPerUpdate + 0.1 * us;
+    if (this.stepper && this.world === this.stepper && !this.stepper.active) {
+      // A worker failed while stepping: the world starts over here (the
+      // page's state holds every edit).
+      showMessage(`Stepping in workers failed, stepping here from t = 0: ${this.stepper.error ?? "?"}`, "warn");
+      this.notInWorkers = true;
+      void this.rebuild(false);
     }
-    return { updates, ms: done.ms };
+    if (this.count === 0) return { updates: 0, ms: 0 };
+    let k = 0;
+    if (!this.paused && this.live) {
+      this.acc += Math.min(0.1, intervalMs / 1000) * (this.st.slow ? 0.25 : 1);
+      k = Math.floor(this.acc / this.dt);
+      if (k > MAX_STEPS_PER_FRAME) {
+        k = MAX_STEPS_PER_FRAME;
+        this.acc = 0;
+      } else this.acc -= k * this.dt;
+    }
+    return this.took(this.world.frame(k, this.shown));
+  }
+
+  /** The clock, trails and cost per update after the world took steps. */
+  private took(d: Took): { updates: number; ms: number } {
+    if (!d.fresh) return { updates: 0, ms: 0 };
+    this.dirty = true;
+    if (d.steps === 0) return { updates: 0, ms: 0 };
+    this.time += d.steps * this.dt;
+    if (this.st.overlays.trails && this.count <= this.trails.maxAgents) this.trails.record(this.time, this.state, this.stride, this.count);
+    const updates = d.steps * this.count;
+    // The stepping time alone (with workers, the slowest worker's: a job's
+    // wall time also holds the hand-over and the wait for a frame).
+    const us = (d.stepMs * 1000) / updates;
+    this.usPerUpdate = this.usPerUpdate === 0 ? us : 0.9 * this.usPerUpdate + 0.1 * us;
+    return { updates, ms: d.ms };
   }
 
   /** Runs `k` steps now (paused single steps, tests); resolves once the
-   *  state drawn is theirs, on this thread or in the workers. */
-  async stepN(k: number): Promise<void> {
-    if (!this.stepping()) {
-      this.lab.step(k);
-      this.time += k * this.dt;
-      this.pull();
-      this.trails.record(this.time, this.state, this.stride, this.count);
-      return;
-    }
-    const s = this.stepper as WorldStepper;
-    await s.run(k, this.shown);
-    this.takeFromWorkers();
+   *  state drawn is theirs. */
+  async stepNow(k: number): Promise<void> {
+    this.took(await this.world.run(k, this.shown));
   }
 }

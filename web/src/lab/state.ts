@@ -28,7 +28,7 @@ export interface Limits {
   omegaMax?: number;
   omegaAccelMax?: number;
   normalAccelMax?: number;
-  /** Seek gains (a reference vehicle may set them; issue 14). */
+  /** Seek gains (a reference vehicle may set them). */
   kp?: number;
   kd?: number;
 }
@@ -48,7 +48,7 @@ export type AimKey = (typeof AIM_KEYS)[number];
 export const RELAXED_AIM_KEYS = ["entry", "paperArc"] as const;
 export type RelaxedAimKey = (typeof RELAXED_AIM_KEYS)[number];
 
-/** The avoidance methods (issue 18), as the core and the URL name them. */
+/** The avoidance methods, as the core and the URL name them. */
 export const AVOID_KEYS = ["off", "separation", "orca"] as const;
 export type AvoidKey = (typeof AVOID_KEYS)[number];
 
@@ -146,8 +146,9 @@ export function goalConfig(st: LabState): GoalConfig {
 }
 
 /** The view of the playground without extra agents: the vehicle and the
- *  target with 3 m around them (the page's first build, and issue 17's
- *  first frame, which must not jump when the core takes over). */
+ *  target with 3 m around them (the page's first build, and the first
+ *  frame drawn from the HTML, which must not jump when the core takes
+ *  over). */
 export function fitPlayground(view: View, st: LabState): void {
   const xs = [st.vehicle.x, st.target.x];
   const ys = [st.vehicle.y, st.target.y];

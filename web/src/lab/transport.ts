@@ -45,7 +45,7 @@ export function buildTransport(sim: LabSim): Transport {
     parent.append(o);
   };
   addOpt(presetSel, "", "playground");
-  // Grouped by paper and figure (issue 19); each preset's claim and our
+  // Grouped by paper and figure; each preset's claim and our
   // measurement show in the side panel's caption.
   const groups = new Map<string, HTMLOptGroupElement>();
   for (const p of PRESETS) {
@@ -62,7 +62,7 @@ export function buildTransport(sim: LabSim): Transport {
   presetSel.value = st.preset;
   const setPreset = async (name: string): Promise<void> => {
     st.preset = name;
-    // Issue 18: each scenario brings its own avoidance and obstacles.
+    // Each scenario brings its own avoidance and obstacles.
     st.avoidance = null;
     st.replanEvery = null;
     st.obstacles = null;

@@ -121,7 +121,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
     if (lp === "1" || lp === "0") s.funnel.pursuit = lp === "1";
     else problems.push(`lp="${clip(lp)}" must be 0 or 1; default kept`);
   }
-  // Issue 18: the avoidance method and the obstacles (absent: the scenario's own).
+  // The avoidance method and the obstacles (absent: the scenario's own).
   const avoid = p.get("avoid");
   if (avoid !== null) {
     if ((AVOID_KEYS as readonly string[]).includes(avoid)) s.avoidance = avoid as AvoidKey;

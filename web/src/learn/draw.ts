@@ -70,26 +70,94 @@ export function ray(ctx: CanvasRenderingContext2D, v: View, x: number, y: number
   arrow(ctx, p.x, p.y, angle, len, 7);
 }
 
+/** Canvas font of the figures' labels: large enough to read on a phone. */
+const LABEL_FONT = "700 16px system-ui, sans-serif";
+
+/** `text` centred at screen point (x, y), on a halo of the figure's
+ *  background so that lines under it do not hide it. */
+function haloText(ctx: CanvasRenderingContext2D, text: string, x: number, y: number, colour: string): void {
+  ctx.font = LABEL_FONT;
+  ctx.textAlign = "center";
+  ctx.textBaseline = "middle";
+  ctx.lineJoin = "round";
+  ctx.lineWidth = 4;
+  ctx.strokeStyle = COLOURS.background;
+  ctx.strokeText(text, x, y);
+  ctx.fillStyle = colour;
+  ctx.fillText(text, x, y);
+}
+
 /** The arc of angle a0 → a1 (world, CCW positive) of radius `r` CSS px
- *  around a world point, labelled at its middle. */
-export function angleArc(ctx: CanvasRenderingContext2D, v: View, x: number, y: number, r: number, a0: number, a1: number, colour: string, label: string): void {
+ *  around a world point, labelled at its middle (or at `at`, a fraction
+ *  of the way from a0 to a1, so that two labels at one point do not meet). */
+export function angleArc(ctx: CanvasRenderingContext2D, v: View, x: number, y: number, r: number, a0: number, a1: number, colour: string, label: string, at = 0.5): void {
   const p = v.toScreen(x, y);
   let d = a1 - a0;
   while (d > Math.PI) d -= 2 * Math.PI;
   while (d < -Math.PI) d += 2 * Math.PI;
   ctx.save();
   ctx.strokeStyle = colour;
-  ctx.fillStyle = colour;
-  ctx.lineWidth = 1.5;
+  ctx.lineWidth = 2.5;
   ctx.beginPath();
   // Canvas angles are clockwise (y down): negate.
   ctx.arc(p.x, p.y, r, -a0, -(a0 + d), d > 0);
   ctx.stroke();
-  const m = a0 + d / 2;
+  // An arrowhead at a1: the angle's sense.
+  const e = a0 + d;
+  const ex = p.x + Math.cos(e) * r;
+  const ey = p.y - Math.sin(e) * r;
+  const tang = e + (d > 0 ? Math.PI / 2 : -Math.PI / 2);
+  const tx = Math.cos(tang);
+  const ty = -Math.sin(tang);
+  if (Math.abs(d) * r > 14) {
+    ctx.fillStyle = colour;
+    ctx.beginPath();
+    ctx.moveTo(ex + tx * 2, ey + ty * 2);
+    ctx.lineTo(ex - tx * 8 - ty * 4, ey - ty * 8 + tx * 4);
+    ctx.lineTo(ex - tx * 8 + ty * 4, ey - ty * 8 - tx * 4);
+    ctx.closePath();
+    ctx.fill();
+  }
+  const m = a0 + d * at;
+  haloText(ctx, label, p.x + Math.cos(m) * (r + 14), p.y - Math.sin(m) * (r + 14), colour);
+  ctx.restore();
+}
+
+/** `text` at `dist` CSS px from a world point along world angle `angle`
+ *  (names an arrow at its tip). */
+export function tipLabel(ctx: CanvasRenderingContext2D, v: View, x: number, y: number, angle: number, dist: number, text: string, colour: string): void {
+  const p = v.toScreen(x, y);
+  ctx.save();
+  haloText(ctx, text, p.x + Math.cos(angle) * dist, p.y - Math.sin(angle) * dist, colour);
+  ctx.restore();
+}
+
+/** A scale bar in the bottom-left corner: a round length (0.5, 1, 2 or 5 m)
+ *  near 80 CSS px long. */
+export function scaleBar(ctx: CanvasRenderingContext2D, v: View): void {
+  if (!(v.scale > 0)) return;
+  const metres = [0.5, 1, 2, 5, 10].find((m) => m * v.scale >= 60) ?? 10;
+  const w = metres * v.scale;
+  const x = 12;
+  const y = v.height - 14;
+  ctx.save();
+  ctx.strokeStyle = "#333";
+  ctx.lineWidth = 2;
+  ctx.beginPath();
+  ctx.moveTo(x, y - 5);
+  ctx.lineTo(x, y);
+  ctx.lineTo(x + w, y);
+  ctx.lineTo(x + w, y - 5);
+  ctx.stroke();
   ctx.font = "600 13px system-ui, sans-serif";
-  ctx.textAlign = "center";
-  ctx.textBaseline = "middle";
-  ctx.fillText(label, p.x + Math.cos(m) * (r + 12), p.y - Math.sin(m) * (r + 12));
+  ctx.textAlign = "left";
+  ctx.textBaseline = "bottom";
+  ctx.lineWidth = 3;
+  ctx.strokeStyle = COLOURS.background;
+  const text = `${metres} m`;
+  ctx.strokeText(text, x + w + 6, y + 4);
+  ctx.fillStyle = "#333";
+  ctx.fillText(text, x + w + 6, y + 4);
   ctx.restore();
 }
 
@@ -115,9 +183,13 @@ export function wedge(ctx: CanvasRenderingContext2D, v: View, x: number, y: numb
 export function label(ctx: CanvasRenderingContext2D, v: View, x: number, y: number, text: string, colour: string, dx = 8, dy = -8): void {
   const p = v.toScreen(x, y);
   ctx.save();
-  ctx.font = "600 13px system-ui, sans-serif";
-  ctx.fillStyle = colour;
+  ctx.font = LABEL_FONT;
+  ctx.lineJoin = "round";
+  ctx.lineWidth = 4;
+  ctx.strokeStyle = COLOURS.background;
   ctx.textBaseline = "middle";
+  ctx.strokeText(text, p.x + dx, p.y + dy);
+  ctx.fillStyle = colour;
   ctx.fillText(text, p.x + dx, p.y + dy);
   ctx.restore();
 }

@@ -6,6 +6,9 @@
 //
 // Motion: a figure starts playing the first time it scrolls into view,
 // unless the reader asked for reduced motion (then only the buttons run it).
+// A run that ends holds its last picture for a moment, then rewinds to the
+// start state: the prose describes the set-up the reader made, so its
+// numbers must not stay blank ("—") for the state the run ended in.
 
 import { beginFrame, setupCanvas, type Surface } from "../canvas";
 import type { LimitDefaults, RangeTable } from "../lab/fields";
@@ -13,6 +16,7 @@ import { COLOURS } from "../lab/render";
 import type { LabState } from "../lab/state";
 import { encodeState } from "../lab/urlstate";
 import { View } from "../view";
+import { scaleBar } from "./draw";
 import { Handle, type HandleSpec } from "./handle";
 
 export interface FigureSpec {
@@ -44,6 +48,9 @@ export function setLinkContext(ranges: RangeTable, defaults: LimitDefaults): voi
   linkContext = { ranges, defaults };
 }
 
+/** How long an ended run's last picture stays before the rewind, ms. */
+export const REWIND_MS = 1500;
+
 const reducedMotion = (): boolean => window.matchMedia("(prefers-reduced-motion: reduce)").matches;
 
 /** Figures currently playing; one animation frame drives them all. */
@@ -71,6 +78,7 @@ export class LiveFigure {
   private acc = 0;
   private over = false;
   private autoplayed = false;
+  private rewindTimer = 0;
   /** Frames drawn (tests wait for one). */
   frames = 0;
 
@@ -126,6 +134,7 @@ export class LiveFigure {
 
   /** An edit: back to the start state, numbers, link and picture updated. */
   changed(): void {
+    this.cancelRewind();
     this.spec.reset();
     this.over = false;
     this.acc = 0;
@@ -143,6 +152,7 @@ export class LiveFigure {
 
   setPlaying(on: boolean): void {
     if (on) {
+      this.cancelRewind();
       if (this.over) this.changed();
       playing.add(this);
       if (rafId === 0) rafId = requestAnimationFrame(tick);
@@ -155,9 +165,35 @@ export class LiveFigure {
 
   private stepOnce(): void {
     if (this.over) this.changed();
+    this.cancelRewind();
     this.over = !this.spec.step();
+    if (this.over) this.ended();
     this.spec.numbers();
     this.redraw();
+  }
+
+  /** Runs to the end at once, as Play would (the test build's hook). */
+  finish(): void {
+    this.setPlaying(false);
+    if (this.over) this.changed();
+    while (!this.over) this.over = !this.spec.step();
+    this.ended();
+    this.spec.numbers();
+    this.redraw();
+  }
+
+  /** The run is over: hold its last picture, then rewind. */
+  private ended(): void {
+    this.cancelRewind();
+    this.rewindTimer = window.setTimeout(() => {
+      this.rewindTimer = 0;
+      this.changed();
+    }, REWIND_MS);
+  }
+
+  private cancelRewind(): void {
+    if (this.rewindTimer !== 0) window.clearTimeout(this.rewindTimer);
+    this.rewindTimer = 0;
   }
 
   /** Runs the steps `ms` of wall time is worth (called by the shared frame). */
@@ -167,7 +203,10 @@ export class LiveFigure {
     this.acc -= k * this.dt;
     if (k === 4) this.acc = 0;
     while (k-- > 0 && !this.over) this.over = !this.spec.step();
-    if (this.over) this.setPlaying(false);
+    if (this.over) {
+      this.setPlaying(false);
+      this.ended();
+    }
     this.spec.numbers();
     this.redraw();
   }
@@ -177,6 +216,7 @@ export class LiveFigure {
     if (!s) return;
     beginFrame(s, COLOURS.background);
     this.spec.draw(s.ctx, this.view);
+    scaleBar(s.ctx, this.view);
     for (const h of this.handles ?? []) h.place();
     this.clock.textContent = `t ${this.spec.time().toFixed(1)} s`;
     this.frames++;

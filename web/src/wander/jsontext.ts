@@ -1,8 +1,8 @@
-// What the wander gallery's JSON box checks before the core reads the text
-// (issue 16): its nesting depth. A 5,000-deep nesting made the page show a
-// raw "Maximum call stack size exceeded" from structuredClone; the text is
-// now measured first, in one pass that reads no value, and refused with a
-// message. The rest (syntax, duplicate keys, unknown fields, ranges) is the
+// What the wander gallery's JSON box checks before the core reads the text:
+// its nesting depth. A deep enough nesting (thousands of levels) would
+// overflow structuredClone's stack, a raw "Maximum call stack size
+// exceeded" on the page; the text is measured first, in one pass that
+// reads no value, and refused with a message. The rest (syntax, duplicate keys, unknown fields, ranges) is the
 // core's: the box goes to `WanderLab.fromJson`, the parser the native code
 // uses (serde_json: a duplicate key is an error, as in the files).
 

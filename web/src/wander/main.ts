@@ -12,7 +12,7 @@ export const COMPONENTS = ["control", "distributions", "fields", "time-functions
 
 const files = import.meta.glob<string>("../../../scenarios/wander/*.json", { query: "?raw", import: "default" });
 
-/** What the end-to-end test reads and drives (window.__wander). */
+/** What the end-to-end test reads and drives (window.__wander, the test build only). */
 export interface WanderHook {
   ready: boolean;
   error: string | null;
@@ -29,22 +29,28 @@ declare global {
 }
 
 const panels: GalleryPanel[] = [];
+const status = { ready: false, error: null as string | null, frames: 0 };
 
-const hook: WanderHook = {
-  ready: false,
-  error: null,
-  frames: 0,
-  panels: () => panels.map((p) => p.status()),
-  busy: () => panels.some((p) => p.busy()),
-  rerun: (name) => {
-    for (const p of panels) if (name === undefined || p.name === name) p.rerun();
-  },
-};
-window.__wander = hook;
+/** Replays the panel `name` (every panel if none) from step 0. */
+function rerun(name?: string): void {
+  for (const p of panels) if (name === undefined || p.name === name) p.rerun();
+}
+
+// The test build's hook; the shipped build drops it.
+if (import.meta.env.MODE === "test") {
+  window.__wander = {
+    get ready() { return status.ready; },
+    get error() { return status.error; },
+    get frames() { return status.frames; },
+    panels: () => panels.map((p) => p.status()),
+    busy: () => panels.some((p) => p.busy()),
+    rerun,
+  };
+}
 
 function frame(): void {
   requestAnimationFrame(frame);
-  hook.frames++;
+  status.frames++;
   for (const p of panels) p.tick();
 }
 
@@ -54,8 +60,8 @@ async function start(): Promise<void> {
   try {
     showVersion(await loadCore());
   } catch (e) {
-    hook.error = errorText(e);
-    showMessage(`could not load the steering core: ${hook.error}`, "error");
+    status.error = errorText(e);
+    showMessage(`could not load the steering core: ${status.error}`, "error");
     return;
   }
   const texts = await Promise.all(COMPONENTS.map(async (name) => {
@@ -79,12 +85,12 @@ async function start(): Promise<void> {
     }
   }
   if (problems.length > 0) {
-    hook.error = problems.join("\n");
-    showMessage(hook.error, "error");
+    status.error = problems.join("\n");
+    showMessage(status.error, "error");
   }
-  button($("transport"), "rerun-all", "Re-run all", "replay every panel from step 0", () => hook.rerun());
-  hook.rerun();
-  hook.ready = true;
+  button($("transport"), "rerun-all", "Re-run all", "replay every panel from step 0", () => rerun());
+  rerun();
+  status.ready = true;
   requestAnimationFrame(frame);
 }
 

@@ -1,4 +1,4 @@
-// Continuing jobs over shared memory (issue 17): one protocol for the
+// Continuing jobs over shared memory: one protocol for the
 // crowd's strips (../crowd/stepper.ts) and the lab's slices (stepping.ts).
 //
 // - A job steps for as long as the page asks: each frame raises a shared
@@ -6,13 +6,12 @@
 //   state), and the workers go on while the target is ahead, and wait up
 //   to TARGET_WAIT_MS for it to rise when it is not (then the job ends:
 //   the page paused, or is hidden). No step waits for the page's answer to
-//   the one before: handing a job over and back cost 4–10 ms per step at
-//   100,000 agents.
+//   the one before: a job handed over and back per step would leave the
+//   workers idle while the page's thread draws.
 // - The page draws the states in order (`ContinuingJobs.take`): a frame's
 //   worth beyond the one drawn, but no more than DEPTH behind the newest,
-//   so states landing between two frames are drawn one per frame. Drawing
-//   only the newest skipped some: at 100,000 boids one crowd worker
-//   stepped 99,161 boids per frame, the page drew 62,599.
+//   so states landing between two frames are drawn one per frame (drawing
+//   only the newest would skip the states that land two in one frame).
 // - The crowd's protocol (`runContinuing`): its strips read each other's
 //   boids, so they meet at a barrier (Atomics) after every step. Worker 0
 //   publishes every complete state (its step and buffer) and writes the
@@ -30,20 +29,19 @@
 //   the page's second read sees the page's.
 
 /** How far the workers may run beyond a frame's worth ahead of the drawn
- *  state, and how far behind the newest state the page may take one.
- *  Issue 17, 2 lab workers at 100,000 agents: with 1, a worker waited for
- *  the page's target 19–26 % of the wall time (instrumented, 3 runs: the
- *  page's frames come late while the workers hold both cores); with 2,
- *  2–3 %, and 83,430–91,717 → 89,449–98,900 agents stepped + drawn per
- *  frame (4 rounds, same run); the crowd's 150,000 boids in 2 workers
- *  88,908–93,120 → 90,343–98,098 (3 rounds). With 3 (and LEAD 3), against
- *  2 (LEAD 2), same run, 4 rounds, each won: 68,337–76,671 →
- *  73,484–86,115. */
+ *  state, and how far behind the newest state the page may take one. The
+ *  page's frames come late while the workers hold every core; with a
+ *  target only a step ahead, the workers would wait for it a large share
+ *  of the time. Each step of depth costs a state buffer (STATES); 3 keeps
+ *  the workers stepping through a late frame or two (another depth is
+ *  compared by building it and running `make bench-budget
+ *  BENCH_BUDGET_ARGS="--base DIR"`; web/test/protocol.mjs checks the
+ *  protocol at depths 1 to 3). */
 export const DEPTH = 3;
 
 /** The independent protocol: how many steps beyond the newest published
- *  one a worker may step (the buffers of those steps are chosen). With 2,
- *  a worker waited 4–8 % of the wall time for the other to publish. */
+ *  one a worker may step (the buffers of those steps are chosen): a worker
+ *  kept off its core for a while does not stop the other at once. */
 export const LEAD = 3;
 
 /** State buffers of a continuing job (`sab[0..STATES)`): DEPTH + 3 for the
@@ -173,11 +171,8 @@ export function runContinuing(w: ContinuingWork): number {
  *  No barrier: a worker steps on as soon as its next step's buffer is
  *  chosen, up to LEAD steps ahead of the published state, so a worker the
  *  page's thread (or the other worker) kept off its core does not hold the
- *  others at a barrier. Issue 17, 2 workers at 100,000 agents, same run:
- *  67,226 → 74,589 agents stepped + drawn per frame (3 rounds). The cores
- *  stay 173–179 % busy of 200 % either way (/proc per thread): what idled
- *  the workers then was the page's target, one step beyond the drawn
- *  state (DEPTH steps now: 184–187 % busy with 2, 188–195 % with 3).
+ *  others at a barrier (what still idles them is the page's target, DEPTH
+ *  steps beyond the drawn state).
  *  - The last worker to finish step s publishes it, notes it (`ms`: that
  *    worker's own stepping time) and chooses the buffer of step s + LEAD:
  *    not the one the page draws, nor those of steps s − DEPTH … s (the

@@ -1,11 +1,11 @@
-// A pool of Web Workers that splits one job into tasks (issue 14; reusable:
+// A pool of Web Workers that splits one job into tasks (reusable:
 // any worker module that answers `{ id, task }` with `{ id, ok, result }`).
 // `navigator.hardwareConcurrency` workers by default, created on first use
 // and kept (a worker's wasm instantiation is paid once); tasks are handed
 // out one at a time to whichever worker is free, so a slow task does not
 // hold the others back; results come back in task order. `cancel()` ends
 // the job in flight (its workers are terminated, its promise rejects).
-// `each()` (issue 17, the lab's stepping workers) is the other way to use
+// `each()` (the lab's and the crowd's stepping workers) is the other way to use
 // it: task i to worker i, every worker at once, for workers that keep state
 // between calls (each owns a slice of the world).
 
@@ -59,7 +59,7 @@ export class WorkerPool<T, R> {
           if (!m.ok) {
             // Not `cancel()`: that rejects the job with `Cancelled`, which
             // callers take for a newer job and ignore (a table build whose
-            // workers could not load the core stood at 0 % with no word).
+            // workers cannot load the core would stand at 0 % with no word).
             this.halt();
             fail(new Error(m.error));
             return;
@@ -85,7 +85,7 @@ export class WorkerPool<T, R> {
 
   /** Sends task i to worker i (created if needed; at most `size`), all at
    *  once, and resolves with their answers in order: for stateful workers
-   *  (issue 17: each steps its own slice of agents) that must see every
+   *  (each steps its own slice of agents) that must see every
    *  call. `transfer(task)` lists what to move instead of copy. One job at a
    *  time, like `run`. */
   each(tasks: readonly T[], transfer: (task: T) => Transferable[] = () => []): Promise<R[]> {

@@ -1,5 +1,5 @@
-// The lab's shared memory beside its state buffers (issue 17, stepping.ts
-// and step.worker.ts; no import of the worker layer, so the stepping
+// The lab's shared memory beside its state buffers (stepping.ts and
+// step.worker.ts; no import of the worker layer, so the stepping
 // worker's bundle stays small): where the control words, the step slots
 // and the shown agent's internals per step lie, and how the internals are
 // written and read.

@@ -1,17 +1,20 @@
-// One stepping worker (issue 17, point 2): owns agents start..end of the
-// lab's world. It rebuilds the world from the page's recipe (the same calls
-// the page made, so the same bits): a scenario whole, then keeps its range
-// (`retainRange`: facing links never cut, crate/funnelling/world_split.rs);
-// the playground's random crowd only its range (`spawnRandomRange`). On each
-// task applies the page's edits, steps k times and writes its states at its
-// offset of the shared back buffer, or hands them back (no isolation).
-// Driven by `WorldStepper` (stepping.ts) through `WorkerPool.each`.
+// One stepping worker: owns agents start..end of the lab's world. Its
+// first task builds the whole world from the page's recipe
+// (../lab/worldcalls.ts, the calls the page's own core would make, so the
+// same bits), splits it as every other worker does (`splitRanges`) and
+// keeps its range (`retainRange`: facing links never cut,
+// crate/funnelling/world_split.rs). Each later task applies the page's
+// edits (checked here, answered in the reply), steps k times and writes its
+// states at its offset of the shared buffer, or hands them back (no
+// cross-origin isolation). Driven by `WorkerWorld` (stepping.ts) through
+// `WorkerPool.each`.
 
+import { applyEdit, buildWorld, type Recipe, type TableSource } from "../lab/worldcalls";
 import { errorText, fetchTable, Lab, loadCore, type Internals } from "../wasm";
 import { runIndependent, SLOT_RING } from "./continuing";
 import type { ResultMessage, TaskMessage } from "./pool";
 import { SAB, SLOT, writeNote } from "./slicebuffers";
-import type { StepReply, StepTask, TableSource } from "./stepping";
+import type { StepReply, StepTask } from "./stepping";
 
 let lab: Lab | null = null;
 let range = { start: 0, end: 0 };
@@ -22,84 +25,55 @@ let base: { key: string; lab: Lab } | null = null;
 
 async function tableLab(src: TableSource): Promise<Lab> {
   if (base && base.key === src.key) return base.lab.fork();
-  let bytes: Uint8Array;
-  if (src.bytes) bytes = src.bytes;
-  else bytes = await fetchTable(src.url);
+  const bytes = src.bytes ?? (await fetchTable(src.url));
   const l = new Lab(bytes);
   base?.lab.free();
   base = { key: src.key, lab: l };
   return l.fork();
 }
 
+/** Builds the whole world and keeps slice `worker` of it (none when
+ *  avoidance couples the agents: the page steps such a world). */
+async function build(recipe: Recipe, worker: number, workers: number): Promise<StepReply> {
+  const l = await tableLab(recipe.table);
+  const info = buildWorld(l, recipe);
+  const ranges = Array.from(l.splitRanges(workers));
+  const coupled = info.avoid.method !== "off";
+  lab?.free();
+  lab = null;
+  range = { start: 0, end: 0 };
+  const start = ranges[2 * worker];
+  const end = ranges[2 * worker + 1];
+  if (!coupled && start !== undefined && end !== undefined) {
+    l.retainRange(start, end);
+    lab = l;
+    range = { start, end };
+  } else l.free();
+  return { internals: null, state: null, stepMs: 0, answers: [], built: { info, ranges, coupled } };
+}
+
 async function run(task: StepTask): Promise<StepReply> {
   await loadCore();
-  if (task.init) {
-    const r = task.init.recipe;
-    const l = await tableLab(r.table);
-    l.setParams(r.params);
-    const { start, end } = task.init;
-    if (r.build.kind === "scenario") {
-      l.loadScenario(r.build.text);
-      l.setParams(r.params);
-    } else {
-      // The playground: agent 0, then the random crowd; only this slice is
-      // built (`spawnRandomRange`: the same agents without the others).
-      const first = r.build.agent ? 1 : 0;
-      if (r.build.agent && start === 0) l.addAgent(r.build.agent);
-      const s = r.build.spawn;
-      const a = Math.max(0, start - first);
-      const b = Math.max(0, end - first);
-      if (s && b > a) l.spawnRandomRange(s.n, s.seed, s.extent, s.speed, a, b);
-    }
-    l.setFunnel(r.funnel);
-    l.setRelaxed(r.relaxed);
-    // A scenario is built whole and keeps its slice (facing links renumbered).
-    if (r.build.kind === "scenario") l.retainRange(start, end);
-    lab?.free();
-    lab = l;
-    range = { start: task.init.start, end: task.init.end };
-    shared = task.init.shared;
-    stride = Lab.stateStride();
-  }
+  stride = Lab.stateStride();
+  if (task.build) return build(task.build, task.worker, task.workers);
+  if (task.shared !== undefined) shared = task.shared;
   if (!lab) throw new Error("stepping worker used before its world was built");
-  for (const e of task.edits) {
-    const i = e.kind === "goal" || e.kind === "pose" ? e.i - range.start : -1;
-    if (i >= range.end - range.start) continue;
-    switch (e.kind) {
-      case "goal":
-        if (i >= 0) lab.setGoal(i, e.goal);
-        break;
-      case "pose":
-        if (i >= 0) lab.setPose(i, e.x, e.y, e.theta);
-        break;
-      case "funnel":
-        lab.setFunnel(e.funnel);
-        lab.setRelaxed(e.relaxed);
-        break;
-      case "params":
-        lab.setParams(e.params);
-        break;
-      case "table":
-        lab.setTable(e.bytes, e.key);
-        break;
-    }
-  }
+  const l = lab;
+  const answers = task.edits.map(({ id, edit }) => ({ id, ...applyEdit(l, edit, range.start, range.end) }));
   const local = task.shown - range.start;
   const mine = local >= 0 && local < range.end - range.start;
-  if (shared && task.continuing) return runShared(lab, shared, task, mine ? local : -1);
+  if (shared && task.continuing) return runShared(l, shared, task, mine ? local : -1, answers);
   const t0 = performance.now();
-  if (task.steps > 0) lab.step(task.steps);
+  if (task.steps > 0) l.step(task.steps);
   const stepMs = performance.now() - t0;
-  let internals: Internals | null = null;
-  if (mine) internals = lab.internals(local);
+  const internals: Internals | null = mine ? l.internals(local) : null;
   if (shared) {
-    // Straight from the core's memory into this worker's slice of the
-    // shared buffer (one copy; `state()` made three: 4 MB each at 50,000 agents).
+    // Straight from the core's memory into this worker's slice of the shared buffer.
     const buf = shared[task.buffer] as SharedArrayBuffer;
-    lab.stateInto(new Float32Array(buf, range.start * stride * 4, lab.count() * stride));
-    return { time: lab.time(), internals, state: null, stepMs };
+    l.stateInto(new Float32Array(buf, range.start * stride * 4, l.count() * stride));
+    return { internals, state: null, stepMs, answers };
   }
-  return { time: lab.time(), internals, state: lab.state(), stepMs };
+  return { internals, state: l.state(), stepMs, answers };
 }
 
 /** Shared memory: a continuing job (continuing.ts). Each step: this
@@ -107,7 +81,7 @@ async function run(task: StepTask): Promise<StepReply> {
  *  worker owning the shown agent, `local` ≥ 0) its internals into the
  *  step's note; the last worker to finish a step notes its stepping ms and
  *  the step's buffer (`runIndependent`). */
-function runShared(l: Lab, sab: SharedArrayBuffer[], task: StepTask, local: number): StepReply {
+function runShared(l: Lab, sab: SharedArrayBuffer[], task: StepTask, local: number, answers: StepReply["answers"]): StepReply {
   const ctrl = new Int32Array(sab[SAB.ctrl] as SharedArrayBuffer);
   const slots = new Float32Array(sab[SAB.slots] as SharedArrayBuffer);
   const notes = sab[SAB.notes] as SharedArrayBuffer;
@@ -131,7 +105,7 @@ function runShared(l: Lab, sab: SharedArrayBuffer[], task: StepTask, local: numb
       slots[slot + 1] = dst;
     },
   });
-  return { time: l.time(), internals: local >= 0 ? l.internals(local) : null, state: null, stepMs };
+  return { internals: local >= 0 ? l.internals(local) : null, state: null, stepMs, answers };
 }
 
 self.onmessage = async (ev: MessageEvent<TaskMessage<StepTask>>) => {

@@ -1,80 +1,65 @@
-// The lab's world stepped across cores (issue 17, point 2): N stepping
-// workers (step.worker.ts) on the one worker layer (pool.ts, `each`: task i
-// to worker i), each owning a contiguous slice of agents.
+// The lab's world stepped across cores: N stepping workers (step.worker.ts)
+// on the one worker layer (pool.ts, `each`: task i to worker i), each
+// owning a contiguous slice of agents. The page holds no copy of the world:
+// this is its `LabWorld` (../lab/world.ts) while the workers step.
 //
-// - Slices: `Lab.splitRanges(N)` (crate/funnelling/world_split.rs) about
-//   equal ranges whose cuts never separate an agent from the agent its goal
-//   faces (paper 000 Fig. 6): the world reads other agents only through
-//   those links, from the step's start, so each slice steps to the same
-//   bits as the whole world. No per-step exchange between workers is needed.
-//   Avoidance (issue 18) couples every agent: one slice, then.
-// - Each worker rebuilds its slice from the page's recipe (the calls the
-//   page made: limits, scenario or playground, controller settings): a
-//   scenario whole, then `retainRange`; the playground's random crowd only
-//   its range (`spawnRandomRange`). Edits (drags, settings, a new table)
-//   follow in the next task.
+// - Start: every worker builds the whole world from the page's recipe
+//   (../lab/worldcalls.ts, `buildWorld`: the calls the page's own core
+//   would make, so the same bits), splits it the same way
+//   (`Lab.splitRanges`: about equal ranges whose cuts never separate an
+//   agent from the agent its goal faces, paper 000 Fig. 6) and keeps its
+//   range (`retainRange`). The world reads other agents only through those
+//   links, from the step's start, so each slice steps to the same bits as
+//   the whole world, with no exchange between workers. A world whose
+//   avoidance couples every agent is not split: `start` resolves with null
+//   and the page steps it. Then the page sizes the state buffers from the
+//   agent count the build reported and the workers write the state at
+//   t = 0 into them.
+// - Edits (drags, settings, a new table) go to every worker with the next
+//   task; each worker's core checks them (an agent's edit: the worker that
+//   owns the agent) and answers in its reply.
 // - The page never waits for a worker: a frame with no new complete state
 //   draws the last one again.
 // - Shared memory where the page is cross-origin isolated (COOP/COEP, see
-//   vite.config.ts): STATES SharedArrayBuffers (continuing.ts: eight) each
-//   worker writes its slice into, and steps run as continuing jobs
-//   (continuing.ts, as the crowd's): the workers step on while the page
-//   asks, each at its own pace, without the crowd's barrier
-//   (`runIndependent`: slices never read each other), the last to finish a
-//   step publishing it; the worker owning the shown agent leaves its
-//   internals in the step's note (slicebuffers.ts), and the page draws
-//   every state in order, up to DEPTH states behind the newest. A host that cannot keep
-//   up runs the world slower than real time instead of stepping states it
-//   never draws.
-//   Edits and a newly shown agent end the job in flight; the next one
-//   carries them. Issue 17: a job of the steps owed, handed over and back
-//   every frame, cost 4–10 ms per step at 100,000 agents in 2 workers, so
-//   jobs of two steps followed and the page drew 30–47 new states per
-//   second; now 52–56, every one of them (README).
+//   vite.config.ts): STATES SharedArrayBuffers (continuing.ts) each worker
+//   writes its slice into, and steps run as continuing jobs (continuing.ts,
+//   as the crowd's): the workers step on while the page asks, each at its
+//   own pace, without the crowd's barrier (`runIndependent`: slices never
+//   read each other), the last to finish a step publishing it; the worker
+//   owning the shown agent leaves its internals in the step's note
+//   (slicebuffers.ts), and the page draws every state in order, up to
+//   DEPTH states behind the newest: a job handed over and back per step
+//   would leave the workers idle while the page draws. A host that cannot
+//   keep up runs the world slower than real time instead of stepping states
+//   it never draws. Edits and a newly shown agent end the job in flight;
+//   the next one carries them.
 // - Elsewhere the states come back by message (transferred, no copy), a
 //   job of the steps owed per frame (at most MAX_STEPS_PER_JOB, the world
 //   in real time), into the back buffer; then the two swap.
 
-import type { AgentConfig, FunnelConfig, GoalConfig, Internals, Lab, RelaxedConfig, VehicleParams } from "../wasm";
+import type { Ghost, Internals } from "../wasm";
+import type { LabWorld, Took } from "../lab/world";
+import type { BuildInfo, Edit, EditAnswer, Recipe } from "../lab/worldcalls";
 import { stateBuffers } from "./buffers";
 import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "./continuing";
 import { NOTE_BYTES, readNote, SAB, SLOT } from "./slicebuffers";
 import { SteppingJobs } from "./jobs";
 import { WorkerPool } from "./pool";
 
-/** Where a worker finds the η table in force: its bytes (a table built for
- *  other limits, issue 14) or the committed table's URL. */
-export interface TableSource {
-  key: string;
-  url: string;
-  bytes: Uint8Array | null;
+/** An edit on its way, numbered for its answer. */
+export interface SentEdit {
+  id: number;
+  edit: Edit;
 }
 
-/** The calls that built the page's world, replayed by every worker. */
-export interface Recipe {
-  table: TableSource;
-  params: VehicleParams;
-  funnel: FunnelConfig;
-  relaxed: RelaxedConfig;
-  build:
-    | { kind: "scenario"; text: string }
-    | { kind: "playground"; agent: AgentConfig | null; spawn: { n: number; seed: number; extent: number; speed: number } | null };
-}
-
-/** An edit of the running world (`i`: the agent's index in the whole world). */
-export type Edit =
-  | { kind: "goal"; i: number; goal: GoalConfig }
-  | { kind: "pose"; i: number; x: number; y: number; theta: number }
-  | { kind: "funnel"; funnel: FunnelConfig; relaxed: RelaxedConfig }
-  | { kind: "params"; params: VehicleParams }
-  | { kind: "table"; bytes: Uint8Array; key: string };
-
-/** One task: (re)build the slice if `init`, apply `edits`, step `steps`
- *  times, write the states into buffer `buffer`; `shown`: the agent whose
- *  internals the HUD shows. */
+/** One task. `build`: build the whole world from the recipe and keep
+ *  slice `worker` of `workers`. Else: take `shared` (the state buffers,
+ *  when given), apply `edits`, step `steps` times, write the states into
+ *  buffer `buffer`; `shown`: the agent whose internals the HUD shows. */
 export interface StepTask {
-  init: { recipe: Recipe; start: number; end: number; shared: SharedArrayBuffer[] | null } | null;
-  edits: Edit[];
+  build: Recipe | null;
+  shared?: SharedArrayBuffer[] | null;
+  edits: SentEdit[];
   steps: number;
   /** The buffer written (a continuing job: the drawn one, stepped from). */
   buffer: number;
@@ -86,24 +71,25 @@ export interface StepTask {
 }
 
 export interface StepReply {
-  time: number;
   internals: Internals | null;
   /** The slice's states when there is no shared memory. */
   state: Float32Array | null;
   /** Wall ms of the worker's `step` calls. */
   stepMs: number;
+  answers: Array<EditAnswer & { id: number }>;
+  /** A build's: what it made, the slices (flat start, end pairs) and
+   *  whether avoidance couples the agents (no slices kept). */
+  built?: { info: BuildInfo; ranges: number[]; coupled: boolean };
 }
 
 /** Steps one job runs at most (a frame's worth when the workers keep up). */
 const MAX_STEPS_PER_JOB = 4;
 
-/** Agents from which the page steps in workers by default, measured with
- *  `make bench-web` (web/test/perf.mjs, README figures) on the 2-core host:
- *  at 10,000 the page's thread steps and draws at 40–60 fps and the workers
- *  only add their start (0.3–0.6 s) and a frame of latency; from 20,000 it
- *  fell to 14–58 fps (12–63 ms of work per frame) while with workers the
- *  page kept 36–60 fps at 1.5–4 ms per frame. Agents stepped per second
- *  were not higher with workers on that loaded host (README). */
+/** Agents from which the page steps in workers by default. Below it the
+ *  page's own thread steps and draws a frame within the 16.7 ms of a 60 Hz
+ *  display on a 2-core host, and workers would only add their start and a
+ *  frame of latency; above it, its frames take longer, and the workers
+ *  keep it drawing (`make bench-web`, web/test/perf.mjs, measures both). */
 export const AUTO_WORKERS_FROM = 20_000;
 
 /** `?workers=N` (0 = off) or, unset, the default for `count` agents:
@@ -118,7 +104,7 @@ export function workersWanted(count: number, search = location.search): { n: num
   return { n, problem: null };
 }
 
-/** How the world is stepped (HUD, window.__lab.workers()). */
+/** How the world is stepped (the HUD; the test build's hook). */
 export interface SteppingInfo {
   /** `main`: on the page's thread; `shared` / `messages`: in workers. */
   mode: "main" | "shared" | "messages";
@@ -130,7 +116,7 @@ export interface SteppingInfo {
   /** The slowest worker's stepping time per agent update of the whole
    *  world, µs (0 before the first step). */
   usPerUpdate: number;
-  /** Wall ms the last start took (each worker rebuilds the world, keeps its slice). */
+  /** Wall ms the last start took (each worker builds the world, keeps its slice). */
   startMs: number;
   /** Workers asked for (URL or default). */
   wanted: number;
@@ -138,30 +124,32 @@ export interface SteppingInfo {
   error: string | null;
 }
 
-export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
+export class WorkerWorld extends SteppingJobs<StepTask, StepReply> implements LabWorld {
   ranges: Array<[number, number]> = [];
+  count = 0;
   /** The last complete state (what the page draws). */
   state: Float32Array = new Float32Array(0);
   /** Internals of the shown agent in that state. */
   internals: Internals | null = null;
   /** A newer complete state arrived since the page last looked. */
-  fresh = false;
+  private fresh = false;
   private back: Float32Array = new Float32Array(0);
   private sab: SharedArrayBuffer[] | null = null;
+  /** The buffers are new: the next task hands them over. */
+  private handOver = false;
   private frontIndex = 0;
   /** Shared memory: the continuing jobs (over `sab[SAB.ctrl]`), and the
    *  agent whose internals the one in flight notes. */
   private jobs: ContinuingJobs | null = null;
   private jobShown = 0;
-  private edits: Edit[] = [];
+  private edits: SentEdit[] = [];
+  private answers = new Map<number, (a: EditAnswer) => void>();
+  private nextEdit = 0;
   private shown = 0;
-  /** Called with the new front state when the buffers swap (the page
-   *  must not keep drawing the buffer the next job writes into). */
-  onSwap: (state: Float32Array) => void = () => {};
   /** Sum over jobs of the slowest worker's stepping ms, and agent updates
    *  (the workers' own cost per update, beside the jobs' wall time). */
-  workerMs = 0;
-  workerUpdates = 0;
+  private workerMs = 0;
+  private workerUpdates = 0;
 
   constructor(
     readonly workers: number,
@@ -170,47 +158,134 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
     super(new WorkerPool<StepTask, StepReply>(() => new Worker(new URL("./step.worker.ts", import.meta.url), { type: "module" }), workers));
   }
 
-  /** Splits `lab`'s world (just built by `recipe`, at t = 0) across the
-   *  workers; `initial` (its state) is drawn until they are ready. */
-  start(recipe: Recipe, lab: Lab, initial: Float32Array, shown: number): Promise<void> {
-    return this.restart((gen) => {
+  /** Every worker builds `recipe`'s world and keeps its slice; then the
+   *  state buffers for it and the state at t = 0. Resolves with the
+   *  build's info, or null when the world cannot be split (or a worker
+   *  failed: `error`). */
+  async start(recipe: Recipe, shown: number): Promise<BuildInfo | null> {
+    let built: StepReply["built"] = undefined;
+    this.jobs?.drop();
+    await this.restart(async (gen) => {
       this.edits = [];
-      const flat = lab.splitRanges(this.workers);
-      const ranges: Array<[number, number]> = [];
-      for (let k = 0; k + 1 < flat.length; k += 2) ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
-      this.ranges = ranges;
-      this.jobs?.drop();
-      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(initial, this.shared, this.shared ? STATES : 2, [CTRL_BYTES, 4 * SLOT * SLOT_RING, NOTE_BYTES * SLOT_RING]));
+      this.answers.clear();
+      this.jobs = null;
+      this.sab = null;
+      this.count = 0;
+      this.state = new Float32Array(0);
+      this.internals = null;
+      const workers = this.workers;
+      await this.job(
+        gen,
+        () => Array.from({ length: workers }, (_, k) => this.task(k, { build: recipe, shown, workers })),
+        (replies) => void (built = replies[0]?.built),
+      );
+      if (gen !== this.gen || !built || built.coupled) return;
+      const flat = built.ranges;
+      this.ranges = [];
+      for (let k = 0; k + 1 < flat.length; k += 2) this.ranges.push([flat[k] ?? 0, flat[k + 1] ?? 0]);
+      this.count = built.info.count;
+      ({ sab: this.sab, state: this.state, back: this.back } = stateBuffers(new Float32Array(this.count * this.stride), this.shared, this.shared ? STATES : 2, [CTRL_BYTES, 4 * SLOT * SLOT_RING, NOTE_BYTES * SLOT_RING]));
       this.jobs = this.sab ? new ContinuingJobs(new Int32Array(this.sab[SAB.ctrl] as SharedArrayBuffer)) : null;
       this.frontIndex = 0;
-      const sab = this.sab;
-      return this.swapJob(gen, (buffer) =>
-        ranges.map(([start, end], k) => ({ init: { recipe, start, end, shared: sab }, edits: [], steps: 0, buffer, shown, continuing: false, worker: k, workers: ranges.length })),
-      );
+      this.handOver = true;
+      await this.swapJob(gen, (buffer) => this.slices({ steps: 0, buffer, shown, continuing: false }));
     });
+    const b = built as StepReply["built"];
+    if (!b || b.coupled || this.error !== null) {
+      this.stop();
+      return null;
+    }
+    return b.info;
+  }
+
+  /** Task `k` with the given fields, the rest as for a plain step. */
+  private task(k: number, t: Partial<StepTask>): StepTask {
+    return { build: null, edits: [], steps: 0, buffer: this.frontIndex, shown: this.shown, continuing: false, worker: k, workers: this.ranges.length, ...t };
+  }
+
+  /** One task per slice; the first after a start hands over the buffers. */
+  private slices(t: Partial<StepTask>): StepTask[] {
+    const shared = this.handOver ? { shared: this.sab } : {};
+    this.handOver = false;
+    return this.ranges.map((_, k) => this.task(k, { ...t, ...shared }));
+  }
+
+  edit(e: Edit, answer: (a: EditAnswer) => void): void {
+    const id = this.nextEdit++;
+    this.answers.set(id, answer);
+    this.edits.push({ id, edit: e });
+    // A continuing job in flight ends, so that the next one carries it.
+    if (this.jobs?.running) this.jobs.end();
+  }
+
+  tableChanged(bytes: Uint8Array, key: string): void {
+    this.edit({ kind: "table", bytes, key }, () => undefined);
+  }
+
+  /** Each edit's answer, once: the first refusal among the workers' (an
+   *  agent's edit is refused by the one worker that owns the agent). */
+  private answer(replies: StepReply[]): void {
+    const byId = new Map<number, EditAnswer>();
+    for (const r of replies) {
+      for (const a of r.answers) {
+        const had = byId.get(a.id);
+        if (!had || (had.error === null && a.error !== null)) byId.set(a.id, { error: a.error, avoid: had?.avoid ?? a.avoid });
+      }
+    }
+    for (const [id, a] of byId) {
+      this.answers.get(id)?.(a);
+      this.answers.delete(id);
+    }
+  }
+
+  frame(k: number, shown: number): Took {
+    // Shared memory: this frame's state first (before asking for more: the
+    // workers then leave its buffer alone).
+    this.poll();
+    this.request(k);
+    this.pump(shown);
+    return this.took();
+  }
+
+  async run(k: number, shown: number): Promise<Took> {
+    await this.dispatch(k, shown);
+    return this.took();
+  }
+
+  private took(): Took {
+    if (!this.fresh) return { steps: 0, ms: 0, stepMs: 0, fresh: false };
+    this.fresh = false;
+    const d = this.takeCompleted();
+    return { steps: d.steps, ms: d.ms, stepMs: d.workerMs, fresh: true };
+  }
+
+  ghost(): Ghost | null {
+    return null;
+  }
+
+  ring(): Float32Array | null {
+    return null;
+  }
+
+  core(): null {
+    return null;
   }
 
   /** `steps` more steps are owed (at most a job's worth wait: a slow host
    *  drops the rest). Shared memory: the target of the job in flight rises
-   *  (`ContinuingJobs.raise`: a host that cannot keep up runs slower than real time
-   *  rather than stepping states the page never draws). */
-  request(steps: number): void {
+   *  (`ContinuingJobs.raise`: a host that cannot keep up runs slower than
+   *  real time rather than stepping states the page never draws). */
+  private request(steps: number): void {
+    if (steps <= 0) return;
     const jobs = this.jobs;
-    if (jobs && steps > 0) jobs.perFrame = Math.min(MAX_STEPS_PER_JOB, steps);
+    if (jobs) jobs.perFrame = Math.min(MAX_STEPS_PER_JOB, steps);
     if (jobs?.running) jobs.raise(jobs.perFrame, steps);
     else this.owed = Math.min(MAX_STEPS_PER_JOB, this.owed + steps);
   }
 
-  /** An edit for the next job (a continuing job in flight ends, so that
-   *  the next one carries it). */
-  edit(e: Edit): void {
-    this.edits.push(e);
-    if (this.jobs?.running) this.jobs.end();
-  }
-
   /** Starts a job if none is in flight and something is owed; never waits.
    *  A continuing job noting another agent's internals ends. */
-  pump(shown: number): void {
+  private pump(shown: number): void {
     this.shown = shown;
     if (this.jobs?.running && shown !== this.jobShown) this.jobs.end();
     if (!this.ready || !this.idle || (this.owed === 0 && this.edits.length === 0)) return;
@@ -222,32 +297,28 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   /** Runs `steps` steps (and the pending edits) as one job; resolves when
    *  its state is the front one (tests, single steps; paused, exactly
    *  `steps`: a continuing job also takes the steps frames ask meanwhile). */
-  run(steps: number, shown: number): Promise<void> {
-    return this.dispatch(steps, shown);
-  }
-
   private dispatch(steps: number, shown: number): Promise<void> {
+    this.shown = shown;
     const edits = this.edits;
     this.edits = [];
-    const workers = this.ranges.length;
     if (this.jobs && steps > 0) return this.continuingJob(this.jobs, steps, shown, edits);
-    return this.swapJob(this.gen, (buffer) => this.ranges.map((_, k) => ({ init: null, edits, steps, buffer, shown, continuing: false, worker: k, workers })), steps);
+    return this.swapJob(this.gen, (buffer) => this.slices({ edits, steps, buffer, shown }), steps);
   }
 
   /** Shared memory: a continuing job from the drawn state, asked for
    *  `steps` (more as frames ask); resolves when it has ended and its last
    *  state is the front one. */
-  private continuingJob(jobs: ContinuingJobs, steps: number, shown: number, edits: Edit[]): Promise<void> {
-    const workers = this.ranges.length;
+  private continuingJob(jobs: ContinuingJobs, steps: number, shown: number, edits: SentEdit[]): Promise<void> {
     return this.job(
       this.gen,
       () => {
         jobs.begin(this.frontIndex, steps);
         this.jobShown = shown;
-        return this.ranges.map((_, k) => ({ init: null, edits, steps, buffer: this.frontIndex, shown, continuing: true, worker: k, workers }));
+        return this.slices({ edits, steps, buffer: this.frontIndex, shown, continuing: true });
       },
       // The internals come with each state's note (`poll`), not the replies.
-      (_replies, t0) => {
+      (replies, t0) => {
+        this.answer(replies);
         this.poll(true);
         // Steps a frame asked for after the workers' last decision.
         this.owed = Math.max(this.owed, jobs.finish(MAX_STEPS_PER_JOB));
@@ -257,10 +328,10 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
   }
 
   /** Shared memory: takes the state to draw among those the continuing job
-   *  has published since the last call (`ContinuingJobs.take`: in order, up to
-   *  DEPTH behind the newest; `newest`: the newest), with the shown agent's
-   *  internals noted for it. Called every frame, before drawing. */
-  poll(newest = false): void {
+   *  has published since the last call (`ContinuingJobs.take`: in order, up
+   *  to DEPTH behind the newest; `newest`: the newest), with the shown
+   *  agent's internals noted for it. Called every frame, before drawing. */
+  private poll(newest = false): void {
     const sab = this.sab;
     if (!sab || !this.jobs) return;
     const slots = new Float32Array(sab[SAB.slots] as SharedArrayBuffer);
@@ -276,11 +347,9 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
     this.done.steps += steps;
     this.done.workerMs += ms;
     this.workerMs += ms;
-    this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
+    this.workerUpdates += steps * this.count;
     this.fresh = true;
-    this.onSwap(this.state);
   }
-
 
   /** One job on every worker writing the back buffer (`buffer`), then the
    *  two swap (a worker answers in order, and `each` hands each answer to
@@ -294,6 +363,7 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
         return tasks(buffer);
       },
       (replies, t0) => {
+        this.answer(replies);
         let front: Float32Array;
         if (this.sab) front = new Float32Array(this.sab[buffer] as SharedArrayBuffer);
         else {
@@ -308,13 +378,12 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
         this.frontIndex = buffer;
         this.internals = replies.find((r) => r.internals !== null)?.internals ?? null;
         this.done.steps += steps;
-        const slowest = Math.max(...replies.map((r) => r.stepMs));
+        const slowest = Math.max(0, ...replies.map((r) => r.stepMs));
         this.workerMs += slowest;
         this.done.workerMs += slowest;
-        this.workerUpdates += steps * (this.ranges.at(-1)?.[1] ?? 0);
+        this.workerUpdates += steps * this.count;
         this.done.ms += performance.now() - t0;
         this.fresh = true;
-        this.onSwap(front);
       },
     );
   }
@@ -345,5 +414,6 @@ export class WorldStepper extends SteppingJobs<StepTask, StepReply> {
     this.jobs?.drop();
     super.stop();
     this.edits = [];
+    this.answers.clear();
   }
 }

@@ -1,4 +1,4 @@
-// One η-table worker (issue 14): computes a slice of entries with the
+// One η-table worker: computes a slice of entries with the
 // core's `tableSlice` (the generator's own code, so the assembled bytes
 // equal `eta-table --vehicle`'s) and hands the Float32Array back without a
 // copy. Driven by `WorkerPool` (pool.ts) from tables.ts.

@@ -1,4 +1,4 @@
-// The browser's η-table cache (issue 14): IndexedDB database
+// The browser's η-table cache: IndexedDB database
 // `steering-lab`, store `tables`, one record per parameter key (the core's
 // `tableJob(params).key`, the same hash as the native cache's file names).
 // A record is used only after the core has loaded it and recomputed the

@@ -1,4 +1,4 @@
-// The η table of the vehicle in use, built off the main thread (issue 14):
+// The η table of the vehicle in use, built off the main thread:
 // from the browser's cache if it holds the table for these limits
 // (tablecache.ts), else split across Web Workers (pool.ts, one slice of
 // entries per task, several tasks per worker so the far, slow rows spread

@@ -25,19 +25,36 @@ export function etaSection(host: HTMLElement, base: Lab): LiveFigure {
     const g = l.ghostFrom(start.x, start.y, start.theta, V0, 0, target.x, target.y, 1.3);
     l.addAgent({ x: start.x, y: start.y, theta: start.theta, v: V0, goals: [goal(target.x, target.y, g.reached ? g.finalDir : 0, { dTol: 0.25, epsTol: Math.PI / 2, halting: false })] });
   });
+  /** The start state's predicted path: what the figure is zoomed to. */
+  let startPath: ArrayLike<number> = [];
   const refresh = (): void => {
     inter = run.count > 0 && lab.internals(0).mode !== 0 ? lab.internals(0) : null;
     ghost = inter ? lab.ghost(0) : null;
   };
+  const box = (): [number, number, number, number] => {
+    let [x0, y0, x1, y1] = [Math.min(start.x, target.x), Math.min(start.y, target.y), Math.max(start.x, target.x), Math.max(start.y, target.y)];
+    for (let k = 0; k + 1 < startPath.length; k += 2) {
+      x0 = Math.min(x0, startPath[k]!);
+      x1 = Math.max(x1, startPath[k]!);
+      y0 = Math.min(y0, startPath[k + 1]!);
+      y1 = Math.max(y1, startPath[k + 1]!);
+    }
+    // Room for the radial line's extension, the arrows and the labels.
+    return [x0 - 1, y0 - 1, x1 + 1.3, y1 + 1.3];
+  };
   return new LiveFigure(host, {
     name: "eta",
     label: "the predicted seek path (dashed) from the vehicle to the target, its final direction, and the angle η",
-    box: () => [-5.5, -3, 5, 4],
+    box,
     handles: [
       { name: "target", label: "target", colour: COLOURS.seek, get: () => target, set: (p) => { target.x = p.x; target.y = p.y; } },
       { name: "vehicle", label: "vehicle", colour: COLOURS.vehicle, get: () => start, set: (p) => { start.x = p.x; start.y = p.y; } },
     ],
-    reset: () => { run.reset(); refresh(); },
+    reset: () => {
+      run.reset();
+      refresh();
+      if (ghost) startPath = ghost.points;
+    },
     step: () => { const more = run.step(); refresh(); return more; },
     time: () => run.time,
     draw(ctx, v) {
@@ -54,14 +71,19 @@ export function etaSection(host: HTMLElement, base: Lab): LiveFigure {
         line(ctx, v, x, y, target.x + Math.cos(radial) * ext, target.y + Math.sin(radial) * ext, COLOURS.radial, 1, [6, 4]);
         drawGhost(ctx, v, { points: ghost.points, reached: ghost.reached, finalDir: ghost.finalDir, slowed: ghost.slowed });
         if (ghost.reached) {
-          ray(ctx, v, target.x, target.y, ghost.finalDir, 60, COLOURS.eta, 2);
-          angleArc(ctx, v, target.x, target.y, 40, radial, ghost.finalDir, COLOURS.eta, "η");
+          ray(ctx, v, target.x, target.y, ghost.finalDir, 96, COLOURS.eta, 2.5);
+          angleArc(ctx, v, target.x, target.y, 74, radial, ghost.finalDir, COLOURS.eta, "η");
         }
-        angleArc(ctx, v, x, y, 34, th, radial, COLOURS.radial, "α");
+        // The heading, from which α is measured.
+        ray(ctx, v, x, y, th, 64, COLOURS.vehicle, 1.5);
+        angleArc(ctx, v, x, y, 44, th, radial, COLOURS.radial, "α");
       }
       vehicle(ctx, v, x, y, th);
     },
     numbers() {
+      // While the run plays, the vehicle may pass the target's reach
+      // (no η left to predict): the prose keeps the last state it had.
+      if (run.time > 0 && !(inter && ghost?.reached)) return;
       live("eta-D", inter ? `${inter.d.toFixed(2)} m` : "—");
       live("eta-alpha", deg(inter?.alpha ?? NaN));
       live("eta-sim", ghost?.reached ? deg(ghost.eta) : "unreachable");

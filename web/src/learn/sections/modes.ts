@@ -8,6 +8,7 @@ import { slider } from "../../controls";
 import { Mode, StateField, type Internals, type Lab } from "../../wasm";
 import { backdrop, COLOURS, deg, drawTarget, MODE_NAMES, path, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
+import { typesetText } from "../glossary";
 import { goal, labState, live, Run } from "../run";
 
 const DEG = Math.PI / 180;
@@ -22,6 +23,12 @@ const DIAGRAM: ReadonlyArray<{ mode: number; test: string }> = [
 
 export function modeColour(mode: number): string {
   return mode === Mode.EndOfSteering ? COLOURS.end : mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
+}
+
+/** The mode's colour for text on the page's paper (the drawing's grey and
+ *  red darkened to a 4.5:1 contrast, WCAG AA). */
+function modeTextColour(mode: number): string {
+  return mode === Mode.EndOfSteering ? "#5f646c" : mode === Mode.OrientationOnly ? COLOURS.orientation : "#b3141c";
 }
 
 export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
@@ -42,10 +49,10 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     const li = document.createElement("li");
     li.dataset["mode"] = String(d.mode);
     li.innerHTML = `<code></code> → <b></b>`;
-    li.querySelector("code")!.textContent = d.test;
+    li.querySelector("code")!.innerHTML = typesetText(d.test);
     const b = li.querySelector("b")!;
     b.textContent = MODE_NAMES[d.mode] ?? "";
-    b.style.color = modeColour(d.mode);
+    b.style.color = modeTextColour(d.mode);
     diagram.append(li);
   }
   const fig = new LiveFigure(host, {

@@ -9,7 +9,7 @@ import { select, slider } from "../../controls";
 import { BOUND_CHOICES, funnelConfig } from "../../lab/funnelsettings";
 import { defaultState, type BoundKey, type FunnelSettings } from "../../lab/state";
 import type { Ghost, Internals, Lab } from "../../wasm";
-import { backdrop, COLOURS, deg, drawGhost, drawTarget, path, ray, vehicle } from "../draw";
+import { angleArc, backdrop, COLOURS, deg, drawGhost, drawTarget, line, path, ray, tipLabel, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run, type Outcome } from "../run";
 
@@ -61,12 +61,31 @@ export function modulationSection(host: HTMLElement, base: Lab): LiveFigure {
       if (ghost) drawGhost(ctx, v, { points: ghost.points, reached: ghost.reached, finalDir: ghost.finalDir, slowed: ghost.slowed }, 1.5);
       drawTarget(ctx, v, { x: target.x, y: target.y, beta, dTol: 0.3, epsTol: (10 * Math.PI) / 180, mode: inter?.mode ?? 3 }, 1.6 * v.scale - 12, false);
       const th = run.field(0, 2);
-      if (inter && Number.isFinite(inter.eta) && inter.mode === 3) ray(ctx, v, target.x, target.y, th + inter.alpha + inter.eta, 46, COLOURS.eta, 2);
-      if (inter) ray(ctx, v, run.x(0), run.y(0), inter.gamma, 56, COLOURS.gamma, 2.5);
-      vehicle(ctx, v, run.x(0), run.y(0), th);
+      const x = run.x(0);
+      const y = run.y(0);
+      tipLabel(ctx, v, target.x, target.y, beta, 1.6 * v.scale + 18, "β", COLOURS.seek);
+      if (inter && inter.mode !== 0) {
+        const radial = th + inter.alpha;
+        // The radial direction, from which μ turns the heading to γ.
+        line(ctx, v, x, y, target.x, target.y, COLOURS.radial, 1, [6, 4]);
+        if (Number.isFinite(inter.eta) && inter.mode === 3) {
+          // η's prediction at the target, and Δη from it to β.
+          const fin = radial + inter.eta;
+          ray(ctx, v, target.x, target.y, fin, 80, COLOURS.eta, 2.5);
+          tipLabel(ctx, v, target.x, target.y, fin, 96, "θ+α+η", COLOURS.eta);
+          angleArc(ctx, v, target.x, target.y, 58, fin, beta, "#b3141c", "Δη");
+        }
+        ray(ctx, v, x, y, inter.gamma, 90, COLOURS.gamma, 3);
+        tipLabel(ctx, v, x, y, inter.gamma, 106, "γ", COLOURS.gamma);
+        if (Math.abs(inter.mu) > 0.01) angleArc(ctx, v, x, y, 62, radial, inter.gamma, COLOURS.gamma, "μ");
+      }
+      vehicle(ctx, v, x, y, th);
     },
     numbers() {
       const f = inter && inter.mode === 3;
+      // Near the end the vehicle seeks (no modulation): the prose keeps the
+      // last funnelling state it showed.
+      if (!f && run.time > 0) return;
       live("mod-deta", deg(inter?.deltaEta ?? NaN));
       live("mod-mu", deg(inter?.mu ?? NaN));
       live("mod-mumax", f ? deg(inter!.muMax) : "— (not funnelling)");

@@ -2,7 +2,7 @@
 // with the paper's relaxed point. Live from the core's relaxed internals:
 // the table ring nearest the disk centre, the restricted arc 𝒜 where it
 // crosses the disk, the span F of final orientations over 𝒜, the interval
-// T = β ± τ, the chosen α_r and the Fig. 7 branch that chose it; next to
+// T = β ± τ, the chosen αᵣ and the Fig. 7 branch that chose it; next to
 // the standard controller's path to the same disk.
 
 import { defaultState } from "../../lab/state";
@@ -16,12 +16,12 @@ const DEG = Math.PI / 180;
 /** crate::relaxed::Fig7Branch, as a sentence. */
 const BRANCHES = [
   "not searched",
-  "centres of F and T of opposite signs, straight ahead valid: α_r = 0, Δη = 0",
-  "centres of opposite signs, F overlaps T (mod 2π): Δη = 0, α_r the overlap point nearest straight ahead",
-  "centres of opposite signs, no overlap: α_r the end of 𝒜 with the smallest gap",
-  "centres of the same sign, straight ahead valid: α_r = 0, Δη = 0",
-  "centres of the same sign, F overlaps T: Δη = 0, α_r the overlap point nearest straight ahead",
-  "centres of the same sign, no overlap: α_r the end of 𝒜 with the smallest gap",
+  "centres of F and T of opposite signs, straight ahead valid: αᵣ = 0, Δη = 0",
+  "centres of opposite signs, F overlaps T (mod 2π): Δη = 0, αᵣ the overlap point nearest straight ahead",
+  "centres of opposite signs, no overlap: αᵣ the end of 𝒜 with the smallest gap",
+  "centres of the same sign, straight ahead valid: αᵣ = 0, Δη = 0",
+  "centres of the same sign, F overlaps T: Δη = 0, αᵣ the overlap point nearest straight ahead",
+  "centres of the same sign, no overlap: αᵣ the end of 𝒜 with the smallest gap",
   "closer than the first ring: the standard update",
   "entry point (the default aim)",
 ];
@@ -44,7 +44,7 @@ export function regionSection(host: HTMLElement, base: Lab): LiveFigure {
   const refresh = (): void => { inter = relaxed.lab.internals(0); };
   return new LiveFigure(host, {
     name: "region",
-    label: "relaxed funnelling towards a disk: the table ring, the arc 𝒜 inside the disk, the span F, the interval T and the chosen direction α_r",
+    label: "relaxed funnelling towards a disk: the table ring, the arc 𝒜 inside the disk, the span F, the interval T and the chosen direction αᵣ",
     box: () => [-7, -3.5, 5, 5],
     handles: [
       { name: "centre", label: "region goal (disk centre)", colour: COLOURS.arc, get: () => centre, set: (p) => { centre.x = p.x; centre.y = p.y; } },
@@ -100,6 +100,9 @@ export function regionSection(host: HTMLElement, base: Lab): LiveFigure {
     numbers() {
       const a = inter?.arc;
       const searched = a && a.branch > 0 && a.branch < 7;
+      // Once the run is inside the disk there is no arc left to search:
+      // the prose keeps the last search it showed.
+      if (!searched && relaxed.time > 0) return;
       live("region-arc", searched ? `[${deg(a.alphaMin)}, ${deg(a.alphaMax)}]` : "—");
       live("region-F", searched ? `[${deg(a.fMin)}, ${deg(a.fMax)}]` : "—");
       live("region-T", searched ? `[${deg(a.tMin)}, ${deg(a.tMax)}]` : "—");

@@ -55,6 +55,9 @@ export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
       vehicle(ctx, v, run.x(0), run.y(0), run.field(0, 2));
     },
     numbers() {
+      // Once the vehicle is at the probe there is nothing to look up: the
+      // prose keeps the last state it had.
+      if (run.time > 0 && !inter) return;
       live("table-vc", `${speeds.vC.toFixed(2)} m/s`);
       live("table-vd", `${speeds.vD.toFixed(2)} m/s`);
       live("table-D", inter ? `${inter.d.toFixed(2)} m` : "—");

@@ -1,0 +1,33 @@
+// The crowd page (main.ts) in one record: its status, its session, the
+// paper's presets, the loop's counters and its work probe. The HUD reads
+// the counters; the test build's hook (hook.ts) reads the rest.
+
+import type { CrowdConfig } from "../wasm";
+import type { CrowdSession } from "./session";
+
+/** What the loop (loop.ts) counts; the figures over the last second are the HUD's. */
+export interface CrowdStats {
+  frames: number;
+  /** Frames that drew a new state. */
+  drawnFrames: number;
+  /** Steps and boid updates completed (the page's thread or the workers). */
+  steps: number;
+  updates: number;
+  /** Workers: wall ms of their jobs, and of the slowest worker's stepping in them. */
+  jobMs: number;
+  workerStepMs: number;
+  /** Over the last second: ms per step (workers: the slowest worker's), ms per draw, frames per second. */
+  stepMs: number;
+  drawMs: number;
+  fps: number;
+}
+
+export interface CrowdPage {
+  ready: boolean;
+  error: string | null;
+  session: CrowdSession;
+  presets: CrowdConfig[];
+  stats: CrowdStats;
+  /** Told each frame's work, ms (the test build's record). */
+  probe: ((workMs: number) => void) | null;
+}
