@@ -18,10 +18,18 @@ use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent,
 /// range, a circle of 1e6 m at 100 rad/s would move its goal at 1e8 m/s).
 pub const MAX_GOAL_MOTION_SPEED: f32 = crate::base::ranges::MOTION_VX.max as f32;
 
-/// Agents a world may hold: the lab's playground agent and
+/// Agents the lab's page lets a world hold ([`World::set_max_agents`] in
+/// its bindings): the playground agent and
 /// [`AGENTS`](crate::base::ranges::AGENTS)' largest count of random
 /// agents (the page's performance runs go to 100,000).
 pub const MAX_AGENTS: usize = crate::base::ranges::AGENTS.max as usize + 1;
+
+/// Agents a new [`World`] accepts until [`World::set_max_agents`] says
+/// otherwise: a guard against a runaway loop or a typo filling memory (an
+/// agent with [`RANDOM_GOALS`] goals takes about 1.2 KB, so a million take
+/// about 1.2 GB), with room for the native crowds of half a million agents
+/// the parallel step is built for. The page's bound is [`MAX_AGENTS`].
+pub const DEFAULT_MAX_AGENTS: usize = 1_000_000;
 
 /// Goals queued per agent by [`World::spawn_random`] (minutes of funnelling).
 pub const RANDOM_GOALS: usize = 16;
@@ -37,12 +45,15 @@ pub enum EditError {
         /// Agents in the world.
         count: usize,
     },
-    /// Adding the agents would exceed [`MAX_AGENTS`].
+    /// Adding the agents would exceed the world's bound
+    /// ([`World::max_agents`]).
     TooManyAgents {
         /// Agents asked for.
         adding: usize,
         /// Agents already in the world.
         count: usize,
+        /// The world's bound.
+        max: usize,
     },
     /// A pose, goal or setting is out of range.
     Param(ParamError),
@@ -52,9 +63,9 @@ impl core::fmt::Display for EditError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Self::NoAgent { index, count } => write!(f, "no agent {index} (there are {count})"),
-            Self::TooManyAgents { adding, count } => write!(
+            Self::TooManyAgents { adding, count, max } => write!(
                 f,
-                "{adding} more agents would exceed {MAX_AGENTS} (there are {count})"
+                "{adding} more agents would exceed {max} (there are {count})"
             ),
             Self::Param(e) => e.fmt(f),
         }
@@ -142,16 +153,35 @@ impl World {
         a.finished_at = None;
     }
 
-    /// Checks that `adding` more agents fit under [`MAX_AGENTS`].
+    /// Checks that `adding` more agents fit under [`World::max_agents`]
+    /// (every path that adds agents checks it: [`World::add_agent`],
+    /// [`World::spawn_random`], scenario worlds through `add_agent`).
     ///
     /// # Errors
     /// [`EditError::TooManyAgents`].
     pub fn check_room(&self, adding: usize) -> Result<(), EditError> {
         let count = self.agents.len();
-        if count.saturating_add(adding) > MAX_AGENTS {
-            return Err(EditError::TooManyAgents { adding, count });
+        if count.saturating_add(adding) > self.max_agents {
+            return Err(EditError::TooManyAgents {
+                adding,
+                count,
+                max: self.max_agents,
+            });
         }
         Ok(())
+    }
+
+    /// Most agents the world accepts ([`DEFAULT_MAX_AGENTS`] unless set).
+    #[must_use]
+    pub fn max_agents(&self) -> usize {
+        self.max_agents
+    }
+
+    /// Sets the most agents the world accepts, the caller's choice (the
+    /// lab's page keeps [`MAX_AGENTS`]). Agents already in stay; while
+    /// they are more than `max` no agent is added.
+    pub fn set_max_agents(&mut self, max: usize) {
+        self.max_agents = max;
     }
 
     /// Puts agent `i` at rest at `pos`, heading `theta` (wrapped), and
@@ -195,7 +225,7 @@ impl World {
     ///
     /// # Errors
     /// `extent` outside [0.001, 1e5] or not finite, `speed` not finite, or more than
-    /// [`MAX_AGENTS`] agents in all; nothing is added then.
+    /// [`World::max_agents`] agents in all; nothing is added then.
     pub fn spawn_random(
         &mut self,
         n: usize,
