@@ -9,7 +9,8 @@ mod common;
 use steering::base::angle::diff;
 use steering::funnelling::table::format::TableError;
 use steering::prelude::*;
-use steering::world::edit::{DEFAULT_MAX_AGENTS, RANDOM_GOALS};
+use steering::world::edit::RANDOM_GOALS;
+use steering::world::DEFAULT_MAX_AGENTS;
 
 fn oriented(x: f32, y: f32, beta_deg: f32, halting: bool) -> GoalSpec {
     GoalSpec {

@@ -1,15 +1,21 @@
 //! Edits of a running world (the logic of the lab page's drags, sliders
-//! and performance runs lives in the core, the bindings only convert): a pose reset or a new goal queue restarts the agent's queue and
-//! its mode memory (paper 000 Fig. 5's Position_only latch), and the seeded
-//! random crowd of the performance runs. Every edit validates first and
-//! changes nothing when it refuses, so a front end can pass user input
-//! straight through.
+//! and performance runs lives in the core, the bindings only convert):
+//! agents added, never past the world's bound ([`World::max_agents`], the
+//! caller's choice); a pose reset or a new goal queue restarts the agent's
+//! queue and its mode memory (paper 000 Fig. 5's Position_only latch); and
+//! the seeded random crowd of the performance runs. Every edit validates
+//! first and changes nothing when it refuses, so a front end can pass user
+//! input straight through.
 
 use glam::Vec2;
 
+use crate::base::metrics::PathMetrics;
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::goal::{FunnelMemory, Goal};
+use crate::funnelling::relaxed::RelaxedInternals;
+use crate::funnelling::update::{Internals, Mode};
 use crate::world::precision;
+use crate::world::{faces, provisional_plan};
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent, World};
 
 /// Fastest a goal may move by itself, m/s: each component of a linear
@@ -23,13 +29,6 @@ pub const MAX_GOAL_MOTION_SPEED: f32 = crate::base::ranges::MOTION_VX.max as f32
 /// [`AGENTS`](crate::base::ranges::AGENTS)' largest count of random
 /// agents (the page's performance runs go to 100,000).
 pub const MAX_AGENTS: usize = crate::base::ranges::AGENTS.max as usize + 1;
-
-/// Agents a new [`World`] accepts until [`World::set_max_agents`] says
-/// otherwise: a guard against a runaway loop or a typo filling memory (an
-/// agent with [`RANDOM_GOALS`] goals takes about 1.2 KB, so a million take
-/// about 1.2 GB), with room for the native crowds of half a million agents
-/// the parallel step is built for. The page's bound is [`MAX_AGENTS`].
-pub const DEFAULT_MAX_AGENTS: usize = 1_000_000;
 
 /// Goals queued per agent by [`World::spawn_random`] (minutes of funnelling).
 pub const RANDOM_GOALS: usize = 16;
@@ -120,6 +119,55 @@ impl GoalSpec {
 /// a performance run): each validates first and changes nothing when it
 /// refuses, so a front end can pass user input straight through.
 impl World {
+    /// Adds an agent; returns its index.
+    ///
+    /// # Errors
+    /// [`EditError::TooManyAgents`] when the world already holds
+    /// [`World::max_agents`]; [`EditError::Param`] for an invalid state or
+    /// goal (NaN, out of range; an agent index that does not exist yet is
+    /// allowed only if it will: checked in `step`).
+    pub fn add_agent(
+        &mut self,
+        state: VehicleState,
+        goals: Vec<GoalSpec>,
+    ) -> Result<usize, EditError> {
+        self.check_room(1)?;
+        state.validate(&self.params)?;
+        for g in &goals {
+            g.validate(&self.params)?;
+        }
+        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
+        let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
+        let internals = if goals.is_empty() {
+            Internals {
+                mode: Mode::EndOfSteering,
+                gamma: state.theta,
+                ..Default::default()
+            }
+        } else {
+            provisional_plan(&self.params, &state, &goal_now)
+        };
+        let memory = goals
+            .first()
+            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
+        let spec = goals.first().copied().unwrap_or_default();
+        self.agents.push(Agent {
+            spec,
+            state,
+            goals,
+            current: 0,
+            memory,
+            internals,
+            relaxed: RelaxedInternals::default(),
+            goal_now,
+            metrics: PathMetrics::default(),
+            finished_at: None,
+        });
+        self.snapshot.push(state);
+        self.facing += usize::from(faces(&self.agents[self.agents.len() - 1].goals));
+        Ok(self.agents.len() - 1)
+    }
+
     /// Agent `i`.
     ///
     /// # Errors
@@ -171,7 +219,7 @@ impl World {
         Ok(())
     }
 
-    /// Most agents the world accepts ([`DEFAULT_MAX_AGENTS`] unless set).
+    /// Most agents the world accepts ([`DEFAULT_MAX_AGENTS`](super::DEFAULT_MAX_AGENTS) unless set).
     #[must_use]
     pub fn max_agents(&self) -> usize {
         self.max_agents

@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | this one | 000 §6 | [`World`] and [`Agent`]: many agents with goal queues, the plain step, the state records |
 //! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
-//! | [`edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`edit`] | 000 §6, Fig. 5 | edits of a running world: agents added (under the world's bound), pose reset, new goals (queue and memory restart), the seeded random crowd |
 //! | [`avoid_step`] | 000 §7 | the step with avoidance: plan every funnel, avoid, step |
 //! | [`split`] | 000 §6, Fig. 6 | a world split into contiguous slices that step alone (facing links kept inside one), for the lab's stepping workers |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
@@ -37,7 +37,6 @@ use crate::funnelling::seek::{seek_step, seek_step_committed};
 use crate::funnelling::table::format::TableError;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::update::{Internals, Mode, Update};
-use crate::world::edit::{EditError, DEFAULT_MAX_AGENTS};
 use crate::world::goals::{GoalMotion, GoalSpec, SwitchRule};
 
 /// One agent.
@@ -150,6 +149,14 @@ impl Agent {
 /// so ω decays geometrically (by `1 − kd·dt` a step) and reaches 0 only
 /// when f32 underflows, seconds later.
 pub const REST_OMEGA: f32 = 1e-4;
+
+/// Agents a new [`World`] accepts until [`World::set_max_agents`] says
+/// otherwise: a guard against a runaway loop or a typo filling memory (an
+/// agent with [`RANDOM_GOALS`](edit::RANDOM_GOALS) goals takes about
+/// 1.2 KB, so a million take about 1.2 GB), with room for the native
+/// crowds of half a million agents the parallel step is built for. The
+/// page's bound is [`MAX_AGENTS`](edit::MAX_AGENTS).
+pub const DEFAULT_MAX_AGENTS: usize = 1_000_000;
 
 /// Agents per parallel task of a step: a task's updates (about 0.1 µs
 /// each natively) then outweigh handing it to a thread many times over.
@@ -280,55 +287,6 @@ impl World {
     #[must_use]
     pub fn relaxed_internals(&self, i: usize) -> Option<&RelaxedInternals> {
         self.agents.get(i).map(|a| &a.relaxed)
-    }
-
-    /// Adds an agent; returns its index.
-    ///
-    /// # Errors
-    /// [`EditError::TooManyAgents`] when the world already holds
-    /// [`World::max_agents`]; [`EditError::Param`] for an invalid state or
-    /// goal (NaN, out of range; an agent index that does not exist yet is
-    /// allowed only if it will: checked in `step`).
-    pub fn add_agent(
-        &mut self,
-        state: VehicleState,
-        goals: Vec<GoalSpec>,
-    ) -> Result<usize, EditError> {
-        self.check_room(1)?;
-        state.validate(&self.params)?;
-        for g in &goals {
-            g.validate(&self.params)?;
-        }
-        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
-        let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
-        let internals = if goals.is_empty() {
-            Internals {
-                mode: Mode::EndOfSteering,
-                gamma: state.theta,
-                ..Default::default()
-            }
-        } else {
-            provisional_plan(&self.params, &state, &goal_now)
-        };
-        let memory = goals
-            .first()
-            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
-        let spec = goals.first().copied().unwrap_or_default();
-        self.agents.push(Agent {
-            spec,
-            state,
-            goals,
-            current: 0,
-            memory,
-            internals,
-            relaxed: RelaxedInternals::default(),
-            goal_now,
-            metrics: PathMetrics::default(),
-            finished_at: None,
-        });
-        self.snapshot.push(state);
-        self.facing += usize::from(faces(&self.agents[self.agents.len() - 1].goals));
-        Ok(self.agents.len() - 1)
     }
 
     /// Fills every agent's internals (and relaxed internals) with what its
