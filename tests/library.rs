@@ -201,6 +201,8 @@ fn crowd(n: usize) -> World {
 
 #[test]
 fn the_parallel_step_equals_one_thread_bit_for_bit() {
+    // (Same bits, so comparing the times of the two runs would say
+    // nothing here: benches/parallel_step.rs measures the speed-up.)
     let table = common::table();
     let threads = 4;
     // Big enough for several parallel tasks (`PARALLEL_CHUNK` agents each).
@@ -222,13 +224,25 @@ fn the_parallel_step_equals_one_thread_bit_for_bit() {
         };
         facing.set_goals(i, vec![g]).unwrap();
     }
-    for (name, w) in [("plain", &plain), ("facing", &facing)] {
+    // With avoidance on, the plans and the steps run on every core and
+    // the avoidance between them on one thread.
+    let mut orca = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    orca.spawn_random(1_500, 11, 40.0, 1.3).unwrap();
+    orca.set_avoidance(
+        AvoidanceConfig::with_method(AvoidanceMethod::Orca),
+        Vec::new(),
+    )
+    .unwrap();
+    for (name, w) in [("plain", &plain), ("facing", &facing), ("orca", &orca)] {
         let (h1, w1) = run(1, w, &table, 400);
         let (hn, wn) = run(threads, w, &table, 400);
         assert_eq!(h1, hn, "{name}: the records differ");
         assert_eq!(bits(&w1), bits(&wn), "{name}: the final states differ");
         assert_eq!(w1.time.to_bits(), wn.time.to_bits());
-        let reached = w1.agents.iter().filter(|a| a.current > 0).count();
-        assert!(reached > 1_000, "{name}: {reached} agents reached a goal");
+        let moved = w1.agents.iter().filter(|a| a.metrics.length > 2.0).count();
+        assert!(
+            moved > w1.agents.len() / 2,
+            "{name}: only {moved} agents went 2 m"
+        );
     }
 }

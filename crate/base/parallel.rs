@@ -42,20 +42,21 @@ pub fn threads() -> usize {
 
 /// `f(item)` for every item, each on its own: in parallel on the current
 /// rayon pool natively (at least `min_len` items per task, so that a task's
-/// work outweighs handing it to a thread), sequentially on wasm32. Nothing
+/// work outweighs handing it to a thread), on the calling thread when
+/// that is one task (`min_len` ≥ the items) and always on wasm32. Nothing
 /// is collected, so the order the items run in changes nothing a caller can
 /// see as long as `f` touches only its item.
 pub fn for_each_mut<T: Send>(items: &mut [T], min_len: usize, f: impl Fn(&mut T) + Sync + Send) {
+    // wasm32: one task, the calling thread (Web Workers parallelise there).
+    #[cfg(target_arch = "wasm32")]
+    let _ = min_len;
     #[cfg(not(target_arch = "wasm32"))]
-    {
+    if min_len < items.len() {
         use rayon::prelude::*;
         items.par_iter_mut().with_min_len(min_len).for_each(f);
+        return;
     }
-    #[cfg(target_arch = "wasm32")]
-    {
-        let _ = min_len;
-        items.iter_mut().for_each(f);
-    }
+    items.iter_mut().for_each(f);
 }
 
 /// [`for_each_mut`] with item `i` paired with `out[i·stride .. (i+1)·stride]`
@@ -71,21 +72,51 @@ pub fn for_each_mut_with<T: Send, U: Send>(
     f: impl Fn(&mut T, &mut [U]) + Sync + Send,
 ) {
     assert_eq!(out.len(), items.len() * stride, "one record per item");
+    // wasm32: one task, the calling thread (Web Workers parallelise there).
+    #[cfg(target_arch = "wasm32")]
+    let _ = min_len;
     #[cfg(not(target_arch = "wasm32"))]
-    {
+    if min_len < items.len() {
         use rayon::prelude::*;
         items
             .par_iter_mut()
             .zip(out.par_chunks_exact_mut(stride))
             .with_min_len(min_len)
             .for_each(|(t, o)| f(t, o));
+        return;
     }
+    for (t, o) in items.iter_mut().zip(out.chunks_exact_mut(stride)) {
+        f(t, o);
+    }
+}
+
+/// [`for_each_mut`] with item `i` paired with `with[i]`, read only (a
+/// command per item computed beforehand).
+///
+/// # Panics
+/// If `with` is not as long as `items`.
+pub fn for_each_mut_beside<T: Send, U: Sync>(
+    items: &mut [T],
+    with: &[U],
+    min_len: usize,
+    f: impl Fn(&mut T, &U) + Sync + Send,
+) {
+    assert_eq!(with.len(), items.len(), "one value per item");
+    // wasm32: one task, the calling thread (Web Workers parallelise there).
     #[cfg(target_arch = "wasm32")]
-    {
-        let _ = min_len;
-        for (t, o) in items.iter_mut().zip(out.chunks_exact_mut(stride)) {
-            f(t, o);
-        }
+    let _ = min_len;
+    #[cfg(not(target_arch = "wasm32"))]
+    if min_len < items.len() {
+        use rayon::prelude::*;
+        items
+            .par_iter_mut()
+            .zip(with.par_iter())
+            .with_min_len(min_len)
+            .for_each(|(t, u)| f(t, u));
+        return;
+    }
+    for (t, u) in items.iter_mut().zip(with) {
+        f(t, u);
     }
 }
 

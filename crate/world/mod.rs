@@ -376,8 +376,7 @@ impl World {
             return;
         }
         let metrics_on = self.metrics_on;
-        let parallel =
-            self.agents.len() >= 2 * PARALLEL_CHUNK && crate::base::parallel::threads() > 1;
+        let parallel = self.parallel_chunk() < self.agents.len();
         let (planner, agents) = self.planning(table);
         let dt = planner.p.dt;
         let step = |a: &mut Agent| step_agent(&planner, metrics_on, a);
@@ -431,6 +430,19 @@ impl World {
             snapshot,
         };
         (planner, &mut self.agents)
+    }
+
+    /// Agents per task of a per-agent loop of a step: [`PARALLEL_CHUNK`]
+    /// when the world has at least two chunks of agents and the current
+    /// pool more than one thread, else all of them (one task: the calling
+    /// thread, no hand-over).
+    pub(crate) fn parallel_chunk(&self) -> usize {
+        let n = self.agents.len();
+        if n >= 2 * PARALLEL_CHUNK && crate::base::parallel::threads() > 1 {
+            PARALLEL_CHUNK
+        } else {
+            n.max(1)
+        }
     }
 
     /// Writes the per-agent state into `out` with stride [`STATE_STRIDE`],
