@@ -35,7 +35,14 @@
 //! | [`crowd`] | 003 | crowded path following: Reynolds vs Parker seek with separation |
 //! | [`wander`] | 004 | the random steering toolkit, seven components |
 //! | [`world`] | 000 §6 | many agents with goal queues, stepped with or without avoidance; world edits, the split step, scenario files |
-//! | [`studies`] | 000 §5, 001 §5 | the seeded studies behind the figures: reach, envelope, region, vehicle, avoidance benchmarks (feature `studies`) |
+#![cfg_attr(
+    feature = "studies",
+    doc = "| [`studies`] | 000 §5, 001 §5 | the seeded studies behind the figures: reach, envelope, region, vehicle, avoidance benchmarks (feature `studies`) |"
+)]
+#![cfg_attr(
+    not(feature = "studies"),
+    doc = "| `studies` | 000 §5, 001 §5 | the seeded studies behind the figures: reach, envelope, region, vehicle, avoidance benchmarks (feature `studies`) |"
+)]
 //! | `bindings` | — | the JavaScript boundary (WebAssembly builds only; the npm package `steering-core`) |
 //! | `cli` | — | the command lines' arguments, parsed with clap (feature `cli`, native only) |
 //!
@@ -190,6 +197,7 @@ pub mod world;
 /// user's glam is always this crate's version.
 pub use glam;
 
-/// The JavaScript boundary (WebAssembly builds only).
+// Documented by its own inner doc: an outer doc here would make rustdoc
+// resolve that module's links from the crate root.
 #[cfg(target_arch = "wasm32")]
 pub mod bindings;

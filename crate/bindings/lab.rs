@@ -6,7 +6,7 @@
 //!   a panic (indices are checked, configs go through the core's `validate`);
 //! - typed: configuration objects cross via serde-wasm-bindgen and carry real
 //!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`,
-//!   both in [`lab_types`](super::lab_types));
+//!   both in the `lab_types` module);
 //! - bulk per-agent state crosses as `Float32Array` (one copy per call);
 //! - the core's validation ranges cross too (`ranges()`), so the page
 //!   checks what the core checks.
