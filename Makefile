@@ -9,7 +9,8 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget
+	test-e2e-learn test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
+	npm test-npm test-library-user
 
 setup: setup-rust setup-browser setup-web
 
@@ -35,14 +36,19 @@ setup-web:
 
 # `--features cli,counters`: the command lines and the tests that run them as
 # a user does; the table's read counters for the counted cost claims.
+# `missing_docs` is denied in the crate root, so clippy refuses an
+# undocumented public item; rustdoc's warnings (broken links) fail here too.
 lint:
 	cargo fmt --all -- --check
 	cargo clippy --all-targets --features cli,counters -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib --no-default-features -- -D warnings
+	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --features cli
+	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --target wasm32-unknown-unknown
 
 test-native:
 	cargo test --all-targets --features cli,counters
+	cargo test --doc --features cli,counters
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).
@@ -173,7 +179,30 @@ bench-wasm-native: setup-web wasm
 	node web/test/wasmnative.mjs 10000
 	node web/test/wasmnative.mjs 100000
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid
+# The wasm core as an npm package (npm/): the baseline module without the
+# default features (no studies, no embedded table: the package ships
+# eta.bin beside it), its own target directory so that it and `make wasm`
+# do not rebuild each other; then `npm pack` into target/npm. wasm-pack's
+# pkg/.gitignore is removed: npm would read it and leave the module out.
+npm: setup-rust
+	CARGO_TARGET_DIR=target/npm-wasm wasm-pack build --target web --release --out-dir npm/pkg --no-pack -- --no-default-features
+	rm -f npm/pkg/.gitignore npm/pkg/package.json
+	cp tables/eta.bin npm/eta.bin
+	mkdir -p target/npm
+	cd npm && npm pack --pack-destination ../target/npm
+	@ls -l target/npm/steering-core-*.tgz | awk '{print "npm tarball: " $$9 ", " $$5 " bytes"}'
+
+# The tarball installed into a scratch folder, its example page served
+# from there alone, run in Chromium to an oriented arrival (node:test).
+test-npm: setup-web setup-browser npm
+	node --test npm/test/
+
+# A crate that depends on the library as a user's would (examples/library-user:
+# default features, its table from the library); fails unless its agents arrive.
+test-library-user:
+	cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user
+
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-npm test-library-user
 	@echo "make test: all suites passed"
 
 demo: setup web-build

@@ -181,12 +181,15 @@ fn the_random_crowd_refuses_bad_squares_and_too_many_agents() {
         let e = w.spawn_random(1, 1, extent, 1.0).unwrap_err();
         assert!(e.to_string().contains("extent"), "{extent}: {e}");
     }
+    // The page's bound (a world's own is the caller's choice).
+    w.set_max_agents(MAX_AGENTS);
     let e = w.spawn_random(MAX_AGENTS + 1, 1, 10.0, 1.0).unwrap_err();
     assert_eq!(
         e,
         EditError::TooManyAgents {
             adding: MAX_AGENTS + 1,
-            count: 0
+            count: 0,
+            max: MAX_AGENTS
         }
     );
     w.spawn_random(1, 1, 10.0, 1.0).unwrap();

@@ -6,7 +6,7 @@
 //!   a panic (indices are checked, configs go through the core's `validate`);
 //! - typed: configuration objects cross via serde-wasm-bindgen and carry real
 //!   TypeScript types (`typescript_custom_section` + `unchecked_*_type`,
-//!   both in [`lab_types`](super::lab_types));
+//!   both in the `lab_types` module);
 //! - bulk per-agent state crosses as `Float32Array` (one copy per call);
 //! - the core's validation ranges cross too (`ranges()`), so the page
 //!   checks what the core checks.
@@ -424,9 +424,12 @@ impl Lab {
 /// Every world the lab holds (new, forked, cleared, a scenario's) goes
 /// through here: without the agents' path metrics, which no binding reads
 /// (they cost a square root, an angle difference and the limit checks per
-/// agent per step; the states are the same bits, `World::set_metrics`).
+/// agent per step; the states are the same bits, `World::set_metrics`),
+/// and bounded by the page's own agent count (`MAX_AGENTS`: its controls
+/// go to 100,000 random agents beside the playground agent).
 fn lab_world(mut world: World) -> World {
     world.set_metrics(false);
+    world.set_max_agents(crate::world::edit::MAX_AGENTS);
     world
 }
 

@@ -11,7 +11,7 @@
 //! | [`wander`] | `wander.html` | `WanderLab`: the random steering toolkit (paper 004) |
 //! | [`avoid`] | `index.html` | `Lab`'s avoidance: the method in force, the obstacles as a flat array for drawing and dragging, the overlap count |
 //! | `split` | `index.html` workers | `Lab.splitRanges` / `retainRange`, a world's slices for the stepping workers, and a hash of the state |
-//! | [`boundary`] | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
+//! | `boundary` | — | `from_js` / `to_js` / `js_err`: decoding that names the field at fault |
 //! | [`layout`] | all | `Mode`, `StateField`: the core's numbers by name, checked at compile time |
 
 pub mod avoid;

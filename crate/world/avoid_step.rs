@@ -35,20 +35,24 @@ impl World {
         // 1. Every funnel plans (mode memory advances as in a plain step).
         // The buffer is taken out and put back (no allocation) so that the
         // planner may borrow the world beside it.
+        // Each agent plans alone (on every core natively, as in the plain
+        // step); the avoidance between them (2.) runs on one thread.
         let mut preferred = core::mem::take(&mut self.preferred);
         preferred.clear();
+        preferred.resize(self.agents.len(), (0.0, 0.0));
+        let chunk = self.parallel_chunk();
         let (planner, agents) = self.planning(table);
         let (p, t) = (*planner.p, planner.t);
-        for a in agents {
-            if a.done() {
+        crate::base::parallel::for_each_mut_with(agents, &mut preferred, 1, chunk, |a, pref| {
+            pref[0] = if a.done() {
                 let speed = a.cruise_speed();
                 a.hold(speed);
-                preferred.push((a.state.theta, speed));
+                (a.state.theta, speed)
             } else {
                 planner.plan(a, true);
-                preferred.push((a.internals.gamma, a.internals.v_dt));
-            }
-        }
+                (a.internals.gamma, a.internals.v_dt)
+            };
+        });
         self.preferred = preferred;
         // Right of way: nearer the current goal first, finished agents last.
         self.avoider.priority.clear();
@@ -82,7 +86,8 @@ impl World {
         );
         // 3. Every agent steps with its command; goals switch as usual.
         let metrics_on = self.metrics_on;
-        for (a, c) in self.agents.iter_mut().zip(&self.avoider.commands) {
+        let commands = &self.avoider.commands;
+        crate::base::parallel::for_each_mut_beside(&mut self.agents, commands, chunk, |a, c| {
             let prev = a.state;
             if c.active && c.walls {
                 avoidance_step(&p, &mut a.state, c.heading, c.speed);
@@ -99,7 +104,7 @@ impl World {
             if metrics_on {
                 a.metrics.add(&p, &prev, &a.state);
             }
-        }
+        });
         self.time += p.dt;
     }
 }

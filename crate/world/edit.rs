@@ -1,15 +1,21 @@
 //! Edits of a running world (the logic of the lab page's drags, sliders
-//! and performance runs lives in the core, the bindings only convert): a pose reset or a new goal queue restarts the agent's queue and
-//! its mode memory (paper 000 Fig. 5's Position_only latch), and the seeded
-//! random crowd of the performance runs. Every edit validates first and
-//! changes nothing when it refuses, so a front end can pass user input
-//! straight through.
+//! and performance runs lives in the core, the bindings only convert):
+//! agents added, never past the world's bound ([`World::max_agents`], the
+//! caller's choice); a pose reset or a new goal queue restarts the agent's
+//! queue and its mode memory (paper 000 Fig. 5's Position_only latch); and
+//! the seeded random crowd of the performance runs. Every edit validates
+//! first and changes nothing when it refuses, so a front end can pass user
+//! input straight through.
 
 use glam::Vec2;
 
+use crate::base::metrics::PathMetrics;
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::goal::{FunnelMemory, Goal};
+use crate::funnelling::relaxed::RelaxedInternals;
+use crate::funnelling::update::{Internals, Mode};
 use crate::world::precision;
+use crate::world::{faces, provisional_plan};
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent, World};
 
 /// Fastest a goal may move by itself, m/s: each component of a linear
@@ -18,7 +24,8 @@ use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent,
 /// range, a circle of 1e6 m at 100 rad/s would move its goal at 1e8 m/s).
 pub const MAX_GOAL_MOTION_SPEED: f32 = crate::base::ranges::MOTION_VX.max as f32;
 
-/// Agents a world may hold: the lab's playground agent and
+/// Agents the lab's page lets a world hold ([`World::set_max_agents`] in
+/// its bindings): the playground agent and
 /// [`AGENTS`](crate::base::ranges::AGENTS)' largest count of random
 /// agents (the page's performance runs go to 100,000).
 pub const MAX_AGENTS: usize = crate::base::ranges::AGENTS.max as usize + 1;
@@ -37,12 +44,15 @@ pub enum EditError {
         /// Agents in the world.
         count: usize,
     },
-    /// Adding the agents would exceed [`MAX_AGENTS`].
+    /// Adding the agents would exceed the world's bound
+    /// ([`World::max_agents`]).
     TooManyAgents {
         /// Agents asked for.
         adding: usize,
         /// Agents already in the world.
         count: usize,
+        /// The world's bound.
+        max: usize,
     },
     /// A pose, goal or setting is out of range.
     Param(ParamError),
@@ -52,9 +62,9 @@ impl core::fmt::Display for EditError {
     fn fmt(&self, f: &mut core::fmt::Formatter<'_>) -> core::fmt::Result {
         match self {
             Self::NoAgent { index, count } => write!(f, "no agent {index} (there are {count})"),
-            Self::TooManyAgents { adding, count } => write!(
+            Self::TooManyAgents { adding, count, max } => write!(
                 f,
-                "{adding} more agents would exceed {MAX_AGENTS} (there are {count})"
+                "{adding} more agents would exceed {max} (there are {count})"
             ),
             Self::Param(e) => e.fmt(f),
         }
@@ -109,6 +119,55 @@ impl GoalSpec {
 /// a performance run): each validates first and changes nothing when it
 /// refuses, so a front end can pass user input straight through.
 impl World {
+    /// Adds an agent; returns its index.
+    ///
+    /// # Errors
+    /// [`EditError::TooManyAgents`] when the world already holds
+    /// [`World::max_agents`]; [`EditError::Param`] for an invalid state or
+    /// goal (NaN, out of range; an agent index that does not exist yet is
+    /// allowed only if it will: checked in `step`).
+    pub fn add_agent(
+        &mut self,
+        state: VehicleState,
+        goals: Vec<GoalSpec>,
+    ) -> Result<usize, EditError> {
+        self.check_room(1)?;
+        state.validate(&self.params)?;
+        for g in &goals {
+            g.validate(&self.params)?;
+        }
+        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
+        let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
+        let internals = if goals.is_empty() {
+            Internals {
+                mode: Mode::EndOfSteering,
+                gamma: state.theta,
+                ..Default::default()
+            }
+        } else {
+            provisional_plan(&self.params, &state, &goal_now)
+        };
+        let memory = goals
+            .first()
+            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
+        let spec = goals.first().copied().unwrap_or_default();
+        self.agents.push(Agent {
+            spec,
+            state,
+            goals,
+            current: 0,
+            memory,
+            internals,
+            relaxed: RelaxedInternals::default(),
+            goal_now,
+            metrics: PathMetrics::default(),
+            finished_at: None,
+        });
+        self.snapshot.push(state);
+        self.facing += usize::from(faces(&self.agents[self.agents.len() - 1].goals));
+        Ok(self.agents.len() - 1)
+    }
+
     /// Agent `i`.
     ///
     /// # Errors
@@ -142,16 +201,35 @@ impl World {
         a.finished_at = None;
     }
 
-    /// Checks that `adding` more agents fit under [`MAX_AGENTS`].
+    /// Checks that `adding` more agents fit under [`World::max_agents`]
+    /// (every path that adds agents checks it: [`World::add_agent`],
+    /// [`World::spawn_random`], scenario worlds through `add_agent`).
     ///
     /// # Errors
     /// [`EditError::TooManyAgents`].
     pub fn check_room(&self, adding: usize) -> Result<(), EditError> {
         let count = self.agents.len();
-        if count.saturating_add(adding) > MAX_AGENTS {
-            return Err(EditError::TooManyAgents { adding, count });
+        if count.saturating_add(adding) > self.max_agents {
+            return Err(EditError::TooManyAgents {
+                adding,
+                count,
+                max: self.max_agents,
+            });
         }
         Ok(())
+    }
+
+    /// Most agents the world accepts ([`DEFAULT_MAX_AGENTS`](super::DEFAULT_MAX_AGENTS) unless set).
+    #[must_use]
+    pub fn max_agents(&self) -> usize {
+        self.max_agents
+    }
+
+    /// Sets the most agents the world accepts, the caller's choice (the
+    /// lab's page keeps [`MAX_AGENTS`]). Agents already in stay; while
+    /// they are more than `max` no agent is added.
+    pub fn set_max_agents(&mut self, max: usize) {
+        self.max_agents = max;
     }
 
     /// Puts agent `i` at rest at `pos`, heading `theta` (wrapped), and
@@ -195,7 +273,7 @@ impl World {
     ///
     /// # Errors
     /// `extent` outside [0.001, 1e5] or not finite, `speed` not finite, or more than
-    /// [`MAX_AGENTS`] agents in all; nothing is added then.
+    /// [`World::max_agents`] agents in all; nothing is added then.
     pub fn spawn_random(
         &mut self,
         n: usize,

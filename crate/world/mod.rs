@@ -9,7 +9,7 @@
 //! |---|---|---|
 //! | this one | 000 §6 | [`World`] and [`Agent`]: many agents with goal queues, the plain step, the state records |
 //! | [`goals`] | 000 §6 | goal-queue entries: motion (static, linear, circle, facing an agent), switch rule, which goals may halt |
-//! | [`edit`] | 000 §6, Fig. 5 | edits of a running world: pose reset, new goals (queue and memory restart), the seeded random crowd |
+//! | [`edit`] | 000 §6, Fig. 5 | edits of a running world: agents added (under the world's bound), pose reset, new goals (queue and memory restart), the seeded random crowd |
 //! | [`avoid_step`] | 000 §7 | the step with avoidance: plan every funnel, avoid, step |
 //! | [`split`] | 000 §6, Fig. 6 | a world split into contiguous slices that step alone (facing links kept inside one), for the lab's stepping workers |
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
@@ -34,6 +34,7 @@ use crate::funnelling::controller::ControllerKind;
 use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
 use crate::funnelling::seek::{seek_step, seek_step_committed};
+use crate::funnelling::table::format::TableError;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::update::{Internals, Mode, Update};
 use crate::world::goals::{GoalMotion, GoalSpec, SwitchRule};
@@ -82,10 +83,42 @@ impl Agent {
         }
     }
 
-    /// True once every goal is done.
+    /// True once every goal is done: each goal's [`SwitchRule`] has fired
+    /// (an agent without goals is done from the start).
+    ///
+    /// What the last goal's rule promises when it fires:
+    /// - [`SwitchRule::EndOfSteering`]: the controller declared
+    ///   End_of_Steering, so the vehicle was inside both tolerances
+    ///   (`D_tol`, `ε_tol`) at that update. For a *halting* goal the test
+    ///   is on the pose the vehicle will rest at, not on the current one
+    ///   (paper 000 Fig. 5 as [`tolerance_phase`] implements it): the
+    ///   whole braking distance lies inside `D_tol` and the heading, now
+    ///   and after the rotation still to come, inside `ε_tol`. The vehicle
+    ///   may still be moving then (braking at full deceleration with its
+    ///   heading held); it comes to rest inside both tolerances a little
+    ///   later, which [`Agent::at_rest`] says.
+    /// - [`SwitchRule::Tolerance`]: the position tolerance was entered
+    ///   (for a halting goal, with the braking distance inside it); the
+    ///   orientation is not checked.
+    ///
+    /// Past its last goal an agent rests if that goal halts, else cruises
+    /// on at its speed, heading held ([`Agent::cruise_speed`]).
+    ///
+    /// [`tolerance_phase`]: crate::funnelling::approach::tolerance_phase
     #[must_use]
     pub fn done(&self) -> bool {
         self.current >= self.goals.len()
+    }
+
+    /// True once the agent is [`done`](Agent::done) and stopped: forward
+    /// speed exactly 0 and angular speed at most [`REST_OMEGA`] (the
+    /// heading then turns by less than `REST_OMEGA / kd`, 1.7e-5 rad for
+    /// the pedestrian, before it stops). Only an agent whose last goal
+    /// halts (or that had no goal) comes to rest; one past a non-halting
+    /// goal cruises on and is never at rest.
+    #[must_use]
+    pub fn at_rest(&self) -> bool {
+        self.done() && self.state.v == 0.0 && self.state.omega.abs() <= REST_OMEGA
     }
 
     /// The speed of an agent past its last goal: rest if that goal halts
@@ -111,7 +144,40 @@ impl Agent {
     }
 }
 
-/// The world.
+/// Angular speed below which a done agent counts as at rest
+/// ([`Agent::at_rest`]), rad/s: past a halting goal the heading is held,
+/// so ω decays geometrically (by `1 − kd·dt` a step) and reaches 0 only
+/// when f32 underflows, seconds later.
+pub const REST_OMEGA: f32 = 1e-4;
+
+/// Agents a new [`World`] accepts until [`World::set_max_agents`] says
+/// otherwise: a guard against a runaway loop or a typo filling memory (an
+/// agent with [`RANDOM_GOALS`](edit::RANDOM_GOALS) goals takes about
+/// 1.2 KB, so a million take about 1.2 GB), with room for the native
+/// crowds of half a million agents the parallel step is built for. The
+/// page's bound is [`MAX_AGENTS`](edit::MAX_AGENTS).
+pub const DEFAULT_MAX_AGENTS: usize = 1_000_000;
+
+/// Agents per parallel task of a step: a task's updates (about 0.1 µs
+/// each natively) then outweigh handing it to a thread many times over.
+pub const PARALLEL_CHUNK: usize = 512;
+
+/// The world: agents with their goal queues, stepped together at the
+/// vehicle's `dt`.
+///
+/// The η table is not part of the world: every [`World::step`] borrows
+/// it, so one table serves many worlds. It must have been built for the
+/// world's vehicle limits ([`World::check_table`]; [`World::try_step`]
+/// checks and steps).
+///
+/// Natively a step updates the agents on every core of the current rayon
+/// pool ([`PARALLEL_CHUNK`] agents per task, worlds of fewer than two
+/// chunks on the calling thread); the states are the same bits on one
+/// thread or many, because within a step each agent reads only its own
+/// record and the states of the start of the step. Run a world on one
+/// thread by stepping it inside a one-thread pool's `install`. On wasm32
+/// a step is sequential (the lab's page splits a world over Web Workers,
+/// [`World::split_ranges`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct World {
     /// Vehicle parameters shared by every agent.
@@ -145,6 +211,8 @@ pub struct World {
     /// Whether a step adds to every agent's [`Agent::metrics`] (on unless
     /// set with [`World::set_metrics`]).
     pub(crate) metrics_on: bool,
+    /// Most agents the world accepts ([`World::set_max_agents`]).
+    pub(crate) max_agents: usize,
 }
 
 impl World {
@@ -169,6 +237,7 @@ impl World {
             preferred: Vec::new(),
             avoider: Avoider::default(),
             metrics_on: true,
+            max_agents: DEFAULT_MAX_AGENTS,
         })
     }
 
@@ -220,52 +289,6 @@ impl World {
         self.agents.get(i).map(|a| &a.relaxed)
     }
 
-    /// Adds an agent; returns its index.
-    ///
-    /// # Errors
-    /// An invalid state or goal (NaN, out of range, an agent index that
-    /// does not exist yet is allowed only if it will: checked in `step`).
-    pub fn add_agent(
-        &mut self,
-        state: VehicleState,
-        goals: Vec<GoalSpec>,
-    ) -> Result<usize, ParamError> {
-        state.validate(&self.params)?;
-        for g in &goals {
-            g.validate(&self.params)?;
-        }
-        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
-        let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
-        let internals = if goals.is_empty() {
-            Internals {
-                mode: Mode::EndOfSteering,
-                gamma: state.theta,
-                ..Default::default()
-            }
-        } else {
-            provisional_plan(&self.params, &state, &goal_now)
-        };
-        let memory = goals
-            .first()
-            .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
-        let spec = goals.first().copied().unwrap_or_default();
-        self.agents.push(Agent {
-            spec,
-            state,
-            goals,
-            current: 0,
-            memory,
-            internals,
-            relaxed: RelaxedInternals::default(),
-            goal_now,
-            metrics: PathMetrics::default(),
-            finished_at: None,
-        });
-        self.snapshot.push(state);
-        self.facing += usize::from(faces(&self.agents[self.agents.len() - 1].goals));
-        Ok(self.agents.len() - 1)
-    }
-
     /// Fills every agent's internals (and relaxed internals) with what its
     /// controller chooses for the current state — the plan the next
     /// [`World::step`] makes — without moving anything or changing the mode
@@ -297,10 +320,38 @@ impl World {
         self.facing = self.agents.iter().filter(|a| faces(&a.goals)).count();
     }
 
+    /// Checks that `table` was built for this world's vehicle limits, bit
+    /// for bit (η is only exact for the limits it was simulated with).
+    ///
+    /// # Errors
+    /// [`TableError::ParamsMismatch`] naming the first limit that differs,
+    /// with the table's value and the world's.
+    pub fn check_table(&self, table: &EtaTable) -> Result<(), TableError> {
+        table.check_params(&self.params)
+    }
+
+    /// [`World::step`] on a table checked first ([`World::check_table`]):
+    /// what a library user calls. The check compares nine numbers, nothing
+    /// beside a step's cost.
+    ///
+    /// # Errors
+    /// A table built for other vehicle limits; nothing is stepped then.
+    pub fn try_step(&mut self, table: &EtaTable) -> Result<(), TableError> {
+        self.check_table(table)?;
+        self.step(table);
+        Ok(())
+    }
+
     /// Advances every agent by one time step. Agents see each other's
-    /// states from the start of the step, so the order does not matter.
+    /// states from the start of the step, so the order does not matter
+    /// (and natively they are updated on every core, see [`World`]).
+    ///
+    /// The table is not checked: the lab's page steps on the table it has
+    /// while the one for newly set limits is being built (its predictions
+    /// are then approximate, and the page says so). Check it once with
+    /// [`World::check_table`], or step with [`World::try_step`].
     pub fn step(&mut self, table: &EtaTable) {
-        self.step_each(table, |_, _| {});
+        self.step_each(table, None);
     }
 
     /// [`World::step`], then the records [`World::write_state`] writes,
@@ -309,44 +360,47 @@ impl World {
     /// over the agents instead of two; the same floats).
     pub fn step_writing(&mut self, table: &EtaTable, out: &mut Vec<f32>) {
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
-        self.step_each(table, |i, a| {
-            write_record(a, &mut out[i * STATE_STRIDE..(i + 1) * STATE_STRIDE]);
-        });
+        self.step_each(table, Some(out));
     }
 
-    /// One step; `after(i, agent)` once agent `i` has stepped (with the
-    /// avoidance on, once every agent has: its step is whole-world).
+    /// One step, each agent's record written to `out` (when given) once it
+    /// has stepped (with the avoidance on, once every agent has: its step
+    /// is whole-world).
     #[inline(always)]
-    fn step_each(&mut self, table: &EtaTable, mut after: impl FnMut(usize, &Agent)) {
+    fn step_each(&mut self, table: &EtaTable, out: Option<&mut [f32]>) {
         if self.avoidance.method != AvoidanceMethod::Off {
             self.step_avoiding(table);
-            for (i, a) in self.agents.iter().enumerate() {
-                after(i, a);
+            if let Some(out) = out {
+                self.write_records(out);
             }
             return;
         }
         let metrics_on = self.metrics_on;
+        let parallel = self.parallel_chunk() < self.agents.len();
         let (planner, agents) = self.planning(table);
-        let (p, t) = (*planner.p, planner.t);
-        for (i, a) in agents.iter_mut().enumerate() {
-            let prev = a.state;
-            if a.done() {
-                // All goals done: rest if the last goal halts, else cruise on.
-                let speed = a.cruise_speed();
-                let hold = a.state.theta;
-                seek_step(&p, &mut a.state, hold, speed);
-                a.hold(speed);
-            } else {
-                let spec = planner.plan(a, true);
-                seek_step_committed(&p, &mut a.state, a.internals.gamma, a.internals.v_dt);
-                advance_queue(a, &spec, t);
+        let dt = planner.p.dt;
+        let step = |a: &mut Agent| step_agent(&planner, metrics_on, a);
+        match (parallel, out) {
+            (false, None) => agents.iter_mut().for_each(step),
+            (false, Some(out)) => {
+                for (a, o) in agents.iter_mut().zip(out.chunks_exact_mut(STATE_STRIDE)) {
+                    step(a);
+                    write_record(a, o);
+                }
             }
-            if metrics_on {
-                a.metrics.add(&p, &prev, &a.state);
-            }
-            after(i, a);
+            (true, None) => crate::base::parallel::for_each_mut(agents, PARALLEL_CHUNK, step),
+            (true, Some(out)) => crate::base::parallel::for_each_mut_with(
+                agents,
+                out,
+                STATE_STRIDE,
+                PARALLEL_CHUNK,
+                |a, o| {
+                    step(a);
+                    write_record(a, o);
+                },
+            ),
         }
-        self.time += p.dt;
+        self.time += dt;
     }
 
     /// What every per-agent loop of a step begins with (plan, step, the
@@ -378,14 +432,55 @@ impl World {
         (planner, &mut self.agents)
     }
 
+    /// Agents per task of a per-agent loop of a step: [`PARALLEL_CHUNK`]
+    /// when the world has at least two chunks of agents and the current
+    /// pool more than one thread, else all of them (one task: the calling
+    /// thread, no hand-over).
+    pub(crate) fn parallel_chunk(&self) -> usize {
+        let n = self.agents.len();
+        if n >= 2 * PARALLEL_CHUNK && crate::base::parallel::threads() > 1 {
+            PARALLEL_CHUNK
+        } else {
+            n.max(1)
+        }
+    }
+
     /// Writes the per-agent state into `out` with stride [`STATE_STRIDE`],
     /// each float at its [`StateField`] offset (the page reads the record by
     /// those names, never by number). `out` is resized if needed.
     pub fn write_state(&self, out: &mut Vec<f32>) {
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
+        self.write_records(out);
+    }
+
+    /// Every agent's record into `out` (exactly agents × [`STATE_STRIDE`]).
+    fn write_records(&self, out: &mut [f32]) {
         for (a, o) in self.agents.iter().zip(out.chunks_exact_mut(STATE_STRIDE)) {
             write_record(a, o);
         }
+    }
+}
+
+/// One agent's share of a plain step (no avoidance): plan towards the
+/// current goal and step, or, all goals done, rest if the last goal halts,
+/// else cruise on; then the path metrics. Reads nothing of another agent
+/// but the planner's snapshot, so agents step in any order, on any thread.
+#[inline(always)]
+fn step_agent(planner: &Planner<'_>, metrics_on: bool, a: &mut Agent) {
+    let p = planner.p;
+    let prev = a.state;
+    if a.done() {
+        let speed = a.cruise_speed();
+        let hold = a.state.theta;
+        seek_step(p, &mut a.state, hold, speed);
+        a.hold(speed);
+    } else {
+        let spec = planner.plan(a, true);
+        seek_step_committed(p, &mut a.state, a.internals.gamma, a.internals.v_dt);
+        advance_queue(a, &spec, planner.t);
+    }
+    if metrics_on {
+        a.metrics.add(p, &prev, &a.state);
     }
 }
 

@@ -145,6 +145,9 @@ pub enum TableError {
         /// Value of the running controller.
         controller: f32,
     },
+    /// No table can be built for these vehicle limits (the generator's
+    /// ranges and ratios, [`check_vehicle`](super::spec::check_vehicle)).
+    Vehicle(String),
 }
 
 impl fmt::Display for TableError {
@@ -171,6 +174,7 @@ impl fmt::Display for TableError {
                 f,
                 "η table was built for {field} = {table}, but the controller uses {controller}: regenerate the table"
             ),
+            Self::Vehicle(m) => write!(f, "no η table can be built for this vehicle: {m}"),
         }
     }
 }

@@ -13,9 +13,11 @@
 //! | [`spec`] | 000 §3 | what the table samples: anisotropic axes scaled with the vehicle, one entry's reach simulation (the same seek code), mirror symmetry |
 //! | [`batch`] | 000 §3 | the entries' reach simulations interleaved several at a time, the same bits |
 //! | [`generate`] | 000 §3 | the whole table in parallel, and a browser worker's slice of it |
+//! | [`embedded`] | — | the table of any vehicle for a library user ([`EtaTable::for_vehicle`](lookup::EtaTable::for_vehicle)): the pedestrian's compiled in (feature `embedded-table`), others generated |
 
 pub mod batch;
 pub mod codec;
+pub mod embedded;
 pub mod format;
 pub mod generate;
 pub mod grid;

@@ -52,7 +52,12 @@ use crate::funnelling::table::format::{BuildParams, AXES, FLAG_ETA_VALID, FLAG_R
 /// One generated entry: (η, desired-or-fallback speed, flags).
 pub type Entry = (f32, f32, u8);
 
-/// Samples per axis of the committed table: D, α, ω fraction, v_c, v_d.
+/// The sample counts of the committed table's layout, per axis: D, α, ω
+/// fraction, v_c, v_d. Each is the number of samples on its axis except
+/// α's: 36 is the number of *front* steps in a full turn (10°, so
+/// `anisotropic_alphas(360° / 36)`), which the denser spacing behind gives
+/// 56 samples ([`anisotropic_alphas`]); the table has
+/// 16 × 56 × 5 × 9 × 9 = 362,880 entries.
 pub const DEFAULT_COUNTS: [usize; AXES] = [16, 36, 5, 9, 9];
 
 /// The anisotropic α axis (paper 001 Fig. 3a): spacing `step` degrees in
