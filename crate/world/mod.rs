@@ -33,7 +33,7 @@ use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
 use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
-use crate::funnelling::seek::{seek_step, seek_step_committed};
+use crate::funnelling::seek::seek_step;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::update::{Internals, Mode, Update};
 use crate::world::goals::{GoalMotion, GoalSpec, SwitchRule};
@@ -338,7 +338,9 @@ impl World {
                 a.hold(speed);
             } else {
                 let spec = planner.plan(a, true);
-                seek_step_committed(&p, &mut a.state, a.internals.gamma, a.internals.v_dt);
+                planner
+                    .funnel
+                    .seek_step(&p, &mut a.state, a.internals.gamma, a.internals.v_dt);
                 advance_queue(a, &spec, t);
             }
             if metrics_on {
