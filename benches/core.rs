@@ -1,8 +1,8 @@
 //! Cost of the core pieces, measured side by side in one run: one seek
-//! step (the baseline), one η-table lookup (issue: lookup ≤ 10× seek) and
+//! step (the baseline), one η-table lookup (target: ≤ 10× seek) and
 //! one funnelling update — plan plus the committed seek step — for near
 //! (1–4 m) and far (20–30 m) targets, for the default μ bound and the two
-//! literal ones (issue: funnelling ≤ 4× seek); and `crate::base::trig::atan2`
+//! literal ones (target: ≤ 4× seek); and `crate::base::trig::atan2`
 //! against std's `atan2`.
 //!
 //! `cargo bench --bench core` (add `-- --warm-up-time 1 --measurement-time 2`
@@ -263,8 +263,8 @@ fn ratio() {
             }
         }
     }
-    // A table at paper 000's own size (43,200 entries, issue 19; counts as
-    // in tests/fidelity.rs), generated here (0.1 s), beside ours.
+    // A table at paper 000's own size (43,200 entries; counts as in
+    // tests/fidelity.rs), generated here (0.1 s), beside ours.
     let small = steering::funnelling::table::spec::TableSpec::with_counts(
         VehicleParams::default(),
         [10, 24, 5, 4, 6],

@@ -91,7 +91,7 @@ const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15
 
 /// Ours (defaults, then the paper arc variants), then like for like the
 /// paper's literal standard controller against its literal relaxed one
-/// (issue 19: Table 1's "relaxed about 50 % cheaper" is against that).
+/// (Table 1's "relaxed about 50 % cheaper" is against that).
 fn controllers() -> [(&'static str, Controller); 6] {
     let f = FunnelConfig::default();
     let lit = steering::studies::envelope::literal_config();
