@@ -517,6 +517,7 @@ impl EtaTable {
     #[must_use]
     #[inline(never)]
     pub fn lookup_closest(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Lookup {
+        count(Read::Lookup);
         let mut clamped = false;
         let mut pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
         let nearest = |k: usize| {
@@ -564,8 +565,8 @@ impl EtaTable {
 /// where timings only give ratios.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Read {
-    /// One funnelling lookup ([`EtaTable::lookup`]); its blends are
-    /// counted on their own.
+    /// One funnelling lookup ([`EtaTable::lookup`] or
+    /// [`EtaTable::lookup_closest`]); its blends are counted on their own.
     Lookup,
     /// A multilinear blend of the 32 corners around a query.
     Blend,
