@@ -143,7 +143,11 @@ impl Reading {
     /// The reading `funnel` and `relaxed` are exactly, if any (the relaxed
     /// settings count only for the relaxed controller).
     #[must_use]
-    pub fn of(kind: ControllerKind, funnel: &FunnelConfig, relaxed: &RelaxedConfig) -> Option<Self> {
+    pub fn of(
+        kind: ControllerKind,
+        funnel: &FunnelConfig,
+        relaxed: &RelaxedConfig,
+    ) -> Option<Self> {
         [Self::Ours, Self::Paper].into_iter().find(|r| {
             r.funnel() == *funnel && (kind != ControllerKind::Relaxed || r.relaxed() == *relaxed)
         })

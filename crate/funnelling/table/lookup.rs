@@ -527,7 +527,10 @@ impl EtaTable {
         let i = (0..AXES).map(nearest).sum::<usize>();
         let reachable = self.flags.get(i).is_some_and(|f| f & FLAG_REACHABLE != 0);
         let (v_dt, eta) = if reachable {
-            (v_d, self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.full)))
+            (
+                v_d,
+                self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.full)),
+            )
         } else {
             let v_dt = self
                 .v_fallback
