@@ -729,9 +729,9 @@ fn p000_sec3_proactive_speed_makes_seek_reach_in_all_cases() {
     );
 }
 
-/// The mode one update chooses for a vehicle at rest on the goal's centre,
-/// heading `err` off β.
-fn mode_at(t: &EtaTable, cfg: FunnelConfig, err: f32, eps: f32) -> Mode {
+/// The mode one update chooses for a vehicle at rest near the goal's
+/// centre, heading `err` off β.
+fn mode_at(t: &EtaTable, cfg: FunnelConfig, err: f32, eps: f32, halting: bool) -> Mode {
     let p = t.params().vehicle;
     let g = Goal {
         pos: Vec2::new(0.0, 0.0),
@@ -739,7 +739,7 @@ fn mode_at(t: &EtaTable, cfg: FunnelConfig, err: f32, eps: f32) -> Mode {
         d_tol: 0.25,
         eps_tol: eps,
         speed: 1.3,
-        halting: true,
+        halting,
         vel: Vec2::ZERO,
     };
     let mut s = VehicleState::new(Vec2::new(0.05, -0.02), 0.5 + err, 0.0, 0.0);
@@ -758,24 +758,18 @@ fn mode_at(t: &EtaTable, cfg: FunnelConfig, err: f32, eps: f32) -> Mode {
 fn p000_fig5_end_of_steering_at_the_orientation_tolerance() {
     // Fig. 5: inside the position tolerance, End_of_Steering when
     // |β − θ| < ε_tol, else Orientation_only. At 0.9·ε_tol and 1.1·ε_tol,
-    // either side of β, for both readings and several tolerances.
+    // either side of β, halting or not, for both readings and several
+    // tolerances.
     let t = table();
     for cfg in [FunnelConfig::paper_000(), FunnelConfig::default()] {
         for eps_deg in [2.0f32, 5.0, 20.0] {
             let eps = eps_deg.to_radians();
-            for sign in [-1.0, 1.0] {
-                let inside = mode_at(&t, cfg, sign * 0.9 * eps, eps);
-                let outside = mode_at(&t, cfg, sign * 1.1 * eps, eps);
-                assert_eq!(
-                    inside,
-                    Mode::EndOfSteering,
-                    "{cfg:?}, ε {eps_deg}°, {sign}·0.9"
-                );
-                assert_eq!(
-                    outside,
-                    Mode::OrientationOnly,
-                    "{cfg:?}, ε {eps_deg}°, {sign}·1.1"
-                );
+            for (sign, halting) in [(-1.0, false), (1.0, false), (-1.0, true), (1.0, true)] {
+                let inside = mode_at(&t, cfg, sign * 0.9 * eps, eps, halting);
+                let outside = mode_at(&t, cfg, sign * 1.1 * eps, eps, halting);
+                let case = format!("{cfg:?}, ε {eps_deg}°, halting {halting}, {sign}·");
+                assert_eq!(inside, Mode::EndOfSteering, "{case}0.9");
+                assert_eq!(outside, Mode::OrientationOnly, "{case}1.1");
             }
         }
     }
