@@ -54,8 +54,11 @@ fn scenario(base: &str, seed: u64, reading: Reading, kind: ControllerKind) -> Sc
     sc
 }
 
+/// Every agent's trajectory, every step.
+type Traces = Vec<Vec<Vec2>>;
+
 /// Every agent's trajectory, every step, and its (length, ∫|κ|, finished).
-fn run(t: &EtaTable, sc: &Scenario) -> (Vec<Vec<Vec2>>, Vec<(f32, f32, bool)>) {
+fn run(t: &EtaTable, sc: &Scenario) -> (Traces, Vec<(f32, f32, bool)>) {
     let mut w = sc.world().expect("preset builds");
     let mut tr: Vec<Vec<Vec2>> = w.agents.iter().map(|a| vec![a.state.pos]).collect();
     for _ in 0..sc.steps() {
