@@ -334,6 +334,41 @@ fn funnel_settings_round_trip_and_change_the_bound() {
     assert!(lab.state().iter().all(|x| x.is_finite()));
 }
 
+/// The reading selector: "paper" puts paper 000's standard and paper
+/// 001's relaxed funnelling in force, named so; "ours" restores the
+/// defaults; anything else is an error naming the field.
+#[wasm_bindgen_test]
+fn the_reading_selects_the_papers_algorithms_or_ours() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    assert_eq!(lab.controller_label(), "ours standard");
+    lab.set_reading("paper".into()).map_err(message).unwrap();
+    assert_eq!(lab.controller_label(), "paper 000 standard");
+    let f = lab.funnel().map_err(message).unwrap();
+    assert_eq!(
+        get(&get(&f, "bound"), "kind").as_string().unwrap(),
+        "literal"
+    );
+    assert_eq!(
+        get(&f, "reachability").as_string().as_deref(),
+        Some("closest")
+    );
+    assert_eq!(get(&f, "tolerance").as_string().as_deref(), Some("fig5"));
+    assert_eq!(
+        get(&f, "orientationOnly").as_string().as_deref(),
+        Some("keepSpeed")
+    );
+    assert_eq!(get(&f, "lead").as_bool(), Some(false));
+    lab.add_agent(agent(0.0, 0.0, 0.0, &[goal(6.0, 0.0, 1.57)]))
+        .map_err(message)
+        .unwrap();
+    lab.step(30).map_err(message).unwrap();
+    assert!(lab.state().iter().all(|x| x.is_finite()));
+    lab.set_reading("ours".into()).map_err(message).unwrap();
+    assert_eq!(lab.controller_label(), "ours standard");
+    let m = message(lab.set_reading("papers".into()).unwrap_err());
+    assert!(m.contains("reading"), "{m}");
+}
+
 /// A value of the wrong type names its field, for every config (serde's
 /// own message carries no path).
 #[wasm_bindgen_test]

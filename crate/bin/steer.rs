@@ -2,15 +2,16 @@
 //! `steer --help`, `steer run --help`, …).
 //!
 //! ```text
-//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed|seek]
+//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed|seek] [--reading paper|ours]
 //! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
-//! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
+//! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--reading paper|ours] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
 //! steer envelope [--n N] [--seed S] [--json FILE] [--table FILE] [--standard JSON] [--only NAMES] [--brief] [--vehicle VEHICLE.json] [--queries N]
 //! steer avoid [--seeds N] [--seed S] [--only NAMES] [--replan-every N] [--write-presets DIR] [--table FILE] [--threads N]
 //! ```
 //! `run` simulates a scenario file (schema: `crate/world/scenario.rs`)
 //! and streams the per-step pose, speeds and mode of every agent plus its
-//! metrics; `--controller` overrides the scenario's controller. Its η table
+//! metrics; `--controller` overrides the scenario's controller, `--reading
+//! paper` its settings with the papers' algorithms as written. Its η table
 //! is `--table` or the scenario's `table` (built for its vehicle, else an
 //! error), else `tables/eta.bin` if it matches the vehicle, else the
 //! matching table from the cache (`steering::cli::table_cache`), built
@@ -21,7 +22,8 @@
 //! limit violations for each.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
 //! controllers, then the seeded random region-goal study, and prints the
-//! comparison of paper 001 (path length, integrated |curvature|, reach).
+//! comparison of paper 001 (path length, integrated |curvature|, reach),
+//! like for like: both controllers of `--reading` (ours, or the papers').
 //! Studies run on rayon; their output does not depend on `--threads`.
 
 // `wasm-pack test` builds every binary for wasm32, where clap and rayon
@@ -40,7 +42,7 @@ use steering::cli::steer::{
 };
 use steering::cli::trajectory::{check_out_path, create_out, stream_run};
 use steering::funnelling::config::{FunnelConfig, MuBound};
-use steering::funnelling::controller::{Controller, ControllerKind};
+use steering::funnelling::controller::{Controller, ControllerKind, Reading};
 use steering::funnelling::table::lookup::EtaTable;
 use steering::studies::reach::{summarise, ReachStudy};
 use steering::studies::region::{compare, Comparison, RegionStudy};
@@ -115,6 +117,9 @@ fn run(args: &RunArgs) -> Result<(), String> {
     if let Some(c) = args.controller {
         sc.controller = c;
     }
+    if let Some(r) = args.reading {
+        sc.set_reading(r);
+    }
     let table = run_table(args, &sc)?;
     sc.world().map_err(|e| format!("{scenario}: {e}"))?;
     let mut out = create_out(&args.out)?;
@@ -137,7 +142,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     println!(
         "steer: {} ({}) — {} agents, {} steps, {} finished all goals, {} limit violations -> {}",
         sc.name,
-        sc.controller.name(),
+        sc.controller_label(),
         s.agents,
         s.steps,
         s.finished,
@@ -355,6 +360,12 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     let table = load_table(table_path)?;
     let p = steering::base::vehicle::VehicleParams::default();
     table.check_params(&p).map_err(|e| e.to_string())?;
+    let f = args.reading.funnel();
+    println!(
+        "Reading: {} against {}",
+        Reading::label(ControllerKind::Standard, &f, &rcfg),
+        Reading::label(ControllerKind::Relaxed, &f, &rcfg)
+    );
     println!("Relaxed settings: {rcfg:?}");
     println!("Paper 001 presets (per agent, whole run; reach = finished every goal):");
     println!("| preset | agents | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
@@ -370,6 +381,7 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
         let path = format!("{dir}/{n}");
         let text = std::fs::read_to_string(&path).map_err(|e| format!("{path}: {e}"))?;
         let mut sc = Scenario::from_json(&text).map_err(|e| format!("{path}: {e}"))?;
+        sc.funnel = f;
         sc.controller = ControllerKind::Standard;
         let st = simulate(&sc, &table)?;
         sc.controller = ControllerKind::Relaxed;
@@ -395,7 +407,6 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     );
     println!("| study | n | mean length std / rel (m) | mean ∫|κ| std / rel (rad) | relaxed shorter | relaxed less curved | reach std / rel |");
     println!("|---|---|---|---|---|---|---|");
-    let f = FunnelConfig::default();
     let (rs, rr) = args.pool.install(|| {
         (
             study.run_all(&table, &p, &Controller::Standard(f)),

@@ -23,7 +23,7 @@ use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::bindings::boundary::{from_js, from_js_in, js_err, to_js};
 use crate::funnelling::config::FunnelConfig;
-use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::controller::{ControllerKind, Reading};
 use crate::funnelling::ghost::{seek_ghost, table_limits, update_ghost, Ghost};
 use crate::funnelling::relaxed::RelaxedConfig;
 use crate::funnelling::seek::ReachLimits;
@@ -378,6 +378,36 @@ impl Lab {
         self.world
             .set_controller(kind, c)
             .map_err(|e| js_err("relaxed settings", e))
+    }
+
+    /// Puts the funnelling and relaxed settings of a reading in force:
+    /// `"paper"` (paper 000's standard and paper 001's relaxed funnelling
+    /// exactly as written) or `"ours"` (the defaults). Agents keep their
+    /// state and goals.
+    #[wasm_bindgen(js_name = setReading)]
+    pub fn set_reading(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "Reading")] reading: JsValue,
+    ) -> Result<(), JsError> {
+        let r: Reading = from_js("reading", reading)?;
+        let kind = self.world.controller;
+        self.world
+            .set_controller(kind, r.relaxed())
+            .map_err(|e| js_err("reading", e))?;
+        self.world.config = r.funnel();
+        Ok(())
+    }
+
+    /// What the page shows for the controller in force: `paper 001
+    /// relaxed`, `paper 000 standard`, `ours standard`, `custom relaxed`, …
+    #[wasm_bindgen(js_name = controllerLabel)]
+    #[must_use]
+    pub fn controller_label(&self) -> String {
+        Reading::label(
+            self.world.controller,
+            &self.world.config,
+            &self.world.relaxed,
+        )
     }
 
     /// The η field around a vehicle (paper 001 Fig. 3b/c): for every sampled

@@ -71,7 +71,25 @@ export interface FunnelConfig {
   minBoundRadius?: number;
   /** The terminal line pursuit (default on; null or absent: off). */
   terminal?: TerminalConfig | null;
+  /** Reachability from the weighted vote of 32 samples (default) or the
+   *  closest element (paper 000 Fig. 4). */
+  reachability?: "vote" | "closest";
+  /** Orientation_only's speed for a goal that is not halting: "stop"
+   *  (default) or "keepSpeed" (the paper is silent). */
+  orientationOnly?: "stop" | "keepSpeed";
+  /** Tolerance phase: "latched" (default) or "fig5" (paper 000 Fig. 5 as written). */
+  tolerance?: "latched" | "fig5";
+  /** Aim a moving goal where it will be met (default true). */
+  lead?: boolean;
+  /** Near the target, cap the speed so the turning circle passes through it (default true). */
+  orbitFree?: boolean;
+  /** Keep the turn direction near the ±π seam (default true). */
+  commitTurn?: boolean;
 }
+/** Which reading of the papers (crate::funnelling::controller::Reading):
+ *  "paper", paper 000's standard and paper 001's relaxed funnelling as
+ *  written, or "ours", the defaults (docs/READINGS.md). */
+export type Reading = "paper" | "ours";
 /** The terminal line pursuit (crate::funnelling::config::Terminal): carrot
  *  `lookahead` seconds of travel ahead on the goal's line; starts within
  *  `range` carrot distances of the disk when |β − θ| < `heading` (rad). */
@@ -89,6 +107,9 @@ export interface RelaxedConfig {
   diskMargin?: number;
   orientationMargin?: number;
   endEta?: "linear" | "multilinear";
+  /** Δη funnelled with: "lookup" (default, measured again at the relaxed
+   *  point) or "fig7" (paper 001 Fig. 7's own). */
+  deltaEta?: "lookup" | "fig7";
 }
 /** An oriented goal (crate::funnelling::goal::Goal): position (m), β (rad), tolerances, desired speed (m/s). */
 export interface GoalConfig {

@@ -7,7 +7,7 @@ use std::path::PathBuf;
 use clap::{Args, Parser, Subcommand};
 
 use super::pool::PoolArgs;
-use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::controller::{ControllerKind, Reading};
 
 /// The funnelling runner: simulate a scenario, or run a seeded study.
 #[derive(Parser, Clone, Debug, PartialEq)]
@@ -127,6 +127,11 @@ pub struct RunArgs {
     /// Override the scenario's controller.
     #[arg(long, value_name = "standard|relaxed|seek", value_parser = parse_controller)]
     pub controller: Option<ControllerKind>,
+    /// Override the scenario's settings with a reading's: `paper` (paper
+    /// 000's standard and paper 001's relaxed funnelling exactly as
+    /// written) or `ours` (the defaults); docs/READINGS.md.
+    #[arg(long, value_name = "paper|ours", value_parser = parse_reading)]
+    pub reading: Option<Reading>,
 }
 
 /// `steer reach`.
@@ -161,7 +166,12 @@ pub struct RelaxedArgs {
     /// Folder holding the `p001_*_standard.json` presets.
     #[arg(long, value_name = "DIR", default_value = "scenarios")]
     pub scenarios: PathBuf,
-    /// Where the relaxed controller aims (default: the relaxed controller's, entry).
+    /// The reading both controllers start from: `ours` (default) or
+    /// `paper` (paper 000's standard against paper 001's relaxed
+    /// funnelling, exactly as written); `--aim` and the margins override it.
+    #[arg(long, value_name = "paper|ours", default_value = "ours", value_parser = parse_reading)]
+    pub reading: Reading,
+    /// Where the relaxed controller aims (default: the reading's; ours: entry).
     #[arg(long, value_name = "entry|paper-arc", value_parser = parse_aim)]
     pub aim: Option<crate::funnelling::relaxed::RelaxedAim>,
     /// Relaxed setting `diskMargin` (default: the relaxed controller's).
@@ -222,6 +232,14 @@ pub fn parse_envelope_n(s: &str) -> Result<usize, String> {
 /// See [`parse_bounded`].
 pub fn parse_every(s: &str) -> Result<u32, String> {
     parse_bounded(s, 1, u64::from(super::trajectory::MAX_EVERY)).map(|v| v as u32)
+}
+
+/// Parses `paper` or `ours`.
+///
+/// # Errors
+/// Any other word, named.
+pub fn parse_reading(s: &str) -> Result<Reading, String> {
+    Reading::parse(s).ok_or_else(|| format!("`{s}` is neither paper nor ours"))
 }
 
 /// Parses `standard`, `relaxed` or `seek`.
@@ -285,13 +303,13 @@ pub struct EnvelopeArgs {
 }
 
 impl RelaxedArgs {
-    /// The relaxed settings: the defaults with `--aim`, `--disk-margin` and
-    /// `--orientation-margin` applied, validated.
+    /// The relaxed settings: the reading's with `--aim`, `--disk-margin`
+    /// and `--orientation-margin` applied, validated.
     ///
     /// # Errors
     /// A margin out of range, named.
     pub fn relaxed_config(&self) -> Result<crate::funnelling::relaxed::RelaxedConfig, String> {
-        let mut rcfg = crate::funnelling::relaxed::RelaxedConfig::default();
+        let mut rcfg = self.reading.relaxed();
         if let Some(aim) = self.aim {
             rcfg.aim = aim;
         }

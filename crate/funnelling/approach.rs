@@ -24,7 +24,9 @@ use glam::Vec2;
 use crate::base::angle::{diff, wrap};
 use crate::base::minmax::MinMax;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::config::{Aim, FunnelConfig, Terminal};
+use crate::funnelling::config::{
+    Aim, Deviations, FunnelConfig, OrientationOnly, Reachability, Terminal, TolerancePhase,
+};
 use crate::funnelling::goal::{BetaDir, FunnelMemory, Goal};
 use crate::funnelling::table::lookup::{EtaTable, Lookup};
 use crate::funnelling::update::{Internals, Mode, Update};
@@ -164,6 +166,43 @@ pub fn tolerance_phase(
     false
 }
 
+/// The position-tolerance phase as paper 000 Fig. 5 writes it
+/// ([`TolerancePhase::Fig5`]), judged on the current pose every update:
+/// End_of_Steering when `d < D_tol` and `|β − θ| < ε_tol` (Fig. 5's
+/// `α + η + Δη` is `β − θ` by the definition of Δη), Orientation_only when
+/// `d < D_tol` only, speed 0 in both for a halting goal and the goal's
+/// desired speed otherwise (End_of_Steering), 0 in Orientation_only until
+/// [`Approach::begin`] applies [`FunnelConfig::orientation_only`].
+/// [`FunnelMemory::position_met`] says whether the vehicle is inside now.
+/// Returns true when the position tolerance is met (then `out` is final).
+/// Out of line: inlined beside [`tolerance_phase`] it lengthened the
+/// default update.
+#[inline(never)]
+pub fn fig5_tolerance_phase(
+    s: &VehicleState,
+    g: &Goal,
+    mem: &mut FunnelMemory,
+    d: f32,
+    out: &mut Internals,
+) -> bool {
+    mem.position_met = d < g.d_tol;
+    if !mem.position_met {
+        return false;
+    }
+    let heading_err = diff(g.beta, s.theta);
+    out.delta_eta = heading_err;
+    if heading_err.abs() < g.eps_tol {
+        out.mode = Mode::EndOfSteering;
+        out.gamma = s.theta;
+        out.v_dt = if g.halting { 0.0 } else { g.speed };
+    } else {
+        out.mode = Mode::OrientationOnly;
+        out.gamma = g.beta;
+        out.v_dt = 0.0;
+    }
+    true
+}
+
 /// The desired speed a goal moving by itself is approached with after
 /// `laps` laps around it ([`FunnelMemory::lap`]): `v_d / (1 + laps/2)`,
 /// not below the slower of `v_d` and the larger of 0.5 m/s (scaled with
@@ -275,21 +314,29 @@ pub struct Approach<'a> {
     pub goal: Goal,
     /// The agent's kept β direction ([`BetaDir`], in its memory).
     pub beta_dir: &'a Cell<BetaDir>,
+    /// The switches between the paper's steps and ours
+    /// ([`FunnelConfig::deviations`]).
+    pub dev: Deviations,
 }
 
 impl<'a> Approach<'a> {
-    /// Measures the goal and runs the tolerance phase. `Break` carries the
-    /// final internals when the phase settles the update; `Continue` the
-    /// approach and the internals filled so far (`d`, `alpha`, `gamma` =
-    /// bearing, `v_dt` = `v_d`, reachable).
+    /// Measures the goal and runs the tolerance phase `dev` names
+    /// ([`FunnelConfig::tolerance`]). `Break` carries the final internals
+    /// when the phase settles the update; `Continue` the approach and the
+    /// internals filled so far (`d`, `alpha`, `gamma` = bearing, `v_dt` =
+    /// `v_d`, reachable).
     #[inline(always)]
-    pub fn begin(u: &'a mut Update<'_>) -> ControlFlow<Internals, (Self, Internals)> {
+    pub fn begin(
+        u: &'a mut Update<'_>,
+        dev: Deviations,
+    ) -> ControlFlow<Internals, (Self, Internals)> {
         let (table, p, g): (&'a EtaTable, &'a VehicleParams, &Goal) = (u.table, u.params, u.goal);
         let s: &'a VehicleState = &*u.state;
         let mem: &'a mut FunnelMemory = &mut *u.memory;
         let (d, bearing, alpha) = seen_from(s, g.pos);
+        let latched = dev.tolerance == TolerancePhase::Latched;
         let mut v_d = g.speed;
-        if g.halting {
+        if g.halting && latched {
             v_d = v_d.at_most(halting_speed(p, d - 0.9 * g.d_tol));
         }
         let mut out = Internals {
@@ -300,7 +347,18 @@ impl<'a> Approach<'a> {
             reachable: true,
             ..Default::default()
         };
-        if tolerance_phase(p, s, g, mem, d, &mut out) {
+        let settled = if latched {
+            tolerance_phase(p, s, g, mem, d, &mut out)
+        } else {
+            fig5_tolerance_phase(s, g, mem, d, &mut out)
+        };
+        if settled {
+            if out.mode == Mode::OrientationOnly
+                && dev.orientation_only == OrientationOnly::KeepSpeed
+                && !g.halting
+            {
+                out.v_dt = v_d;
+            }
             return ControlFlow::Break(out);
         }
         // After laps around a goal moving by itself, it is approached
@@ -316,8 +374,10 @@ impl<'a> Approach<'a> {
                     ..lead(g, s, v)
                 },
             )
-        } else {
+        } else if dev.lead {
             (v_d, lead(g, s, v_d))
+        } else {
+            (v_d, *g)
         };
         let (d, bearing, alpha) = if goal.pos == g.pos {
             (d, bearing, alpha)
@@ -338,6 +398,7 @@ impl<'a> Approach<'a> {
                 laps: mem.lap.laps,
                 goal,
                 beta_dir: Cell::from_mut(&mut mem.beta_dir),
+                dev,
             },
             out,
         ))
@@ -523,12 +584,19 @@ impl<'a> Approach<'a> {
     }
 
     /// The full table lookup for an aim point at distance `dist` and radial
-    /// angle `alpha`; fills `reachable`, `v_dt` (the proactive fallback
-    /// speed when unreachable) and `eta` in `out`.
-    #[inline]
+    /// angle `alpha`, reachability read as [`FunnelConfig::reachability`] says;
+    /// fills `reachable`, `v_dt` (the proactive fallback speed when
+    /// unreachable) and `eta` in `out`.
+    #[inline(always)]
     pub fn look(&self, dist: f32, alpha: f32, out: &mut Internals) -> Lookup {
         let s = self.s;
-        let lk = self.table.lookup(dist, alpha, s.omega, s.v, self.v_query());
+        let lk = match self.dev.reachability {
+            Reachability::Vote => self.table.lookup(dist, alpha, s.omega, s.v, self.v_query()),
+            Reachability::Closest => {
+                self.table
+                    .lookup_closest(dist, alpha, s.omega, s.v, self.v_query())
+            }
+        };
         out.aim_d = dist;
         out.aim_alpha = alpha;
         out.v_query = self.v_query();

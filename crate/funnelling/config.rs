@@ -71,6 +71,62 @@ pub enum Aim {
     Entry,
 }
 
+/// How the update reads reachability from the η table (paper 000 Fig. 4:
+/// "If closest Tη element appears unreachable, get the stored desired
+/// forward speed v_dt").
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum Reachability {
+    /// Ours: the weighted vote of the 32 samples around the query (reachable
+    /// when the reachable ones weigh at least ½), `v_dt` the blend of their
+    /// stored speeds ([`EtaTable::lookup`]). The closest sample flips
+    /// abruptly from one update to the next where reachability changes
+    /// between two samples; the vote moves the switch to where the blend
+    /// crosses ½, and `v_dt` changes continuously.
+    #[default]
+    Vote,
+    /// The paper's closest element: the flag of the nearest sample on every
+    /// axis, its stored speed as `v_dt` ([`EtaTable::lookup_closest`]).
+    Closest,
+}
+
+/// What Orientation_only (paper 000 Fig. 5: inside the position tolerance,
+/// turn to β "regardless of a target position") commands as speed for a
+/// goal that is not halting; a halting goal brakes in either case.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum OrientationOnly {
+    /// Ours: speed 0, so the vehicle turns nearly on the spot inside the
+    /// disk (the unicycle of paper 000 §3 can): it cannot leave the disk
+    /// while turning. Pivoting shortens paths that pass through a disk
+    /// (paper 001 Figs. 10–12 compare lengths).
+    #[default]
+    Stop,
+    /// The paper says nothing of the speed: the goal's desired speed is
+    /// kept, like every other mode (the seek controller relaxes it to
+    /// `min(v_d, A/|ω|)`), and the vehicle turns to β while moving on.
+    KeepSpeed,
+}
+
+/// The position-tolerance phase (paper 000 Fig. 5's first two tests).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum TolerancePhase {
+    /// Ours ([`crate::funnelling::approach::tolerance_phase`]): the position
+    /// is latched once met (a forward-only vehicle entering at speed cannot
+    /// stop in a small disk), a halting goal is judged at its rest pose and
+    /// approached under a braking speed cap, a static goal left facing β is
+    /// approached again, and a goal moving by itself counts passes and laps
+    /// (each lap lowers the approach speed).
+    #[default]
+    Latched,
+    /// Fig. 5 as written: every update, End_of_Steering when `D < D_tol` and
+    /// `|β − θ| < ε_tol`, else Orientation_only when `D < D_tol`
+    /// ([`crate::funnelling::approach::fig5_tolerance_phase`]). Nothing is
+    /// remembered and no speed is capped.
+    Fig5,
+}
+
 /// The funnelling controller's settings.
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
 #[serde(default, deny_unknown_fields, rename_all = "camelCase")]
@@ -104,6 +160,26 @@ pub struct FunnelConfig {
     /// The terminal line pursuit
     /// ([`Approach::terminal`](crate::funnelling::approach::Approach::terminal)); `None`: off.
     pub terminal: Option<Terminal>,
+    /// How reachability and `v_dt` are read from the table ([`Reachability`]).
+    pub reachability: Reachability,
+    /// Orientation_only's speed for a goal that is not halting ([`OrientationOnly`]).
+    pub orientation_only: OrientationOnly,
+    /// The position-tolerance phase ([`TolerancePhase`]).
+    pub tolerance: TolerancePhase,
+    /// Aim a goal in motion where the vehicle will meet it
+    /// ([`crate::funnelling::approach::lead`]); the paper aims at where the
+    /// target is now ("the target may be mobile without incurring
+    /// additional computing cost", paper 000 §1). Default true.
+    pub lead: bool,
+    /// Closer than the first table ring `D_η`, cap the speed so that the
+    /// turning circle passes through the target
+    /// ([`crate::funnelling::funnel::orbit_free_speed`]); the paper seeks
+    /// there with the table's `v_dt` of the first ring. Default true.
+    pub orbit_free: bool,
+    /// Near the ±π seam of the heading error keep the current turn
+    /// direction ([`crate::funnelling::seek::seek_step_committed`]); the
+    /// paper feeds the plain seek controller. Default true.
+    pub commit_turn: bool,
 }
 
 impl Default for FunnelConfig {
@@ -115,6 +191,12 @@ impl Default for FunnelConfig {
             aim: Aim::Entry,
             min_bound_radius: 1.0,
             terminal: Some(Terminal::default()),
+            reachability: Deviations::OURS.reachability,
+            orientation_only: Deviations::OURS.orientation_only,
+            tolerance: Deviations::OURS.tolerance,
+            lead: Deviations::OURS.lead,
+            orbit_free: Deviations::OURS.orbit_free,
+            commit_turn: true,
         }
     }
 }
@@ -171,7 +253,78 @@ impl Default for Terminal {
     }
 }
 
+/// The switches of [`FunnelConfig`] that choose between a step of paper
+/// 000's update as written and ours and are read inside the update
+/// ([`crate::funnelling::approach::Approach`]), gathered so that the
+/// update can be compiled once for ours with every switch a constant
+/// ([`FunnelConfig::plan`]): the default update then costs what it cost
+/// before the switches existed.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+pub struct Deviations {
+    /// [`FunnelConfig::reachability`].
+    pub reachability: Reachability,
+    /// [`FunnelConfig::orientation_only`].
+    pub orientation_only: OrientationOnly,
+    /// [`FunnelConfig::tolerance`].
+    pub tolerance: TolerancePhase,
+    /// [`FunnelConfig::lead`].
+    pub lead: bool,
+    /// [`FunnelConfig::orbit_free`].
+    pub orbit_free: bool,
+}
+
+impl Deviations {
+    /// Ours, the defaults.
+    pub const OURS: Self = Self {
+        reachability: Reachability::Vote,
+        orientation_only: OrientationOnly::Stop,
+        tolerance: TolerancePhase::Latched,
+        lead: true,
+        orbit_free: true,
+    };
+}
+
 impl FunnelConfig {
+    /// The switches read inside the update.
+    #[inline]
+    #[must_use]
+    pub fn deviations(&self) -> Deviations {
+        Deviations {
+            reachability: self.reachability,
+            orientation_only: self.orientation_only,
+            tolerance: self.tolerance,
+            lead: self.lead,
+            orbit_free: self.orbit_free,
+        }
+    }
+
+    /// Paper 000's standard funnelling exactly as Figs. 4 and 5 write it,
+    /// nothing of ours added (`docs/READINGS.md` names the reading of every
+    /// garbled line): aim at the goal centre, `μ = −Δη` (gain 1) bounded by
+    /// the literal `|η(D, Δη, 0, v_c, v_dt)|`, Position_only once
+    /// `|Δη| < ε_tol`, reachability and `v_dt` from the closest table
+    /// element, the mode chosen from the current pose every update
+    /// (no latch, no halting cap), Orientation_only keeping the desired
+    /// speed, no terminal pursuit, no lead of moving goals, no orbit-free
+    /// speed near the target, the plain seek step.
+    #[must_use]
+    pub fn paper_000() -> Self {
+        Self {
+            bound: MuBound::Literal,
+            gain: 1.0,
+            seek_threshold: 1.0,
+            aim: Aim::Centre,
+            min_bound_radius: 0.0,
+            terminal: None,
+            reachability: Reachability::Closest,
+            orientation_only: OrientationOnly::KeepSpeed,
+            tolerance: TolerancePhase::Fig5,
+            lead: false,
+            orbit_free: false,
+            commit_turn: false,
+        }
+    }
+
     /// Plain seek with these settings (paper 000 §3, Fig. 1): aim at the
     /// centre, no terminal pursuit, Position_only whatever Δη (an infinite
     /// seek threshold). The table lookup stays: it lowers the desired speed

@@ -8,7 +8,6 @@ use serde::{Deserialize, Serialize};
 
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
-use crate::funnelling::seek::seek_step_committed;
 use crate::funnelling::update::{Internals, Update};
 
 /// Which controller steers the agents of a [`crate::world::World`].
@@ -82,8 +81,91 @@ impl ControllerKind {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         let out = self.plan(funnel, relaxed, u, ri);
-        seek_step_committed(u.params, u.state, out.gamma, out.v_dt);
+        funnel.seek_step(u.params, u.state, out.gamma, out.v_dt);
         out
+    }
+}
+
+/// Which reading of the papers the settings follow: the papers' own
+/// algorithms, nothing of ours added ([`FunnelConfig::paper_000`],
+/// [`RelaxedConfig::paper_001`]), or ours, the defaults (what each
+/// deviation does and why: `docs/READINGS.md`). Scenario files name it
+/// (`"reading": "paper"`), `steer run --reading`, `steer relaxed --reading`.
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum Reading {
+    /// Ours: the defaults.
+    #[default]
+    Ours,
+    /// The papers' algorithms as written (paper 000 Figs. 4–5, paper 001
+    /// Fig. 7).
+    Paper,
+}
+
+impl Reading {
+    /// Parses `ours` or `paper`.
+    #[must_use]
+    pub fn parse(s: &str) -> Option<Self> {
+        match s {
+            "ours" => Some(Self::Ours),
+            "paper" => Some(Self::Paper),
+            _ => None,
+        }
+    }
+
+    /// `ours` or `paper`.
+    #[must_use]
+    pub fn name(self) -> &'static str {
+        match self {
+            Self::Ours => "ours",
+            Self::Paper => "paper",
+        }
+    }
+
+    /// The standard controller's settings of this reading.
+    #[must_use]
+    pub fn funnel(self) -> FunnelConfig {
+        match self {
+            Self::Ours => FunnelConfig::default(),
+            Self::Paper => FunnelConfig::paper_000(),
+        }
+    }
+
+    /// The relaxed controller's settings of this reading.
+    #[must_use]
+    pub fn relaxed(self) -> RelaxedConfig {
+        match self {
+            Self::Ours => RelaxedConfig::default(),
+            Self::Paper => RelaxedConfig::paper_001(),
+        }
+    }
+
+    /// The reading `funnel` and `relaxed` are exactly, if any (the relaxed
+    /// settings count only for the relaxed controller).
+    #[must_use]
+    pub fn of(
+        kind: ControllerKind,
+        funnel: &FunnelConfig,
+        relaxed: &RelaxedConfig,
+    ) -> Option<Self> {
+        [Self::Ours, Self::Paper].into_iter().find(|r| {
+            r.funnel() == *funnel && (kind != ControllerKind::Relaxed || r.relaxed() == *relaxed)
+        })
+    }
+
+    /// What a user is shown for a controller with these settings:
+    /// `paper 000 standard`, `paper 001 relaxed`, `paper 000 seek`, `ours
+    /// standard`, `ours relaxed`, `ours seek`, or `custom …` when the
+    /// settings are neither reading's.
+    #[must_use]
+    pub fn label(kind: ControllerKind, funnel: &FunnelConfig, relaxed: &RelaxedConfig) -> String {
+        let who = match (Self::of(kind, funnel, relaxed), kind) {
+            (Some(Self::Paper), ControllerKind::Relaxed) => "paper 001",
+            (Some(Self::Paper), _) => "paper 000",
+            (Some(Self::Ours), _) => "ours",
+            (None, _) => "custom",
+        };
+        format!("{who} {}", kind.name())
     }
 }
 
@@ -97,6 +179,18 @@ pub enum Controller {
 }
 
 impl Controller {
+    /// The standard controller of a reading.
+    #[must_use]
+    pub fn standard(reading: Reading) -> Self {
+        Self::Standard(reading.funnel())
+    }
+
+    /// The relaxed controller of a reading (its standard funnelling too).
+    #[must_use]
+    pub fn relaxed(reading: Reading) -> Self {
+        Self::Relaxed(reading.funnel(), reading.relaxed())
+    }
+
     /// The kind and the settings, for [`ControllerKind`]'s dispatch.
     #[inline]
     fn parts(&self) -> (ControllerKind, &FunnelConfig, RelaxedConfig) {

@@ -25,11 +25,11 @@ use core::ops::ControlFlow;
 
 use crate::base::angle::diff;
 use crate::base::minmax::MinMax;
-use crate::base::vehicle::VehicleParams;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::approach::Approach;
-use crate::funnelling::config::{Aim, FunnelConfig};
+use crate::funnelling::config::{Aim, Deviations, FunnelConfig};
 use crate::funnelling::goal::Goal;
-use crate::funnelling::seek::seek_step_committed;
+use crate::funnelling::seek::{seek_step, seek_step_committed};
 use crate::funnelling::update::{Internals, Mode, Update};
 
 /// Largest speed whose turning circle still passes through a target at
@@ -50,7 +50,20 @@ impl FunnelConfig {
     #[must_use]
     #[inline(always)]
     pub fn plan(&self, u: &mut Update<'_>) -> Internals {
-        let (a, out) = match Approach::begin(u) {
+        // Compiled twice: for ours, every switch a constant (the default
+        // update pays one comparison for the switches), and for any other.
+        let dev = self.deviations();
+        if dev == Deviations::OURS {
+            self.plan_with(u, Deviations::OURS)
+        } else {
+            self.plan_with(u, dev)
+        }
+    }
+
+    /// [`FunnelConfig::plan`] with the switches `dev`.
+    #[inline(always)]
+    fn plan_with(&self, u: &mut Update<'_>, dev: Deviations) -> Internals {
+        let (a, out) = match Approach::begin(u, dev) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
@@ -83,10 +96,12 @@ impl FunnelConfig {
             // A moving aim point is never caught below its own speed: at
             // least twice the goal's, or the vehicle rides alongside it
             // for good.
-            let floor = 2.0 * g.vel.length();
-            out.v_dt = out
-                .v_dt
-                .at_most(orbit_free_speed(a.p, d, alpha).at_least(floor));
+            if a.dev.orbit_free {
+                let floor = 2.0 * g.vel.length();
+                out.v_dt = out
+                    .v_dt
+                    .at_most(orbit_free_speed(a.p, d, alpha).at_least(floor));
+            }
             out.mode = Mode::PositionOnly;
             return out;
         }
@@ -102,7 +117,29 @@ impl FunnelConfig {
     /// it to `min(v_dt, A/|ω|)`).
     pub fn step(&self, u: &mut Update<'_>) -> Internals {
         let out = self.plan(u);
-        seek_step_committed(u.params, u.state, out.gamma, out.v_dt);
+        self.seek_step(u.params, u.state, out.gamma, out.v_dt);
         out
     }
+
+    /// The seek step every controller ends with: towards heading `heading`
+    /// at desired speed `speed`, with the turn commitment near the ±π seam
+    /// ([`seek_step_committed`]) or without it, the plain step of paper 000
+    /// §3 ([`seek_step`]), as [`FunnelConfig::commit_turn`] says.
+    #[inline]
+    pub fn seek_step(&self, p: &VehicleParams, s: &mut VehicleState, heading: f32, speed: f32) {
+        if self.commit_turn {
+            seek_step_committed(p, s, heading, speed);
+        } else {
+            plain_seek_step(p, s, heading, speed);
+        }
+    }
+}
+
+/// [`seek_step`] kept out of line: the default configuration commits the
+/// turn, and the plain step inlined beside the committed one lengthened
+/// the world's step.
+#[cold]
+#[inline(never)]
+fn plain_seek_step(p: &VehicleParams, s: &mut VehicleState, heading: f32, speed: f32) {
+    seek_step(p, s, heading, speed);
 }

@@ -89,7 +89,6 @@ use crate::base::vehicle::ParamError;
 use crate::funnelling::approach::Approach;
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::goal::Goal;
-use crate::funnelling::seek::seek_step_committed;
 use crate::funnelling::update::{Internals, Mode, Update};
 
 /// How η is evaluated at the two ends of the restricted arc 𝒜.
@@ -117,6 +116,21 @@ pub enum RelaxedAim {
     PaperArc,
 }
 
+/// Which Δη the relaxed controller funnels with once α_r is chosen
+/// ([`RelaxedAim::PaperArc`]).
+#[derive(Clone, Copy, Debug, PartialEq, Eq, Serialize, Deserialize, Default)]
+#[serde(rename_all = "camelCase")]
+pub enum RelaxedDeltaEta {
+    /// Ours: Δη measured again against T with η of the full lookup at the
+    /// relaxed point (the lookup that gives reachability and `v_dt`): the
+    /// arc ends' η is the cheap linear read, and the decision that matters,
+    /// seek (Δη = 0) or funnel, then rests on the accurate η.
+    #[default]
+    Lookup,
+    /// The paper: Fig. 7's own Δη, from the arc ends' η.
+    Fig7,
+}
+
 /// Settings of the relaxed controller (the μ bound is the shared
 /// [`FunnelConfig`]'s).
 #[derive(Clone, Copy, Debug, PartialEq, Serialize, Deserialize)]
@@ -133,6 +147,8 @@ pub struct RelaxedConfig {
     pub orientation_margin: f32,
     /// η at the arc ends.
     pub end_eta: EndEta,
+    /// The Δη funnelled with ([`RelaxedDeltaEta`]).
+    pub delta_eta: RelaxedDeltaEta,
 }
 
 impl Default for RelaxedConfig {
@@ -142,6 +158,26 @@ impl Default for RelaxedConfig {
             disk_margin: 0.8,
             orientation_margin: 0.25,
             end_eta: EndEta::Linear,
+            delta_eta: RelaxedDeltaEta::Lookup,
+        }
+    }
+}
+
+impl RelaxedConfig {
+    /// Paper 001 §4 exactly, nothing of ours added: the relaxed point on
+    /// the arc 𝒜 of Fig. 7, the whole tolerance disk and the whole interval
+    /// T searched (margins 1), η at the arc ends by the plain linear
+    /// interpolation the paper names, and Fig. 7's Δη funnelled with. Run
+    /// it with [`FunnelConfig::paper_000`], the standard funnelling the
+    /// paper builds on (`docs/READINGS.md`).
+    #[must_use]
+    pub fn paper_001() -> Self {
+        Self {
+            aim: RelaxedAim::PaperArc,
+            disk_margin: 1.0,
+            orientation_margin: 1.0,
+            end_eta: EndEta::Linear,
+            delta_eta: RelaxedDeltaEta::Fig7,
         }
     }
 }
@@ -377,7 +413,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         *ri = RelaxedInternals::default();
-        let (a, mut out) = match Approach::begin(u) {
+        let (a, mut out) = match Approach::begin(u, funnel.deviations()) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
@@ -458,7 +494,7 @@ impl RelaxedConfig {
         };
         // 4. Funnel towards the relaxed point.
         let lk = a.look(ring, c.alpha_r, &mut out);
-        out.delta_eta = if lk.eta_valid {
+        out.delta_eta = if lk.eta_valid && self.delta_eta == RelaxedDeltaEta::Lookup {
             interval_delta(c.alpha_r + lk.eta, tc, tau)
         } else {
             c.delta_eta
@@ -526,7 +562,7 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         let out = self.plan(funnel, u, ri);
-        seek_step_committed(u.params, u.state, out.gamma, out.v_dt);
+        funnel.seek_step(u.params, u.state, out.gamma, out.v_dt);
         out
     }
 }

@@ -104,6 +104,7 @@ fn empty(name: String, description: &str, duration: f32) -> Scenario {
         source: "avoidance benchmark".into(),
         duration,
         vehicle: VehicleParams::default(),
+        reading: None,
         funnel: FunnelConfig::default(),
         controller: ControllerKind::Standard,
         relaxed: RelaxedConfig::default(),

@@ -8,7 +8,6 @@ use crate::avoidance::patience;
 use crate::base::angle::diff;
 use crate::base::vehicle::ParamError;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::seek::seek_step_committed;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::world::World;
 
@@ -93,7 +92,7 @@ impl World {
                 avoidance_step(&p, &mut a.state, c.heading, c.speed);
             } else {
                 // The funnel's own command: its step, the same bits.
-                seek_step_committed(&p, &mut a.state, c.heading, c.speed);
+                self.config.seek_step(&p, &mut a.state, c.heading, c.speed);
             }
             if !a.done() {
                 let spec = a.goals[a.current];

@@ -33,7 +33,7 @@ use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
 use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
-use crate::funnelling::seek::{seek_step, seek_step_committed};
+use crate::funnelling::seek::seek_step;
 use crate::funnelling::table::format::TableError;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::update::{Internals, Mode, Update};
@@ -476,7 +476,9 @@ fn step_agent(planner: &Planner<'_>, metrics_on: bool, a: &mut Agent) {
         a.hold(speed);
     } else {
         let spec = planner.plan(a, true);
-        seek_step_committed(p, &mut a.state, a.internals.gamma, a.internals.v_dt);
+        planner
+            .funnel
+            .seek_step(p, &mut a.state, a.internals.gamma, a.internals.v_dt);
         advance_queue(a, &spec, planner.t);
     }
     if metrics_on {

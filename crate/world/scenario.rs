@@ -13,6 +13,7 @@
 //!   "vehicle": { "vMax": 2.0 },                 // optional, VehicleParams
 //!   "funnel": { "bound": { "kind": "literal" } }, // optional, FunnelConfig
 //!   "controller": "relaxed",                    // optional: standard (default) | relaxed | seek
+//!   "reading": "paper",                         // optional: ours (default) | paper, what `funnel` and `relaxed` start from
 //!   "relaxed": { "diskMargin": 0.8 },           // optional, RelaxedConfig
 //!   "avoidance": { "method": "orca", "radius": 0.3 }, // optional: off (default) | separation | orca
 //!   "obstacles": [{ "kind": "disc", "x": 0, "y": 2, "radius": 1 },
@@ -36,7 +37,7 @@ use serde::{Deserialize, Serialize};
 use crate::avoidance::{config::AvoidanceConfig, config::Obstacle};
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
-use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::controller::{ControllerKind, Reading};
 use crate::funnelling::goal::Goal;
 use crate::funnelling::relaxed::RelaxedConfig;
 use crate::world::precision;
@@ -73,6 +74,12 @@ pub struct Scenario {
     /// vehicle, else builds the matching one or loads it from its cache.
     #[serde(default, skip_serializing_if = "Option::is_none")]
     pub table: Option<String>,
+    /// Which reading of the papers `funnel` and `relaxed` start from:
+    /// `ours` (the defaults) or `paper` (paper 000's standard and paper
+    /// 001's relaxed funnelling as written, [`Reading`]); fields given in
+    /// `funnel` and `relaxed` then override the reading's.
+    #[serde(default, skip_serializing_if = "Option::is_none")]
+    pub reading: Option<Reading>,
     /// Funnelling settings.
     #[serde(default)]
     pub funnel: FunnelConfig,
@@ -223,6 +230,35 @@ fn refuse_positional(v: &serde_json::Value, path: &str) -> Result<(), ScenarioEr
     }
 }
 
+/// The scenario `value` with its `funnel` and `relaxed` objects laid over
+/// `reading`'s settings: a field the file gives wins, the others are the
+/// reading's.
+///
+/// # Errors
+/// `funnel` or `relaxed` is not an object.
+fn with_reading(
+    mut value: serde_json::Value,
+    reading: Reading,
+) -> Result<serde_json::Value, ScenarioError> {
+    let bases = [
+        ("funnel", serde_json::to_value(reading.funnel())),
+        ("relaxed", serde_json::to_value(reading.relaxed())),
+    ];
+    for (key, base) in bases {
+        let mut base = base.map_err(|e| ScenarioError::Parse(e.to_string()))?;
+        if let Some(given) = value.get(key) {
+            let given = given.as_object().ok_or_else(|| {
+                ScenarioError::Parse(format!("`{key}` is not an object of settings"))
+            })?;
+            if let Some(b) = base.as_object_mut() {
+                b.extend(given.iter().map(|(k, v)| (k.clone(), v.clone())));
+            }
+        }
+        value[key] = base;
+    }
+    Ok(value)
+}
+
 /// Why a scenario was refused.
 #[derive(Debug)]
 pub enum ScenarioError {
@@ -281,10 +317,29 @@ impl Scenario {
         let value: serde_json::Value =
             serde_json::from_str(text).map_err(|e| ScenarioError::Parse(e.to_string()))?;
         refuse_positional(&value, "scenario")?;
-        let s: Self =
-            serde_json::from_str(text).map_err(|e| ScenarioError::Parse(e.to_string()))?;
+        let s: Self = match value.get("reading").and_then(serde_json::Value::as_str) {
+            Some("paper") => serde_json::from_value(with_reading(value, Reading::Paper)?),
+            _ => serde_json::from_str(text),
+        }
+        .map_err(|e| ScenarioError::Parse(e.to_string()))?;
         s.validate()?;
         Ok(s)
+    }
+
+    /// Sets the reading and replaces `funnel` and `relaxed` with its
+    /// settings (`steer run --reading`).
+    pub fn set_reading(&mut self, reading: Reading) {
+        self.reading = Some(reading);
+        self.funnel = reading.funnel();
+        self.relaxed = reading.relaxed();
+    }
+
+    /// What a user is shown for the controller this scenario runs:
+    /// `paper 001 relaxed`, `ours standard`, `custom standard`, …
+    /// ([`Reading::label`]).
+    #[must_use]
+    pub fn controller_label(&self) -> String {
+        Reading::label(self.controller, &self.funnel, &self.relaxed)
     }
 
     /// Checks every value.
@@ -387,6 +442,39 @@ impl Scenario {
 #[cfg(test)]
 mod tests {
     use super::*;
+
+    /// `"reading": "paper"` starts `funnel` and `relaxed` from the papers'
+    /// algorithms; fields the file gives override them, and the scenario
+    /// writes and reads back the same.
+    #[test]
+    fn the_reading_field_selects_the_papers_settings() {
+        let goals = r#""agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0}]}]"#;
+        let sc = Scenario::from_json(&format!(
+            r#"{{"name": "r", "controller": "relaxed", "reading": "paper", {goals}}}"#
+        ))
+        .unwrap();
+        assert_eq!(sc.funnel, FunnelConfig::paper_000());
+        assert_eq!(sc.relaxed, RelaxedConfig::paper_001());
+        assert_eq!(sc.controller_label(), "paper 001 relaxed");
+        let back = Scenario::from_json(&serde_json::to_string(&sc).unwrap()).unwrap();
+        assert_eq!(back, sc);
+        let sc = Scenario::from_json(&format!(
+            r#"{{"name": "r", "reading": "paper", "funnel": {{"gain": 2}}, {goals}}}"#
+        ))
+        .unwrap();
+        assert_eq!(sc.funnel.gain, 2.0);
+        assert_eq!(
+            sc.funnel.reachability,
+            FunnelConfig::paper_000().reachability
+        );
+        assert_eq!(sc.controller_label(), "custom standard");
+        let ours = Scenario::from_json(&format!(r#"{{"name": "r", {goals}}}"#)).unwrap();
+        assert_eq!(ours.controller_label(), "ours standard");
+        let e = Scenario::from_json(&format!(r#"{{"name": "r", "reading": "both", {goals}}}"#))
+            .unwrap_err()
+            .to_string();
+        assert!(e.contains("unknown variant `both`"), "{e}");
+    }
 
     /// The desired-speed range of `base::ranges` holds in files too.
     #[test]

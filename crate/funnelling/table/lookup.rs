@@ -505,6 +505,56 @@ impl EtaTable {
             at: pos,
         }
     }
+
+    /// [`EtaTable::lookup`] with paper 000 Fig. 4's reachability read
+    /// literally: "if closest Tη element appears unreachable, get the
+    /// stored desired forward speed v_dt". The closest element is the
+    /// nearest sample on every axis (α periodic); its flag decides, and
+    /// when it is unreachable its stored speed is `v_dt` (never above the
+    /// queried speed: the nearest desired-speed sample may lie above it),
+    /// η then interpolated at `v_dt` as in [`EtaTable::lookup`]. One
+    /// interpolation when reachable, two when not.
+    #[must_use]
+    #[inline(never)]
+    pub fn lookup_closest(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Lookup {
+        count(Read::Lookup);
+        let mut clamped = false;
+        let mut pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
+        let nearest = |k: usize| {
+            let p = pos[k];
+            (if p.t < 0.5 { p.i0 } else { p.i1 }) as usize * self.strides[k]
+        };
+        let i = (0..AXES).map(nearest).sum::<usize>();
+        let reachable = self.flags.get(i).is_some_and(|f| f & FLAG_REACHABLE != 0);
+        let (v_dt, eta) = if reachable {
+            (
+                v_d,
+                self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.full)),
+            )
+        } else {
+            let v_dt = self
+                .v_fallback
+                .get(i)
+                .map_or(0.0, |&v| v.at_most(v_d).at_least(0.0));
+            if v_dt > 0.0 {
+                pos[4] = self.grid[4].locate(v_dt, &mut false);
+                (
+                    v_dt,
+                    self.eta_at(&pos, Self::blend(&self.cells, &pos, &self.full)),
+                )
+            } else {
+                (v_dt, None)
+            }
+        };
+        Lookup {
+            eta: eta.unwrap_or(0.0),
+            reachable,
+            v_dt,
+            eta_valid: eta.is_some(),
+            clamped,
+            at: pos,
+        }
+    }
 }
 
 // ------------------------------------------------------------ cost counts
@@ -518,8 +568,8 @@ impl EtaTable {
 /// where timings only give ratios.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 enum Read {
-    /// One funnelling lookup ([`EtaTable::lookup`]); its blends are
-    /// counted on their own.
+    /// One funnelling lookup ([`EtaTable::lookup`] or
+    /// [`EtaTable::lookup_closest`]); its blends are counted on their own.
     Lookup,
     /// A multilinear blend of the 32 corners around a query.
     Blend,

@@ -24,8 +24,8 @@
 //!
 //! Each group (static, moving, chain) is run with every [`Variant`]: the
 //! standard and the relaxed controller, each with the default settings and
-//! with the paper's literal reading (gain 1, seek threshold 1,
-//! [`MuBound::Literal`]). Scenario `i` of a group is the same for every
+//! with the paper's literal reading ([`FunnelConfig::paper_000`],
+//! [`RelaxedConfig::paper_001`]). Scenario `i` of a group is the same for every
 //! variant (paired comparison). Runs stop at [`EnvelopeStudy::max_time`]
 //! per goal.
 //!
@@ -52,7 +52,7 @@ use crate::base::angle::diff;
 use crate::base::dubins;
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::config::{FunnelConfig, MuBound};
+use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::{Controller, ControllerKind};
 use crate::funnelling::goal::Goal;
 use crate::funnelling::relaxed::{RelaxedAim, RelaxedConfig};
@@ -123,31 +123,18 @@ pub struct Variant {
     pub controller: Controller,
 }
 
-/// The paper's literal reading of Fig. 4 and 5: μ = −Δη (gain 1), bounded
-/// by the literal `|η(D, Δη, 0, v_c, v_dt)|`, seek when |Δη| < ε_tol.
+/// The paper's literal standard funnelling ([`FunnelConfig::paper_000`]:
+/// Figs. 4 and 5 as written, nothing of ours added).
 #[must_use]
 pub fn literal_config() -> FunnelConfig {
-    FunnelConfig {
-        bound: MuBound::Literal,
-        gain: 1.0,
-        seek_threshold: 1.0,
-        aim: crate::funnelling::config::Aim::Centre,
-        min_bound_radius: 0.0,
-        terminal: None,
-    }
+    FunnelConfig::paper_000()
 }
 
-/// Paper 001 Fig. 7 read literally: the relaxed point on the ring arc 𝒜,
-/// T searched over 0.8 of τ, without the tuned margin of
-/// [`RelaxedConfig::orientation_margin`]'s default.
+/// Paper 001 Fig. 7 as written ([`RelaxedConfig::paper_001`]): the relaxed
+/// point on the ring arc 𝒜, the whole disk and T searched.
 #[must_use]
 pub fn literal_relaxed_config() -> RelaxedConfig {
-    RelaxedConfig {
-        aim: RelaxedAim::PaperArc,
-        disk_margin: 0.8,
-        orientation_margin: 0.8,
-        ..RelaxedConfig::default()
-    }
+    RelaxedConfig::paper_001()
 }
 
 /// The five variants: standard and relaxed, default and literal, and the
