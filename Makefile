@@ -33,27 +33,32 @@ setup-web:
 	if [ ! -f web/node_modules/.package-lock.json ] || [ web/package-lock.json -nt web/node_modules/.package-lock.json ]; then \
 	  cd web && npm ci --no-audit --no-fund; fi
 
+# `--features cli,counters`: the command lines and the tests that run them as
+# a user does; the table's read counters for the counted cost claims.
 lint:
 	cargo fmt --all -- --check
-	cargo clippy --all-targets -- -D warnings
+	cargo clippy --all-targets --features cli,counters -- -D warnings
 	cargo clippy --target wasm32-unknown-unknown --lib -- -D warnings
+	cargo clippy --target wasm32-unknown-unknown --lib --no-default-features -- -D warnings
 
 test-native:
-	cargo test --all-targets
+	cargo test --all-targets --features cli,counters
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).
 #
-# Issue 17: a second build with WebAssembly SIMD (`+simd128`, its own target
+# A second build with WebAssembly SIMD (`+simd128`, its own target
 # directory so the two builds do not invalidate each other) ships beside it
 # as web/pkg/steering_simd_bg.wasm; web/src/wasm.ts loads it where
 # WebAssembly.validate accepts a SIMD instruction, else the baseline. The
 # two builds' JavaScript glue must be byte-identical (checked here).
+# `--no-default-features`: the pages call no study, so `studies` (and
+# anything else on by default for native users) stays out of the download.
 SIMD_FLAGS := -C target-feature=+simd128
 wasm: setup-rust
-	wasm-pack build --target web --release --out-dir web/pkg --no-pack
+	wasm-pack build --target web --release --out-dir web/pkg --no-pack -- --no-default-features
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
-	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack
+	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack -- --no-default-features
 	cmp web/pkg/steering.js target/wasm-simd/pkg/steering.js
 	cp target/wasm-simd/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm
 	@ls -l web/pkg/steering_bg.wasm | awk '{print "wasm size: " $$5 " bytes"}'
@@ -64,8 +69,8 @@ web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 
 # The bindings in headless Chromium (webdriver.json carries the flags).
-# Then the golden-hash suites again in the SIMD build (issue 17): the shipped
-# simd128 module must give the same bits.
+# Then the golden-hash suites again in the SIMD build: the shipped simd128
+# module must give the same bits.
 test-wasm: setup-rust setup-browser
 	wasm-pack test --headless --chrome --release
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
@@ -96,24 +101,24 @@ test-e2e: setup-browser web-build
 test-e2e-gallery: setup-browser web-build
 	node web/test/e2e-gallery.mjs
 
-# Playwright against the learn page (learn.html, issue 15): every section
+# Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build
 	node web/test/e2e-learn.mjs
 
-# Playwright for issue 14: vehicle limits build their η table in Web
+# Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build
 	node web/test/e2e-vehicle.mjs
 
-# Issue 18 in the lab: the page plays the circle swap and reads the core's
+# Avoidance in the lab: the page plays the circle swap and reads the core's
 # overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
 # dragged by mouse and finger, the link; screenshots in artifacts/.
 test-e2e-avoid: setup-browser web-build
 	node web/test/e2e-avoid.mjs
 
-# Issue 17's browser checks: the SIMD core where the engine has SIMD, the
+# Performance paths in the browser: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
 # ?draw=gl: headless WebGL is software, where the pages keep 2D sprites);
 # the lab stepped in Web Workers (shared memory, by message without
@@ -122,7 +127,7 @@ test-e2e-perf: setup-browser web-build
 	node web/test/e2e-perf.mjs
 
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
-# then wasm / native per funnelling agent update (issue 17), and agents
+# then wasm / native per funnelling agent update, and agents
 # stepped per 16.7 ms frame at 10k / 30k / 100k with 0, 1 and N workers.
 # First the time to the first frame, 9 fresh loads (median, p90, where the
 # time went); BENCH_WEB_ARGS="--base DIR" alternates them with another
@@ -131,19 +136,19 @@ BENCH_WEB_ARGS ?=
 bench-web: setup-browser web-build bench-wasm-native
 	node web/test/perf.mjs 1000,10000 $(BENCH_WEB_ARGS)
 
-# Issue 17: CPU per drawn state per thread group (the workers, the page's
+# CPU per drawn state per thread group (the workers, the page's
 # thread, the rest; Linux /proc) on the lab at 100,000 agents and the crowd
 # at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need
 # (BENCH_BUDGET_ARGS="--base DIR": against another build's dist, same run).
 bench-budget: setup-browser web-build
 	node web/test/budget.mjs $(BENCH_BUDGET_ARGS)
 
-# Issue 14: η table build in Chromium's Web Workers and the cached reload,
+# η table build in Chromium's Web Workers and the cached reload,
 # per reference vehicle, REPS fresh contexts each (median, max, host load).
 bench-tables: setup-browser web-build
 	node web/test/bench-tables.mjs
 
-# Issue 17: the same funnelling world natively (examples/world_bench.rs) and
+# The same funnelling world natively (examples/world_bench.rs) and
 # in Node on the release wasm package, alternating rounds, one run; prints
 # the ratio and checks both sides end in the same states.
 bench-wasm-native: setup-web wasm
@@ -159,7 +164,7 @@ demo: setup web-build
 	cd web && npx vite preview --host 127.0.0.1 --port 5173 --strictPort
 
 table:
-	cargo run --release --bin eta-table -- --out tables/eta.bin
+	cargo run --release --features cli --bin eta-table -- --out tables/eta.bin
 
 bench:
 	cargo bench

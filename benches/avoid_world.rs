@@ -1,4 +1,4 @@
-//! The avoidance benchmark's world (issue 18), shared by
+//! The avoidance benchmark's world, shared by
 //! `benches/avoidance.rs` and `examples/avoid_icount.rs` (included with
 //! `#[path]`): `side²` agents on a square lattice of 1.6 m (π·3²/1.6² ≈ 11
 //! within the 3 m neighbour reach), each funnelling to a seeded oriented

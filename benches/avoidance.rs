@@ -1,5 +1,5 @@
-//! Cost per agent update with avoidance vs without (issue 18 target: ORCA
-//! ≤ 3× the avoidance-free update at about 10 neighbours, same run).
+//! Cost per agent update with avoidance vs without (target: ORCA ≤ 3×
+//! the avoidance-free update at about 10 neighbours, same run).
 //!
 //! Agents on a square lattice of 1.6 m (π·3²/1.6² ≈ 11 within the 3 m
 //! neighbour reach), each funnelling to a seeded oriented target 20–30 m

@@ -1,8 +1,8 @@
 //! Cost of the core pieces, measured side by side in one run: one seek
-//! step (the baseline), one η-table lookup (issue: lookup ≤ 10× seek) and
+//! step (the baseline), one η-table lookup (target: ≤ 10× seek) and
 //! one funnelling update — plan plus the committed seek step — for near
 //! (1–4 m) and far (20–30 m) targets, for the default μ bound and the two
-//! literal ones (issue: funnelling ≤ 4× seek); and `crate::base::trig::atan2`
+//! literal ones (target: ≤ 4× seek); and `crate::base::trig::atan2`
 //! against std's `atan2`.
 //!
 //! `cargo bench --bench core` (add `-- --warm-up-time 1 --measurement-time 2`
@@ -24,6 +24,7 @@ use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::Update;
+use steering::studies::cost::{oriented_goals, start_states};
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -50,30 +51,6 @@ fn queries() -> Vec<[f32; 5]> {
         .collect()
 }
 
-/// 1,024 random oriented goals at distances in [lo, hi] from the origin.
-fn goals(lo: f32, hi: f32) -> Vec<Goal> {
-    let mut r = Rng::new(17);
-    (0..1024)
-        .map(|_| Goal {
-            pos: unit(r.range(-3.1, 3.1)) * r.range(lo, hi),
-            beta: r.range(-3.1, 3.1),
-            ..Default::default()
-        })
-        .collect()
-}
-
-/// 1,024 random admissible start states at the origin.
-fn states() -> Vec<VehicleState> {
-    let p = VehicleParams::default();
-    let mut r = Rng::new(23);
-    (0..1024)
-        .map(|_| {
-            let v = r.range(0.0, p.v_max);
-            VehicleState::new(Vec2::ZERO, 0.0, v, r.range(-1.0, 1.0) * p.omega_limit(v))
-        })
-        .collect()
-}
-
 /// The measured pieces, each a closure over iteration `k`.
 struct Pieces {
     p: VehicleParams,
@@ -95,9 +72,9 @@ impl Pieces {
             t: table(),
             offsets: qs.iter().map(|q| unit(q[1]) * q[0]).collect(),
             qs,
-            st: states(),
-            near: goals(1.0, 4.0),
-            far: goals(20.0, 30.0),
+            st: start_states(),
+            near: oriented_goals(1.0, 4.0),
+            far: oriented_goals(20.0, 30.0),
         }
     }
 
@@ -263,8 +240,8 @@ fn ratio() {
             }
         }
     }
-    // A table at paper 000's own size (43,200 entries, issue 19; counts as
-    // in tests/fidelity.rs), generated here (0.1 s), beside ours.
+    // A table at paper 000's own size (43,200 entries; counts as in
+    // tests/fidelity.rs), generated here (0.1 s), beside ours.
     let small = steering::funnelling::table::spec::TableSpec::with_counts(
         VehicleParams::default(),
         [10, 24, 5, 4, 6],

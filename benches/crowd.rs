@@ -12,10 +12,10 @@
 //!   (Linux `CLOCK_THREAD_CPUTIME_ID`), so time spent preempted on a busy
 //!   shared machine is not counted; falls back to wall time elsewhere;
 //! * `crowd_step_cpu_no_metrics` — CPU time with metrics off;
-//! * `crowd_overlaps_no_sep` — issue 17's anomaly: the overlap metric on
+//! * `crowd_overlaps_no_sep` — the overlap metric where it costs most:
 //!   30,000 boids of Test IV's pathway run without separation (twice as
-//!   dense), counted from both sides of each pair (`both_sides`, the old
-//!   way) and from one side (`one_sided`, the step's), same positions.
+//!   dense), counted from both sides of each pair (`both_sides`) and from
+//!   one side (`one_sided`, the step's), same positions.
 //!
 //! Run with `cargo bench --bench crowd -- --warm-up-time 1 --measurement-time 2`.
 

@@ -14,8 +14,6 @@ use std::hint::black_box;
 use std::time::Instant;
 
 use criterion::{criterion_group, Criterion};
-use glam::Vec2;
-use steering::base::rng::Rng;
 use steering::base::vehicle::{VehicleParams, VehicleState};
 use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::Controller;
@@ -23,6 +21,7 @@ use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::relaxed::{EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::Update;
+use steering::studies::cost::{table1_bin, TABLE1_BETAS_DEG, TABLE1_DISTANCES};
 
 fn table() -> EtaTable {
     EtaTable::from_bytes(
@@ -31,41 +30,15 @@ fn table() -> EtaTable {
     .unwrap()
 }
 
-const DISTANCES: [f32; 4] = [1.5, 4.0, 10.0, 25.0];
-const BETAS_DEG: [f32; 4] = [0.0, 60.0, 120.0, 180.0];
-
-/// 256 (state, goal) cases of one bin: start at the origin, random heading
-/// offset to the centre, random admissible (v, ω), β = bearing + offset.
-fn bin(d: f32, beta_deg: f32, tol: (f32, f32), seed: u64) -> Vec<(VehicleState, Goal)> {
-    let p = VehicleParams::default();
-    let mut r = Rng::new(seed);
-    (0..256)
-        .map(|_| {
-            let bearing = r.range(-3.1, 3.1);
-            let v = r.range(0.0, p.v_max);
-            let w = r.range(-1.0, 1.0) * p.omega_limit(v);
-            let sign = if r.range(0.0, 1.0) < 0.5 { -1.0 } else { 1.0 };
-            (
-                VehicleState::new(Vec2::ZERO, 0.0, v, w),
-                Goal {
-                    pos: Vec2::from_angle(bearing) * d,
-                    beta: bearing + sign * beta_deg.to_radians(),
-                    d_tol: tol.0,
-                    eps_tol: tol.1.to_radians(),
-                    speed: 1.3,
-                    halting: false,
-                    vel: Vec2::ZERO,
-                },
-            )
-        })
-        .collect()
-}
-
 fn mixed(tol: (f32, f32)) -> Vec<(VehicleState, Goal)> {
     let mut v = Vec::new();
-    for (i, d) in DISTANCES.iter().enumerate() {
-        for (j, b) in BETAS_DEG.iter().enumerate() {
-            v.extend(bin(*d, *b, tol, (i * 4 + j) as u64).into_iter().take(64));
+    for (i, d) in TABLE1_DISTANCES.iter().enumerate() {
+        for (j, b) in TABLE1_BETAS_DEG.iter().enumerate() {
+            v.extend(
+                table1_bin(*d, *b, tol, (i * 4 + j) as u64)
+                    .into_iter()
+                    .take(64),
+            );
         }
     }
     v
@@ -91,7 +64,7 @@ const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15
 
 /// Ours (defaults, then the paper arc variants), then like for like the
 /// paper's literal standard controller against its literal relaxed one
-/// (issue 19: Table 1's "relaxed about 50 % cheaper" is against that).
+/// (Table 1's "relaxed about 50 % cheaper" is against that).
 fn controllers() -> [(&'static str, Controller); 6] {
     let f = FunnelConfig::default();
     let lit = steering::studies::envelope::literal_config();
@@ -157,9 +130,9 @@ fn table1() {
         let mut cells = Vec::new();
         for (ti, (_, tol)) in TOLS.iter().enumerate() {
             let (mut lo, mut hi, mut sum) = (f64::INFINITY, 0.0f64, 0.0);
-            for (i, d) in DISTANCES.iter().enumerate() {
-                for (j, b) in BETAS_DEG.iter().enumerate() {
-                    let cases = bin(*d, *b, *tol, (i * 4 + j) as u64);
+            for (i, d) in TABLE1_DISTANCES.iter().enumerate() {
+                for (j, b) in TABLE1_BETAS_DEG.iter().enumerate() {
+                    let cases = table1_bin(*d, *b, *tol, (i * 4 + j) as u64);
                     let t0 = Instant::now();
                     for k in 0..n {
                         update(&t, &p, ctl, &cases[k & 255]);

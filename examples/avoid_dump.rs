@@ -4,16 +4,33 @@
 //! `cargo run --release --example avoid_dump -- corridor 1015 12 20`
 //! (benchmark, seed, times in s).
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
 #[path = "common/bench_arg.rs"]
 mod bench_arg;
+use clap::Parser;
 use steering::avoidance::config::AvoidanceMethod;
 use steering::funnelling::table::lookup::EtaTable;
 
+/// All agents of an avoidance benchmark run (ORCA) at given times.
+#[derive(Parser)]
+struct Args {
+    /// Benchmark.
+    #[arg(value_enum, default_value_t = bench_arg::BenchArg::Corridor)]
+    bench: bench_arg::BenchArg,
+    /// Seed.
+    #[arg(default_value_t = 1000)]
+    seed: u64,
+    /// Times to print, s.
+    times: Vec<f32>,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let bench = bench_arg::bench(args.get(1));
-    let seed: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let times: Vec<f32> = args[3..].iter().filter_map(|s| s.parse().ok()).collect();
+    let Args { bench, seed, times } = Args::parse();
+    let bench = bench.bench();
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
     let sc = bench.scenario(seed, AvoidanceMethod::Orca);

@@ -1,5 +1,5 @@
-//! Deterministic cost of a world step with and without avoidance (issue
-//! 18), for a loaded machine: run under callgrind and difference two step
+//! Deterministic cost of a world step with and without avoidance, for a
+//! loaded machine: run under callgrind and difference two step
 //! counts, e.g.
 //!
 //! ```sh
@@ -13,6 +13,12 @@
 //! (count(40) − count(20)) / (20 · 1,024). An optional third argument
 //! sets `maxNeighbours` (a change of behaviour, to measure its cost).
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
+use clap::Parser;
 use std::hint::black_box;
 use steering::avoidance::config::AvoidanceMethod;
 use steering::funnelling::table::lookup::EtaTable;
@@ -20,12 +26,25 @@ use steering::funnelling::table::lookup::EtaTable;
 #[path = "../benches/avoid_world.rs"]
 mod avoid_world;
 
+/// Steps of the avoidance benchmark's lattice world, for callgrind.
+#[derive(Parser)]
+struct Args {
+    /// Avoidance method.
+    #[arg(default_value = "orca", value_parser = ["off", "separation", "orca"])]
+    what: String,
+    /// Measured steps (after 60 unmeasured ones).
+    #[arg(default_value_t = 20)]
+    n: usize,
+    /// `maxNeighbours` (default: the method's).
+    max_neighbours: Option<u32>,
+}
+
 fn main() {
-    let what = std::env::args().nth(1).unwrap_or_else(|| "orca".into());
-    let n: usize = std::env::args()
-        .nth(2)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(20);
+    let Args {
+        what,
+        n,
+        max_neighbours,
+    } = Args::parse();
     let method = match what.as_str() {
         "off" => AvoidanceMethod::Off,
         "separation" => AvoidanceMethod::Separation,
@@ -34,7 +53,7 @@ fn main() {
     let table = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
         .expect("tables/eta.bin (run from the repository root)");
     let mut w = avoid_world::world(32, method);
-    if let Some(k) = std::env::args().nth(3).and_then(|s| s.parse().ok()) {
+    if let Some(k) = max_neighbours {
         let mut cfg = steering::avoidance::config::AvoidanceConfig::with_method(method);
         cfg.max_neighbours = k;
         w.set_avoidance(cfg, Vec::new()).unwrap();

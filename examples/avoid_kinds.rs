@@ -1,4 +1,4 @@
-//! What kind of deadlock each corridor agent is in (issue 18): every
+//! What kind of deadlock each corridor agent is in (ORCA): every
 //! agent the moment it has been unfinished and slower than 0.05 m/s for
 //! 10 s (the study's rule, as `avoid_stuck.rs`), classified by where it
 //! stands and what holds it, and whether it finished by the end of the run.
@@ -14,6 +14,12 @@
 //! - `wall-own-lane`: within 0.55 m of a wall, on its own side;
 //! - `mid-jam`: the rest (inside the corridor, away from the walls).
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
+use clap::Parser;
 use steering::avoidance::config::AvoidanceMethod;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::studies::avoidance::Bench;
@@ -26,11 +32,22 @@ const KINDS: [&str; 5] = [
     "mid-jam",
 ];
 
+/// What kind of deadlock each corridor agent is in (ORCA).
+#[derive(Parser)]
+struct Args {
+    /// First seed.
+    #[arg(default_value_t = 1000)]
+    s0: u64,
+    /// Seeds.
+    #[arg(default_value_t = 100)]
+    n: u64,
+    /// One line per deadlocked agent.
+    #[arg(short)]
+    verbose: bool,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let s0: u64 = args.get(1).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let n: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(100);
-    let verbose = args.iter().any(|a| a == "-v");
+    let Args { s0, n, verbose } = Args::parse();
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
     // [kind][finished later?] agents; first stuck agent of a run by kind.

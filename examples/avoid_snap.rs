@@ -5,19 +5,43 @@
 //! `cargo run --release --example avoid_snap -- corridor 1001 2.0`
 //! (benchmark, seed, seconds between snapshots).
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
+use clap::Parser;
 use steering::avoidance::config::AvoidanceMethod;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::studies::avoidance::Bench;
 
+/// ASCII snapshots of an avoidance benchmark run (ORCA).
+#[derive(Parser)]
+struct Args {
+    /// Benchmark (the snapshot's frame fits these two).
+    #[arg(default_value = "corridor", value_parser = ["corridor", "doorway"])]
+    which: String,
+    /// Seed.
+    #[arg(default_value_t = 1000)]
+    seed: u64,
+    /// Seconds between snapshots.
+    #[arg(default_value_t = 2.0)]
+    every: f32,
+    /// Last snapshot, s.
+    #[arg(default_value_t = 60.0)]
+    t_end: f32,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let which = args.get(1).map_or("corridor", String::as_str);
-    let seed: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let every: f32 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(2.0);
-    let t_end: f32 = args.get(4).and_then(|s| s.parse().ok()).unwrap_or(60.0);
+    let Args {
+        which,
+        seed,
+        every,
+        t_end,
+    } = Args::parse();
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
-    let bench = match which {
+    let bench = match which.as_str() {
         "doorway" => Bench::Doorway,
         _ => Bench::Corridor,
     };

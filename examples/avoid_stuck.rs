@@ -1,5 +1,5 @@
-//! Where avoidance benchmark agents first get stuck (issue 18's deadlock
-//! target): for each seed, every agent the moment it has been unfinished
+//! Where avoidance benchmark agents first get stuck (the study's
+//! deadlocks): for each seed, every agent the moment it has been unfinished
 //! and slower than 0.05 m/s for 10 s (the study's deadlock rule), with
 //! its goal, mode and the agents within 1.5 m.
 //!
@@ -7,18 +7,36 @@
 //! (benchmark `corridor` | `doorway` | `circle32` | `circle100`, first
 //! seed, seeds). Tune seeds are 1000–1019; the report seeds 0–99.
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
 #[path = "common/bench_arg.rs"]
 mod bench_arg;
+use clap::Parser;
 use steering::avoidance::config::AvoidanceMethod;
 use steering::funnelling::table::lookup::EtaTable;
 
+/// Where avoidance benchmark agents first get stuck.
+#[derive(Parser)]
+struct Args {
+    /// Benchmark.
+    #[arg(value_enum, default_value_t = bench_arg::BenchArg::Corridor)]
+    bench: bench_arg::BenchArg,
+    /// First seed.
+    #[arg(default_value_t = 1000)]
+    s0: u64,
+    /// Seeds.
+    #[arg(default_value_t = 20)]
+    n: u64,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let s0: u64 = args.get(2).and_then(|s| s.parse().ok()).unwrap_or(1000);
-    let n: u64 = args.get(3).and_then(|s| s.parse().ok()).unwrap_or(20);
+    let Args { bench, s0, n } = Args::parse();
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
-    let bench = bench_arg::bench(args.get(1));
+    let bench = bench.bench();
     for seed in s0..s0 + n {
         let sc = bench.scenario(seed, AvoidanceMethod::Orca);
         let mut w = sc.world().expect("benchmark scenarios are valid");

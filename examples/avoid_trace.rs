@@ -4,18 +4,50 @@
 //! `cargo run --release --example avoid_trace -- corridor 1008 0 18 24 0.2`
 //! (benchmark, seed, agent, from s, to s, every s).
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
 #[path = "common/bench_arg.rs"]
 mod bench_arg;
+use clap::Parser;
 use steering::avoidance::config::AvoidanceMethod;
 use steering::funnelling::table::lookup::EtaTable;
 
+/// One agent of an avoidance benchmark run, step by step.
+#[derive(Parser)]
+struct Args {
+    /// Benchmark.
+    #[arg(value_enum, default_value_t = bench_arg::BenchArg::Corridor)]
+    bench: bench_arg::BenchArg,
+    /// Seed.
+    #[arg(default_value_t = 1000)]
+    seed: u64,
+    /// Agent.
+    #[arg(default_value_t = 0)]
+    i: usize,
+    /// From, s.
+    #[arg(default_value_t = 0.0)]
+    t0: f32,
+    /// To, s.
+    #[arg(default_value_t = 30.0)]
+    t1: f32,
+    /// Every, s.
+    #[arg(default_value_t = 0.2)]
+    every: f32,
+}
+
 fn main() {
-    let args: Vec<String> = std::env::args().collect();
-    let bench = bench_arg::bench(args.get(1));
-    let num = |k: usize, d: f32| args.get(k).and_then(|s| s.parse().ok()).unwrap_or(d);
-    let seed = num(2, 1000.0) as u64;
-    let i = num(3, 0.0) as usize;
-    let (t0, t1, every) = (num(4, 0.0), num(5, 30.0), num(6, 0.2));
+    let Args {
+        bench,
+        seed,
+        i,
+        t0,
+        t1,
+        every,
+    } = Args::parse();
+    let bench = bench.bench();
     let bytes = std::fs::read("tables/eta.bin").expect("run from the repository root");
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
     let sc = bench.scenario(seed, AvoidanceMethod::Orca);

@@ -1,15 +1,49 @@
-//! Crowd step cost (issue 17): N boids of Test IV's pathway scaled with N
+//! Crowd step cost natively: N boids of Test IV's pathway scaled with N
 //! (its density), Parker 10 %, metrics off (the workers' mode), STEPS steps
 //! after 100 settling ones; then separation alone and its grid rebuild
-//! alone on the last positions (`ONLY_REBUILD=1`: 500 rebuilds, for
-//! `perf record`; `ONLY_STEP=1`: the steps alone). `cargo run --release --example crowd_profile -- N STEPS`.
+//! alone on the last positions (`--only-rebuild` or `ONLY_REBUILD=1`: 500
+//! rebuilds, for `perf record`; `--only-step` or `ONLY_STEP=1`: the steps
+//! alone). `cargo run --release --example crowd_profile -- N STEPS`.
+
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+use clap::builder::FalseyValueParser;
+use clap::Parser;
 use steering::crowd::boid_seek::Seek;
 use steering::crowd::config::{CrowdConfig, PaperTest};
 use steering::crowd::world::Crowd;
+
+/// Crowd step cost natively, Test IV's pathway scaled with N.
+#[derive(Parser)]
+struct Args {
+    /// Boids.
+    #[arg(default_value_t = 100_000)]
+    n: usize,
+    /// Timed steps.
+    #[arg(default_value_t = 100)]
+    steps: u32,
+    /// Settling steps before timing.
+    #[arg(long, env = "SETTLE", default_value_t = 100)]
+    settle: u32,
+    /// Time the steps alone.
+    #[arg(long, env = "ONLY_STEP", value_parser = FalseyValueParser::new())]
+    only_step: bool,
+    /// Also time the rebuild of the positions sorted by bucket.
+    #[arg(long, env = "SORTED", value_parser = FalseyValueParser::new())]
+    sorted: bool,
+    /// Time the grid rebuild alone, `--rebuilds` times.
+    #[arg(long, env = "ONLY_REBUILD", value_parser = FalseyValueParser::new())]
+    only_rebuild: bool,
+    /// Rebuilds with `--only-rebuild`.
+    #[arg(long, env = "REBUILDS", default_value_t = 500)]
+    rebuilds: u32,
+}
+
 fn main() {
-    let a: Vec<String> = std::env::args().collect();
-    let n: usize = a.get(1).map_or(100_000, |s| s.parse().unwrap());
-    let steps: u32 = a.get(2).map_or(100, |s| s.parse().unwrap());
+    let args = Args::parse();
+    let (n, steps) = (args.n, args.steps);
     let scale = n as f32 / 300.0;
     let mut cfg = CrowdConfig::paper(PaperTest::IV, Seek::Parker { fraction: 0.1 });
     cfg.boids = n;
@@ -19,20 +53,14 @@ fn main() {
     }
     let mut c = Crowd::new(&cfg).unwrap();
     c.set_metrics_enabled(false);
-    let env = |k: &str, d: u32| {
-        std::env::var(k)
-            .ok()
-            .and_then(|v| v.parse().ok())
-            .unwrap_or(d)
-    };
-    c.run(env("SETTLE", 100));
+    c.run(args.settle);
     let t = std::time::Instant::now();
     c.run(steps);
     let dt = t.elapsed().as_secs_f64() / f64::from(steps);
     let h = c.positions().iter().fold(0u64, |h, v| {
         h.wrapping_mul(31).wrapping_add(u64::from(v.to_bits()))
     });
-    if std::env::var("ONLY_STEP").is_ok() {
+    if args.only_step {
         println!("{n} boids: {:.2} ms per step", dt * 1e3);
         return;
     }
@@ -50,7 +78,7 @@ fn main() {
         );
     }
     let ds = t.elapsed().as_secs_f64() / f64::from(steps);
-    if std::env::var("SORTED").is_ok() {
+    if args.sorted {
         grid.rebuild(&pos, 2.0 * cfg.boid_radius);
         let sorted: Vec<f32> = (0..n)
             .flat_map(|k| {
@@ -67,9 +95,9 @@ fn main() {
             t.elapsed().as_secs_f64() * 2.0
         );
     }
-    if std::env::var("ONLY_REBUILD").is_ok() {
+    if args.only_rebuild {
         let t = std::time::Instant::now();
-        let reps = env("REBUILDS", 500);
+        let reps = args.rebuilds;
         for _ in 0..reps {
             grid.rebuild(&pos, 2.0 * cfg.boid_radius);
         }

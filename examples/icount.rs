@@ -8,6 +8,12 @@
 //! ```
 //! `seek`, `seek_like` (from the funnelling update's states), `lookup` or `funnel` (default funnelling update), N iterations.
 
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+
+use clap::Parser;
 use glam::Vec2;
 use std::hint::black_box;
 use steering::base::rng::Rng;
@@ -17,12 +23,20 @@ use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::Update;
+
+/// Calls of one piece, for callgrind.
+#[derive(Parser)]
+struct Args {
+    /// The piece.
+    #[arg(default_value = "funnel", value_parser = ["seek", "seek_like", "lookup", "funnel"])]
+    what: String,
+    /// Iterations.
+    #[arg(default_value_t = 10_000)]
+    n: usize,
+}
+
 fn main() {
-    let what = std::env::args().nth(1).unwrap_or_else(|| "funnel".into());
-    let n: usize = std::env::args()
-        .nth(2)
-        .and_then(|s| s.parse().ok())
-        .unwrap_or(10_000);
+    let Args { what, n } = Args::parse();
     let t = EtaTable::from_bytes(&std::fs::read("tables/eta.bin").unwrap())
         .expect("tables/eta.bin (run from the repository root)");
     let p = black_box(VehicleParams::default());
@@ -75,9 +89,8 @@ fn main() {
                     memory: &mut FunnelMemory::default(),
                 }));
                 // The moved state is the update's result too: without this
-                // the integrator was dead code (1,279 instructions counted
-                // before issue 13's second stop, integrator and θ's sin/cos
-                // left out).
+                // the integrator and θ's sin/cos are dead code and drop out
+                // of the count.
                 black_box(st);
             }
         }

@@ -1,8 +1,14 @@
-//! One envelope moving-goal run step by step (issue 13's orbits):
-//! `orbit_trace -- SEED INDEX [EVERY] [relaxed]` prints t, pose, speed,
-//! laps, mode, D to the goal and its least value so far, the aim point
-//! (distance, α), v_dt, passes; `VEHICLE` and `TABLE` as in
-//! `examples/orbits.rs`. Runs 150 s.
+//! One envelope moving-goal run step by step (to see an orbit form):
+//! `orbit_trace -- SEED INDEX [EVERY] [standard|relaxed]` prints t, pose,
+//! speed, laps, mode, D to the goal and its least value so far, the aim
+//! point (distance, α), v_dt, passes; `--vehicle` / `VEHICLE` and
+//! `--table` / `TABLE` as in `examples/orbits.rs`. Runs 150 s.
+
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+use clap::Parser;
 use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::ControllerKind;
 use steering::funnelling::relaxed::RelaxedConfig;
@@ -11,13 +17,30 @@ use steering::world::World;
 #[path = "common/moving.rs"]
 mod moving;
 
+/// One envelope moving-goal run step by step.
+#[derive(Parser)]
+struct Args {
+    /// The envelope study's seed.
+    #[arg(default_value_t = 1)]
+    seed: u64,
+    /// The moving-goal scenario's index.
+    #[arg(default_value_t = 0)]
+    i: usize,
+    /// Print every N-th step.
+    #[arg(default_value_t = 30)]
+    every: u32,
+    /// Controller.
+    #[arg(value_enum, default_value_t = moving::Law::Standard)]
+    law: moving::Law,
+    #[command(flatten)]
+    setup: moving::Setup,
+}
+
 fn main() {
-    let a: Vec<String> = std::env::args().collect();
-    let seed: u64 = a.get(1).map_or(1, |s| s.parse().unwrap());
-    let i: usize = a.get(2).map_or(0, |s| s.parse().unwrap());
-    let every: u32 = a.get(3).map_or(30, |s| s.parse().unwrap());
-    let relaxed = a.get(4).is_some_and(|s| s == "relaxed");
-    let (table, p, st) = moving::setup(seed, i + 1);
+    let a = Args::parse();
+    let (seed, i, every) = (a.seed, a.i, a.every);
+    let relaxed = a.law == moving::Law::Relaxed;
+    let (table, p, st) = a.setup.setup(seed, i + 1);
     let sc = st.scenario(&p, GoalKind::Moving, i);
     let mut w = World::new(p, FunnelConfig::default()).unwrap();
     if relaxed {

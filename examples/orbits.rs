@@ -1,8 +1,15 @@
 //! Moving-goal runs of the envelope study that never enter the disk (or
-//! never finish): `orbits -- SEED N [relaxed]`. Another vehicle:
+//! never finish): `orbits -- SEED N [standard|relaxed]`. Another vehicle:
+//! `--vehicle robot --table path/to/its/eta-KEY.bin`, or
 //! `VEHICLE=robot TABLE=path/to/its/eta-KEY.bin` (a reference vehicle
 //! of `scenarios/vehicles/` and its table, e.g. from `steer run`'s cache);
 //! runs get the study's time limit scaled to the vehicle.
+
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
+use clap::Parser;
 use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::controller::Controller;
 use steering::funnelling::relaxed::RelaxedConfig;
@@ -10,12 +17,28 @@ use steering::studies::envelope::{run, GoalKind};
 #[path = "common/moving.rs"]
 mod moving;
 
+/// Moving-goal runs of the envelope study that never enter the disk or
+/// never finish.
+#[derive(Parser)]
+struct Args {
+    /// The envelope study's seed.
+    #[arg(default_value_t = 1)]
+    seed: u64,
+    /// Moving-goal scenarios.
+    #[arg(default_value_t = 2000)]
+    n: usize,
+    /// Controller.
+    #[arg(value_enum, default_value_t = moving::Law::Standard)]
+    law: moving::Law,
+    #[command(flatten)]
+    setup: moving::Setup,
+}
+
 fn main() {
-    let a: Vec<String> = std::env::args().collect();
-    let seed: u64 = a.get(1).map_or(1, |s| s.parse().unwrap());
-    let n: usize = a.get(2).map_or(2000, |s| s.parse().unwrap());
-    let (table, p, st) = moving::setup(seed, n);
-    let ctl = if a.get(3).is_some_and(|s| s == "relaxed") {
+    let a = Args::parse();
+    let (seed, n) = (a.seed, a.n);
+    let (table, p, st) = a.setup.setup(seed, n);
+    let ctl = if a.law == moving::Law::Relaxed {
         Controller::Relaxed(FunnelConfig::default(), RelaxedConfig::default())
     } else {
         Controller::Standard(FunnelConfig::default())

@@ -1,16 +1,27 @@
 //! The funnelling world's cost per agent update, natively, on exactly the
 //! workload `web/test/wasmnative.mjs` runs in the release wasm package
-//! (issue 17: wasm / native in one run): the lab's performance world
-//! (`spawn_random`: N agents, seed, extent √N·1.5 m, 1.3 m/s, 16 goals
-//! each), warmed up, then timed over rounds of `steps` steps.
+//! (`make bench-wasm-native` runs both and prints wasm / native): the
+//! lab's performance world (`spawn_random`: N agents, seed, extent
+//! √N·1.5 m, 1.3 m/s, 16 goals each), warmed up, then timed over rounds of
+//! `steps` steps.
 //!
 //! `cargo run --release --example world_bench -- N STEPS ROUNDS` prints one
 //! line per round, `ns_per_update <wall> cpu <process CPU time>` (CPU time:
 //! Linux `CLOCK_PROCESS_CPUTIME_ID`, the clock of Node's
 //! `process.cpuUsage`, so time preempted on a busy machine is not counted),
 //! then `hash <hex>`: FNV-1a of the states' bits after the last round, so
-//! the caller can check both sides did the same work.
+//! the caller can check both sides did the same work. `--metrics` (or
+//! `METRICS=1`) keeps the agents' path metrics, which the lab's page never
+//! reads.
+
+// clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
+// example is empty.
+#![cfg_attr(target_arch = "wasm32", no_main)]
+#![cfg(not(target_arch = "wasm32"))]
 use std::time::Instant;
+
+use clap::builder::FalseyValueParser;
+use clap::Parser;
 
 use steering::funnelling::config::FunnelConfig;
 use steering::funnelling::table::lookup::EtaTable;
@@ -24,14 +35,30 @@ fn cpu_ns() -> u128 {
     cpu_clock::process_ns().unwrap_or(0)
 }
 
+/// The funnelling world's cost per agent update, natively.
+#[derive(Parser)]
+struct Args {
+    /// Agents.
+    #[arg(default_value_t = 10_000)]
+    n: usize,
+    /// Steps per round (and warm-up steps).
+    #[arg(default_value_t = 30)]
+    steps: usize,
+    /// Timed rounds.
+    #[arg(default_value_t = 5)]
+    rounds: usize,
+    /// Keep the agents' path metrics.
+    #[arg(long, env = "METRICS", value_parser = FalseyValueParser::new())]
+    metrics: bool,
+}
+
 fn main() {
-    let arg = |k: usize, d: usize| {
-        std::env::args()
-            .nth(k)
-            .and_then(|s| s.parse().ok())
-            .unwrap_or(d)
-    };
-    let (n, steps, rounds) = (arg(1, 10_000), arg(2, 30), arg(3, 5));
+    let Args {
+        n,
+        steps,
+        rounds,
+        metrics,
+    } = Args::parse();
     let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin"))
         .expect("tables/eta.bin");
     let table = EtaTable::from_bytes(&bytes).expect("a valid table");
@@ -40,8 +67,8 @@ fn main() {
     let extent = 10f64.max((n as f64).sqrt() * 1.5) as f32;
     w.spawn_random(n, 1, extent, 1.3).expect("room");
     // As the lab's page: it never reads the agents' path metrics
-    // (`METRICS=1` keeps them, for a same-run comparison).
-    w.set_metrics(std::env::var_os("METRICS").is_some());
+    // (`--metrics` keeps them, for a same-run comparison).
+    w.set_metrics(metrics);
     for _ in 0..steps {
         w.step(&table);
     }

@@ -16,7 +16,7 @@ def goal(x, y, beta, **kw):
 def agent(x, y, theta, goals, v=0.0):
     return {"x": round(x, 3), "y": round(y, 3), "thetaDeg": round(theta, 2), "v": v, "goals": goals}
 
-# What each figure claims and what we measure (issue 19): shown in the lab's
+# What each figure claims and what we measure: shown in the lab's
 # side panel; the numbers come from tests/fidelity.rs (`cargo test --release
 # --test fidelity -- --nocapture`), which asserts them. Keyed by the preset
 # name without its _standard / _relaxed suffix.
@@ -94,7 +94,7 @@ def write(name, source, description, agents, duration=40.0, **extra):
         f.write("\n")
 
 # Paper 000 Fig. 1 / paper 001 Fig. 1a: plain seek to three position goals.
-# The seek controller ignores beta and epsTol (issue 19: with the standard
+# The seek controller ignores beta and epsTol (with the standard
 # controller and epsTol 180 a target behind was still funnelled towards
 # beta); epsTol 180 only draws the targets without an orientation triangle.
 write("p000_fig1_seek", "paper 000 Fig. 1, paper 001 Fig. 1a",

@@ -1,8 +1,8 @@
 //! An avoidance step (ORCA) allocates nothing once its buffers have grown
-//! (issue 18: the avoider's scratch lives in fixed arrays and reused
-//! buffers): counted with a global allocator that tallies allocations made
-//! by this test's own thread, on the cost benchmark's lattice world and on
-//! the doorway preset (obstacles).
+//! (the avoider's scratch lives in fixed arrays and reused buffers):
+//! counted with a global allocator that tallies allocations made by this
+//! test's own thread, on the cost benchmark's lattice world and on the
+//! doorway preset (obstacles).
 #![cfg(not(target_arch = "wasm32"))]
 
 use steering::avoidance::config::AvoidanceMethod;

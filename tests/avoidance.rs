@@ -1,4 +1,4 @@
-//! Avoidance between funnelling agents (issue 18): the fast slice of the
+//! Avoidance between funnelling agents: the fast slice of the
 //! benchmark targets (`steer avoid --seeds 100` runs the 100-seed study),
 //! the combination with funnelling (an unobstructed agent steps the same
 //! bits as without avoidance), scenario errors naming the field, the
@@ -57,7 +57,7 @@ fn circle_swap_with_orca_has_no_overlap_and_arrives_oriented() {
 
 #[test]
 fn without_avoidance_the_circle_swap_overlaps() {
-    // The ghosts the issue starts from: the same scenario, avoidance off.
+    // What avoidance is for: the same scenario, avoidance off, overlaps.
     let r = run(
         &Bench::CircleSwap(32).scenario(1, AvoidanceMethod::Off),
         &table(),
@@ -76,8 +76,8 @@ fn walls_are_never_crossed_and_limits_hold() {
             assert_eq!(r.obstacle_contacts, 0, "{}: {r:?}", b.name());
             assert_eq!(r.overlap_pair_steps, 0, "{}: {r:?}", b.name());
             assert_eq!((r.violations, r.nan), (0, 0));
-            // All four arrive whole (corridor seed 2 lost one agent
-            // before agents at rest sought their goal's direction,
+            // All four arrive whole (corridor seed 2 keeps every agent
+            // because agents at rest seek their goal's direction,
             // `avoidance::stalled`).
             assert_eq!(r.reached, r.agents, "{}: {r:?}", b.name());
         }
@@ -86,17 +86,15 @@ fn walls_are_never_crossed_and_limits_hold() {
 
 #[test]
 fn corridor_groups_keep_right_early_and_pass_in_lanes() {
-    // Tune seeds 1000–1099. Before the early keep-right
-    // (`avoidance::passing`) the two blocks met at full width and locked
-    // mid-corridor: 394 deadlocked agents in 72 runs. With it and agents
-    // at rest seeking their goal's direction (`avoidance::stalled`), 60 in
-    // 28 runs, reach 2,397 of 2,400. With the keep-right seen from further
-    // ahead and mates merging behind each other into the lane, 7 agents in
-    // 5 runs waited 10 s or more at once, and 2,399 of 2,400 arrived. With
-    // patience (`avoidance::patience`: a margin shrinking after 3 s at
-    // rest) none does (issue 18's target), and 2,397 arrive: 3 agents
-    // beyond the corridor, their targets behind two arrived ones, still
-    // creep towards them at the end.
+    // Tune seeds 1000–1099. Without an early keep-right the two blocks
+    // meet at full width and lock mid-corridor. The keep-right seen from
+    // far ahead (`avoidance::passing`, lanes; mates merge behind each
+    // other into the lane), agents at rest seeking their goal's direction
+    // (`avoidance::stalled`) and patience (`avoidance::patience`: a margin
+    // shrinking after 3 s at rest) leave no agent waiting 10 s or more
+    // (the deadlock target); 2,397 arrive: 3 agents beyond the corridor,
+    // their targets behind two arrived ones, still creep towards them at
+    // the end.
     let t = table();
     let runs: Vec<_> = steering::base::parallel::map_indices(100, |k| {
         run(

@@ -1,28 +1,20 @@
 //! Avoidance worlds, same trajectory bits — natively and in WebAssembly
-//! (issue 18's cost work must not change a trajectory: every
-//! optimisation of the avoidance pass is bit-identical or it is a change
-//! of behaviour, reported as one).
+//! (an optimisation of the avoidance pass is bit-identical, or it is a
+//! change of behaviour and re-records these hashes).
 //!
 //! The golden values hash the raw f32 bits of every agent's state at every
 //! step of the avoidance presets (ORCA: circle swap N = 32, corridor,
 //! doorway with its walls, Fig. 8; separation: the corridor) and of the
 //! cost benchmark's lattice world (`benches/avoid_world.rs`, 16 × 16
 //! agents, about 11 neighbours each: the k-nearest selection, ties on the
-//! lattice included). First recorded before the avoidance cost work (main
-//! a39a444), which left them unchanged; re-recorded for the early keep-right
-//! (`avoidance/passing.rs`) and the heading search's `trig` cosine, and again
-//! for agents at rest seeking their goal's direction with no keep-right bias
-//! into a wall (`avoidance/stalled.rs`; the separation hash is unchanged,
-//! and exempting agents the funnel turns on the spot changed none), and
-//! again for the keep-right seen further ahead and the merge behind a mate
-//! (`avoidance/passing.rs`, the corridor's deadlocks; separation unchanged,
-//! it does not keep right), and again for patience, a stalled agent's
-//! margin shrinking (`avoidance/patience.rs`: the corridor and the lattice
-//! changed; circle32, the doorway, Fig. 8 and separation did not), and
-//! again for plans every other step (`AvoidanceConfig::replan_every` 2,
-//! the new default: every hash changed; planning every step, the lattice
-//! keeps its former hash, checked beside the new one). No
-//! proptest and no file I/O, so it also runs under
+//! lattice included). They pin every ORCA rule in force: the keep-right
+//! and the merge behind a mate (`avoidance/passing.rs`), agents at rest
+//! seeking their goal's direction with no keep-right bias into a wall
+//! (`avoidance/stalled.rs`), patience (`avoidance/patience.rs`), the heading
+//! search's `trig` cosine, and plans every other step (the default
+//! `AvoidanceConfig::replan_every` 2; the lattice also planning every
+//! step). Separation does not keep right: its hash pins the separation
+//! pass alone. No proptest and no file I/O, so it also runs under
 //! `wasm-pack test --headless --chrome`.
 
 #[cfg(target_arch = "wasm32")]
@@ -79,17 +71,16 @@ const PRESETS: [(&str, &str, Option<AvoidanceMethod>, u32, u64); 5] = [
     ),
 ];
 
-/// The doorway's golden hash. It once differed between native and wasm32:
-/// `unicycle`'s heading search (run by agents stuck at the door's walls)
-/// took `f32::cos`, the platform's libm; it now takes `steering::base::trig`.
+/// The doorway's golden hash. Agents stuck at the door's walls run
+/// `unicycle`'s heading search, which takes `steering::base::trig`'s cosine:
+/// `f32::cos`, the platform's libm, gives other bits in wasm32.
 const DOORWAY: u64 = 0xc135_74cd_328a_4ce0;
 
 /// The lattice world's golden hash (ORCA, 16 × 16 agents, 300 steps).
 const LATTICE: u64 = 0x2e84_3d7b_146e_2ba5;
 
-/// The same with every agent planning every step (`replanEvery` 1): the
-/// lattice's hash before plans every other step became the default, so
-/// the every-step reading is still the same bits.
+/// The same with every agent planning every step (`replanEvery` 1), so the
+/// every-step reading, not the default, stays pinned too.
 const LATTICE_EVERY_STEP: u64 = 0x2413_6082_0d54_be21;
 
 #[test]

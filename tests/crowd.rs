@@ -373,11 +373,12 @@ fn one_sided_overlap_count_equals_all_pairs_and_examines_half() {
     }
 }
 
-/// Issue 17's crowd anomaly, in candidate pairs rather than time: on Test
-/// IV's pathway with 30,000 boids, switching separation off packs the boids
-/// about twice as densely (nothing spreads them), so the overlap metric's
-/// neighbour search meets about twice the candidates per boid that the
-/// separation pass meets; examined from one side, it meets fewer.
+/// Why the crowd costs more without separation, in candidate pairs rather
+/// than time: on Test IV's pathway with 30,000 boids, switching separation
+/// off packs the boids about twice as densely (nothing spreads them), so
+/// the overlap metric's neighbour search meets about twice the candidates
+/// per boid that the separation pass meets; examined from one side, it
+/// meets fewer.
 #[test]
 fn without_separation_the_crowd_is_denser_and_the_overlap_count_examines_each_pair_once() {
     let n = 30_000;
@@ -558,7 +559,7 @@ fn neighbour_visits(grid: &mut NeighbourGrid, pos: &[f32], reach: f32) -> Vec<(u
 proptest! {
     #![proptest_config(ProptestConfig::with_cases(64))]
 
-    /// Issue 17: a rebuild after the first visits boids in the previous
+    /// A rebuild after the first visits boids in the previous
     /// bucket order and re-sorts each bucket by index: the neighbour order
     /// (and so every separation sum's bits) equals a fresh by-index grid's,
     /// however far the boids moved, for whole rebuilds and member subsets
@@ -592,7 +593,7 @@ proptest! {
             }
             let mut fresh = NeighbourGrid::new();
             if k % 2 == 1 {
-                // A strip's members (issue 17): boids left of a moving cut.
+                // A strip's members (a stepping worker's): boids left of a moving cut.
                 let cut = rng.range(0.0, side);
                 let members: Vec<u32> = (0..n as u32).filter(|&i| pos[2 * i as usize] < cut).collect();
                 kept.rebuild_members(&pos, reach, &members);

@@ -1,5 +1,5 @@
-//! A crowd step does not allocate once buffers have grown (issue 6:
-//! "allocation-free per step"): counted with a global allocator that
+//! A crowd step does not allocate once buffers have grown (allocation-free
+//! per step, so a frame never waits on the allocator): counted with a global allocator that
 //! tallies allocations made by this test's own thread.
 #![cfg(not(target_arch = "wasm32"))]
 
@@ -25,7 +25,7 @@ fn steps_do_not_allocate_after_the_first() {
     }
 }
 
-/// Issue 17's strips: one worker's share, its cut moving every step (the
+/// The stepping workers' strips: one worker's share, its cut moving every step (the
 /// grid of a strip is rebuilt in last step's order), allocates nothing once
 /// its buffers have grown to the widest strip (a first cycle of cuts).
 #[test]

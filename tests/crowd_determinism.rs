@@ -1,4 +1,4 @@
-//! Issue 17: the crowd's golden trajectories (tests/common) pin the step's
+//! The crowd's golden trajectories (tests/common) pin the step's
 //! bits, so a cheaper step or one split across workers must give the same
 //! boids. Metrics on or off must not change them either.
 #![cfg(not(target_arch = "wasm32"))]
@@ -36,7 +36,7 @@ fn crowd_golden_hashes_hold_with_metrics_on_and_off() {
     assert!(bad.is_empty(), "{bad:#?}");
 }
 
-/// The crowd stepped as `k` vertical strips (issue 17's workers): every
+/// The crowd stepped as `k` vertical strips (the page's workers): every
 /// strip a full copy loaded with the last complete state, stepping only
 /// the boids in its strip; the page's copy records the trace from the
 /// complete state. Cuts at quantiles of x, recomputed every `recut` steps.

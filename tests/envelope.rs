@@ -1,4 +1,4 @@
-//! The envelope study (issue 13) on a small held-out sample: seed 3, which
+//! The envelope study on a small held-out sample: seed 3, which
 //! neither tuning (seed 1) nor the reported figures (seed 2) use. Locks
 //! what every controller must keep over the whole operating envelope.
 #![cfg(not(target_arch = "wasm32"))]
@@ -40,7 +40,7 @@ fn every_variant_stays_finite_and_within_limits_and_standard_finishes() {
     }
 }
 
-/// The issue-13 targets, locked on seed 3 (1,000 static runs: the cells
+/// The envelope's targets, locked on seed 3 (1,000 static runs: the cells
 /// are too small here to judge one by one, so the bands are judged whole;
 /// `steer envelope --n 10000 --seed 2` reports every cell).
 #[test]
@@ -98,7 +98,7 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
             }
         }
         // Led to where they will be, moving goals are entered oriented
-        // about as often as static ones (54 % before, tune seed 1).
+        // about as often as static ones.
         let m = summarise(v.runs(GoalKind::Moving));
         assert!(m.oriented >= 0.8, "{} moving: {m:?}", v.name);
     }

@@ -88,22 +88,30 @@ fn paper_presets() -> Vec<(String, Scenario)> {
 }
 
 fn min_max(v: &[f32]) -> (f64, f64) {
-    v.iter().fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
-        (lo.min(f64::from(x)), hi.max(f64::from(x)))
-    })
+    v.iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+            (lo.min(f64::from(x)), hi.max(f64::from(x)))
+        })
 }
 
 /// One preset run to its duration, as figures: agents, finished, the final
 /// distance and heading error to the last goal, finish times, mean path
 /// length and integrated |curvature|, limit violations.
-fn preset_figures(name: &str, sc: &Scenario, table: &steering::funnelling::table::lookup::EtaTable) -> Vec<Figure> {
+fn preset_figures(
+    name: &str,
+    sc: &Scenario,
+    table: &steering::funnelling::table::lookup::EtaTable,
+) -> Vec<Figure> {
     let mut w = sc.world().expect("preset builds");
     for _ in 0..sc.steps() {
         w.step(table);
     }
     let a = &w.agents;
     let n = a.len() as f64;
-    let dist: Vec<f32> = a.iter().map(|a| (a.goal_now.pos - a.state.pos).length()).collect();
+    let dist: Vec<f32> = a
+        .iter()
+        .map(|a| (a.goal_now.pos - a.state.pos).length())
+        .collect();
     let head: Vec<f32> = a
         .iter()
         .map(|a| diff(a.goal_now.beta, a.state.theta).abs().to_degrees())
@@ -116,11 +124,41 @@ fn preset_figures(name: &str, sc: &Scenario, table: &steering::funnelling::table
     let what = |q: &str| format!("preset {name} run to its end: {q}");
     let mut f = vec![
         Figure::new(&id("agents"), &what("agents"), n, "", 0),
-        Figure::new(&id("finished"), &what("agents that completed every goal"), finished as f64, "", 0),
-        Figure::new(&id("distance.min"), &what("final distance to the last goal, smallest"), d0, "m", 2),
-        Figure::new(&id("distance.max"), &what("final distance to the last goal, largest"), d1, "m", 2),
-        Figure::new(&id("heading.min"), &what("final heading error to the last goal's β, smallest"), h0, "°", 1),
-        Figure::new(&id("heading.max"), &what("final heading error to the last goal's β, largest"), h1, "°", 1),
+        Figure::new(
+            &id("finished"),
+            &what("agents that completed every goal"),
+            finished as f64,
+            "",
+            0,
+        ),
+        Figure::new(
+            &id("distance.min"),
+            &what("final distance to the last goal, smallest"),
+            d0,
+            "m",
+            2,
+        ),
+        Figure::new(
+            &id("distance.max"),
+            &what("final distance to the last goal, largest"),
+            d1,
+            "m",
+            2,
+        ),
+        Figure::new(
+            &id("heading.min"),
+            &what("final heading error to the last goal's β, smallest"),
+            h0,
+            "°",
+            1,
+        ),
+        Figure::new(
+            &id("heading.max"),
+            &what("final heading error to the last goal's β, largest"),
+            h1,
+            "°",
+            1,
+        ),
         Figure::new(
             &id("length.mean"),
             &what("path length, mean"),
@@ -131,22 +169,39 @@ fn preset_figures(name: &str, sc: &Scenario, table: &steering::funnelling::table
         Figure::new(
             &id("curvature.mean"),
             &what("integrated |curvature|, mean"),
-            a.iter().map(|a| f64::from(a.metrics.curvature)).sum::<f64>() / n,
+            a.iter()
+                .map(|a| f64::from(a.metrics.curvature))
+                .sum::<f64>()
+                / n,
             "rad",
             2,
         ),
         Figure::new(
             &id("violations"),
             &what("steps over a vehicle limit"),
-            a.iter().map(|a| f64::from(a.metrics.violations)).sum::<f64>(),
+            a.iter()
+                .map(|a| f64::from(a.metrics.violations))
+                .sum::<f64>(),
             "steps",
             0,
         ),
     ];
     if !times.is_empty() {
         let (t0, t1) = min_max(&times);
-        f.push(Figure::new(&id("time.min"), &what("time to complete every goal, earliest"), t0, "s", 1));
-        f.push(Figure::new(&id("time.max"), &what("time to complete every goal, latest"), t1, "s", 1));
+        f.push(Figure::new(
+            &id("time.min"),
+            &what("time to complete every goal, earliest"),
+            t0,
+            "s",
+            1,
+        ));
+        f.push(Figure::new(
+            &id("time.max"),
+            &what("time to complete every goal, latest"),
+            t1,
+            "s",
+            1,
+        ));
     }
     f
 }
@@ -171,7 +226,10 @@ fn paper_presets_write_their_record() {
         .expect("the test's record reads as a report record");
     assert_eq!(back.figures.len(), figures.len());
     for (a, b) in back.figures.iter().zip(&figures) {
-        assert_eq!((a.id.as_str(), a.value, a.digits), (b.id.as_str(), b.value, b.digits));
+        assert_eq!(
+            (a.id.as_str(), a.value, a.digits),
+            (b.id.as_str(), b.value, b.digits)
+        );
     }
 }
 
@@ -182,7 +240,8 @@ fn store() -> BTreeMap<String, Record> {
 
 #[test]
 fn presets_show_the_captions_rendered_from_the_committed_records() {
-    let captions: Captions = report::read_json(&root().join("docs/presets.json")).expect("captions");
+    let captions: Captions =
+        report::read_json(&root().join("docs/presets.json")).expect("captions");
     let store = store();
     let mut covered = Vec::new();
     for c in &captions.captions {
@@ -190,9 +249,13 @@ fn presets_show_the_captions_rendered_from_the_committed_records() {
             .unwrap_or_else(|e| panic!("caption of {}: {e}", c.presets.join(", ")));
         for p in &c.presets {
             let path = root().join("scenarios").join(format!("{p}.json"));
-            let text = std::fs::read_to_string(&path).unwrap_or_else(|e| panic!("{}: {e}", path.display()));
+            let text = std::fs::read_to_string(&path)
+                .unwrap_or_else(|e| panic!("{}: {e}", path.display()));
             let sc = Scenario::from_json(&text).unwrap_or_else(|e| panic!("{p}: {e}"));
-            assert_eq!(sc.claim, c.claim, "{p}: `claim` is not docs/presets.json's (python3 scenarios/make_presets.py)");
+            assert_eq!(
+                sc.claim, c.claim,
+                "{p}: `claim` is not docs/presets.json's (python3 scenarios/make_presets.py)"
+            );
             assert_eq!(
                 sc.measured, measured,
                 "{p}: `measured` is not its caption rendered from docs/figures (python3 scenarios/make_presets.py)"
@@ -252,7 +315,10 @@ fn templates_render_values_units_and_verdicts_and_name_what_is_missing() {
     let err = report::render_template("{x.length", &recs).unwrap_err();
     assert!(err.contains("unclosed"), "{err}");
     let err = report::render_template("{verdict:tests/y.rs::t}", &recs).unwrap_err();
-    assert!(err.contains("no record from source `tests/y.rs::t`"), "{err}");
+    assert!(
+        err.contains("no record from source `tests/y.rs::t`"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -260,38 +326,78 @@ fn bad_records_are_refused_naming_the_file_and_the_field() {
     let d = scratch("bad");
     let good = sample("steer reach --n 5");
     let path = good.write(&d).expect("writes");
-    assert_eq!(Record::read(&path).expect("reads back").content(), good.content());
+    assert_eq!(
+        Record::read(&path).expect("reads back").content(),
+        good.content()
+    );
     let text = std::fs::read_to_string(&path).unwrap();
     let cases = [
-        (text.replacen("\"value\": 55.925", "\"value\": null", 1), "`value` is null"),
-        (text.replacen("\"unit\": \"m\",", "", 1), "missing field `unit`"),
-        (text.replacen("\"deterministic\"", "\"fast\"", 1), "unknown variant `fast`"),
-        (text.replacen("\"x.angle\"", "\"x.length\"", 1), "`figures[1].id` `x.length` appears twice"),
-        (text.replacen("\"x.angle\"", "\"x angle\"", 1), "`figures[1].id`"),
-        (text.replacen("\"cores\"", "\"core\"", 1), "unknown field `core`"),
+        (
+            text.replacen("\"value\": 55.925", "\"value\": null", 1),
+            "`value` is null",
+        ),
+        (
+            text.replacen("\"unit\": \"m\",", "", 1),
+            "missing field `unit`",
+        ),
+        (
+            text.replacen("\"deterministic\"", "\"fast\"", 1),
+            "unknown variant `fast`",
+        ),
+        (
+            text.replacen("\"x.angle\"", "\"x.length\"", 1),
+            "`figures[1].id` `x.length` appears twice",
+        ),
+        (
+            text.replacen("\"x.angle\"", "\"x angle\"", 1),
+            "`figures[1].id`",
+        ),
+        (
+            text.replacen("\"cores\"", "\"core\"", 1),
+            "unknown field `core`",
+        ),
     ];
     for (bad, want) in cases {
         std::fs::write(&path, bad).unwrap();
         let err = Record::read(&path).unwrap_err();
-        assert!(err.contains(&path.display().to_string()) && err.contains(want), "{want}: {err}");
+        assert!(
+            err.contains(&path.display().to_string()) && err.contains(want),
+            "{want}: {err}"
+        );
     }
     // A record copied under another file name.
     std::fs::write(d.join("other.json"), &text).unwrap();
     std::fs::remove_file(&path).unwrap();
     let err = records::read_dir(&d).unwrap_err();
-    assert!(err.contains("other.json") && err.contains("belongs in a file named"), "{err}");
+    assert!(
+        err.contains("other.json") && err.contains("belongs in a file named"),
+        "{err}"
+    );
     let _ = std::fs::remove_dir_all(&d);
 }
 
 #[test]
 fn the_check_names_the_first_differing_row() {
-    let a = format!("# F\n{}\n| `x` | a | 1.0 m |\n| `y` | b | 2.0 m |\n{}\nrest\n", report::CHECKED_BEGIN, report::CHECKED_END);
+    let a = format!(
+        "# F\n{}\n| `x` | a | 1.0 m |\n| `y` | b | 2.0 m |\n{}\nrest\n",
+        report::CHECKED_BEGIN,
+        report::CHECKED_END
+    );
     assert!(report::compare_checked(&a, &a.replace("rest", "other timings"), "F.md").is_ok());
     let err = report::compare_checked(&a, &a.replace("2.0 m", "2.1 m"), "F.md").unwrap_err();
-    assert!(err.contains("F.md line 4") && err.contains("| `y` | b | 2.1 m |"), "{err}");
-    let longer = a.replace("| `y` | b | 2.0 m |\n", "| `y` | b | 2.0 m |\n| `z` | c | 3 |\n");
+    assert!(
+        err.contains("F.md line 4") && err.contains("| `y` | b | 2.1 m |"),
+        "{err}"
+    );
+    let longer = a.replace(
+        "| `y` | b | 2.0 m |\n",
+        "| `y` | b | 2.0 m |\n| `z` | c | 3 |\n",
+    );
     let err = report::compare_checked(&a, &longer, "F.md").unwrap_err();
-    assert!(err.contains("only in the measured records") && err.contains("`z`"), "{err}");
+    assert!(
+        err.contains("only in the measured records") && err.contains("`z`"),
+        "{err}"
+    );
 }
 
 #[test]
@@ -315,5 +421,12 @@ fn the_report_is_the_same_text_for_the_same_records() {
     let two = report::render(&later, &BTreeMap::new(), &[], &caps).unwrap();
     assert!(report::compare_checked(&one, &two, "F.md").is_ok());
     assert!(one.contains("| `p` | c | 55.9 m |"), "{one}");
-    assert!(!one.contains("2099") && !two.split(report::CHECKED_END).next().unwrap().contains("2099"));
+    assert!(
+        !one.contains("2099")
+            && !two
+                .split(report::CHECKED_END)
+                .next()
+                .unwrap()
+                .contains("2099")
+    );
 }

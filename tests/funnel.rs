@@ -80,8 +80,8 @@ fn mode_choice_follows_paper_fig5() {
 
 #[test]
 fn reach_statistics_and_limits_on_seeded_random_scenarios() {
-    // 2,000 of the issue's scenarios in CI (the closing note has 10,000
-    // from `steer reach`); limits are checked at every step of every run.
+    // 2,000 of the reach study's scenarios in CI (`steer reach` runs
+    // 10,000); limits are checked at every step of every run.
     let t = table();
     let p = VehicleParams::default();
     let study = ReachStudy {
@@ -113,7 +113,7 @@ fn reach_statistics_and_limits_on_seeded_random_scenarios() {
         "final orientation p95 {}",
         s.final_err_deg.1
     );
-    // The default bound was tuned on the whole envelope (issue 13), where
+    // The default bound was tuned on the whole envelope (`steer envelope`), where
     // its median is 1.09; at this single operating point its 8 turning
     // radii cost length: measured 1.167 (the 6 radii tuned here: 1.11).
     assert!(

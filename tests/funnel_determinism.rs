@@ -2,7 +2,7 @@
 //! §8; the lab replays exactly what `steer run` computes).
 //!
 //! The golden values hash the raw f32 bits of every agent's state at every
-//! step of paper presets: plain seek (issue 19), standard funnelling with static, successive and
+//! step of paper presets: plain seek, standard funnelling with static, successive and
 //! moving goals (each other's pose, Fig. 6) and relaxed funnelling. The
 //! controllers use only IEEE-exact arithmetic and the crate's own trig
 //! (`steering::base::trig`), never the platform's libm, so the bits must agree on
@@ -36,7 +36,7 @@ const PRESETS: [(&str, &str, u64); 4] = [
         include_str!("../scenarios/p001_fig12_successive_relaxed.json"),
         0x70b0_b733_540d_3c78,
     ),
-    // Plain seek (issue 19: `"controller": "seek"`), a new golden.
+    // Plain seek (`"controller": "seek"`).
     (
         "p000_fig1_seek",
         include_str!("../scenarios/p000_fig1_seek.json"),

@@ -1,4 +1,4 @@
-//! Issue 16: fuzzing every entry point a user types into, seeded and
+//! Fuzzing every entry point a user types into, seeded and
 //! bounded. Each property feeds mutated real inputs (the presets in
 //! `scenarios/`, argument vectors built from every flag) and asserts an
 //! `Err` with a non-empty message, or a short run whose outputs are all
@@ -238,6 +238,9 @@ proptest! {
                     if let Err(e) = a.variants() {
                         err_has_message(&e);
                     }
+                }
+                Command::Report(a) => {
+                    assert!(!(a.check && a.prune));
                 }
             },
         }

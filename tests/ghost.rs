@@ -1,4 +1,4 @@
-//! The predicted seek path (issue 15, `steering::funnelling::ghost`): its end is the
+//! The predicted seek path (`steering::funnelling::ghost`): its end is the
 //! table generator's seek simulation, and the η it draws equals the
 //! table's η within the table's measured interpolation error (README
 //! "Figures": median 0.07°, p95 1.2° over 10,000 uniform off-grid queries).
@@ -6,7 +6,7 @@
 //! Bounds asserted here, over 2,000 seeded uniform reachable queries (seed
 //! 15): the ghost's η and outcome are *bit-identical* to `simulate_reach`
 //! (same code); against the table, median ≤ 0.15° and p95 ≤ 2° (the
-//! issue-3 accuracy targets, which the 10,000-query figures meet), and the
+//! table's accuracy targets, which the 10,000-query figures meet), and the
 //! reachability flag agrees for ≥ 98 % of all queries drawn.
 #![cfg(not(target_arch = "wasm32"))]
 

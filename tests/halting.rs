@@ -1,4 +1,4 @@
-//! Halting goals (issue 13, items 3, 5 and 6): End_of_Steering on a
+//! Halting goals: End_of_Steering on a
 //! halting goal means the vehicle comes to rest inside both tolerances;
 //! a goal that moves by itself cannot be halting; the first trajectory row
 //! reports the mode chosen at t = 0.

@@ -1,4 +1,4 @@
-//! Issue 16: bounds on every count, the f32 coordinate range, and
+//! Bounds on every count, the f32 coordinate range, and
 //! `steer run`'s streamed output (the fuzzing is in `tests/fuzz.rs`).
 
 #![cfg(not(target_arch = "wasm32"))]
@@ -133,7 +133,7 @@ fn far_positions_are_refused_naming_the_field_and_the_bound() {
     let fast = r#"{"name": "far", "vehicle": {"vMax": 10, "dt": 0.1}, "agents": [{"x": 999980, "y": 0, "goals": [{"x": 999996, "y": 12, "speed": 5, "dTol": 4}]}]}"#;
     let sc = Scenario::from_json(fast).unwrap();
     let p = sc.vehicle;
-    // Its own table (issue 14), not the pedestrian's.
+    // Its own table (the axes scale with the vehicle), not the pedestrian's.
     let t = steering::funnelling::table::spec::TableSpec::for_vehicle(
         p,
         steering::funnelling::table::spec::DEFAULT_COUNTS,

@@ -361,9 +361,9 @@ fn drive(
 
 #[test]
 fn issue_13_orbit_example_enters_the_disk_with_both_aims() {
-    // Issue 13: at rest 1.18 m from a 0.1 m disk that lies behind; the
-    // paper's relaxed point, inside the turning circle, was circled at
-    // 0.75 m/s for the whole 150 s.
+    // At rest 1.18 m from a 0.1 m disk that lies behind; the paper's
+    // relaxed point, inside the turning circle, is circled at 0.75 m/s for
+    // the whole 150 s.
     let s = VehicleState::new(Vec2::new(11.155, 22.935), 165.44f32.to_radians(), 0.0, 0.0);
     let g = Goal {
         pos: Vec2::new(12.232, 22.456),

@@ -1,6 +1,6 @@
 //! Interpolation accuracy of the committed η table against direct seek
 //! simulations at 10,000 random off-grid queries inside the sampled ranges
-//! (issue targets: median < 0.5°, p95 < 2°; reachability agreement ≥ 98 %).
+//! (targets: median < 0.5°, p95 < 2°; reachability agreement ≥ 98 %).
 //!
 //! Two samplings of the same box, both reported (README "Figures"):
 //! - **uniform** over every axis, the plain reading of "random queries

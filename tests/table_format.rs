@@ -285,7 +285,7 @@ fn every_truncation_of_the_real_file_is_an_error_not_a_panic() {
 
 #[test]
 fn crc32_is_the_textbook_crc() {
-    // Issue 17: crc32fast replaced the byte-at-a-time loop; same checksum.
+    // crc32fast computes the checksum; the textbook byte-at-a-time loop agrees.
     use steering::funnelling::table::codec::crc32_bytewise;
     assert_eq!(crc32(b"123456789"), 0xCBF4_3926, "the CRC-32 check value");
     let t = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap();

@@ -1,10 +1,10 @@
-//! Issue 14, the fast slice of the per-vehicle study (`steer envelope
+//! The fast slice of the per-vehicle study (`steer envelope
 //! --vehicle scenarios/vehicles/NAME.json` runs the long one): for each
 //! reference vehicle, its table (the committed one for the pedestrian,
 //! built here for the car and the robot), η interpolation error at
 //! D ≥ 4 turning radii, reachability agreement, reach and oriented entries
 //! at D ≥ 5 turning radii and ε_tol 5° on the envelope scaled to it.
-//! Seed 2 (the envelope's report seed); targets of the issue.
+//! Seed 2 (the envelope's report seed); the per-vehicle targets.
 #![cfg(not(target_arch = "wasm32"))]
 
 mod common;

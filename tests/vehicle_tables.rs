@@ -1,4 +1,4 @@
-//! Issue 14: η tables for any vehicle. The axes scale with the vehicle
+//! η tables for any vehicle. The axes scale with the vehicle
 //! (the pedestrian's table is the committed one, byte for byte), vehicle
 //! files are refused with the field named, the worker slices assemble to
 //! the generator's bytes, and `steer run` never uses a table built for

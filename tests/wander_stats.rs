@@ -8,7 +8,7 @@
 use glam::Vec2;
 use steering::base::rng::Rng;
 use steering::wander::distribution::{Curve, DistributionConfig, Sampler};
-use steering::wander::field::{FieldConfig, FieldSource, FieldValues, VectorField};
+use steering::wander::field::{BiasNoise, FieldConfig, FieldSource, FieldValues, VectorField};
 use steering::wander::markov::{Markov, MarkovConfig};
 use steering::wander::noise;
 use steering::wander::pipeline::Wanderer;
@@ -414,6 +414,7 @@ fn field_bias_formula_halves_the_field_on_average() {
         switch_every: 0,
         jitter_deg: 0.0,
         bias: true,
+        bias_r2: BiasNoise::Signed,
     };
     let src = FieldSource::new(&cfg, &mut Rng::new(8)).unwrap();
     let plain = FieldSource::new(
@@ -453,6 +454,7 @@ fn field_switching_cycles_fields() {
         switch_every: 50,
         jitter_deg: 0.0,
         bias: false,
+        bias_r2: BiasNoise::Signed,
     };
     let src = FieldSource::new(&cfg, &mut Rng::new(1)).unwrap();
     let p = Vec2::new(33.0, 41.0);

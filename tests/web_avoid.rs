@@ -1,4 +1,4 @@
-//! Issue 18 in headless Chromium: the circle swap preset played through the
+//! Avoidance in headless Chromium: the circle swap preset played through the
 //! lab's binding, the overlap count read from the core (0 with ORCA, many
 //! with avoidance off), the method switch and its error.
 #![cfg(target_arch = "wasm32")]

@@ -131,7 +131,7 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
     let arr = js_sys::Float32Array::from(&s1[..]);
     assert_eq!(arr.length() as usize, stride);
     // Target dragged onto the vehicle at speed: a halting goal counts as
-    // met only where the vehicle can come to rest inside it (issue 13), so
+    // met only where the vehicle can come to rest inside it, so
     // it brakes first (v_dt 0), comes round (11 s here) and turns to β
     // inside the tolerance.
     lab.set_goal(0, goal(f64::from(s1[0]), f64::from(s1[1]), 3.0))
@@ -156,7 +156,7 @@ fn agents_step_and_state_comes_back_as_a_typed_array() {
     assert_eq!(lab.count(), 501);
     lab.step(10).map_err(message).unwrap();
     assert_eq!(lab.state().len(), 501 * stride);
-    // A stepping worker's one pass (issue 17): `stepInto` gives the bits of
+    // A stepping worker's one pass: `stepInto` gives the bits of
     // `step(1)` then `stateInto`; a wrong length steps nothing.
     let mut other = lab.fork().map_err(message).unwrap();
     lab = lab.fork().map_err(message).unwrap();
@@ -520,7 +520,7 @@ fn the_exported_layout_matches_the_state_buffer() {
     assert!(at(&s, F::V) > 0.0, "accelerating: v = {}", at(&s, F::V));
 }
 
-/// Issue 15: the ghost path through the bindings. Its η is the table's
+/// The ghost path through the bindings. Its η is the table's
 /// within the interpolation error (the native `tests/ghost.rs` measures
 /// the distribution); a forked lab shares the table and starts empty.
 #[wasm_bindgen_test]
@@ -565,7 +565,7 @@ fn the_ghost_is_the_seek_the_update_asked_about_and_forks_share_the_table() {
     assert!(!fork.eta_field(1.0, 0.0, 1.3).is_empty());
 }
 
-/// Issue 17 (first frame without the table): a lab made without its table
+/// The first frame without the table: a lab made without its table
 /// shows the scene at t = 0 (provisional internals: γ the bearing, seek
 /// ghost, no field), refuses to step, and once the table arrives runs the
 /// very trajectory a lab made with the table runs, bit for bit: the

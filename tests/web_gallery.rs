@@ -203,7 +203,7 @@ fn bad_wander_input_is_a_js_error_with_a_message() {
     assert!(WanderLab::parse_preset("[]").is_err());
 }
 
-/// The wander page's JSON box goes to `fromJson` (issue 16): the native
+/// The wander page's JSON box goes to `fromJson`: the native
 /// parser's rules hold in the browser, a duplicate key is refused as in the
 /// files, and a 5,000-deep nesting is a message, not a stack overflow
 /// (the page also refuses more than 32 levels before parsing).
@@ -234,7 +234,7 @@ fn the_json_box_refuses_duplicate_keys_and_deep_nesting() {
     }
 }
 
-/// Issue 17: the crowd's golden trajectories (native, `tests/crowd_determinism.rs`)
+/// The crowd's golden trajectories (native, `tests/crowd_determinism.rs`)
 /// through the bindings, on one core and as two vertical strips (the
 /// stepping workers' calls: `loadState`, `stepStrip`, `ownedState`,
 /// `observeStep`).

@@ -1,5 +1,5 @@
 //! The core's validation ranges through the bindings, in headless Chromium
-//! (issue 16, "one source for ranges"): `ranges()` exports exactly the
+//! (one source for ranges): `ranges()` exports exactly the
 //! core's table (`steering::base::ranges::ALL`), and a value just outside each
 //! range is refused by the binding that takes it, with the field named: the
 //! page that derives its inputs from `ranges()` and the core agree at both
@@ -159,7 +159,7 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
             lab.check_room(v)
         }
         "seed" => lab.spawn_random(1.0, v, 10.0, 1.3),
-        // Issue 18: scenario files only (the reach must cover two radii
+        // Scenario files only (the reach must cover two radii
         // plus the margin at both ends of those ranges).
         "avoidance.radius" | "avoidance.margin" => lab
             .load_scenario(&avoid(format!(r#""{last}": {v}, "reach": 1000"#), ""))
@@ -241,7 +241,7 @@ fn a_value_just_outside_each_range_is_refused_with_the_field_named() {
     check_ends(ALL.iter());
 }
 
-/// Issue 18's ranges alone (scenario files: avoidance settings, obstacles).
+/// The avoidance ranges alone (scenario files: avoidance settings, obstacles).
 #[wasm_bindgen_test]
 fn the_avoidance_ranges_are_refused_outside_and_accepted_at_both_ends() {
     check_ends(

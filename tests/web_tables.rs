@@ -1,4 +1,4 @@
-//! Issue 14: a table built in the browser is byte-identical to the native
+//! A table built in the browser is byte-identical to the native
 //! one for the same limits. Small tables (6 × 12 × 3 × 4 × 4 entries) of
 //! every reference vehicle: natively from the generator, in headless
 //! Chromium (`wasm-pack test`) through the bindings the Web Workers call

@@ -1,5 +1,5 @@
-//! Edits of a running world as the lab page makes them (issue 12: the
-//! logic lives in the core, the bindings only convert): a pose reset or a
+//! Edits of a running world as the lab page makes them (the logic lives
+//! in the core, the bindings only convert): a pose reset or a
 //! new goal restarts the queue and the mode memory (paper 000 Fig. 5), bad
 //! input is an error that changes nothing, and the random crowd of the
 //! performance runs is seeded, inside its square and under the agent limit.
@@ -198,7 +198,7 @@ fn the_random_crowd_refuses_bad_squares_and_too_many_agents() {
 
 /// A queue changed directly (public fields), then `queues_changed`: the
 /// step plans towards the new current goal, here one facing another agent
-/// (issue 17: the world keeps a copy of each current goal and a count of
+/// (the world keeps a copy of each current goal and a count of
 /// facing queues; debug builds, as the tests run, check both at each plan).
 #[test]
 fn queues_changed_directly_are_picked_up() {

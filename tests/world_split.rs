@@ -1,4 +1,4 @@
-//! Issue 17, point 2: a world split into slices (`world_split.rs`, the
+//! A world split into slices (`crate/world/split.rs`, the
 //! lab's stepping workers) steps every agent to the same bits as the whole
 //! world; cuts never separate an agent from the agent its goal faces
 //! (paper 000 Fig. 6); refused splits change nothing.

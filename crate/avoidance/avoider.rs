@@ -1,7 +1,7 @@
 //! One avoidance pass over a world's agents: neighbours through a grid,
 //! the method's velocity, and that velocity turned into what a
-//! forward-only unicycle can do (issue 18; paper 000 §7 and 001 §7 name
-//! avoidance as the next step).
+//! forward-only unicycle can do (paper 000 §7 and 001 §7 name avoidance
+//! as the next step).
 //!
 //! **Combined with funnelling.** Every agent's funnel plans first; its
 //! modulated heading γ and desired speed v_dt give the *preferred
@@ -22,9 +22,9 @@
 //! ([`crate::base::vehicle::VehicleParams::integrate`]), which clamps them into
 //! the admissible set: no limit is ever broken, whatever the avoidance asks.
 //!
-//! **Who gives way** (the corridor and the doorway jammed for good
-//! without it: two forward-only agents face to face, or level at a door,
-//! each waiting for the other). *Right of way by progress*: of a pair, the
+//! **Who gives way** (without it the corridor and the doorway jam for
+//! good: two forward-only agents face to face, or level at a door, each
+//! waiting for the other). *Right of way by progress*: of a pair, the
 //! agent clearly nearer its current goal ([`PRIORITY_GAP`]; within it, the
 //! lower index) keeps only the bodies' clearance plus [`PRIORITY_MARGIN`]
 //! from the other, which keeps the whole margin: the pair never overlaps,
@@ -37,12 +37,12 @@
 //! [`crate::avoidance::passing::PASS_REACH`] ahead, read from the grid's
 //! cells round a point further along the way; an agent turning into its
 //! lane with a mate beside it on that side drops back to half speed and
-//! merges behind it (a block as wide as the corridor turned as a block,
-//! four abreast). *Walls*:
+//! merges behind it (a block as wide as the corridor cannot turn as a
+//! block, four abreast). *Walls*:
 //! when the funnel's heading runs into a wall (tested at a walking speed,
 //! so that a funnel turning on the spot is caught too), the velocity
 //! sought points at the goal, not along γ, which turns with the agent's own
-//! heading (funnel and avoidance otherwise took turns for ever at a
+//! heading (funnel and avoidance would otherwise take turns for ever at a
 //! corner); so it does for an agent at rest, and the keep-right bias never
 //! points into a wall ([`crate::avoidance::stalled`]). Finished agents
 //! rank last and step aside at up to [`DODGE_SPEED`].
@@ -54,102 +54,83 @@
 //! the buffers have grown. Obstacles are tested one by one (few by design,
 //! [`crate::avoidance::config::MAX_OBSTACLES`]).
 //!
-//! **Cost** (issue 18's target: ORCA ≤ 3× the update without avoidance).
-//! What cost the time was as much unpredictable branches as instructions:
-//! which case of a neighbour's half-plane applies, which neighbour has the
-//! right of way or asks to keep right, which line bounds a ray flip from
-//! neighbour to neighbour, and as branches were mispredicted about every
-//! other time (scalar `select`s on a compound condition became branches on
-//! x86, which has no conditional move for floats). So the per-neighbour
-//! work runs four lanes at a time (glam's `Vec4`, SSE2 natively, simd128
-//! or scalar in wasm) with lane masks: the candidates' distances and the
-//! keep-right asks ([`crate::avoidance::passing::Passing::see4`]), the
-//! agents' half-planes ([`orca::agent_lines4`]), the line set as a structure
-//! of arrays read four lines at a time by the linear program and the ray
-//! caps ([`orca::ray_cap`]). Every lane does the scalar code's operations
-//! on the same values (IEEE `+ − × ÷ sqrt`), and folds that the order could
-//! change (minima, maxima) are folded in the scalar order: the same bits,
-//! which unit tests check lane by lane against the scalar forms.
-//! `examples/avoid_icount.rs` under callgrind `--branch-sim=yes` (1,024
-//! agents, per agent update): ORCA 6,687 → 6,188 instructions, simulated
-//! mispredictions 43.8 → 20.8 (off: 1,714 and 3.5).
+//! **The pass, phase by phase** ([`Avoider::compute`]): the agents between
+//! their plans hold their commands (`hold_commands`); the grid and the
+//! agents' records are rebuilt in its bucket order (`index_agents`); the
+//! agents due to plan this step are listed (`collect_due`); and each of them
+//! plans (`plan`), in bucket order so that consecutive queries hit cached
+//! buckets. One plan: the agent as its phases read it (`Agent`: its record,
+//! the funnel's ask, the margin its patience leaves it); with ORCA the
+//! obstacles' half-planes and the way sought (`seek_around_walls`: the goal's
+//! direction when walled or at rest); the candidates in reach gathered
+//! (`gather`) and the k nearest ranked, the keep-right rule reading them on
+//! the way (`rank`). Then the method: off, the funnel's command;
+//! separation, a push away from what is too near (`separation_command`);
+//! ORCA (`orca_command`), the keep-right look ahead (`see_ahead`), the turn
+//! into the lane (`lane_way`), the neighbours' half-planes
+//! (`push_agent_lines`), and either the way sought as it is
+//! (`way_admitted`) or the linear program's velocity turned into the
+//! unicycle's heading and speed (`solve_keep_right`, [`unicycle`]). The
+//! values every plan shares live in a per-pass context (`Pass`). Every
+//! phase is inlined into the pass's loop: the compiler sees one body.
+//!
+//! **Cost.** ORCA's plan costs as much in unpredictable branches as in
+//! instructions: which case of a neighbour's half-plane applies, which
+//! neighbour has the right of way or asks to keep right, which line bounds
+//! a ray flip from neighbour to neighbour, and as branches they would be
+//! mispredicted about every other time (scalar `select`s on a compound
+//! condition become branches on x86, which has no conditional move for
+//! floats). So the per-neighbour work runs four lanes at a time (glam's
+//! `Vec4`, SSE2 natively, simd128 or scalar in wasm) with lane masks: the
+//! candidates' distances and the keep-right asks
+//! ([`crate::avoidance::passing::Passing::see4`]), the agents' half-planes
+//! ([`orca::agent_lines4`]), the line set as a structure of arrays read
+//! four lines at a time by the linear program and the ray caps
+//! ([`orca::ray_cap`]). Every lane does the scalar code's operations on the
+//! same values (IEEE `+ − × ÷ sqrt`), and folds that the order could change
+//! (minima, maxima) are folded in the scalar order: the same bits, which
+//! unit tests check lane by lane against the scalar forms. Loops whose
+//! length varies from agent to agent are avoided where a constant count
+//! does the same work (the ranking's keys and its copy for all `RANKED`
+//! slots, the gathered neighbours shown to the keep-right rule in a fixed
+//! number of fours): a loop's exit is mispredicted when its length changes.
+//! `examples/avoid_icount.rs` counts instructions and simulated
+//! mispredictions per agent update under callgrind.
 //!
 //! The look-ahead scan ([`passing::LOOK_AHEAD`]) reads only the cells of
 //! its 3 × 3 block that meet the box where a neighbour it takes in can be
 //! and none within reach was ([`passing::FarBox`]: beyond reach ahead, in
 //! the lane), a third fewer candidates, when the grid's table gives every
 //! cell near the agent its own bucket (else the whole block): the same
-//! neighbours seen, the same bits. 7,564 → 7,421 instructions per ORCA
-//! update, mispredictions 26.1 → 25.1 (off 1,688 and 3.5). The keep-right
-//! rule reads the neighbours gathered (`see_gathered`, about 3 fours at
-//! 11 neighbours) rather than every candidate of the nine cells while
-//! gathering (about 10 fours, two thirds out of reach), and the ranking's
-//! keys are built for all `RANKED` slots (no loop exit to mispredict):
-//! → 7,173 instructions, 23.2 mispredictions, the same bits. ORCA's
-//! neighbours are read four at a time from their records, transposed,
-//! instead of copied lane by lane into arrays first: → 7,065 and 22.2.
-//! The look-ahead scan no longer looks for mates where they are all in
-//! reach (the scan within reach saw them; [`passing::FarBox`]): → 6,918
-//! instructions (22.9 mispredictions: its loop, shorter, is laid out
-//! otherwise). Nor does it run when the asks within reach are already
-//! larger than any from beyond can be ([`Passing::far_may_ask`]: 0.32 at
-//! the default clearance and reach, a neighbour ahead in the lane within
-//! about 1.4 m): → 6,812 and 21.8. The lanes sliced to one length (one
-//! bounds check per four read, not one per lane array): → 6,767, 22.2.
-//! ORCA / off in instructions 4.48 → 4.01. Callgrind's simple predictor
-//! (2-bit counters indexed by the branch's address and the last few
-//! outcomes) still counts about one misprediction per agent update at the
-//! exit of loops of nearly constant length (ORCA's fours; the ranking's k
-//! nearest until copied out for all 16 slots, below), and its counts move
-//! by a few tenths with the code's layout alone.
+//! neighbours seen, the same bits. It looks for mates only where some may
+//! be beyond reach, and it does not run at all when the asks within reach
+//! are already larger than any from beyond can be
+//! ([`Passing::far_may_ask`]: 0.32 at the default clearance and reach, a
+//! neighbour ahead in the lane within about 1.4 m). The keep-right rule
+//! reads the neighbours gathered (`see_gathered`, about 3 fours at 11
+//! neighbours) rather than every candidate of the nine cells (about 10
+//! fours, two thirds out of reach). ORCA's neighbours are read four at a
+//! time from their records, transposed, rather than copied lane by lane
+//! into arrays first. The unit vectors of the agents' headings, the
+//! funnels' and the keep-right turn come from [`trig::sin_cos`], whose
+//! quadrant is restored by bit operations, not by a jump whose target
+//! flips from agent to agent.
 //!
 //! **Plans every other step** ([`AvoidanceConfig::replan_every`], default
 //! 2: 30 Hz at the default step of 1/60 s, agents taking turns by index).
 //! Between its plans an agent keeps its last plan's command (heading and
 //! speed), or takes its funnel's when that plan left the funnel's alone;
 //! its patience clock, the grid, the neighbours' records and the vehicle
-//! model still run every step. Why: the bit-identical cuts above had
-//! brought one plan to about 6,800 instructions per agent update against
-//! 1,690 without avoidance, 4.1–4.3× in time, and what is left (the
-//! half-planes, the linear program, the unicycle, the keep-right) is the
-//! method itself. Held for one 1/60 s step, a command is 17 ms old at
-//! most: at 1.5 m/s an agent moves 2.5 cm in it, a sixth of the 0.15 m
-//! margin. Measured (`steer avoid`, ORCA, 100 seeds per cell, every step
-//! and every other step on the same seeds): 0 overlapping pairs and 0
-//! deadlocks in every cell of the report sets 0–99, 9000–9099 and
-//! 11000–11099 and of the tune sets (the corridor's one touching run of
-//! 0–99 gone); reach and oriented entries within a few tenths of a percent
-//! (README). Callgrind, the lattice world: 6,803 → 4,446 instructions and
-//! 22.2 → 13.7 mispredictions per agent update (off 1,689 and 3.5): the
-//! per-step part (grid, records, lanes) about 350 instructions, one plan
-//! about 4,830, paid every other step. `replanEvery` 1 keeps the
-//! every-step reading, the same bits as before (its golden hash is
-//! checked beside the new one).
-//!
-//! Then, with [`AvoidanceConfig::replan_every`] = 2 (each agent plans every
-//! other step), per agent update: ORCA 4,446 instructions, 13.7
-//! conditional and 1.9 indirect mispredictions (off: 1,689, 3.5 and
-//! 0.75). The unit vectors of the agents' headings, the funnels' and the
-//! keep-right turn with the quadrant restored by bit operations, not a
-//! jump table whose target flips from agent to agent: 4,463 instructions,
-//! 13.4 + 0.7 mispredictions (first a second sine beside
-//! [`trig::sin_cos`]; then `sin_cos` itself, for every caller, the funnel
-//! and the vehicle model too: ORCA 4,448 and 12.9 + 0, off 1,696 and
-//! 4.0 + 0, same bits). The ranking's
-//! k nearest copied out for all 16 slots, not k (no loop exit): 4,465
-//! and 12.8 + 0.7. The grid's rebuild keeps each agent's cell from the
-//! count to the placing pass instead of flooring its position again:
-//! 4,442 and 12.9 + 0.7 (the mispredictions within layout noise).
-//! Tried and dropped, no gain or a loss by these counts: one loop over all
-//! the gather's runs' fours (the run chosen by a counter: +159
-//! instructions, −0.4 mispredictions; by a select, which the compiler
-//! made a branch: worse), every run read as many fours as the longest,
-//! ORCA's fours written out behind tests of k (−11, −0.1), the keep-right
-//! fours written out, the linear program's violated lines found as one
-//! mask per solution (+22, −0.2), one linear program per `direction_opt`
-//! (−2, −0.1: the mispredictions moved to other branches), `f64` ranking
-//! keys (+81), and the vehicle's limits as bit-mask selects (the compiler
-//! turns a select round a division back into a branch).
+//! model still run every step. Why: what a plan costs is the method itself
+//! (the half-planes, the linear program, the unicycle, the keep-right), and
+//! one plan costs about three times a whole update without avoidance; the
+//! per-step part (grid, records, lanes) is a small fraction of it, so
+//! planning every other step nearly halves what the avoidance adds to an
+//! agent update. Held
+//! for one 1/60 s step, a command is 17 ms old at most: at 1.5 m/s an agent
+//! moves 2.5 cm in it, a sixth of the 0.15 m margin. The benchmarks'
+//! figures (README) are measured at this default; `replanEvery` 1 plans
+//! every step, its own golden hash checked beside the default's.
 
 use glam::{BVec4A, Mat4, Vec2, Vec4};
 
@@ -172,13 +153,13 @@ pub struct Command {
     /// True when the avoidance changed the funnel's (γ, v_dt).
     pub active: bool,
     /// An obstacle was in reach: the step keeps the agent's turn near the
-    /// ±π seam (`avoidance::world_step`'s turn commitment).
+    /// ±π seam (`world::avoid_step`'s turn commitment).
     pub walls: bool,
 }
 
 /// One agent as the pass reads it, kept in the grid's bucket order: a
-/// neighbour's data is one 32-byte record beside its cell-mates' (the
-/// pass read five arrays in world order per neighbour before).
+/// neighbour's data is one 32-byte record beside its cell-mates', not
+/// five arrays in world order read per neighbour.
 #[derive(Clone, Copy, Debug, Default)]
 #[repr(align(32))]
 struct Peer {
@@ -210,8 +191,7 @@ const RANKED: usize = 16;
 /// compare–exchanges with a key past `N` (no-ops: the maximum stays
 /// put): 63 for `N` = 16, fewer below; the same whatever the keys
 /// (constant loop bounds: unrolled into straight code). Insertion's
-/// data-dependent branches cost ~11 mispredictions per agent update at 11
-/// neighbours.
+/// data-dependent branches are mispredicted about once per neighbour.
 #[inline]
 fn sort_network<const N: usize>(keys: &mut [u64; RANKED]) {
     let mut p = 1;
@@ -325,7 +305,9 @@ impl Avoider {
     }
 
     /// Fills [`Avoider::commands`] for agents in `states` whose funnels
-    /// asked for `preferred[i] = (heading, speed)`.
+    /// asked for `preferred[i] = (heading, speed)`: the agents not due to
+    /// plan hold their commands, the grid and the records are rebuilt, and
+    /// each agent due plans (`plan`).
     pub fn compute(
         &mut self,
         p: &VehicleParams,
@@ -334,8 +316,27 @@ impl Avoider {
         states: &[VehicleState],
         preferred: &[(f32, f32)],
     ) {
-        let n = states.len();
         let every = cfg.replan_every.max(1);
+        let step = self.hold_commands(states.len(), every, preferred);
+        self.index_agents(states, cfg.reach);
+        let pass = Pass::new(p, cfg, obstacles, &self.grid);
+        let n_due = self.collect_due(step, every);
+        let mut lines = Lines::default();
+        // Agents in the grid's bucket order: consecutive neighbour queries
+        // hit the same, already cached buckets (each agent's answer does
+        // not depend on the order).
+        for d in 0..n_due {
+            let slot = self.due[d] as usize;
+            let i = self.peers[slot].index as usize;
+            self.commands[i] = self.plan(&pass, slot, states, preferred, &mut lines);
+        }
+    }
+
+    /// Advances the step count and gives every agent its command until it
+    /// plans: between its plans an agent keeps its last plan's command, or
+    /// takes its funnel's when that plan left the funnel's alone. Returns
+    /// this step's number (agent i plans when `(step + i) % every == 0`).
+    fn hold_commands(&mut self, n: usize, every: u32, preferred: &[(f32, f32)]) -> u32 {
         let step = self.step;
         self.step = (step + 1) % every;
         if self.commands.len() != n {
@@ -343,14 +344,7 @@ impl Avoider {
             // funnel's command until it plans).
             self.commands.clear();
         }
-        self.pos.clear();
-        for s in states {
-            self.pos.push(s.pos.x);
-            self.pos.push(s.pos.y);
-        }
         self.commands.resize(n, Command::default());
-        // Between its plans an agent keeps its last plan's command, or
-        // takes its funnel's when that plan left the funnel's alone.
         for (c, &(heading, speed)) in self.commands.iter_mut().zip(preferred) {
             if !c.active {
                 *c = Command {
@@ -361,7 +355,20 @@ impl Avoider {
                 };
             }
         }
-        self.grid.rebuild(&self.pos, cfg.reach);
+        step
+    }
+
+    /// Rebuilds the grid (cell = `reach`) over the agents' positions, and
+    /// their records in its bucket order: one [`Peer`] each, and the
+    /// same positions, headings and speeds as lanes read four at a time.
+    fn index_agents(&mut self, states: &[VehicleState], reach: f32) {
+        let n = states.len();
+        self.pos.clear();
+        for s in states {
+            self.pos.push(s.pos.x);
+            self.pos.push(s.pos.y);
+        }
+        self.grid.rebuild(&self.pos, reach);
         self.peers.clear();
         self.peers.extend((0..n).map(|slot| {
             let i = self.grid.boid_in_bucket_order(slot);
@@ -380,486 +387,675 @@ impl Avoider {
             lane.clear();
             lane.resize(n + 4, 0.0);
         }
-        {
-            let [lx, ly, lfx, lfy, lv] = lanes.each_mut().map(|l| &mut l[..n]);
-            for (k, q) in self.peers.iter().enumerate() {
-                lx[k] = q.pos.x;
-                ly[k] = q.pos.y;
-                lfx[k] = q.fwd.x;
-                lfy[k] = q.fwd.y;
-                lv[k] = q.v;
-            }
+        let [lx, ly, lfx, lfy, lv] = lanes.each_mut().map(|l| &mut l[..n]);
+        for (k, q) in self.peers.iter().enumerate() {
+            lx[k] = q.pos.x;
+            ly[k] = q.pos.y;
+            lfx[k] = q.fwd.x;
+            lfy[k] = q.fwd.y;
+            lv[k] = q.v;
         }
-        let r = cfg.radius + cfg.margin;
-        let r2 = cfg.reach * cfg.reach;
-        let k_max = (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS);
-        let mut lines = Lines::default();
-        let no_lines = Lines::default();
-        // The look-ahead scan may skip the cells of its block that no
-        // neighbour it would take in lies in when every cell it could be
-        // in has a bucket of its own: the block's cells lie within one of
-        // the point ahead, those the far box meets within the box's size
-        // of the agent, LOOK_AHEAD from that point.
-        let far_cells =
-            ((passing::LOOK_AHEAD + Passing::far_box_size(2.0 * r)) / cfg.reach).ceil() + 2.0;
-        let far_trim = far_cells <= 32.0 && self.grid.buckets_distinct_within(far_cells as i32);
-        let far_box = passing::FarBox::new(2.0 * r, cfg.reach);
-        // This step's planning agents, in the grid's bucket order
-        // (compacted without a branch: whether an agent is due flips from
-        // slot to slot).
-        self.due.resize(n + 1, 0);
+    }
+
+    /// Lists this step's planning agents in [`Avoider::due`], slots in the
+    /// grid's bucket order, and returns how many: compacted without a
+    /// branch (whether an agent is due flips from slot to slot).
+    fn collect_due(&mut self, step: u32, every: u32) -> usize {
+        self.due.resize(self.peers.len() + 1, 0);
         let mut n_due = 0usize;
         for (slot, q) in self.peers.iter().enumerate() {
             self.due[n_due] = slot as u32;
             n_due += usize::from((q.index + step) % every == 0);
         }
-        // Agents in the grid's bucket order: consecutive neighbour queries
-        // hit the same, already cached buckets (each agent's answer does
-        // not depend on the order).
-        for d in 0..n_due {
-            let slot = self.due[d] as usize;
-            let me = self.peers[slot];
-            let i = me.index as usize;
-            let (h_pref, s_pref) = preferred[i];
-            let s = &states[i];
-            let u_pref = trig::unit(h_pref);
-            let v_pref = u_pref * s_pref;
-            // ORCA's view before the neighbours (none of it reads them):
-            // the obstacles' half-planes, a way blocked by a wall, and the
-            // way sought, along which the keep-right rule reads every
-            // neighbour in reach while they are gathered.
-            let orca = cfg.method == AvoidanceMethod::Orca;
-            // The margin kept from neighbours and obstacles: less once the
-            // agent has waited too long ([`patience`]).
-            let margin = patience::margin(cfg.margin, self.stalled.get(i).copied().unwrap_or(0.0));
-            lines.clear();
-            let unfinished = me.prio.is_finite();
-            let mut walled = false;
-            let (mut v_seek0, mut u_seek) = (v_pref, u_pref);
-            if orca {
-                for o in obstacles {
-                    let (dist, nrm) = o.distance_normal(s.pos);
-                    if dist - r < cfg.reach {
-                        lines.push_obstacle(orca::obstacle_line(
-                            nrm,
-                            dist,
-                            cfg.radius + margin,
-                            cfg.obstacle_horizon,
-                            p.dt,
-                        ));
-                    }
-                }
-                // An unfinished agent whose funnel turns it in place
-                // (v_dt ≈ 0) towards a wall is blocked too: the
-                // funnel's heading is tested against the walls at a
-                // walking speed, or the funnel and the avoidance take
-                // turns for ever at a wall's corner. Blocked by a wall,
-                // it seeks its goal's direction (the funnel's γ turns
-                // with the agent's own heading).
-                walled =
-                    unfinished && !lines.obstacles_admit(u_pref * s_pref.max(DODGE_SPEED), 0.0);
-                // At rest, too ([`crate::avoidance::stalled`]): γ
-                // turns with the agent turning on the spot.
-                let to_goal = walled || stalled::seeks_goal(unfinished, me.v, s_pref);
-                if let Some(&g) = self.goals.get(i) {
-                    if to_goal && (g - s.pos).length_squared() > 1e-6 {
-                        u_seek = (g - s.pos).normalize();
-                        v_seek0 = u_seek * s_pref.max(DODGE_SPEED);
-                    }
-                }
-            }
-            // Keep right early ([`crate::avoidance::passing`]): the
-            // funnel's velocity turned right, away from oncoming
-            // neighbours anywhere in reach, unless that runs into a
-            // wall. Every neighbour in reach tells the rule whether it
-            // comes the other way, the nearest or not (the largest ask
-            // wins: the order does not matter); read only where the
-            // turn can apply (ORCA, an unfinished agent not blocked by a
-            // wall).
-            let mut lane = Passing::new(u_seek, 2.0 * r);
-            let passing = orca && unfinished && !walled;
-            // The k nearest neighbours, nearest first (ties: grid order,
-            // deterministic): the candidates in reach gathered without a
-            // branch, four at a time, then ranked (below RANKED of them) by
-            // a sorting network on (d², gather order); the same k, in the
-            // same order, as sorting them by insertion.
-            let (runs, n_runs) = self.grid.candidate_runs(me.pos);
-            let total = runs[..n_runs]
-                .iter()
-                .map(|&(lo, hi)| (hi - lo) as usize)
-                .sum::<usize>();
-            // Room for a run's last four lanes past its end, rounded up to
-            // a power of two: indices masked by it need no bounds check.
-            let wrap = (total + 4).next_power_of_two() - 1;
-            // At least RANKED: the ranking reads that many.
-            if self.cand_d2.len() <= wrap.max(RANKED - 1) {
-                self.cand_d2.resize(wrap.max(RANKED - 1) + 1, 0.0);
-                self.cand_slot.resize(wrap.max(RANKED - 1) + 1, 0);
-            }
-            let (cand_d2, cand_slot) = (&mut self.cand_d2[..=wrap], &mut self.cand_slot[..=wrap]);
-            // Slices held locally: their bounds stay in registers across
-            // the stores below.
-            // One length for both (one bounds check per four).
-            let lx = &self.lanes[0][..];
-            let ly = &self.lanes[1][..lx.len()];
-            let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
-            let r2v = Vec4::splat(r2);
-            let mut m = 0usize;
-            for &(lo, hi) in &runs[..n_runs] {
-                let (lo, hi) = (lo as usize, hi as usize);
-                let mut a = lo;
-                while a < hi {
-                    let (qx, qy) = (
-                        Vec4::from_slice(&lx[a..a + 4]),
-                        Vec4::from_slice(&ly[a..a + 4]),
-                    );
-                    // (me.pos − q.pos)², as the scalar length_squared.
-                    let (dx, dy) = (mx - qx, my - qy);
-                    let d2 = dx * dx + dy * dy;
-                    let inside = d2.cmplt(r2v);
-                    // In reach, in the run, and not the agent itself (its
-                    // lane bit, if in these four: the shift saturates to
-                    // bit 31 otherwise).
-                    let own = (1u32 << slot.wrapping_sub(a).min(31)) & 0xf;
-                    let keep = inside.bitmask() & orca::lane_mask(0, hi - a) & !own;
-                    for (l, d) in d2.to_array().into_iter().enumerate() {
-                        // m < total + 4 ≤ wrap + 1: the mask changes nothing.
-                        cand_d2[m & wrap] = d;
-                        cand_slot[m & wrap] = (a + l) as u32;
-                        m += ((keep >> l) & 1) as usize;
-                    }
-                    a += 4;
-                }
-            }
-            // Every candidate but the agent itself (its own cell is in
-            // the runs once) was examined.
-            self.grid.add_checks(total as u64 - 1);
-            // Every neighbour gathered tells the keep-right rule whether it
-            // comes the other way ([`see_gathered`]), as many fours as the
-            // ranking's case allows.
-            let gathered = if passing { &self.cand_slot[..m] } else { &[] };
-            let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
-            let k = m.min(k_max);
-            if m <= RANKED {
-                // Keys (d² bits, gather order): unique, and ordered as
-                // (d², order) since d² ≥ +0 (IEEE bits of non-negative
-                // floats order like the floats); past the m gathered, the
-                // largest (all RANKED built: no loop exit to mispredict).
-                let mut keys = [u64::MAX; RANKED];
-                for (a, (key, &d2)) in keys.iter_mut().zip(&self.cand_d2[..RANKED]).enumerate() {
-                    let built = (u64::from(d2.to_bits()) << 32) | a as u64;
-                    *key = if a < m { built } else { u64::MAX };
-                }
-                if m <= 8 {
-                    sort_network::<8>(&mut keys);
-                    see_gathered::<2>(&mut lane, &self.peers, gathered, me.pos);
-                } else if m <= 12 {
-                    sort_network::<12>(&mut keys);
-                    see_gathered::<3>(&mut lane, &self.peers, gathered, me.pos);
-                } else {
-                    sort_network::<RANKED>(&mut keys);
-                    see_gathered::<4>(&mut lane, &self.peers, gathered, me.pos);
-                }
-                // All RANKED slots (those past k are not read), not the k
-                // nearest: no loop exit to mispredict (0.5 per agent
-                // update). A key past the m gathered indexes slot 15
-                // (read, not used).
-                const { assert!(RANKED == MAX_NEIGHBOURS && RANKED.is_power_of_two()) };
-                let slots = &self.cand_slot[..RANKED];
-                for (t, &key) in near.iter_mut().zip(&keys) {
-                    *t = (
-                        f32::from_bits((key >> 32) as u32),
-                        slots[key as u32 as usize & (RANKED - 1)],
-                    );
-                }
-            } else {
-                for some in gathered.chunks(RANKED) {
-                    see_gathered::<4>(&mut lane, &self.peers, some, me.pos);
-                }
-                let mut kk = 0usize;
-                for (&d2, &sj) in self.cand_d2[..m].iter().zip(&self.cand_slot[..m]) {
-                    if kk == k_max && d2 >= near[kk - 1].0 {
-                        continue;
-                    }
-                    let mut at = if kk < k_max { kk } else { kk - 1 };
-                    while at > 0 && near[at - 1].0 > d2 {
-                        near[at] = near[at - 1];
-                        at -= 1;
-                    }
-                    near[at] = (d2, sj);
-                    if kk < k_max {
-                        kk += 1;
-                    }
-                }
-            }
-            let cmd = match cfg.method {
-                AvoidanceMethod::Off => Command {
-                    heading: h_pref,
-                    speed: s_pref,
-                    active: false,
-                    walls: false,
-                },
-                AvoidanceMethod::Orca => {
-                    let v_pref = v_seek0;
-                    if passing && lane.far_may_ask(&far_box) {
-                        // And ahead beyond reach ([`passing::LOOK_AHEAD`]):
-                        // the cells round a point further along the way,
-                        // so that lanes form before the groups meet.
-                        // Four at a time from the lanes (the asks fold by
-                        // their maximum and the mates by "any": the order
-                        // does not matter; the agent itself, at distance
-                        // 0, asks nothing and is no mate,
-                        // [`Passing::see4`]). Scalar, one peer at a time,
-                        // this scan cost more than the rest of the
-                        // keep-right rule. Skipped when the asks so far
-                        // are larger than any from beyond reach can be.
-                        // Only the cells that meet the
-                        // agent's far box ([`Passing::far_box`]: about 6
-                        // of the 9), when no other cell shares their
-                        // buckets: the same neighbours seen.
-                        let at = me.pos + u_seek * passing::LOOK_AHEAD;
-                        let (far, n_far) =
-                            if far_trim && me.pos.abs().max_element() < passing::FAR_BOX_LIMIT {
-                                let [fx, fy] = self.grid.cell_of(at);
-                                let (lo, hi) = lane.far_box(me.pos, &far_box);
-                                let ([x0, y0], [x1, y1]) =
-                                    (self.grid.cell_of(lo), self.grid.cell_of(hi));
-                                let (x0, y0) = (x0.max(fx - 1), y0.max(fy - 1));
-                                let (x1, y1) = (x1.min(fx + 1), y1.min(fy + 1));
-                                self.grid.cell_runs(
-                                    [x0, y0],
-                                    (x1 - x0 + 1).max(0) as u32,
-                                    (y1 - y0 + 1).max(0) as u32,
-                                )
-                            } else {
-                                self.grid.candidate_runs(at)
-                            };
-                        let (mx, my) = (Vec4::splat(me.pos.x), Vec4::splat(me.pos.y));
-                        // One length for the five (one bounds check).
-                        let n4 = self.lanes[0].len();
-                        let [lx, ly, lfx, lfy, lv] = self.lanes.each_ref().map(|l| &l[..n4]);
-                        for &(lo, hi) in &far[..n_far] {
-                            let (lo, hi) = (lo as usize, hi as usize);
-                            let mut a = lo;
-                            while a < hi {
-                                let in_run = Vec4::new(0.0, 1.0, 2.0, 3.0)
-                                    .cmplt(Vec4::splat((hi - a) as f32));
-                                lane.see_far4(
-                                    Vec4::from_slice(&lx[a..a + 4]) - mx,
-                                    Vec4::from_slice(&ly[a..a + 4]) - my,
-                                    Vec4::from_slice(&lfx[a..a + 4]),
-                                    Vec4::from_slice(&lfy[a..a + 4]),
-                                    Vec4::from_slice(&lv[a..a + 4]),
-                                    in_run,
-                                    &far_box,
-                                );
-                                a += 4;
-                            }
-                        }
-                    }
-                    lane.settle();
-                    let u_lane = lane.turn(u_seek);
-                    let turned = unfinished
-                        && !walled
-                        && lane.active()
-                        && lines.obstacles_admit(u_lane * s_pref.max(DODGE_SPEED), 0.0);
-                    // Turning into its lane with a mate beside it on that
-                    // side, it drops back to merge behind it.
-                    let (h_pref, v_pref, u_seek, s_pref) = if turned {
-                        let f = lane.merge_factor();
-                        (
-                            trig::atan2(u_lane.y, u_lane.x),
-                            lane.turn(v_pref) * f,
-                            u_lane,
-                            s_pref * f,
-                        )
-                    } else {
-                        (h_pref, v_pref, u_seek, s_pref)
-                    };
-                    // The k nearest, four at a time, every test a lane
-                    // mask (their outcomes flip from neighbour to
-                    // neighbour, and as branches they were mispredicted
-                    // about every other time). Read from their records
-                    // (positions and headings transposed), past the k-th
-                    // the k-th again (masked): copied lane by lane into
-                    // arrays first, they cost a fifth more.
-                    let record = |c: usize| &self.peers[near[c.min(k - 1)].1 as usize];
-                    let mut oncoming = BVec4A::FALSE;
-                    let v_me = me.fwd * me.v;
-                    // A pair's combined reach: with the right of way, the
-                    // bodies' clearance plus a sliver; otherwise the whole
-                    // margin (both less for an agent out of patience).
-                    let reach_ahead = 2.0 * cfg.radius + PRIORITY_MARGIN.min(2.0 * margin);
-                    let reach_yield = 2.0 * (cfg.radius + margin);
-                    let (inv_h, inv_dt) = (1.0 / cfg.horizon, 1.0 / p.dt);
-                    let splat = Vec4::splat;
-                    let moving = BVec4A::splat(me.v >= STUCK_SPEED);
-                    let mut c = 0;
-                    while c < k {
-                        let q = [record(c), record(c + 1), record(c + 2), record(c + 3)];
-                        let t = Mat4::from_cols(q[0].head(), q[1].head(), q[2].head(), q[3].head())
-                            .transpose();
-                        let (qx, qy, fx, fy) = (t.x_axis, t.y_axis, t.z_axis, t.w_axis);
-                        let qv = Vec4::new(q[0].v, q[1].v, q[2].v, q[3].v);
-                        let prio = Vec4::new(q[0].prio, q[1].prio, q[2].prio, q[3].prio);
-                        // The tie direction, +y when i < j, else −y (the
-                        // scalar `-Vec2::Y`: x is −0), by its sign bit.
-                        let after = q.map(|q| u32::from(q.index <= me.index) << 31);
-                        let tie_x = Vec4::from_array(after.map(f32::from_bits));
-                        let tie_y =
-                            Vec4::from_array(after.map(|a| f32::from_bits(0x3f80_0000 | a)));
-                        let valid = (splat(c as f32) + Vec4::new(0.0, 1.0, 2.0, 3.0))
-                            .cmplt(splat(k as f32));
-                        let (rx, ry) = (qx - splat(s.pos.x), qy - splat(s.pos.y));
-                        // Oncoming and ahead along the way the agent will
-                        // seek (its goal's direction when walled, not the
-                        // funnel's γ it then ignores: judged along γ, a
-                        // neighbour beside the way flipped in and out of
-                        // "ahead" step after step at a doorway's wall end,
-                        // and the keep-right turn with it: at rest, the
-                        // velocity sought swung between the gap and the
-                        // wall and the agent never turned, doorway seeds
-                        // 1012 and 1017).
-                        let opposed = (fx * splat(u_seek.x) + fy * splat(u_seek.y))
-                            .cmplt(splat(ONCOMING_COS));
-                        oncoming |= valid
-                            & opposed
-                            & (rx * splat(u_seek.x) + ry * splat(u_seek.y)).cmpgt(Vec4::ZERO);
-                        let opposed = (fx * splat(me.fwd.x) + fy * splat(me.fwd.y))
-                            .cmplt(splat(ONCOMING_COS));
-                        let before = tie_y.cmpgt(Vec4::ZERO);
-                        // Reciprocity assumes the neighbour takes half the
-                        // avoidance; a forward-only neighbour at rest cannot
-                        // step back, so an agent closing on it takes all.
-                        let share = Vec4::select(
-                            qv.cmplt(splat(STUCK_SPEED)) & moving,
-                            Vec4::ONE,
-                            splat(0.5),
-                        );
-                        // Right of way: the agent clearly nearer its goal
-                        // keeps only the bodies' distance (plus a sliver)
-                        // from the other, which keeps the whole margin;
-                        // the pair still never overlaps, and where the
-                        // margins left no room (a doorway, a jam) the one
-                        // ahead gets through instead of both waiting.
-                        // Within the gap (two agents level at a doorway,
-                        // both waiting for the other) the lower index goes
-                        // first. No priority given (NaN): nobody is ahead.
-                        let a = me.prio;
-                        let ahead = splat(a + PRIORITY_GAP).cmplt(prio)
-                            | (before & splat(a).cmple(prio + splat(PRIORITY_GAP)));
-                        let keep_right = opposed
-                            & (rx * splat(me.fwd.x) + ry * splat(me.fwd.y)).cmpgt(Vec4::ZERO)
-                            & ((splat(s.pos.x) - qx) * fx + (splat(s.pos.y) - qy) * fy)
-                                .cmpgt(Vec4::ZERO);
-                        let pairs = orca::Pairs4 {
-                            pn: (qx, qy),
-                            vn: (fx * qv, fy * qv),
-                            r: Vec4::select(ahead, splat(reach_ahead), splat(reach_yield)),
-                            share,
-                            tie: (tie_x, tie_y),
-                            keep_right,
-                        };
-                        lines.push_agents4(
-                            &orca::agent_lines4(s.pos, v_me, &pairs, inv_h, inv_dt),
-                            k - c,
-                        );
-                        c += 4;
-                    }
-                    let oncoming = oncoming.any();
-                    // An oncoming neighbour ahead: keep right at once (at
-                    // least LANE_BIAS of the bias), before the pair is
-                    // blocked, so that lanes form before a jam does.
-                    if !walled
-                        && !oncoming
-                        && s_pref <= p.v_max
-                        && lines.admits(v_pref, 0.0)
-                        && present_heading_clear(&lines, me.fwd, s_pref)
-                    {
-                        Command {
-                            heading: h_pref,
-                            speed: s_pref,
-                            active: turned,
-                            walls: false,
-                        }
-                    } else {
-                        // Keep right, the more the slower the agent goes
-                        // than its funnel asks: none at full speed.
-                        let slow = if oncoming {
-                            (1.0 - s.v / s_pref.max(0.1)).clamp(LANE_BIAS, 1.0)
-                        } else {
-                            0.0
-                        };
-                        let v_seek = if slow > 0.0 {
-                            // Not into a wall ([`crate::avoidance::stalled`]).
-                            stalled::bias_clear_of_walls(
-                                &lines,
-                                v_pref,
-                                v_pref.rotate(trig::unit(-cfg.bias_deg.to_radians() * slow)),
-                                DODGE_SPEED,
-                            )
-                        } else {
-                            v_pref
-                        };
-                        // Never faster than the funnel asks (at least
-                        // DODGE_SPEED, so an agent at rest can step aside):
-                        // a vehicle that must brake within its
-                        // acceleration limit cannot afford ORCA's habit of
-                        // speeding up to pass in front.
-                        let cap = s_pref.max(DODGE_SPEED).min(p.v_max);
-                        let v = orca::solve(&lines, cap, v_seek);
-                        Command {
-                            walls: lines.obstacle_count() > 0,
-                            ..unicycle(s, me.fwd, h_pref, v_pref, v, &lines, cap)
-                        }
-                    }
-                }
-                AvoidanceMethod::Separation => {
-                    let mut push = Vec2::ZERO;
-                    for &(d2, sj) in &near[..k] {
-                        let d = d2.sqrt();
-                        if d < 2.0 * r {
-                            let j = self.peers[sj as usize].index as usize;
-                            let dir = if d > 1e-9 {
-                                (s.pos - states[j].pos) / d
-                            } else if i < j {
-                                -Vec2::X
-                            } else {
-                                Vec2::X
-                            };
-                            push += dir * (2.0 * r - d);
-                        }
-                    }
-                    for o in obstacles {
-                        let (dist, nrm) = o.distance_normal(s.pos);
-                        if dist < r {
-                            push += nrm * (r - dist);
-                        }
-                    }
-                    if push == Vec2::ZERO {
-                        Command {
-                            heading: h_pref,
-                            speed: s_pref,
-                            active: false,
-                            walls: false,
-                        }
-                    } else {
-                        let v = (v_pref + push * cfg.separation_weight).clamp_length_max(p.v_max);
-                        unicycle(s, me.fwd, h_pref, v, v, &no_lines, p.v_max)
-                    }
-                }
-            };
-            self.commands[i] = cmd;
+        n_due
+    }
+
+    /// One agent's plan, the agent at `slot` in the grid's bucket order:
+    /// the obstacles' half-planes and the way it seeks (ORCA), its
+    /// neighbours gathered and ranked, then the method's command.
+    /// Inlined, as every phase below: the pass's loop is one body.
+    #[inline(always)]
+    fn plan(
+        &mut self,
+        pass: &Pass,
+        slot: usize,
+        states: &[VehicleState],
+        preferred: &[(f32, f32)],
+        lines: &mut Lines,
+    ) -> Command {
+        let orca = pass.cfg.method == AvoidanceMethod::Orca;
+        let mut a = self.agent(pass, slot, states, preferred);
+        // ORCA's view before the neighbours (none of it reads them): the
+        // obstacles' half-planes, a way blocked by a wall, and the way
+        // sought, along which the keep-right rule reads every neighbour in
+        // reach while they are gathered.
+        lines.clear();
+        if orca {
+            push_obstacle_lines(pass, a.state.pos, a.margin, lines);
+            self.seek_around_walls(&mut a, lines);
         }
+        // Keep right early ([`crate::avoidance::passing`]): read only where
+        // the turn can apply (ORCA, an unfinished agent not blocked by a
+        // wall).
+        let mut lane = Passing::new(a.seek.u, 2.0 * pass.r);
+        a.passing = orca && a.unfinished && !a.walled;
+        let m = self.gather(slot, a.peer.pos, pass.r2);
+        let near = self.rank(m, pass.k_max, a.passing, &mut lane, a.peer.pos);
+        match pass.cfg.method {
+            AvoidanceMethod::Off => a.funnel_command(),
+            AvoidanceMethod::Orca => self.orca_command(pass, &a, &mut lane, &near, lines),
+            AvoidanceMethod::Separation => self.separation_command(pass, &a, &near, states),
+        }
+    }
+
+    /// The agent at `slot` as its plan starts: its record, its state, the
+    /// funnel's ask and the margin its patience leaves it; the way sought
+    /// is the funnel's.
+    #[inline(always)]
+    fn agent<'s>(
+        &self,
+        pass: &Pass,
+        slot: usize,
+        states: &'s [VehicleState],
+        preferred: &[(f32, f32)],
+    ) -> Agent<'s> {
+        let peer = self.peers[slot];
+        let i = peer.index as usize;
+        let (h_pref, s_pref) = preferred[i];
+        let u_pref = trig::unit(h_pref);
+        let v_pref = u_pref * s_pref;
+        Agent {
+            peer,
+            state: &states[i],
+            h_pref,
+            s_pref,
+            u_pref,
+            v_pref,
+            // Less once the agent has waited too long ([`patience`]).
+            margin: patience::margin(pass.cfg.margin, self.stalled.get(i).copied().unwrap_or(0.0)),
+            unfinished: peer.prio.is_finite(),
+            walled: false,
+            seek: Way {
+                heading: h_pref,
+                speed: s_pref,
+                u: u_pref,
+                v: v_pref,
+            },
+            passing: false,
+        }
+    }
+
+    /// The way an agent seeks once the obstacles' half-planes are in
+    /// `lines`. An unfinished agent whose funnel turns it in place
+    /// (v_dt ≈ 0) towards a wall is blocked too: the funnel's heading is
+    /// tested against the walls at a walking speed, or the funnel and the
+    /// avoidance take turns for ever at a wall's corner. Blocked by a wall,
+    /// or at rest ([`crate::avoidance::stalled`]), it seeks its goal's
+    /// direction: the funnel's γ turns with the agent's own heading.
+    #[inline(always)]
+    fn seek_around_walls(&self, a: &mut Agent, lines: &Lines) {
+        a.walled =
+            a.unfinished && !lines.obstacles_admit(a.u_pref * a.s_pref.max(DODGE_SPEED), 0.0);
+        let to_goal = a.walled || stalled::seeks_goal(a.unfinished, a.peer.v, a.s_pref);
+        if let Some(&g) = self.goals.get(a.peer.index as usize) {
+            let pos = a.state.pos;
+            if to_goal && (g - pos).length_squared() > 1e-6 {
+                a.seek.u = (g - pos).normalize();
+                a.seek.v = a.seek.u * a.s_pref.max(DODGE_SPEED);
+            }
+        }
+    }
+
+    /// Gathers the candidates in reach of the agent at `slot` (at `pos`)
+    /// from the grid's nine cells round it into [`Avoider::cand_d2`] and
+    /// [`Avoider::cand_slot`], in grid order, without a branch: four at a
+    /// time, each written and the count advanced by its lane's "in reach"
+    /// bit. Returns how many.
+    #[inline(always)]
+    fn gather(&mut self, slot: usize, pos: Vec2, r2: f32) -> usize {
+        let (runs, n_runs) = self.grid.candidate_runs(pos);
+        let total = runs[..n_runs]
+            .iter()
+            .map(|&(lo, hi)| (hi - lo) as usize)
+            .sum::<usize>();
+        // Room for a run's last four lanes past its end, rounded up to
+        // a power of two: indices masked by it need no bounds check.
+        let wrap = (total + 4).next_power_of_two() - 1;
+        // At least RANKED: the ranking reads that many.
+        if self.cand_d2.len() <= wrap.max(RANKED - 1) {
+            self.cand_d2.resize(wrap.max(RANKED - 1) + 1, 0.0);
+            self.cand_slot.resize(wrap.max(RANKED - 1) + 1, 0);
+        }
+        let (cand_d2, cand_slot) = (&mut self.cand_d2[..=wrap], &mut self.cand_slot[..=wrap]);
+        // Slices held locally: their bounds stay in registers across
+        // the stores below. One length for both (one bounds check per
+        // four).
+        let lx = &self.lanes[0][..];
+        let ly = &self.lanes[1][..lx.len()];
+        let (mx, my) = (Vec4::splat(pos.x), Vec4::splat(pos.y));
+        let r2v = Vec4::splat(r2);
+        let mut m = 0usize;
+        for &(lo, hi) in &runs[..n_runs] {
+            let (lo, hi) = (lo as usize, hi as usize);
+            let mut a = lo;
+            while a < hi {
+                let (qx, qy) = (
+                    Vec4::from_slice(&lx[a..a + 4]),
+                    Vec4::from_slice(&ly[a..a + 4]),
+                );
+                // (me.pos − q.pos)², as the scalar length_squared.
+                let (dx, dy) = (mx - qx, my - qy);
+                let d2 = dx * dx + dy * dy;
+                let inside = d2.cmplt(r2v);
+                // In reach, in the run, and not the agent itself (its
+                // lane bit, if in these four: the shift saturates to
+                // bit 31 otherwise).
+                let own = (1u32 << slot.wrapping_sub(a).min(31)) & 0xf;
+                let keep = inside.bitmask() & orca::lane_mask(0, hi - a) & !own;
+                for (l, d) in d2.to_array().into_iter().enumerate() {
+                    // m < total + 4 ≤ wrap + 1: the mask changes nothing.
+                    cand_d2[m & wrap] = d;
+                    cand_slot[m & wrap] = (a + l) as u32;
+                    m += ((keep >> l) & 1) as usize;
+                }
+                a += 4;
+            }
+        }
+        // Every candidate but the agent itself (its own cell is in
+        // the runs once) was examined.
+        self.grid.add_checks(total as u64 - 1);
+        m
+    }
+
+    /// The k nearest of the `m` candidates gathered, nearest first (ties:
+    /// grid order, deterministic): below [`RANKED`] of them, by a sorting
+    /// network on (d², gather order); beyond, by insertion; the same k, in
+    /// the same order, either way. Where `passing`, every neighbour
+    /// gathered also tells the keep-right rule `lane` whether it comes the
+    /// other way ([`see_gathered`]), as many fours as the ranking's case
+    /// allows (one branch on m for both).
+    #[inline(always)]
+    fn rank(
+        &self,
+        m: usize,
+        k_max: usize,
+        passing: bool,
+        lane: &mut Passing,
+        pos: Vec2,
+    ) -> Nearest {
+        let gathered = if passing { &self.cand_slot[..m] } else { &[] };
+        let mut near = [(0.0f32, 0u32); MAX_NEIGHBOURS];
+        let k = m.min(k_max);
+        if m <= RANKED {
+            // Keys (d² bits, gather order): unique, and ordered as
+            // (d², order) since d² ≥ +0 (IEEE bits of non-negative
+            // floats order like the floats); past the m gathered, the
+            // largest (all RANKED built: no loop exit to mispredict).
+            let mut keys = [u64::MAX; RANKED];
+            for (a, (key, &d2)) in keys.iter_mut().zip(&self.cand_d2[..RANKED]).enumerate() {
+                let built = (u64::from(d2.to_bits()) << 32) | a as u64;
+                *key = if a < m { built } else { u64::MAX };
+            }
+            if m <= 8 {
+                sort_network::<8>(&mut keys);
+                see_gathered::<2>(lane, &self.peers, gathered, pos);
+            } else if m <= 12 {
+                sort_network::<12>(&mut keys);
+                see_gathered::<3>(lane, &self.peers, gathered, pos);
+            } else {
+                sort_network::<RANKED>(&mut keys);
+                see_gathered::<4>(lane, &self.peers, gathered, pos);
+            }
+            // All RANKED slots (those past k are not read), not the k
+            // nearest: no loop exit to mispredict. A key past the m
+            // gathered indexes slot 15 (read, not used).
+            const { assert!(RANKED == MAX_NEIGHBOURS && RANKED.is_power_of_two()) };
+            let slots = &self.cand_slot[..RANKED];
+            for (t, &key) in near.iter_mut().zip(&keys) {
+                *t = (
+                    f32::from_bits((key >> 32) as u32),
+                    slots[key as u32 as usize & (RANKED - 1)],
+                );
+            }
+        } else {
+            for some in gathered.chunks(RANKED) {
+                see_gathered::<4>(lane, &self.peers, some, pos);
+            }
+            let mut kk = 0usize;
+            for (&d2, &sj) in self.cand_d2[..m].iter().zip(&self.cand_slot[..m]) {
+                if kk == k_max && d2 >= near[kk - 1].0 {
+                    continue;
+                }
+                let mut at = if kk < k_max { kk } else { kk - 1 };
+                while at > 0 && near[at - 1].0 > d2 {
+                    near[at] = near[at - 1];
+                    at -= 1;
+                }
+                near[at] = (d2, sj);
+                if kk < k_max {
+                    kk += 1;
+                }
+            }
+        }
+        Nearest { near, k }
+    }
+
+    /// ORCA's command: the keep-right rule completed (the look-ahead scan,
+    /// the turn into the lane), the neighbours' half-planes added, then
+    /// the way sought taken as it is when every half-plane admits it, or
+    /// else the linear program's velocity turned into the unicycle's
+    /// heading and speed.
+    #[inline(always)]
+    fn orca_command(
+        &self,
+        pass: &Pass,
+        a: &Agent,
+        lane: &mut Passing,
+        near: &Nearest,
+        lines: &mut Lines,
+    ) -> Command {
+        if a.passing && lane.far_may_ask(&pass.far_box) {
+            self.see_ahead(pass, a, lane);
+        }
+        let (way, turned) = lane_way(a, lane, lines);
+        let oncoming = self.push_agent_lines(pass, a, way.u, near, lines);
+        if way_admitted(pass, a, &way, oncoming, lines) {
+            Command {
+                heading: way.heading,
+                speed: way.speed,
+                active: turned,
+                walls: false,
+            }
+        } else {
+            solve_keep_right(pass, a, &way, oncoming, lines)
+        }
+    }
+
+    /// The keep-right rule's look ahead beyond reach
+    /// ([`passing::LOOK_AHEAD`]): the cells round a point further along
+    /// the way, so that lanes form before the groups meet. Four at a time
+    /// from the lanes (the asks fold by their maximum and the mates by
+    /// "any": the order does not matter; the agent itself, at distance 0,
+    /// asks nothing and is no mate, [`Passing::see4`]): scalar, one peer at
+    /// a time, this scan costs more than the rest of the keep-right rule.
+    /// Only the cells that meet the agent's far box ([`Passing::far_box`]:
+    /// about 6 of the 9), when no other cell shares their buckets: the
+    /// same neighbours seen.
+    #[inline(always)]
+    fn see_ahead(&self, pass: &Pass, a: &Agent, lane: &mut Passing) {
+        let pos = a.peer.pos;
+        let at = pos + a.seek.u * passing::LOOK_AHEAD;
+        let (far, n_far) = if pass.far_trim && pos.abs().max_element() < passing::FAR_BOX_LIMIT {
+            let [fx, fy] = self.grid.cell_of(at);
+            let (lo, hi) = lane.far_box(pos, &pass.far_box);
+            let ([x0, y0], [x1, y1]) = (self.grid.cell_of(lo), self.grid.cell_of(hi));
+            let (x0, y0) = (x0.max(fx - 1), y0.max(fy - 1));
+            let (x1, y1) = (x1.min(fx + 1), y1.min(fy + 1));
+            self.grid.cell_runs(
+                [x0, y0],
+                (x1 - x0 + 1).max(0) as u32,
+                (y1 - y0 + 1).max(0) as u32,
+            )
+        } else {
+            self.grid.candidate_runs(at)
+        };
+        let (mx, my) = (Vec4::splat(pos.x), Vec4::splat(pos.y));
+        // One length for the five (one bounds check).
+        let n4 = self.lanes[0].len();
+        let [lx, ly, lfx, lfy, lv] = self.lanes.each_ref().map(|l| &l[..n4]);
+        for &(lo, hi) in &far[..n_far] {
+            let (lo, hi) = (lo as usize, hi as usize);
+            let mut c = lo;
+            while c < hi {
+                let in_run = Vec4::new(0.0, 1.0, 2.0, 3.0).cmplt(Vec4::splat((hi - c) as f32));
+                lane.see_far4(
+                    Vec4::from_slice(&lx[c..c + 4]) - mx,
+                    Vec4::from_slice(&ly[c..c + 4]) - my,
+                    Vec4::from_slice(&lfx[c..c + 4]),
+                    Vec4::from_slice(&lfy[c..c + 4]),
+                    Vec4::from_slice(&lv[c..c + 4]),
+                    in_run,
+                    &pass.far_box,
+                );
+                c += 4;
+            }
+        }
+    }
+
+    /// Adds the half-planes of the k nearest neighbours to `lines`, four
+    /// at a time, every test a lane mask (their outcomes flip from
+    /// neighbour to neighbour: as branches they are mispredicted about
+    /// every other time). Read from their records (positions and headings
+    /// transposed), past the k-th the k-th again (masked). Returns whether
+    /// one of them is oncoming ahead along `u_seek`, the way the agent
+    /// seeks.
+    #[inline(always)]
+    fn push_agent_lines(
+        &self,
+        pass: &Pass,
+        a: &Agent,
+        u_seek: Vec2,
+        near: &Nearest,
+        lines: &mut Lines,
+    ) -> bool {
+        let (cfg, me, pos) = (pass.cfg, &a.peer, a.state.pos);
+        let (near, k) = (&near.near, near.k);
+        let record = |c: usize| &self.peers[near[c.min(k - 1)].1 as usize];
+        let mut oncoming = BVec4A::FALSE;
+        let v_me = me.fwd * me.v;
+        // A pair's combined reach: with the right of way, the bodies'
+        // clearance plus a sliver; otherwise the whole margin (both less
+        // for an agent out of patience).
+        let reach_ahead = 2.0 * cfg.radius + PRIORITY_MARGIN.min(2.0 * a.margin);
+        let reach_yield = 2.0 * (cfg.radius + a.margin);
+        let (inv_h, inv_dt) = (1.0 / cfg.horizon, 1.0 / pass.p.dt);
+        let splat = Vec4::splat;
+        let moving = BVec4A::splat(me.v >= STUCK_SPEED);
+        let mut c = 0;
+        while c < k {
+            let q = [record(c), record(c + 1), record(c + 2), record(c + 3)];
+            let t = Mat4::from_cols(q[0].head(), q[1].head(), q[2].head(), q[3].head()).transpose();
+            let (qx, qy, fx, fy) = (t.x_axis, t.y_axis, t.z_axis, t.w_axis);
+            let qv = Vec4::new(q[0].v, q[1].v, q[2].v, q[3].v);
+            let prio = Vec4::new(q[0].prio, q[1].prio, q[2].prio, q[3].prio);
+            // The tie direction, +y when i < j, else −y (the scalar
+            // `-Vec2::Y`: x is −0), by its sign bit.
+            let after = q.map(|q| u32::from(q.index <= me.index) << 31);
+            let tie_x = Vec4::from_array(after.map(f32::from_bits));
+            let tie_y = Vec4::from_array(after.map(|a| f32::from_bits(0x3f80_0000 | a)));
+            let valid = (splat(c as f32) + Vec4::new(0.0, 1.0, 2.0, 3.0)).cmplt(splat(k as f32));
+            let (rx, ry) = (qx - splat(pos.x), qy - splat(pos.y));
+            // Oncoming and ahead along the way the agent will seek (its
+            // goal's direction when walled, not the funnel's γ it then
+            // ignores: judged along γ, a neighbour beside the way flips in
+            // and out of "ahead" step after step at a doorway's wall end,
+            // and the keep-right turn with it, so that at rest the velocity
+            // sought swings between the gap and the wall).
+            let opposed = (fx * splat(u_seek.x) + fy * splat(u_seek.y)).cmplt(splat(ONCOMING_COS));
+            oncoming |=
+                valid & opposed & (rx * splat(u_seek.x) + ry * splat(u_seek.y)).cmpgt(Vec4::ZERO);
+            let opposed = (fx * splat(me.fwd.x) + fy * splat(me.fwd.y)).cmplt(splat(ONCOMING_COS));
+            let before = tie_y.cmpgt(Vec4::ZERO);
+            // Reciprocity assumes the neighbour takes half the avoidance;
+            // a forward-only neighbour at rest cannot step back, so an
+            // agent closing on it takes all.
+            let share = Vec4::select(qv.cmplt(splat(STUCK_SPEED)) & moving, Vec4::ONE, splat(0.5));
+            // Right of way: the agent clearly nearer its goal keeps only
+            // the bodies' distance (plus a sliver) from the other, which
+            // keeps the whole margin; the pair still never overlaps, and
+            // where the margins leave no room (a doorway, a jam) the one
+            // ahead gets through instead of both waiting. Within the gap
+            // (two agents level at a doorway, both waiting for the other)
+            // the lower index goes first. No priority given (NaN): nobody
+            // is ahead.
+            let pa = me.prio;
+            let ahead = splat(pa + PRIORITY_GAP).cmplt(prio)
+                | (before & splat(pa).cmple(prio + splat(PRIORITY_GAP)));
+            let keep_right = opposed
+                & (rx * splat(me.fwd.x) + ry * splat(me.fwd.y)).cmpgt(Vec4::ZERO)
+                & ((splat(pos.x) - qx) * fx + (splat(pos.y) - qy) * fy).cmpgt(Vec4::ZERO);
+            let pairs = orca::Pairs4 {
+                pn: (qx, qy),
+                vn: (fx * qv, fy * qv),
+                r: Vec4::select(ahead, splat(reach_ahead), splat(reach_yield)),
+                share,
+                tie: (tie_x, tie_y),
+                keep_right,
+            };
+            lines.push_agents4(&orca::agent_lines4(pos, v_me, &pairs, inv_h, inv_dt), k - c);
+            c += 4;
+        }
+        oncoming.any()
+    }
+
+    /// Separation's command: a push away from every neighbour closer than
+    /// two radii and from every obstacle closer than one, added to the
+    /// funnel's velocity; the funnel's own command when nothing pushes.
+    #[inline(always)]
+    fn separation_command(
+        &self,
+        pass: &Pass,
+        a: &Agent,
+        near: &Nearest,
+        states: &[VehicleState],
+    ) -> Command {
+        let (r, s, i) = (pass.r, a.state, a.peer.index as usize);
+        let mut push = Vec2::ZERO;
+        for &(d2, sj) in &near.near[..near.k] {
+            let d = d2.sqrt();
+            if d < 2.0 * r {
+                let j = self.peers[sj as usize].index as usize;
+                let dir = if d > 1e-9 {
+                    (s.pos - states[j].pos) / d
+                } else if i < j {
+                    -Vec2::X
+                } else {
+                    Vec2::X
+                };
+                push += dir * (2.0 * r - d);
+            }
+        }
+        for o in pass.obstacles {
+            let (dist, nrm) = o.distance_normal(s.pos);
+            if dist < r {
+                push += nrm * (r - dist);
+            }
+        }
+        if push == Vec2::ZERO {
+            return a.funnel_command();
+        }
+        let v = (a.v_pref + push * pass.cfg.separation_weight).clamp_length_max(pass.p.v_max);
+        unicycle(s, a.peer.fwd, a.h_pref, v, v, &pass.no_lines, pass.p.v_max)
+    }
+}
+
+/// What every planning agent of a pass reads: the settings, and what
+/// follows from them once per step.
+struct Pass<'a> {
+    p: &'a VehicleParams,
+    cfg: &'a AvoidanceConfig,
+    obstacles: &'a [Obstacle],
+    /// The radius avoided with: the body's plus the margin, m.
+    r: f32,
+    /// The neighbour reach, squared, m².
+    r2: f32,
+    /// Neighbours kept per agent.
+    k_max: usize,
+    /// The look-ahead scan may skip the cells of its block that no
+    /// neighbour it would take in lies in ([`passing::FarBox`]).
+    far_trim: bool,
+    far_box: passing::FarBox,
+    /// No half-plane: the separation's unicycle reads no line.
+    no_lines: Lines,
+}
+
+impl<'a> Pass<'a> {
+    fn new(
+        p: &'a VehicleParams,
+        cfg: &'a AvoidanceConfig,
+        obstacles: &'a [Obstacle],
+        grid: &NeighbourGrid,
+    ) -> Self {
+        let r = cfg.radius + cfg.margin;
+        // The look-ahead scan may skip cells only when every cell it could
+        // read has a bucket of its own: the block's cells lie within one of
+        // the point ahead, those the far box meets within the box's size
+        // of the agent, LOOK_AHEAD from that point.
+        let far_cells =
+            ((passing::LOOK_AHEAD + Passing::far_box_size(2.0 * r)) / cfg.reach).ceil() + 2.0;
+        Self {
+            p,
+            cfg,
+            obstacles,
+            r,
+            r2: cfg.reach * cfg.reach,
+            k_max: (cfg.max_neighbours as usize).min(MAX_NEIGHBOURS),
+            far_trim: far_cells <= 32.0 && grid.buckets_distinct_within(far_cells as i32),
+            far_box: passing::FarBox::new(2.0 * r, cfg.reach),
+            no_lines: Lines::default(),
+        }
+    }
+}
+
+/// The way an agent seeks: the command (`heading`, `speed`) it takes when
+/// the velocity `v` (along the unit `u`) is admissible. The funnel's
+/// (γ, v_dt) at first; ORCA seeks the goal's direction instead when the
+/// funnel's runs into a wall or the agent is at rest (the heading stays
+/// γ), and the keep-right rule turns it ([`lane_way`]).
+#[derive(Clone, Copy, Debug)]
+struct Way {
+    heading: f32,
+    speed: f32,
+    u: Vec2,
+    v: Vec2,
+}
+
+/// One planning agent, as its plan's phases read it.
+#[derive(Clone, Copy, Debug)]
+struct Agent<'s> {
+    /// Its record (position, unit heading, speed, priority, index).
+    peer: Peer,
+    state: &'s VehicleState,
+    /// The funnel's heading γ and speed v_dt, and its velocity.
+    h_pref: f32,
+    s_pref: f32,
+    u_pref: Vec2,
+    v_pref: Vec2,
+    /// The margin it keeps from neighbours and obstacles ([`patience`]).
+    margin: f32,
+    /// It has a goal left ([`Avoider::priority`] finite).
+    unfinished: bool,
+    /// ORCA: the funnel's way runs into a wall.
+    walled: bool,
+    /// The way it seeks.
+    seek: Way,
+    /// The keep-right rule applies: ORCA, unfinished, not walled.
+    passing: bool,
+}
+
+impl Agent<'_> {
+    /// The funnel's own command, untouched.
+    #[inline(always)]
+    fn funnel_command(&self) -> Command {
+        Command {
+            heading: self.h_pref,
+            speed: self.s_pref,
+            active: false,
+            walls: false,
+        }
+    }
+}
+
+/// The k nearest neighbours (squared distance, slot in the records),
+/// nearest first; past the k-th, not read.
+#[derive(Clone, Copy, Debug)]
+struct Nearest {
+    near: [(f32, u32); MAX_NEIGHBOURS],
+    k: usize,
+}
+
+/// Adds the half-planes of the obstacles in reach of an agent at `pos`
+/// keeping `margin` to `lines`.
+#[inline(always)]
+fn push_obstacle_lines(pass: &Pass, pos: Vec2, margin: f32, lines: &mut Lines) {
+    let cfg = pass.cfg;
+    for o in pass.obstacles {
+        let (dist, nrm) = o.distance_normal(pos);
+        if dist - pass.r < cfg.reach {
+            lines.push_obstacle(orca::obstacle_line(
+                nrm,
+                dist,
+                cfg.radius + margin,
+                cfg.obstacle_horizon,
+                pass.p.dt,
+            ));
+        }
+    }
+}
+
+/// The way sought after the keep-right turn, and whether it turned: the
+/// asks folded ([`Passing::settle`]), the way turned right where an
+/// unfinished agent not walled is asked to and the turned way is clear of
+/// walls; turning into its lane with a mate beside it on that side, it
+/// drops back to merge behind it ([`Passing::merge_factor`]).
+#[inline(always)]
+fn lane_way(a: &Agent, lane: &mut Passing, lines: &Lines) -> (Way, bool) {
+    lane.settle();
+    let u_lane = lane.turn(a.seek.u);
+    let turned = a.unfinished
+        && !a.walled
+        && lane.active()
+        && lines.obstacles_admit(u_lane * a.s_pref.max(DODGE_SPEED), 0.0);
+    if !turned {
+        return (a.seek, false);
+    }
+    let f = lane.merge_factor();
+    let way = Way {
+        heading: trig::atan2(u_lane.y, u_lane.x),
+        speed: a.s_pref * f,
+        u: u_lane,
+        v: lane.turn(a.seek.v) * f,
+    };
+    (way, true)
+}
+
+/// True when the agent takes the way sought as it is: not walled, no
+/// oncoming neighbour ahead (then it keeps right at once, before the pair
+/// is blocked, so that lanes form before a jam does), within the vehicle's
+/// speed, admitted by every half-plane, and its present heading clear of
+/// walls at that speed ([`present_heading_clear`]).
+#[inline(always)]
+fn way_admitted(pass: &Pass, a: &Agent, way: &Way, oncoming: bool, lines: &Lines) -> bool {
+    !a.walled
+        && !oncoming
+        && way.speed <= pass.p.v_max
+        && lines.admits(way.v, 0.0)
+        && present_heading_clear(lines, a.peer.fwd, way.speed)
+}
+
+/// ORCA's velocity for a way not admitted, as the unicycle's command: the
+/// velocity sought turned right by an oncoming neighbour ahead (at least
+/// [`LANE_BIAS`] of [`AvoidanceConfig::bias_deg`], the more the slower the
+/// agent goes than its way asks: none at full speed), unless that runs
+/// into a wall; the linear program's nearest admissible velocity, no
+/// faster than the way asks; then [`unicycle`].
+#[inline(always)]
+fn solve_keep_right(pass: &Pass, a: &Agent, way: &Way, oncoming: bool, lines: &Lines) -> Command {
+    let slow = if oncoming {
+        (1.0 - a.state.v / way.speed.max(0.1)).clamp(LANE_BIAS, 1.0)
+    } else {
+        0.0
+    };
+    let v_seek = if slow > 0.0 {
+        // Not into a wall ([`crate::avoidance::stalled`]).
+        stalled::bias_clear_of_walls(
+            lines,
+            way.v,
+            way.v
+                .rotate(trig::unit(-pass.cfg.bias_deg.to_radians() * slow)),
+            DODGE_SPEED,
+        )
+    } else {
+        way.v
+    };
+    // Never faster than the way asks (at least DODGE_SPEED, so an agent
+    // at rest can step aside): a vehicle that must brake within its
+    // acceleration limit cannot afford ORCA's habit of speeding up to pass
+    // in front.
+    let cap = way.speed.max(DODGE_SPEED).min(pass.p.v_max);
+    let v = orca::solve(lines, cap, v_seek);
+    Command {
+        walls: lines.obstacle_count() > 0,
+        ..unicycle(a.state, a.peer.fwd, way.heading, way.v, v, lines, cap)
     }
 }
 
 /// True when the vehicle, still moving along its present heading `forward`
 /// while it turns to the funnel's, may speed up to `speed` without running
 /// into an obstacle. The funnel's own command sets a heading to turn to and
-/// a speed, not a velocity: an agent facing a wall whose funnel asked to
-/// turn round at full speed accelerated into it (corridor, seed 94: 28
-/// steps closer than a radius). Without obstacles in reach: always (the
+/// a speed, not a velocity: an agent facing a wall whose funnel asks to
+/// turn round at full speed would accelerate into the wall while it
+/// turns, closer than its radius. Without obstacles in reach: always (the
 /// same bits).
 #[inline]
 fn present_heading_clear(lines: &Lines, forward: Vec2, speed: f32) -> bool {
@@ -871,7 +1067,8 @@ fn present_heading_clear(lines: &Lines, forward: Vec2, speed: f32) -> bool {
 pub const DODGE_SPEED: f32 = 0.5;
 
 /// How much nearer its goal an agent must be than a neighbour, m, to have
-/// the right of way over it.
+/// the right of way over it. Much wider, the right of way goes nearly by
+/// index, and agents level at the doorway jam.
 pub const PRIORITY_GAP: f32 = 0.25;
 
 /// The clearance, m, beyond the two bodies that an agent with the right of
@@ -886,8 +1083,8 @@ pub const LANE_BIAS: f32 = 0.2;
 /// Headings sampled each side of the current one by [`unicycle`].
 pub const HEADING_SAMPLES: usize = 12;
 
-/// The forward-only unicycle's answer (issue 18: "chooses among admissible
-/// headings and speeds"). When ORCA's velocity `v_orca` is at least
+/// The forward-only unicycle's answer: it chooses among the admissible
+/// headings and speeds. When ORCA's velocity `v_orca` is at least
 /// [`STUCK_SPEED`], the heading command is its direction and the speed its
 /// projection on the present heading, no more than that ray admits.
 /// Otherwise (a crowd packed at the contact distance leaves ORCA nearly no
@@ -986,7 +1183,7 @@ pub fn unicycle(
     Command {
         heading,
         // `trig`, not `f32::cos` (the platform's libm): the same bits
-        // natively and in wasm (the doorway's hash differed).
+        // natively and in wasm.
         speed: (sp * trig::sin_cos(turn).1.max(0.0)).min(along),
         active: true,
         walls: false,

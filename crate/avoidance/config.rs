@@ -1,11 +1,11 @@
-//! What a scenario says about avoidance (issue 18): the method (off,
+//! What a scenario says about avoidance: the method (off,
 //! separation, ORCA), the agents' body radius and the method's settings,
 //! and the static obstacles (discs and line segments). Validation uses the
 //! one table of ranges ([`crate::base::ranges`]); errors name the
 //! field (`obstacles[2]: obstacle.radius = -1 is outside [0.01, 10000]`).
 //!
 //! The default is `off`: a scenario that says nothing steps exactly as
-//! before (the golden trajectory hashes are unchanged).
+//! without avoidance (the same trajectory bits).
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
@@ -90,11 +90,12 @@ pub struct AvoidanceConfig {
     /// turns, by index): in between it keeps the command of its last plan,
     /// or takes its funnel's when that plan left the funnel's alone. At the
     /// default 1/60 s step, 2 plans at 30 Hz, the rate game engines give
-    /// their avoidance; 1 plans every step (the cost per agent update about
-    /// halves from 1 to 2: [`crate::avoidance::avoider`]'s module doc).
-    /// Slower rates are offered to explore, and fail targets: seeds 0–99,
-    /// 3 let one circle-32 run touch (0.592 m against 0.6), 4 left two of
-    /// Fig. 6's six agents deadlocked and 9 of Fig. 8's 80 unfinished.
+    /// their avoidance; 1 plans every step (what the avoidance adds to an
+    /// agent update nearly halves from 1 to 2: [`crate::avoidance::avoider`]'s
+    /// module doc). Slower rates are offered to explore, not for use: a
+    /// command held over 3 or 4 steps is old enough for circle-swap agents
+    /// to touch and for agents of the paper figures to deadlock or not
+    /// finish.
     pub replan_every: u32,
 }
 

@@ -17,7 +17,7 @@
 //! run and target), it allocates two `Vec`s per agent per step and wants
 //! its neighbours as a slice of `Cow<Agent>`, and it depends on glam 0.29
 //! (we are on 0.34). Its obstacles are polygons; ours are discs and
-//! segments. This module is ~200 lines: the agents' half-planes and the
+//! segments. This module holds the agents' half-planes and the
 //! linear programs, written after the paper, in fixed-size arrays (no
 //! allocation), with a deterministic choice where RVO2 divides by zero.
 //!
@@ -512,7 +512,7 @@ fn lp2_start(opt: Vec2, radius: f32, direction_opt: bool) -> Vec2 {
     }
 }
 
-/// A 2D linear program as [`lp2`] (the tests pass the former scalar one
+/// A 2D linear program as [`lp2`] (the tests pass the scalar reference
 /// to [`solve_with`]).
 type Lp2 = fn(&Lines, f32, Vec2, bool) -> (Vec2, usize);
 
@@ -629,9 +629,9 @@ pub fn ray_cap(lines: &Lines, u: Vec2, cap: f32) -> f32 {
 mod tests {
     use super::*;
 
-    /// The 2D linear program and ray cap as they were before the lines
-    /// were read four at a time (one line at a time, branches): the
-    /// reference the new ones must match bit for bit. Their start and end
+    /// The 2D linear program and ray cap in their scalar form (one line
+    /// at a time, branches, as RVO2 writes them): the reference the
+    /// four-lane ones must match bit for bit. Their start and end
     /// ([`disc_interval`], [`pick_on_line`], [`lp2_start`]) and the 3D
     /// program round them ([`solve_with`]) are shared, not under test.
     mod reference {
@@ -688,12 +688,12 @@ mod tests {
             (result, lines.len())
         }
 
-        /// The former `solve`: the same 3D program round the former 2D one.
+        /// `solve` with the scalar 2D program inside the same 3D one.
         pub fn solve_ref(lines: &Lines, max_speed: f32, preferred: Vec2) -> Vec2 {
             solve_with(lines, max_speed, preferred, lp2)
         }
 
-        /// The former scalar ray cap.
+        /// The scalar ray cap.
         pub fn ray_cap_ref(ls: &[Line], u: Vec2, cap: f32) -> f32 {
             let mut hi = cap;
             for l in ls {
@@ -764,7 +764,7 @@ mod tests {
     }
 
     /// The linear programs and the ray cap, four lines at a time, give the
-    /// former ones' bits: seeded line sets of every size, with obstacle
+    /// scalar reference's bits: seeded line sets of every size, with obstacle
     /// lines, feasible and not (the 3D program too), parallel lines
     /// included.
     #[test]

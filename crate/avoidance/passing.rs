@@ -1,19 +1,17 @@
 //! Keep right early: the passing side taken before two groups crossing
-//! head on meet (issue 18's deadlock target, the corridor).
+//! head on meet (the corridor benchmark, `studies::avoidance`).
 //!
-//! **Problem.** Two groups of 12 in 3 × 4 blocks, 1 m apart, each as wide
-//! as the 4 m corridor, met face to face mid-corridor and locked: in 100
-//! runs (seeds 0–99) 398 agents deadlocked in 70 runs and reach was 90.4 %.
-//! The jams were not at the goals nor against the walls: the blocks came
-//! to rest interlocked around x ≈ 0–2 m, every agent at the distance ORCA
-//! keeps (0.75–0.9 m) from an oncoming one ahead and its own group mates
-//! beside and behind, turning on the spot but with no admissible forward
-//! ray (`examples/avoid_stuck.rs`, `examples/avoid_snap.rs`). The avoider
-//! already kept right against an oncoming neighbour, but only against the
-//! `max_neighbours` (10) *nearest*: inside a block of 12 those are its own
-//! group mates until the other block is about a metre away, half a second
-//! before contact at a closing speed of 2.6 m/s — too late for a forward-only
-//! unicycle to make room, so the blocks met at full width.
+//! **Why.** Two groups of 12 in 3 × 4 blocks, 1 m apart, each as wide as
+//! the 4 m corridor, meet face to face mid-corridor. An agent that keeps
+//! right only against the `max_neighbours` (10) *nearest* sees, inside a
+//! block of 12, only its own group mates until the other block is about a
+//! metre away: half a second before contact at a closing speed of 2.6 m/s,
+//! too late for a forward-only unicycle to make room. The blocks then meet
+//! at full width and come to rest interlocked, every agent at the distance
+//! ORCA keeps (0.75–0.9 m) from an oncoming one ahead and its own group
+//! mates beside and behind, turning on the spot with no admissible
+//! forward ray (`examples/avoid_stuck.rs` and `examples/avoid_snap.rs`
+//! show such jams).
 //!
 //! **Rule.** While the grid lists the neighbours in reach (all of them, not
 //! only the nearest kept for ORCA), every *oncoming* neighbour ahead
@@ -31,55 +29,23 @@
 //! the wall already keeps as far right as it can) and for walled agents
 //! (they seek their goal's direction). The turned velocity then goes
 //! through the avoider as the funnel's own would: used as it is when
-//! admissible, else ORCA's nearest. No agent in reach oncoming: the funnel's
-//! (γ, v_dt) unchanged, the same bits (so Fig. 7-like scenes and every world
-//! without avoidance are untouched).
+//! admissible, else ORCA's nearest. It is the funnel's command that turns,
+//! not only the velocity ORCA seeks: ORCA's projected speed while an agent
+//! turns would starve a group that the funnel's own command keeps moving.
+//! The clearance is the avoidance's own: a wider one pushes the outer rows
+//! into the walls. No agent in reach oncoming: the funnel's (γ, v_dt)
+//! unchanged, the same bits (so Fig. 7-like scenes and every world without
+//! avoidance are untouched).
 //!
-//! **Measured** (`steer avoid --seeds 100`, ORCA, tuned on seeds
-//! 1000–1099). Report seeds 0–99, corridor: 398 deadlocked agents in 70
-//! runs → 113 in 52, reach 90.4 → 98.5 %; held-out seeds 200–299 (looked
-//! at once, after the choice): 364 in 74 → 119 in 50, reach 90.6 →
-//! 97.5 %. Doorway 0 deadlocks before and after; circle swaps 0 overlaps,
-//! N = 100 reach 100 %, oriented 99.3 % (the README's figures table has
-//! every cell). Cost: the heading of every neighbour in reach is read,
-//! 6,109 → 6,479 instructions per ORCA agent update (+6 %,
-//! `examples/avoid_icount.rs` under callgrind).
-//! Tune seeds, corridor with ORCA: 394 deadlocked agents in 72 runs, reach
-//! 90.2 % → 99 in 49 runs, 99.6 % (with the avoider's check that the
-//! present heading is clear of walls, added after a report seed showed a
-//! wall contact: 100 in 48, 99.1 %; doorway 0 deadlocks). Applying the turn in the avoider's
-//! ORCA branch only (the velocity sought, leaving the funnel's command
-//! whenever an oncoming agent was in reach) made it far worse (1,368 in 99
-//! runs, even with a turn of 0.006°: ORCA's projected speed while turning
-//! starves a group that the funnel's own command keeps moving); a full
-//! instead of half share 87 in 55; at most 27° (tan 0.5) 125 in 59; a
-//! wider clearance (×1.33) 65 in 48 but 39 wall contacts (rejected); asks
-//! only from neighbours less than half the clearance on the right 197 in
-//! 64. **Not reached: 0 deadlocks.** What is left are agents that ended in
-//! the other group's lane against a wall (the corridor's goals at
-//! y = ±3 m lie beyond its walls, and the funnel draws the outer rows back
-//! out), head on with it where neither side has room, and slow jams that
-//! take more than 10 s to clear. Agents at rest in those jams now seek
-//! their goal's direction, with no keep-right bias into a wall
-//! ([`crate::avoidance::stalled`]).
-//!
-//! **Seen further ahead, and merging** (the second version). After the
-//! rule above and [`crate::avoidance::stalled`] the corridor still had 60
-//! deadlocked agents in 28 of the tune runs 1000–1099 (123 in 32 on
-//! 2000–2099). Classified (`examples/avoid_kinds.rs`, traced with
-//! `examples/avoid_trace.rs` and `examples/avoid_dump.rs`): 32 mid-corridor
-//! and 27 at a wall in their own lane, 1 in the other's; nearly all in
-//! the front columns — the inner rows that had to cross to their own half
-//! (agents 13 and 2) stood face to face with the other group's front in
-//! its lane, and the outer ones at the wall (agents 0 and 15) stood behind
-//! mates that cut in front of them. Two causes: (1) the turn came late:
-//! within the 3 m reach the ask of a neighbour ahead is at most a few
-//! degrees until 1.2 s before contact (agent 13 of seed 1021 was still
-//! 0.58 m on the wrong side at full speed 2.7 m from the other front);
-//! (2) a block as wide as the corridor cannot turn right as a block: an
-//! agent asked to move right with a mate level beside it on the right
-//! kept its speed (ORCA's nearest velocity slides along the mate), so the
-//! front stayed four abreast until it met the other.
+//! **Seen further ahead, and merging.** Within the 3 m reach the ask of a
+//! neighbour ahead is at most a few degrees until 1.2 s before contact:
+//! an inner-row agent that must cross to its own half is still on the
+//! wrong side at full speed a few metres from the other front. And a block
+//! as wide as the corridor cannot turn right as a block: an agent asked to
+//! move right with a mate level beside it on the right keeps its speed
+//! (ORCA's nearest velocity slides along the mate), so the front stays four
+//! abreast until it meets the other, and the outer agents at the wall end
+//! up behind mates that cut in front of them.
 //!
 //! **Rules.** (1) The avoider also reads the neighbours round the point
 //! [`LOOK_AHEAD`] (5 m) along the agent's way (the grid's 3 × 3 cells
@@ -87,45 +53,26 @@
 //! than [`PASS_MOVING`] (a group coming, not a queue) asks as above
 //! ([`Passing::see_far4`]); and any oncoming neighbour in the lane asks at
 //! least [`LANE_MIN_TAN`] (11°), however far (the ask falls as 1 /
-//! distance: 3° at 8 m). (2) While it turns right with a *mate* (heading
+//! distance: 3° at 8 m). The cells round one point ahead, not a longer
+//! reach: a longer reach gives ORCA far neighbours too, and a grid cell
+//! widened to the passing reach makes every query scan about 7× the
+//! candidates. (2) While it turns right with a *mate* (heading
 //! cosine above [`MATE_COS`]) beside it on that side (lateral offset
 //! within [`MERGE_SIDE`] clearances, from [`MERGE_BACK`] clearances behind
 //! to one ahead), an agent keeps [`MERGE_SPEED`] (half) of the funnel's
 //! speed: it drops back and merges behind the mate, so the block's front
 //! becomes an echelon and then a lane ([`Passing::merge_factor`]). Both
-//! only change what the early keep-right already turned: no oncoming
-//! neighbour, the funnel's (γ, v_dt) as before, the same bits.
+//! rules only change what the early keep-right already turned: no
+//! oncoming neighbour, the funnel's (γ, v_dt) unchanged, the same bits.
 //!
-//! **Measured** (tune seeds only: 1000–1099 and 2000–2099, `steer avoid
-//! --seeds 100 --seed 1000` / `2000`, ORCA, corridor, deadlocked agents
-//! (runs)): before 60 (28) / 123 (32); look-ahead alone (5 m, 8 m) 21
-//! (14) / 53 (19); with the merge (half speed, within 2 clearances, a
-//! quarter behind) 4 (4) / 11 (8); only moving neighbours beyond reach 9
-//! (7) / 18 (9); with the 11° least turn **7 (5) / 5 (4)** (kept), reach
-//! 99.96 / 99.92 %. A change moves these counts by half from chaos alone:
-//! differences of a few agents are not evidence. What is left on the tune
-//! seeds (`avoid_kinds -- 1000 100` and `2000 100`, 12 agents): 9 at a
-//! wall in their own lane (mostly the outer front agents, 0 and 15,
-//! turning on the spot 270°–900° in their 10 s while mates cut in ahead of
-//! them), 3 in a short jam mid-corridor; all 12 finish later. The report
-//! and held-out figures are in the README's figures table.
-//!
-//! **Tried and not kept** (corridor, deadlocked agents on tune seeds
-//! 1000–1099 plus 2000–2099, unless "on 1000"): a longer `reach` for everything
-//! (ORCA's neighbours too) 4 / 5 / 6 / 8 m: 112 / 89 / 93 / 23 on 1000;
-//! the grid's cell widened to the passing reach (every query scans ~7× the
-//! candidates) 5 / 6 / 8 / 10 m: 28 / 26 / 21 / 31 on 1000, so the cheaper
-//! point ahead; without the merge, the point 3 / 4.5 / 6 m ahead (reach 6
-//! / 7.5 or 9 / 9 m): 26 / 36 or 21 / 47 on 1000; with everything, the
-//! point 4 / 6 / 7 m (reach 7 / 9 / 10 m): 7+26 / 6+14 / 8+8; merge speed
-//! 0.7 / 0.3: 17+28 / 11+42; a mate within 1 / 1.5 / 2.5 / 3 clearances
-//! aside: 63+51 / 16+25 / 19+13 / 11+29; from 0 / 0.5 / 0.75 clearances
-//! behind: 45+70 / 7+5 (a corridor run with overlapping pairs, 65
-//! pair-steps: rejected) / 26+48; beyond reach, neighbours faster than
-//! 0.1 m/s: 8+15; the least turn 0.4 (22°): 8+10. The doorway has no
-//! oncoming group, but several variants still moved its chaos into 1 or
-//! 2 deadlocked agents at the wall end on a tune set (the kept one: 0 and
-//! 0).
+//! **Chosen on tune seeds** (`steer avoid --seeds 100 --seed 1000` and
+//! `--seed 2000`, ORCA, the corridor's deadlocked agents, the doorway's as
+//! a check): the constants of this module; the report and held-out seeds'
+//! figures are in the README's figures table. One change moves the
+//! corridor's counts by half from chaos alone: differences of a few agents
+//! are not evidence. The jams these rules leave (agents in the other
+//! group's lane against a wall, slow jams packed at the margins) are for
+//! [`crate::avoidance::stalled`] and [`crate::avoidance::patience`].
 
 use glam::{BVec4A, Vec2, Vec4};
 

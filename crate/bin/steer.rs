@@ -2,21 +2,24 @@
 //! `steer --help`, `steer run --help`, …).
 //!
 //! ```text
-//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed]
+//! steer run SCENARIO.json --out TRAJ.csv|TRAJ.json|TRAJ.jsonl [--every N] [--table FILE] [--controller standard|relaxed|seek]
 //! steer reach [--n N] [--seed S] [--table FILE] [--threads N]
 //! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
+//! steer envelope [--n N] [--seed S] [--json FILE] [--table FILE] [--standard JSON] [--only NAMES] [--brief] [--vehicle VEHICLE.json] [--queries N]
+//! steer avoid [--seeds N] [--seed S] [--only NAMES] [--replan-every N] [--write-presets DIR] [--table FILE] [--threads N]
 //! steer report [--check] [--prune] [--records DIR] [--full-records DIR] [--store DIR] [--out FILE]
 //! ```
-//! `run` simulates a scenario file (schema: `crate/funnelling/scenario.rs`)
+//! `run` simulates a scenario file (schema: `crate/world/scenario.rs`)
 //! and streams the per-step pose, speeds and mode of every agent plus its
 //! metrics; `--controller` overrides the scenario's controller. Its η table
 //! is `--table` or the scenario's `table` (built for its vehicle, else an
 //! error), else `tables/eta.bin` if it matches the vehicle, else the
 //! matching table from the cache (`steering::cli::table_cache`), built
-//! there if missing (issue 14). `envelope --vehicle FILE` scales the
+//! there if missing. `envelope --vehicle FILE` scales the
 //! envelope study to a vehicle and prints its per-vehicle measures.
 //! `reach` runs the seeded random reach study for every μ-bound variant and
-//! prints the acceptance figures of the funnelling issue.
+//! prints reach, orientation on entry, errors, length against Dubins and
+//! limit violations for each.
 //! `relaxed` runs every `scenarios/p001_*_standard.json` preset with both
 //! controllers, then the seeded random region-goal study, and prints the
 //! comparison of paper 001 (path length, integrated |curvature|, reach).
@@ -61,7 +64,7 @@ fn load_table(path: &Path) -> Result<EtaTable, String> {
     EtaTable::from_bytes(&bytes).map_err(|e| format!("{shown}: {e}"))
 }
 
-/// The table `steer run` runs with (issue 14): `--table` or the
+/// The table `steer run` runs with: `--table` or the
 /// scenario's `table` must match the vehicle (a mismatch is an error);
 /// otherwise the committed table if it matches, else the cache's
 /// (`steering::cli::table_cache`), built if missing. Never a table built
@@ -135,6 +138,7 @@ fn run(args: &RunArgs) -> Result<(), String> {
     };
     let s = stream_run(&sc, &table, args.every, format, &mut out, &mut progress)
         .map_err(|e| format!("{scenario}: {e}"))?;
+    out.commit()?;
     println!(
         "steer: {} ({}) — {} agents, {} steps, {} finished all goals, {} limit violations -> {}",
         sc.name,
@@ -239,7 +243,7 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
     };
     print!("{}", report.tables(detail));
     println!(
-        "\nissue 13 targets (seed {}):\n{}",
+        "\nenvelope targets (seed {}):\n{}",
         args.seed,
         report.targets()
     );
@@ -296,7 +300,7 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
         (MuBound::TurningRadius { factor: 4.0 }, 2.0, 0.25),
         (MuBound::TurningRadius { factor: 6.0 }, 2.0, 0.25),
         (MuBound::TurningRadius { factor: 8.0 }, 2.0, 0.25),
-        // The default with the paper's gain 1 (issue 19: the gain's effect alone).
+        // The default with the paper's gain 1: the gain's effect alone.
         (MuBound::TurningRadius { factor: 8.0 }, 1.0, 0.25),
         (MuBound::Constant, 2.0, 0.25),
     ];
@@ -470,7 +474,7 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
             let name = format!("avoid_{}", b.name());
             let mut sc = sc;
             if !b.seeded() {
-                sc.description = format!("{} With ORCA avoidance (issue 18).", sc.description);
+                sc.description = format!("{} With ORCA avoidance.", sc.description);
             }
             sc.name = name.clone();
             let text = serde_json::to_string_pretty(&sc).map_err(|e| e.to_string())? + "\n";
@@ -525,10 +529,8 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
         let _ = Bench::ALL;
         eprintln!("{}: {:.1} s", b.name(), t0.elapsed().as_secs_f32());
     }
-    args.record.write(
-        study_records::avoid_seeds(args.seed, args.seeds),
-        figures,
-    )
+    args.record
+        .write(study_records::avoid_seeds(args.seed, args.seeds), figures)
 }
 
 fn main() -> ExitCode {

@@ -137,7 +137,10 @@ pub fn figures_by_id<'a>(
 ///
 /// # Errors
 /// An unclosed brace, an unknown figure id or source, naming it.
-pub fn render_template(template: &str, records: &BTreeMap<String, Record>) -> Result<String, String> {
+pub fn render_template(
+    template: &str,
+    records: &BTreeMap<String, Record>,
+) -> Result<String, String> {
     let figures = figures_by_id(records.values())?;
     let mut out = String::with_capacity(template.len());
     let mut rest = template;
@@ -253,7 +256,13 @@ fn source_table(out: &mut String, r: &Record, when: bool) {
     }
     out.push_str("\n\n| id | what | value |\n|---|---|---|\n");
     for f in &r.figures {
-        let _ = writeln!(out, "| `{}` | {} | {} |", f.id, cell(&f.what), cell(&f.shown()));
+        let _ = writeln!(
+            out,
+            "| `{}` | {} | {} |",
+            f.id,
+            cell(&f.what),
+            cell(&f.shown())
+        );
     }
     out.push('\n');
 }
@@ -320,7 +329,11 @@ fn fidelity(out: &mut String, claims: &[&Record], not_testable: &[NotTestable]) 
 }
 
 /// The presets section: each caption's claim and its rendered `measured`.
-fn presets(out: &mut String, captions: &Captions, fast: &BTreeMap<String, Record>) -> Result<(), String> {
+fn presets(
+    out: &mut String,
+    captions: &Captions,
+    fast: &BTreeMap<String, Record>,
+) -> Result<(), String> {
     out.push_str("## The lab's presets\n\n");
     out.push_str(
         "What the lab's side panel shows for each paper-figure preset: the text's claim, and what we \
@@ -329,12 +342,16 @@ fn presets(out: &mut String, captions: &Captions, fast: &BTreeMap<String, Record
     );
     out.push_str("| presets | claim | measured |\n|---|---|---|\n");
     for c in &captions.captions {
-        let measured =
-            render_template(&c.measured, fast).map_err(|e| format!("caption of {}: {e}", c.presets.join(", ")))?;
+        let measured = render_template(&c.measured, fast)
+            .map_err(|e| format!("caption of {}: {e}", c.presets.join(", ")))?;
         let _ = writeln!(
             out,
             "| {} | {} | {} |",
-            c.presets.iter().map(|p| format!("`{p}`")).collect::<Vec<_>>().join(" "),
+            c.presets
+                .iter()
+                .map(|p| format!("`{p}`"))
+                .collect::<Vec<_>>()
+                .join(" "),
             cell(&c.claim),
             cell(&measured)
         );
@@ -430,7 +447,11 @@ pub fn compare_checked(committed: &str, rebuilt: &str, name: &str) -> Result<(),
     let ours = checked_part(rebuilt).ok_or("the rebuilt report has no checked part")?;
     let theirs = checked_part(committed)
         .ok_or_else(|| format!("{name} has no checked part (`{CHECKED_BEGIN}`): {fix}"))?;
-    let offset = committed.lines().position(|l| l == CHECKED_BEGIN).unwrap_or(0) + 2;
+    let offset = committed
+        .lines()
+        .position(|l| l == CHECKED_BEGIN)
+        .unwrap_or(0)
+        + 2;
     for (i, (a, b)) in theirs.iter().zip(&ours).enumerate() {
         if a != b {
             return Err(format!(
@@ -455,7 +476,10 @@ pub fn compare_checked(committed: &str, rebuilt: &str, name: &str) -> Result<(),
 
 /// `fresh` over `stored`: a fresh record replaces its source's.
 #[must_use]
-pub fn merge(stored: &BTreeMap<String, Record>, fresh: &BTreeMap<String, Record>) -> BTreeMap<String, Record> {
+pub fn merge(
+    stored: &BTreeMap<String, Record>,
+    fresh: &BTreeMap<String, Record>,
+) -> BTreeMap<String, Record> {
     let mut out = stored.clone();
     out.extend(fresh.iter().map(|(k, v)| (k.clone(), v.clone())));
     out
@@ -464,7 +488,11 @@ pub fn merge(stored: &BTreeMap<String, Record>, fresh: &BTreeMap<String, Record>
 /// Writes `records` into `dir`, leaving a file untouched when only its
 /// commit, date or cores would change (so a rerun does not churn the
 /// committed records), and removes the `*.json` records not in the set.
-fn sync_store(dir: &Path, records: &BTreeMap<String, Record>, stored: &BTreeMap<String, Record>) -> Result<(), String> {
+fn sync_store(
+    dir: &Path,
+    records: &BTreeMap<String, Record>,
+    stored: &BTreeMap<String, Record>,
+) -> Result<(), String> {
     for (name, r) in records {
         if stored.get(name).is_some_and(|s| s.content() == r.content()) {
             continue;
@@ -496,7 +524,14 @@ pub fn run(args: &ReportArgs) -> Result<String, String> {
     let not_testable: Vec<NotTestable> = read_json(&args.not_testable)?;
     let captions: Captions = read_json(&args.captions)?;
     if args.check {
-        return check(args, &stored, &fresh, &stored_full, &not_testable, &captions);
+        return check(
+            args,
+            &stored,
+            &fresh,
+            &stored_full,
+            &not_testable,
+            &captions,
+        );
     }
     if fresh.is_empty() && fresh_full.is_empty() {
         return Err(format!(

@@ -27,9 +27,9 @@ pub enum Command {
     Reach(ReachArgs),
     /// Standard vs relaxed funnelling: paper 001 presets, then random region goals.
     Relaxed(RelaxedArgs),
-    /// The envelope study (issue 13): tolerances × speed × distance, static, moving and chained goals.
+    /// The envelope study: tolerances × speed × distance, static, moving and chained goals.
     Envelope(EnvelopeArgs),
-    /// Avoidance benchmarks (issue 18): circle swap, corridor, doorway, Fig. 6 / Fig. 8; off vs separation vs ORCA.
+    /// Avoidance benchmarks: circle swap, corridor, doorway, Fig. 6 / Fig. 8; off vs separation vs ORCA.
     Avoid(AvoidArgs),
     /// The figures report: docs/FIGURES.md from the records the tests, studies and benchmarks write (`--check`: compare only).
     Report(super::report::ReportArgs),
@@ -107,7 +107,7 @@ impl AvoidArgs {
 /// `steer run`.
 #[derive(Args, Clone, Debug, PartialEq)]
 pub struct RunArgs {
-    /// Scenario file (schema: `crate/funnelling/scenario.rs`).
+    /// Scenario file (schema: `crate/world/scenario.rs`).
     #[arg(value_name = "SCENARIO.json")]
     pub scenario: PathBuf,
     /// Trajectory output, streamed while simulating; the extension
@@ -216,7 +216,7 @@ pub fn parse_study_n(s: &str) -> Result<usize, String> {
 }
 
 /// Smallest `steer envelope --n`: the moving and chained groups get N/5
-/// runs each, and an empty group printed rows of NaN.
+/// runs each, and an empty group would print rows of NaN.
 pub const MIN_ENVELOPE_N: usize = 5;
 
 /// Parses `steer envelope --n`: [`MIN_ENVELOPE_N`] to [`MAX_STUDY_N`].
@@ -281,7 +281,7 @@ pub struct EnvelopeArgs {
     /// Print the summary and the targets only, not the per-cell tables.
     #[arg(long)]
     pub brief: bool,
-    /// Vehicle file (issue 14; e.g. `scenarios/vehicles/car.json`): the
+    /// Vehicle file (e.g. `scenarios/vehicles/car.json`): the
     /// study's distances, tolerances and speeds are scaled to its turning
     /// radius and v_max (the tables stay in pedestrian-equivalent units),
     /// the table is `--table` if built for it, else the cached or newly

@@ -169,10 +169,15 @@ pub fn envelope(prefix: &str, report: &EnvelopeReport) -> Vec<Figure> {
             let s = summarise(v.runs(kind));
             let group = format!("{kind:?}").to_lowercase();
             let id = |q: &str| format!("{prefix}.{}.{group}.{q}", v.name);
-            let what =
-                |q: &str| format!("envelope study, {} on {group} goals: {q}", v.name);
+            let what = |q: &str| format!("envelope study, {} on {group} goals: {q}", v.name);
             f.add(id("runs"), what("runs"), s.n as f64, "", 0);
-            f.add(id("reach"), what("runs entering the first disk"), pct(s.reach), "%", 1);
+            f.add(
+                id("reach"),
+                what("runs entering the first disk"),
+                pct(s.reach),
+                "%",
+                1,
+            );
             f.add(
                 id("oriented"),
                 what("entries already within ε_tol (runs starting outside the disk)"),
@@ -194,7 +199,13 @@ pub fn envelope(prefix: &str, report: &EnvelopeReport) -> Vec<Figure> {
                 "%",
                 1,
             );
-            f.add(id("finished"), what("runs finishing every goal"), pct(s.finished), "%", 1);
+            f.add(
+                id("finished"),
+                what("runs finishing every goal"),
+                pct(s.finished),
+                "%",
+                1,
+            );
             f.add(
                 id("length-over-dubins.median"),
                 what("path length / Dubins, median of finished runs"),
@@ -202,7 +213,13 @@ pub fn envelope(prefix: &str, report: &EnvelopeReport) -> Vec<Figure> {
                 "×",
                 3,
             );
-            f.add(id("orbits"), what("runs still circling at the time limit"), s.orbits as f64, "runs", 0);
+            f.add(
+                id("orbits"),
+                what("runs still circling at the time limit"),
+                s.orbits as f64,
+                "runs",
+                0,
+            );
         }
     }
     f.0
@@ -230,7 +247,13 @@ pub fn avoid(bench: &str, method: &str, c: &AvoidCell) -> Vec<Figure> {
         "%",
         1,
     );
-    f.add(id("finished-runs"), what("runs where every agent finished"), c.finished_runs as f64, "runs", 0);
+    f.add(
+        id("finished-runs"),
+        what("runs where every agent finished"),
+        c.finished_runs as f64,
+        "runs",
+        0,
+    );
     f.add(
         id("min-distance"),
         what("smallest centre distance between two agents (bodies 0.6 m)"),
@@ -238,9 +261,27 @@ pub fn avoid(bench: &str, method: &str, c: &AvoidCell) -> Vec<Figure> {
         "m",
         3,
     );
-    f.add(id("overlap-runs"), what("runs with two bodies overlapping"), c.runs_with_overlap as f64, "runs", 0);
-    f.add(id("deadlocked"), what("deadlocked agents"), c.deadlocks as f64, "agents", 0);
-    f.add(id("violations"), what("steps over a vehicle limit"), c.violations as f64, "steps", 0);
+    f.add(
+        id("overlap-runs"),
+        what("runs with two bodies overlapping"),
+        c.runs_with_overlap as f64,
+        "runs",
+        0,
+    );
+    f.add(
+        id("deadlocked"),
+        what("deadlocked agents"),
+        c.deadlocks as f64,
+        "agents",
+        0,
+    );
+    f.add(
+        id("violations"),
+        what("steps over a vehicle limit"),
+        c.violations as f64,
+        "steps",
+        0,
+    );
     f.0
 }
 

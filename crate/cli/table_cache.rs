@@ -1,4 +1,4 @@
-//! The native η-table cache (issue 14): `steer run` on a scenario whose
+//! The native η-table cache: `steer run` on a scenario whose
 //! vehicle is not the committed table's builds the matching table once and
 //! keeps it, keyed by [`TableSpec::key`] (the hash of every build
 //! parameter and axis value, the same key the browser's IndexedDB cache

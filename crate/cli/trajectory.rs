@@ -1,14 +1,13 @@
-//! `steer run`'s output, streamed (issue 16): the trajectory is written as
-//! it is simulated, one recorded step at a time, so peak memory is
-//! O(agents) whatever the duration (before: every trace was kept and the
-//! output built as one string; 1,000 agents × 60 s took 324 MB and
-//! 1,000 × 3,600 s aborted on a 4 GB allocation in the JSON serialiser).
+//! `steer run`'s output, streamed: the trajectory is written as it is
+//! simulated, one recorded step at a time, so peak memory is O(agents)
+//! whatever the duration (a trace kept whole grows with agents × recorded
+//! steps: 1,000 agents over the longest scenario, 3,600 s, would need
+//! gigabytes).
 //!
 //! Formats, chosen by the output's extension (case-insensitive; anything
 //! else is refused before the simulation starts):
 //! - `.csv`: one row per agent per recorded step, time-ordered (all agents
-//!   at t, then t + every·dt), header `agent,t,x,y,theta,v,omega,mode`;
-//!   the same rows as before issue 16, which were agent-ordered.
+//!   at t, then t + every·dt), header `agent,t,x,y,theta,v,omega,mode`.
 //! - `.json`: one document, time-ordered:
 //!   `{"name", "source", "dt", "steps", "every", "agents": N,
 //!     "frames": [{"t", "x": [N], "y", "theta", "v", "omega", "mode"}, …],
@@ -18,18 +17,32 @@
 //!   header object, then one frame object per recorded step, then
 //!   `{"metrics": [...]}`.
 //!
-//! Writes go through a [`BufWriter`]; the per-agent metrics need only the
-//! start poses and the world's running [`PathMetrics`](crate::base::metrics::PathMetrics).
+//! Every JSON value is written by serde_json: the `.json` document is one
+//! serialised value whose `frames` sequence simulates as it is written
+//! (each frame is serialised from the world's state at its step, so the
+//! document is well formed by construction and never held whole), the
+//! `.jsonl` lines one value each. The per-agent metrics need only the
+//! start poses and the world's running
+//! [`PathMetrics`](crate::base::metrics::PathMetrics).
+//!
+//! The file is written under a temporary name beside `--out` and renamed
+//! onto it only once complete ([`OutFile::commit`]): a run that fails or is
+//! interrupted leaves any earlier file at `--out` as it was (a run killed
+//! by a signal may leave its hidden `.NAME.PID.tmp` beside it).
 
+use std::cell::RefCell;
 use std::fs::File;
 use std::io::{BufWriter, Write};
 use std::path::{Path, PathBuf};
 
+use serde::ser::{SerializeSeq, Serializer};
 use serde::Serialize;
 
 use crate::base::angle::diff;
+use crate::base::vehicle::VehicleState;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::world::scenario::Scenario;
+use crate::world::World;
 
 /// Largest `--every` (the most steps a scenario has: 3,600 s at the
 /// smallest time step, 1e-4 s).
@@ -98,14 +111,75 @@ pub fn check_out_path(out: &Path, scenario: &Path) -> Result<OutFormat, String> 
     Ok(format)
 }
 
-/// Creates the output file (before simulating), buffered.
+/// The trajectory file being written: buffered writes to a temporary file
+/// beside `--out` (same folder, so the rename cannot cross file systems),
+/// renamed onto `--out` by [`OutFile::commit`]. Dropped uncommitted (an
+/// error, a panic), it removes the temporary file.
+#[derive(Debug)]
+pub struct OutFile {
+    file: BufWriter<File>,
+    tmp: PathBuf,
+    dest: PathBuf,
+    committed: bool,
+}
+
+/// Creates the output file (before simulating): a temporary file beside
+/// `out`, or beside the file a symbolic link `out` points to.
 ///
 /// # Errors
 /// The file cannot be created, with the system's reason.
-pub fn create_out(out: &Path) -> Result<BufWriter<File>, String> {
-    File::create(out)
-        .map(|f| BufWriter::with_capacity(1 << 16, f))
-        .map_err(|e| format!("cannot create --out {}: {e}", out.display()))
+pub fn create_out(out: &Path) -> Result<OutFile, String> {
+    let dest = match out.symlink_metadata() {
+        Ok(m) if m.file_type().is_symlink() => out.canonicalize().unwrap_or_else(|_| out.into()),
+        _ => out.to_path_buf(),
+    };
+    let name = dest.file_name().unwrap_or_default().to_string_lossy();
+    let tmp = dest.with_file_name(format!(".{name}.{}.tmp", std::process::id()));
+    let file =
+        File::create(&tmp).map_err(|e| format!("cannot create --out {}: {e}", out.display()))?;
+    Ok(OutFile {
+        file: BufWriter::with_capacity(1 << 16, file),
+        tmp,
+        dest,
+        committed: false,
+    })
+}
+
+impl OutFile {
+    /// Flushes the trajectory and renames it onto `--out`.
+    ///
+    /// # Errors
+    /// The flush or the rename fails, with the system's reason.
+    pub fn commit(mut self) -> Result<(), String> {
+        self.file
+            .flush()
+            .and_then(|()| std::fs::rename(&self.tmp, &self.dest))
+            .map_err(|e| format!("cannot write --out {}: {e}", self.dest.display()))?;
+        self.committed = true;
+        Ok(())
+    }
+}
+
+impl Write for OutFile {
+    fn write(&mut self, buf: &[u8]) -> std::io::Result<usize> {
+        self.file.write(buf)
+    }
+
+    fn write_all(&mut self, buf: &[u8]) -> std::io::Result<()> {
+        self.file.write_all(buf)
+    }
+
+    fn flush(&mut self) -> std::io::Result<()> {
+        self.file.flush()
+    }
+}
+
+impl Drop for OutFile {
+    fn drop(&mut self) {
+        if !self.committed {
+            let _ = std::fs::remove_file(&self.tmp);
+        }
+    }
 }
 
 /// One agent's summary, written after the last frame.
@@ -147,6 +221,7 @@ pub struct RunSummary {
     pub frames: u64,
 }
 
+/// The first line of `.jsonl`, and the first keys of `.json`.
 #[derive(Serialize)]
 struct Header<'a> {
     name: &'a str,
@@ -157,6 +232,7 @@ struct Header<'a> {
     agents: usize,
 }
 
+/// One recorded step of every agent.
 #[derive(Serialize)]
 struct Frame<'a> {
     t: f32,
@@ -168,6 +244,47 @@ struct Frame<'a> {
     mode: &'a [u8],
 }
 
+/// The last line of `.jsonl`.
+#[derive(Serialize)]
+struct MetricsLine<'a> {
+    metrics: &'a [AgentMetrics],
+}
+
+/// The `.json` document: the header's keys, then `frames`, then `metrics`.
+/// Serialising it runs the simulation: `frames` steps the world as each
+/// frame is written, and `metrics` (serialised after it, in field order)
+/// reads the world at the end.
+#[derive(Serialize)]
+struct Document<'h, 'r, 'a> {
+    #[serde(flatten)]
+    header: &'h Header<'h>,
+    frames: Frames<'r, 'a>,
+    metrics: Metrics<'r, 'a>,
+}
+
+/// The recorded steps of a [`Run`], simulated as they are serialised.
+struct Frames<'r, 'a>(&'r RefCell<Run<'a>>);
+
+impl Serialize for Frames<'_, '_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        let mut run = self.0.borrow_mut();
+        let mut seq = s.serialize_seq(None)?;
+        while let Some(frame) = run.next_frame() {
+            seq.serialize_element(&frame)?;
+        }
+        seq.end()
+    }
+}
+
+/// The per-agent metrics of a [`Run`] at its end.
+struct Metrics<'r, 'a>(&'r RefCell<Run<'a>>);
+
+impl Serialize for Metrics<'_, '_> {
+    fn serialize<S: Serializer>(&self, s: S) -> Result<S::Ok, S::Error> {
+        self.0.borrow_mut().metrics().serialize(s)
+    }
+}
+
 /// One recorded step of every agent, reused from frame to frame.
 #[derive(Default)]
 struct FrameBuf {
@@ -177,6 +294,23 @@ struct FrameBuf {
     v: Vec<f32>,
     omega: Vec<f32>,
     mode: Vec<u8>,
+}
+
+/// A scenario's simulation, stepped on demand: [`Run::next_frame`] steps
+/// the world to the next recorded step (every `every`-th, from t = 0) and
+/// copies it into the reused [`FrameBuf`]; memory O(agents).
+struct Run<'a> {
+    world: World,
+    table: &'a EtaTable,
+    starts: Vec<VehicleState>,
+    steps: u32,
+    every: u32,
+    /// The step the world is at; `None` before the first frame.
+    at: Option<u32>,
+    frames: u64,
+    buf: FrameBuf,
+    metrics: Option<Vec<AgentMetrics>>,
+    progress: &'a mut dyn FnMut(u32),
 }
 
 fn io(e: impl std::fmt::Display) -> String {
@@ -203,66 +337,123 @@ pub fn stream_run(
     let mut world = sc.world().map_err(|e| e.to_string())?;
     // The first row reports the mode the controller chooses at t = 0.
     world.plan(table);
-    let starts: Vec<_> = world.agents.iter().map(|a| a.state).collect();
-    let steps = sc.steps();
     let n = world.agents.len();
     let header = Header {
         name: &sc.name,
         source: &sc.source,
         dt: world.params.dt,
-        steps,
+        steps: sc.steps(),
         every,
         agents: n,
     };
+    let mut run = Run {
+        starts: world.agents.iter().map(|a| a.state).collect(),
+        world,
+        table,
+        steps: sc.steps(),
+        every,
+        at: None,
+        frames: 0,
+        buf: FrameBuf::default(),
+        metrics: None,
+        progress,
+    };
     match format {
-        OutFormat::Csv => out.write_all(b"agent,t,x,y,theta,v,omega,mode\n"),
+        OutFormat::Csv => write_csv(&mut run, out),
         OutFormat::Json => {
-            let h = serde_json::to_string(&header).map_err(io)?;
-            write!(out, "{},\"frames\":[", &h[..h.len() - 1])
+            let cell = RefCell::new(run);
+            let doc = Document {
+                header: &header,
+                frames: Frames(&cell),
+                metrics: Metrics(&cell),
+            };
+            serde_json::to_writer(&mut *out, &doc).map_err(io)?;
+            run = cell.into_inner();
+            out.write_all(b"\n").map_err(io)
         }
         OutFormat::JsonLines => {
             serde_json::to_writer(&mut *out, &header).map_err(io)?;
-            out.write_all(b"\n")
-        }
-    }
-    .map_err(io)?;
-    let mut buf = FrameBuf::default();
-    let mut frames = 0u64;
-    for k in 0..=steps {
-        if k % every == 0 {
-            let t = world.time;
-            if format == OutFormat::Csv {
-                for (i, a) in world.agents.iter().enumerate() {
-                    let s = &a.state;
-                    writeln!(
-                        out,
-                        "{i},{t:.4},{:.5},{:.5},{:.5},{:.5},{:.5},{}",
-                        s.pos.x, s.pos.y, s.theta, s.v, s.omega, a.internals.mode as u8
-                    )
-                    .map_err(io)?;
-                }
-            } else {
-                buf.fill(&world.agents);
-                if format == OutFormat::Json && frames > 0 {
-                    out.write_all(b",").map_err(io)?;
-                }
-                serde_json::to_writer(&mut *out, &buf.frame(t)).map_err(io)?;
-                if format == OutFormat::JsonLines {
-                    out.write_all(b"\n").map_err(io)?;
-                }
+            out.write_all(b"\n").map_err(io)?;
+            while let Some(frame) = run.next_frame() {
+                serde_json::to_writer(&mut *out, &frame).map_err(io)?;
+                out.write_all(b"\n").map_err(io)?;
             }
-            frames += 1;
+            let line = MetricsLine {
+                metrics: run.metrics(),
+            };
+            serde_json::to_writer(&mut *out, &line).map_err(io)?;
+            out.write_all(b"\n").map_err(io)
         }
-        if k < steps {
-            world.step(table);
-            progress(k + 1);
+    }?;
+    out.flush().map_err(io)?;
+    let (steps, frames) = (run.steps, run.frames);
+    let metrics = run.metrics();
+    Ok(RunSummary {
+        agents: n,
+        steps,
+        finished: metrics.iter().filter(|m| m.goals_done == m.goals).count(),
+        violations: metrics.iter().map(|m| m.limit_violations).sum(),
+        frames,
+    })
+}
+
+/// `.csv`: the header row, then one row per agent per recorded step.
+fn write_csv(run: &mut Run, out: &mut dyn Write) -> Result<(), String> {
+    out.write_all(b"agent,t,x,y,theta,v,omega,mode\n")
+        .map_err(io)?;
+    while let Some(f) = run.next_frame() {
+        for i in 0..f.x.len() {
+            writeln!(
+                out,
+                "{i},{:.4},{:.5},{:.5},{:.5},{:.5},{:.5},{}",
+                f.t, f.x[i], f.y[i], f.theta[i], f.v[i], f.omega[i], f.mode[i]
+            )
+            .map_err(io)?;
         }
     }
+    Ok(())
+}
+
+impl Run<'_> {
+    /// Steps the world to the next recorded step and returns it; `None`
+    /// once the world has taken every step of the scenario.
+    fn next_frame(&mut self) -> Option<Frame<'_>> {
+        loop {
+            let k = match self.at {
+                None => 0,
+                Some(k) if k < self.steps => {
+                    self.world.step(self.table);
+                    (self.progress)(k + 1);
+                    k + 1
+                }
+                Some(_) => return None,
+            };
+            self.at = Some(k);
+            if k % self.every == 0 {
+                self.frames += 1;
+                self.buf.fill(&self.world.agents);
+                return Some(self.buf.frame(self.world.time));
+            }
+        }
+    }
+
+    /// Every agent's summary at the end of the run (the remaining steps
+    /// simulated first, unrecorded).
+    fn metrics(&mut self) -> &[AgentMetrics] {
+        while self.next_frame().is_some() {}
+        let (world, starts) = (&self.world, &self.starts);
+        self.metrics
+            .get_or_insert_with(|| agent_metrics(world, starts))
+    }
+}
+
+/// Each agent's [`AgentMetrics`] in `world`, from its start pose.
+fn agent_metrics(world: &World, starts: &[VehicleState]) -> Vec<AgentMetrics> {
     let p = world.params;
-    let metrics: Vec<AgentMetrics> = world
+    world
         .agents
         .iter()
-        .zip(&starts)
+        .zip(starts)
         .map(|(a, s0)| {
             let last = a.goal_now;
             let mut dubins_length = 0.0;
@@ -285,29 +476,7 @@ pub fn stream_run(
                 limit_violations: a.metrics.violations,
             }
         })
-        .collect();
-    match format {
-        OutFormat::Csv => Ok(()),
-        OutFormat::Json => {
-            out.write_all(b"],\"metrics\":").map_err(io)?;
-            serde_json::to_writer(&mut *out, &metrics).map_err(io)?;
-            out.write_all(b"}\n")
-        }
-        OutFormat::JsonLines => {
-            out.write_all(b"{\"metrics\":").map_err(io)?;
-            serde_json::to_writer(&mut *out, &metrics).map_err(io)?;
-            out.write_all(b"}\n")
-        }
-    }
-    .map_err(io)?;
-    out.flush().map_err(io)?;
-    Ok(RunSummary {
-        agents: n,
-        steps,
-        finished: metrics.iter().filter(|m| m.goals_done == m.goals).count(),
-        violations: metrics.iter().map(|m| m.limit_violations).sum(),
-        frames,
-    })
+        .collect()
 }
 
 impl FrameBuf {

@@ -26,6 +26,12 @@
 //!   path" (the paper's Test I) gives a spread near 0; weak steering that
 //!   "covers more space" gives a larger one. It needs O(boids + stations)
 //!   memory, not a stored trace per boid.
+//!
+//! [`OffsetProfile`] (not collected by the crowd itself; a study records
+//! it) keeps the mean signed offset per stretch of one boid over a window:
+//! the "ideal traversal path" the paper sees in Test I, as numbers. Two
+//! profiles compare by their RMS difference, so a test can tell whether two
+//! boids, two seeks or two halves of one run follow the same path.
 
 use serde::Serialize;
 
@@ -284,5 +290,62 @@ impl MetricsAccumulator {
             cum += c;
         }
         self.max_distance
+    }
+}
+
+/// Mean signed lateral offset per stretch of the path ([`STATIONS`] of
+/// equal arc length, as for the trace spread) of whatever is recorded into
+/// it: one boid over a window, typically. See the module docs.
+#[derive(Clone, Debug, PartialEq)]
+pub struct OffsetProfile {
+    path_length: f32,
+    sum: Vec<f64>,
+    n: Vec<u32>,
+}
+
+impl OffsetProfile {
+    /// An empty profile of a path of `path_length`.
+    #[must_use]
+    pub fn new(path_length: f32) -> Self {
+        Self {
+            path_length,
+            sum: vec![0.0; STATIONS],
+            n: vec![0; STATIONS],
+        }
+    }
+
+    /// Records a position at arc length `s` with signed lateral `offset`
+    /// (as [`crate::crowd::path::Path::lateral_offset`] gives it).
+    pub fn record(&mut self, s: f32, offset: f32) {
+        let k = ((s / self.path_length * STATIONS as f32) as usize).min(STATIONS - 1);
+        self.sum[k] += f64::from(offset);
+        self.n[k] += 1;
+    }
+
+    /// The mean offset per stretch; `None` where nothing was recorded (a
+    /// boid that cuts a corner never has its normal point there).
+    #[must_use]
+    pub fn means(&self) -> Vec<Option<f32>> {
+        self.sum
+            .iter()
+            .zip(&self.n)
+            .map(|(&s, &n)| (n > 0).then(|| (s / f64::from(n)) as f32))
+            .collect()
+    }
+
+    /// Root mean square of the difference of the two profiles over the
+    /// stretches both recorded; `None` when they share none. Stretches only
+    /// one of them visited (a corner one boid cuts) do not count: the
+    /// difference is of the paths where both ran.
+    #[must_use]
+    pub fn rms_difference(&self, other: &Self) -> Option<f32> {
+        let (mut sq, mut k) = (0.0f64, 0u32);
+        for (a, b) in self.means().into_iter().zip(other.means()) {
+            if let (Some(a), Some(b)) = (a, b) {
+                sq += f64::from(a - b).powi(2);
+                k += 1;
+            }
+        }
+        (k > 0).then(|| (sq / f64::from(k)).sqrt() as f32)
     }
 }

@@ -55,7 +55,7 @@ impl Bench {
         Bench::Fig8,
     ];
 
-    /// Short name (`circle-32`, `corridor`, …): the preset file's suffix.
+    /// Short name (`circle32`, `corridor`, …): the preset file's suffix.
     #[must_use]
     pub fn name(self) -> String {
         match self {
@@ -176,10 +176,10 @@ pub fn circle_swap(n: usize, seed: u64) -> Scenario {
 /// other in a corridor 4 m wide and 12 m long, from an open space at one end to
 /// one at the other, arriving facing along the corridor. Each group keeps
 /// its formation translated (its front column goes deepest) on a 2 m
-/// lattice of targets: with targets 1 m apart (the first layout) the first
-/// arrivals halted in a wall across the corridor that the rest of their
-/// own group could not pass, a blockage of the layout for any controller
-/// without a path planner, not an avoidance deadlock.
+/// lattice of targets: with targets 1 m apart the first arrivals would
+/// halt in a wall across the corridor that the rest of their own group
+/// cannot pass, a blockage of the layout for any controller without a
+/// path planner, not an avoidance deadlock.
 #[must_use]
 pub fn corridor(seed: u64) -> Scenario {
     let mut rng = Rng::with_stream(seed, 19);

@@ -11,10 +11,12 @@
 //! against retracing a path in displacement mode, and switching between two
 //! or three fields every `switch_every` steps against sinks. `bias: true`
 //! turns the field into an influence instead of a command with the paper's
-//! formula `u = r₁·field + (1 − r₁)·r₂`. Our reading of the garbled formula:
-//! `r₁` is uniform on `[0, 1)` and `r₂` is a uniform *angle* on the same
-//! normalised range `[-1, 1)` as the field (a bare `[0, 1)` number would
-//! bias every agent to the left).
+//! formula `u = r₁·field + (1 − r₁)·r₂`. The text defines "a random number"
+//! as uniform on `[0, 1)`; `r₁` is that. For `r₂` our reading (the default,
+//! [`BiasNoise::Signed`]) is a uniform *angle* on the same normalised range
+//! `[-1, 1)` as the field: a bare `[0, 1)` number added to an angle turns
+//! every agent to the left, which the text does not describe. The literal
+//! `[0, 1)` stays selectable ([`BiasNoise::Unit`], `"bias_r2": "unit"`).
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
@@ -63,6 +65,30 @@ pub struct FieldConfig {
     /// Use the field only as a bias: `u = r₁·field + (1 − r₁)·r₂`.
     #[serde(default)]
     pub bias: bool,
+    /// The range of `r₂` when `bias` is on: `signed` (default) or the
+    /// text's literal `unit`. Left out of the JSON when it is the default,
+    /// so configurations written before it existed read and write unchanged.
+    #[serde(default, skip_serializing_if = "BiasNoise::is_default")]
+    pub bias_r2: BiasNoise,
+}
+
+/// The range of `r₂` in the bias formula `u = r₁·field + (1 − r₁)·r₂`
+/// (`u` and `field` normalised angles in `[-1, 1)`, module docs).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Eq, Serialize, Deserialize)]
+#[serde(rename_all = "snake_case")]
+pub enum BiasNoise {
+    /// `r₂` uniform on `[-1, 1)`: a random angle of either sign (our reading).
+    #[default]
+    Signed,
+    /// `r₂` uniform on `[0, 1)`, the text's "a random number" taken
+    /// literally: the random part only ever turns left.
+    Unit,
+}
+
+impl BiasNoise {
+    fn is_default(&self) -> bool {
+        *self == Self::default()
+    }
 }
 
 fn one() -> u32 {
@@ -153,6 +179,7 @@ pub struct FieldSource {
     switch_every: u32,
     jitter: f32,
     bias: bool,
+    bias_r2: BiasNoise,
 }
 
 impl FieldSource {
@@ -167,6 +194,7 @@ impl FieldSource {
             switch_every: cfg.switch_every,
             jitter: cfg.jitter_deg.to_radians(),
             bias: cfg.bias,
+            bias_r2: cfg.bias_r2,
         })
     }
 
@@ -190,7 +218,11 @@ impl FieldSource {
         let u = a * core::f32::consts::FRAC_1_PI;
         if self.bias {
             let r1 = rng.next_f32();
-            let r2 = rng.range(-1.0, 1.0);
+            // One draw either way, so the rest of the run keeps its stream.
+            let r2 = match self.bias_r2 {
+                BiasNoise::Signed => rng.range(-1.0, 1.0),
+                BiasNoise::Unit => rng.next_f32(),
+            };
             r1 * u + (1.0 - r1) * r2
         } else {
             u

@@ -1,4 +1,4 @@
-//! What several test files share (issue 12), written once: the FNV-1a hash
+//! What several test files share, written once: the FNV-1a hash
 //! behind every golden trajectory, the wander presets with their golden
 //! hashes (checked natively and through the bindings in Chromium), and a
 //! counting allocator for the allocation-free-step checks.
@@ -8,7 +8,6 @@
 //! and forwards every call unchanged.
 #![allow(dead_code, unsafe_code)]
 
-#[cfg(not(target_arch = "wasm32"))]
 pub mod figures;
 
 use std::alloc::{GlobalAlloc, Layout, System};
@@ -49,9 +48,9 @@ pub fn world_hash(
 /// The wander gallery's preset files (paper 004, one per component) and the
 /// golden hash of every variant's trace after the preset's suggested steps
 /// (recorded natively; `tests/web_gallery.rs` checks the same values
-/// through the bindings). `control` changed in issue 19: the figure
-/// series gained variants 116 and 119 (second runs, seed 2); the earlier
-/// variants trace the same; `markov` gained the 2D response curve (§6).
+/// through the bindings). `control`'s figure series includes variants 116
+/// and 119 (second runs, seed 2); `markov` includes the 2D response curve
+/// (§6).
 pub const WANDER_PRESETS: [(&str, &str, u64); 8] = [
     (
         "control",
@@ -150,11 +149,11 @@ pub fn table() -> steering::funnelling::table::lookup::EtaTable {
     .unwrap()
 }
 
-/// Issue 17 (crowd in workers): the crowd's golden trajectories, as
+/// The crowd's golden trajectories (one core or split across workers), as
 /// `(name, config, steps, hash)`. The hash is FNV-1a over positions and
 /// velocities after every step, then the traced boid's lap trace
-/// ([`crowd_hash_step`]); recorded natively before the step was made
-/// cheaper and split across workers, checked natively with metrics on and
+/// ([`crowd_hash_step`]); a cheaper step or one split across workers must
+/// give the same bits, checked natively with metrics on and
 /// off (`tests/crowd_determinism.rs`) and through the bindings in Chromium
 /// (`tests/web_gallery.rs`).
 pub fn crowd_golden_cases() -> Vec<(&'static str, steering::crowd::config::CrowdConfig, u32, u64)> {

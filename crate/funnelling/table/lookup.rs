@@ -304,6 +304,11 @@ impl EtaTable {
     /// checked path.
     #[inline]
     fn blend<const K: usize>(cells: &[Cell], pos: &[AxisPos; K], grid: &Grid<K>) -> Vec4 {
+        count(if K == AXES {
+            Read::Blend
+        } else {
+            Read::PlaneBlend
+        });
         if grid.holds(pos, cells.len()) {
             Self::blend_pairs(pos, &grid.strides, |at| {
                 debug_assert!(at + 1 < cells.len());
@@ -372,6 +377,7 @@ impl EtaTable {
         if main[2] > 1e-6 {
             return Some(trig::atan2(main[1], main[0]));
         }
+        count(Read::FallbackBlend);
         let fallback = |i: usize| match (self.eta.get(i), self.flags.get(i)) {
             (Some(&e), Some(&f)) => Cell::fallback(e, f).0,
             _ => Vec4::ZERO,
@@ -441,6 +447,7 @@ impl EtaTable {
         if ring >= self.axes[0].len() {
             return None;
         }
+        count(Read::RingLinear);
         let g = &self.grid;
         let pa = g[1].locate(wrap(alpha), &mut false);
         let base = ring * self.strides[0]
@@ -469,6 +476,7 @@ impl EtaTable {
     /// version of the paper's "closest element".
     #[must_use]
     pub fn lookup(&self, d: f32, alpha: f32, omega: f32, v_c: f32, v_d: f32) -> Lookup {
+        count(Read::Lookup);
         let mut clamped = false;
         let mut pos = self.positions(d, alpha, omega, v_c, v_d, &mut clamped);
         let b = Self::blend(&self.cells, &pos, &self.full);
@@ -496,6 +504,120 @@ impl EtaTable {
             clamped,
             at: pos,
         }
+    }
+}
+
+// ------------------------------------------------------------ cost counts
+
+/// One read of the table, as the cost counts tally it ([`counters`]).
+///
+/// Paper 000 §7 states the update's cost as "in the worst case two
+/// interpolations of the η angle" and paper 001 §4.2.4 trades a "quintic
+/// linear" interpolation for a "simple linear" one: counting the reads
+/// by kind lets a test check those statements exactly, on any machine,
+/// where timings only give ratios.
+#[derive(Clone, Copy, Debug, PartialEq, Eq)]
+enum Read {
+    /// One funnelling lookup ([`EtaTable::lookup`]); its blends are
+    /// counted on their own.
+    Lookup,
+    /// A multilinear blend of the 32 corners around a query.
+    Blend,
+    /// A blend of the 32 corners' fallback η, when none of them is
+    /// reachable at the queried speed ([`EtaTable::eta_at`]).
+    FallbackBlend,
+    /// A blend of 16 corners on the ω = 0 plane (the literal μ bound,
+    /// [`EtaTable::straight_abs_eta_at`]).
+    PlaneBlend,
+    /// The 2-entry linear read on a sampled ring ([`EtaTable::eta_ring_linear`]).
+    RingLinear,
+}
+
+/// Tallies `read` with the `counters` feature; without it, nothing (an
+/// empty inline function: the default and wasm builds run the same
+/// instructions as without the calls).
+#[inline(always)]
+fn count(read: Read) {
+    #[cfg(feature = "counters")]
+    counters::add(read);
+    #[cfg(not(feature = "counters"))]
+    let _ = read;
+}
+
+/// Deterministic cost counts of the table's reads, per thread, for tests
+/// (the `counters` feature; `tests/fidelity_cost.rs`). Take the counts
+/// before and after the updates to be measured: [`counters::take`]
+/// returns what was tallied since the last take and starts again at zero.
+#[cfg(feature = "counters")]
+pub mod counters {
+    use super::Read;
+    use std::cell::Cell;
+
+    /// Reads tallied on this thread.
+    #[derive(Clone, Copy, Debug, Default, PartialEq, Eq)]
+    pub struct Counts {
+        /// Funnelling lookups ([`super::EtaTable::lookup`]).
+        pub lookups: u64,
+        /// Multilinear blends of 32 corners (η at the query, again at the
+        /// fallback speed, or η alone: [`super::EtaTable::eta`]).
+        pub blends: u64,
+        /// Blends of the 32 corners' fallback η (nothing reachable).
+        pub fallback_blends: u64,
+        /// Blends of 16 corners on the ω = 0 plane (the literal μ bound).
+        pub plane_blends: u64,
+        /// 2-entry linear reads on a ring (paper 001 §4.2.4).
+        pub ring_reads: u64,
+    }
+
+    impl Counts {
+        const ZERO: Self = Self {
+            lookups: 0,
+            blends: 0,
+            fallback_blends: 0,
+            plane_blends: 0,
+            ring_reads: 0,
+        };
+
+        /// Multilinear interpolations of η (paper 000 §7's unit: the
+        /// 32-corner blends, fallback ones included, and the μ bound's
+        /// 16-corner blend).
+        #[must_use]
+        pub fn interpolations(&self) -> u64 {
+            self.blends + self.fallback_blends + self.plane_blends
+        }
+
+        /// Table entries read: 32 per blend, 16 per plane blend, 2 per
+        /// ring read. Weighs an interpolation by what it reads, as paper
+        /// 001 §4.2.4 does when it prefers the linear read.
+        #[must_use]
+        pub fn entries_read(&self) -> u64 {
+            32 * (self.blends + self.fallback_blends) + 16 * self.plane_blends + 2 * self.ring_reads
+        }
+    }
+
+    thread_local! {
+        static COUNTS: Cell<Counts> = const { Cell::new(Counts::ZERO) };
+    }
+
+    /// The counts tallied on this thread since the last take; they start
+    /// again at zero.
+    #[must_use]
+    pub fn take() -> Counts {
+        COUNTS.with(|c| c.replace(Counts::ZERO))
+    }
+
+    pub(super) fn add(read: Read) {
+        COUNTS.with(|c| {
+            let mut n = c.get();
+            match read {
+                Read::Lookup => n.lookups += 1,
+                Read::Blend => n.blends += 1,
+                Read::FallbackBlend => n.fallback_blends += 1,
+                Read::PlaneBlend => n.plane_blends += 1,
+                Read::RingLinear => n.ring_reads += 1,
+            }
+            c.set(n);
+        });
     }
 }
 
