@@ -226,10 +226,10 @@ fn paper_presets_write_their_record() {
         .expect("the test's record reads as a report record");
     assert_eq!(back.figures.len(), figures.len());
     for (a, b) in back.figures.iter().zip(&figures) {
-        assert_eq!(
-            (a.id.as_str(), a.value, a.digits),
-            (b.id.as_str(), b.value, b.digits)
-        );
+        // serde_json reads a float back to within an ulp, not always to
+        // the same bits: what the report shows is what must survive.
+        let shown = format!("{:.*}", usize::from(b.digits), b.value);
+        assert_eq!((a.id.as_str(), a.number()), (b.id.as_str(), shown));
     }
 }
 
