@@ -55,13 +55,14 @@ test-native:
 # tests, the fast studies, the presets run to their end), then
 # `steer report` rewrites docs/FIGURES.md and the committed records in
 # docs/figures/, the presets' captions are rendered from them, and the
-# presets are checked against the report.
+# presets are checked against the report. (`steer` is the binary the
+# tests built: the same features, so nothing is compiled twice.)
 FIGURE_TESTS = $(patsubst tests/%.rs,--test %,$(shell grep -l 'common::figures' tests/*.rs))
 REPORT_ARGS ?=
 figures:
 	rm -rf target/figures
 	cargo test --release --features cli,counters $(FIGURE_TESTS) -- --skip presets_show_the_captions
-	cargo run --release --features cli,counters --bin steer -- report --prune $(REPORT_ARGS)
+	./target/release/steer report --prune $(REPORT_ARGS)
 	python3 scenarios/make_presets.py
 	cargo test --release --features cli,counters --test figures presets_show_the_captions
 
@@ -72,7 +73,7 @@ FULL_STUDIES := "reach" "relaxed" "relaxed --aim paper-arc" "envelope --n 10000 
 FIGURE_BENCHES = $(patsubst benches/%.rs,%,$(shell grep -l 'figures' benches/*.rs))
 figures-full:
 	rm -rf target/figures-full
-	cargo build --release --features cli,counters --bin steer
+	cargo test --release --features cli,counters --no-run --test figures
 	for s in $(FULL_STUDIES); do \
 	  FIGURES_DIR=target/figures-full ./target/release/steer $$s --record > /dev/null; done
 	for b in $(FIGURE_BENCHES); do \

@@ -78,9 +78,16 @@ def write(name, source, description, agents, duration=40.0, **extra):
     if name in FIDELITY:
         sc["claim"], sc["measured"] = FIDELITY[name]
     sc.update(extra)
-    with open(os.path.join(HERE, name + ".json"), "w") as f:
-        json.dump(sc, f, indent=1)
-        f.write("\n")
+    path = os.path.join(HERE, name + ".json")
+    text = json.dumps(sc, indent=1) + "\n"
+    # Unchanged files keep their time stamp: the crate includes some
+    # presets, and a rewrite would rebuild it.
+    if os.path.exists(path):
+        with open(path) as f:
+            if f.read() == text:
+                return
+    with open(path, "w") as f:
+        f.write(text)
 
 # Paper 000 Fig. 1 / paper 001 Fig. 1a: plain seek to three position goals.
 # The seek controller ignores beta and epsTol (with the standard
