@@ -10,7 +10,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
-	npm test-npm test-library-user
+	npm test-npm test-library-user figures figures-full
 
 setup: setup-rust setup-browser setup-web
 
@@ -46,9 +46,44 @@ lint:
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --features cli
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --target wasm32-unknown-unknown
 
+# The tests write the figures records into target/figures (cleared first,
+# so a renamed test leaves no stale record); then the report's checked
+# part (docs/FIGURES.md) must equal what they measured, byte for byte.
 test-native:
+	rm -rf target/figures
 	cargo test --all-targets --features cli,counters
 	cargo test --doc --features cli,counters
+	cargo run --features cli,counters --bin steer -- report --check
+
+# The figures report, fast mode (a few minutes): every test that writes a
+# figures record (tests/*.rs using tests/common/figures.rs: the fidelity
+# tests, the fast studies, the presets run to their end), then
+# `steer report` rewrites docs/FIGURES.md and the committed records in
+# docs/figures/, the presets' captions are rendered from them, and the
+# presets are checked against the report. (`steer` is the binary the
+# tests built: the same features, so nothing is compiled twice.)
+FIGURE_TESTS = $(patsubst tests/%.rs,--test %,$(shell grep -l 'common::figures' tests/*.rs))
+REPORT_ARGS ?=
+figures:
+	rm -rf target/figures
+	cargo test --release --features cli,counters $(FIGURE_TESTS) -- --skip presets_show_the_captions
+	./target/release/steer report --prune $(REPORT_ARGS)
+	python3 scenarios/make_presets.py
+	cargo test --release --features cli,counters --test figures presets_show_the_captions
+
+# Full mode: the studies at their report sizes and the benchmarks that
+# write timed records (benches/*.rs using the figures records), into
+# target/figures-full, then the fast mode with them (docs/figures/full/).
+FULL_STUDIES := "reach" "relaxed" "relaxed --aim paper-arc" "envelope --n 10000 --seed 2 --brief" "avoid --seeds 100 --seed 0"
+FIGURE_BENCHES = $(patsubst benches/%.rs,%,$(shell grep -l 'figures' benches/*.rs))
+figures-full:
+	rm -rf target/figures-full
+	cargo test --release --features cli,counters --no-run --test figures
+	for s in $(FULL_STUDIES); do \
+	  FIGURES_DIR=target/figures-full ./target/release/steer $$s --record > /dev/null; done
+	for b in $(FIGURE_BENCHES); do \
+	  FIGURES_DIR=$(CURDIR)/target/figures-full cargo bench --features cli,counters --bench $$b; done
+	$(MAKE) figures REPORT_ARGS="--full-records target/figures-full"
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).

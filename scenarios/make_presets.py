@@ -4,7 +4,7 @@
 Run from the repository root: python3 scenarios/make_presets.py
 Schema: crate/funnelling/scenario.rs. Angles in degrees, distances in metres.
 """
-import json, math, random, os
+import json, math, random, os, re
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 
@@ -16,82 +16,78 @@ def goal(x, y, beta, **kw):
 def agent(x, y, theta, goals, v=0.0):
     return {"x": round(x, 3), "y": round(y, 3), "thetaDeg": round(theta, 2), "v": v, "goals": goals}
 
-# What each figure claims and what we measure: shown in the lab's
-# side panel; the numbers come from tests/fidelity.rs (`cargo test --release
-# --test fidelity -- --nocapture`), which asserts them. Keyed by the preset
-# name without its _standard / _relaxed suffix.
-FIDELITY = {
-    "p000_fig1_seek": (
-        "Plain seek reaches position targets without a prescribed orientation.",
-        "All three reach (0.22 m from the centre, at rest, 4.5-6.2 s); never funnels. Under the standard "
-        "controller with epsTol 180 the agent whose target lies behind funnels 303 steps. Agrees."),
-    "p000_fig3_funnel": (
-        "Funnelling reaches the same targets with the prescribed orientations.",
-        "All three rest 0.22 m from the centre, heading within 0.4-1.6 deg of beta (epsTol 5). Agrees."),
-    "p000_fig6_face_to_face": (
-        "Pairs attracted to each other's pose meet face to face.",
-        "Every pair ends 0.66-1.06 m apart, headings within 13.4 deg of opposite, both done. Agrees."),
-    "p000_fig7_variety": (
-        "Distant targets are first approached like a seek, the orientation enforced when closer.",
-        "All 8 finish their three goals. Mean |mu| at D > 10 m / 1-4 m: 35.9 / 24.6 deg with our default "
-        "bound (it modulates from the start: refuted for ours), 6.9 / 25.6 deg with the paper's literal bound (agrees)."),
-    "p000_fig8_eighty": (
-        "Trace bundles show three sections: turn to the target, quasi straight, final curve.",
-        "54 of 80 traces show all three (the rest start facing their target); mean |curvature| 0.69 / 0.07 / "
-        "0.18 rad/m, heading dispersion 25.7 / 13.6 / 23.6 deg per section. Agrees."),
-    "p001_fig5_gait": (
-        "Funnelling trajectories resemble measured human gait [ALHB06]; their curvature near the destination "
-        "appears independent of the distance over 4 m [B05b].",
-        "Gait: not measured (the ALHB06 recordings are not available here). Mean |curvature| over the last 1.5 m "
-        "before the disk, targets 4 / 8 / 12 m away: the paper's literal reading 0.21 / 0.16 / 0.13 (bearing 20) "
-        "and 0.55 / 0.40 / 0.36 rad/m (bearing 45), within 2x at every beta: agrees; ours 0.22 / 0.01 / 0.01 and "
-        "0.67 / 0.05 / 0.01: it lines up early and arrives straight from afar, refuted for ours."),
-    "p001_fig6b_centre": (
-        "Aiming at the disk centre gives an artificially curved path (Fig. 6b).",
-        "Up to the disk: 12.2 m and 2.81 rad of turning, against 9.9 m and 2.56 rad for the relaxed point (6c). Agrees."),
-    "p001_fig6c_relaxed": (
-        "A better point of the disk gives a smoother path (Fig. 6c).",
-        "Up to the disk: 9.9 m and 2.56 rad of turning, against 12.2 m and 2.81 rad aiming at the centre (6b). Agrees."),
-    "p001_fig8_zero_delta_eta": (
-        "When some point of the arc gives delta-eta = 0, the one of smallest |alpha_r| is taken.",
-        "376 of 376 searched steps: delta-eta = 0, alpha_r inside the arc (first 4.7 deg in [-8.4, 8.4]). Agrees."),
-    "p001_fig9_arc_end": (
-        "When no point gives delta-eta = 0, the arc end of smallest |delta-eta| is taken.",
-        "506 of 507 searched steps in a gap branch with alpha_r at an arc end. Agrees."),
-    "p001_fig10_beta0": (
-        "Relaxed funnelling gives less curved and frequently shorter paths than standard (Fig. 10a/d).",
-        "Paper-arc aim (Controller: relaxed aim paper arc; our default entry aim coincides with standard): "
-        "turning 0.96 -> 0.55 rad, 8 of 9 less curved; length 38.6 -> 38.3 m. Agrees."),
-    "p001_fig10_beta45": (
-        "Relaxed funnelling gives less curved and frequently shorter paths than standard (Fig. 10b/e).",
-        "Paper-arc aim: turning 2.22 -> 1.85 rad, 9 of 9 less curved; length 41.3 -> 39.0 m, 9 of 9 shorter. Agrees."),
-    "p001_fig10_beta120": (
-        "Relaxed funnelling gives less curved and frequently shorter paths than standard (Fig. 10c/f).",
-        "Paper-arc aim: turning 3.40 -> 3.19 rad, 9 of 9 less curved; length 47.4 -> 40.4 m, 9 of 9 shorter. Agrees."),
-    "p001_fig11": (
-        "A wider orientation tolerance spreads relaxed trajectories much wider; standard barely changes.",
-        "Refuted: entry-point spread at 5/15/30/45 deg: relaxed paper arc 0.03/0.03/0.03/0.02 m, paper's "
-        "literal relaxed 0.20/0.20/0.22/0.24 m, standard 0.01 m throughout."),
-    "p001_fig12_successive": (
-        "Relaxed paths are smoother and shorter, and converge to one path whatever the start.",
-        "Mean distance from the middle agent's path: 2.5 m at the start, 0.13 m after 10 m, 0.01 m after 15 m "
-        "(standard alike); turning 7.54 -> 6.51 rad, length 62.6 -> 55.9 m, 9 of 9. Agrees."),
-}
+# What each figure claims and what we measure, shown in the lab's side
+# panel: the captions of docs/presets.json rendered from the figures
+# records in docs/figures/ (written by `make figures`), so the preset menu,
+# docs/FIGURES.md and the tests show the same numbers (tests/figures.rs
+# checks it). Placeholders: {id} the figure's value and unit, {id:num} the
+# value alone, {verdict:SOURCE} the verdict of that fidelity test's record.
+ROOT = os.path.dirname(HERE)
+
+
+def load_records(folder):
+    figures, verdicts = {}, {}
+    for name in sorted(os.listdir(folder)):
+        if not name.endswith(".json"):
+            continue
+        with open(os.path.join(folder, name)) as f:
+            r = json.load(f)
+        for fig in r["figures"]:
+            figures[fig["id"]] = fig
+        if "claim" in r:
+            verdicts[r["source"]] = r["claim"]["verdict"]
+    return figures, verdicts
+
+
+def shown(fig, num_only=False):
+    n = "%.*f" % (fig["digits"], fig["value"])
+    unit = fig["unit"]
+    if num_only or unit == "":
+        return n
+    return n + "°" if unit == "°" else n + " " + unit
+
+
+def render(template, figures, verdicts):
+    def one(m):
+        key = m.group(1)
+        if key.startswith("verdict:"):
+            return verdicts[key[len("verdict:"):]]
+        fid, _, how = key.partition(":")
+        if fid not in figures:
+            raise SystemExit("docs/presets.json: no figure `%s` in docs/figures (run `make figures`)" % fid)
+        return shown(figures[fid], how == "num")
+    return re.sub(r"\{([^{}]*)\}", one, template)
+
+
+def captions():
+    with open(os.path.join(ROOT, "docs", "presets.json")) as f:
+        caps = json.load(f)["captions"]
+    figures, verdicts = load_records(os.path.join(ROOT, "docs", "figures"))
+    out = {}
+    for c in caps:
+        for p in c["presets"]:
+            out[p] = (c["claim"], render(c["measured"], figures, verdicts))
+    return out
+
+
+FIDELITY = captions()
 
 
 def write(name, source, description, agents, duration=40.0, **extra):
     sc = {"name": name, "source": source, "description": description, "duration": duration, "agents": agents}
-    key = name
-    for suffix in ("_standard", "_relaxed"):
-        if key.endswith(suffix) and key not in FIDELITY:
-            key = key[: -len(suffix)]
-    key = "p001_fig11" if key.startswith("p001_fig11_tol") else key
-    if key in FIDELITY:
-        sc["claim"], sc["measured"] = FIDELITY[key]
+    if name in FIDELITY:
+        sc["claim"], sc["measured"] = FIDELITY[name]
     sc.update(extra)
-    with open(os.path.join(HERE, name + ".json"), "w") as f:
-        json.dump(sc, f, indent=1)
-        f.write("\n")
+    path = os.path.join(HERE, name + ".json")
+    text = json.dumps(sc, indent=1) + "\n"
+    # Unchanged files keep their time stamp: the crate includes some
+    # presets, and a rewrite would rebuild it.
+    if os.path.exists(path):
+        with open(path) as f:
+            if f.read() == text:
+                return
+    with open(path, "w") as f:
+        f.write(text)
 
 # Paper 000 Fig. 1 / paper 001 Fig. 1a: plain seek to three position goals.
 # The seek controller ignores beta and epsTol (with the standard

@@ -18,7 +18,44 @@ use steering::world::scenario::Scenario;
 use steering::world::World;
 
 mod common;
+use common::figures::{record_claim, Claim, Figure, Seeds, Verdict};
 use common::table;
+
+/// Writes the record of a paper 000 / 001 test (fixed presets: no seeds):
+/// the claim, which reading was measured, the verdict the test asserts and
+/// the figures it asserts on, for the figures report and the presets'
+/// `measured` strings.
+fn record_fig(
+    test: &str,
+    paper: &str,
+    place: &str,
+    claim: &str,
+    reading: &str,
+    verdict: Verdict,
+    figs: &[Figure],
+) {
+    record_claim(
+        &format!("tests/fidelity.rs::{test}"),
+        &format!("cargo test --release --features cli --test fidelity {test}"),
+        &Seeds::default(),
+        &Claim {
+            paper: paper.into(),
+            place: place.into(),
+            claim: claim.into(),
+            reading: reading.into(),
+            verdict,
+        },
+        figs,
+    );
+}
+
+/// Smallest and largest.
+fn min_max(v: &[f32]) -> (f64, f64) {
+    v.iter()
+        .fold((f64::INFINITY, f64::NEG_INFINITY), |(lo, hi), &x| {
+            (lo.min(f64::from(x)), hi.max(f64::from(x)))
+        })
+}
 
 fn preset(name: &str) -> Scenario {
     let path = format!("{}/scenarios/{name}.json", env!("CARGO_MANIFEST_DIR"));
@@ -82,6 +119,13 @@ fn p000_fig1_plain_seek_never_funnels_and_reaches_every_target() {
         assert!(a.done() && d < g.d_tol, "agent {i}: {d} m");
     }
     assert_eq!(funnelled, 0, "plain seek funnelled");
+    let dist: Vec<f32> = w
+        .agents
+        .iter()
+        .map(|a| a.state.pos.distance(a.goals[0].goal.pos))
+        .collect();
+    let times: Vec<f32> = w.agents.iter().filter_map(|a| a.finished_at).collect();
+    let (t0, t1) = min_max(&times);
     // The old reading (standard controller, ε_tol 180°) funnels the agent
     // whose target lies behind it towards β.
     let mut old = sc.clone();
@@ -94,12 +138,29 @@ fn p000_fig1_plain_seek_never_funnels_and_reaches_every_target() {
         "fig1 under the standard controller with ε_tol 180°: agent 2 funnels {old_funnel} steps"
     );
     assert!(old_funnel > 0);
+    record_fig(
+        "p000_fig1_plain_seek_never_funnels_and_reaches_every_target",
+        "000",
+        "Fig. 1",
+        "plain seek reaches position targets without a prescribed orientation",
+        "paper",
+        Verdict::Reproduced,
+        &[
+            Figure::new("p000.fig1.reached", "agents at rest inside their target", w.agents.iter().filter(|a| a.done()).count() as f64, "of 3", 0),
+            Figure::new("p000.fig1.distance.max", "final distance to the target's centre, largest", min_max(&dist).1, "m", 2),
+            Figure::new("p000.fig1.time.min", "time to rest, earliest", t0, "s", 1),
+            Figure::new("p000.fig1.time.max", "time to rest, latest", t1, "s", 1),
+            Figure::new("p000.fig1.funnelled", "agent-steps in a funnelling mode", funnelled as f64, "", 0),
+            Figure::new("p000.fig1.standard-eps180.funnelled", "steps the agent whose target lies behind funnels under the standard controller with ε_tol 180°", old_funnel as f64, "steps", 0),
+        ],
+    );
 }
 
 #[test]
 fn p000_fig3_funnelling_reaches_position_and_orientation() {
     let t = table();
     let w = run(&t, &preset("p000_fig3_funnel"), |_| {});
+    let (mut dist, mut head) = (Vec::new(), Vec::new());
     for (i, a) in w.agents.iter().enumerate() {
         let g = a.goals[0].goal;
         let (d, e) = (
@@ -114,13 +175,48 @@ fn p000_fig3_funnelling_reaches_position_and_orientation() {
             a.done() && d < g.d_tol && e < g.eps_tol,
             "agent {i}: {d} m, {e} rad"
         );
+        dist.push(d);
+        head.push(e.to_degrees());
     }
+    let (h0, h1) = min_max(&head);
+    record_fig(
+        "p000_fig3_funnelling_reaches_position_and_orientation",
+        "000",
+        "Fig. 3",
+        "funnelling reaches the same targets with the prescribed orientations",
+        "ours",
+        Verdict::Reproduced,
+        &[
+            Figure::new(
+                "p000.fig3.distance.max",
+                "final distance to the target's centre, largest",
+                min_max(&dist).1,
+                "m",
+                2,
+            ),
+            Figure::new(
+                "p000.fig3.heading.min",
+                "final heading error to β, smallest",
+                h0,
+                "°",
+                1,
+            ),
+            Figure::new(
+                "p000.fig3.heading.max",
+                "final heading error to β, largest",
+                h1,
+                "°",
+                1,
+            ),
+        ],
+    );
 }
 
 #[test]
 fn p000_fig6_pairs_meet_face_to_face() {
     let t = table();
     let w = run(&t, &preset("p000_fig6_face_to_face"), |_| {});
+    let (mut gaps, mut facings) = (Vec::new(), Vec::new());
     for k in 0..w.agents.len() / 2 {
         let (a, b) = (&w.agents[2 * k], &w.agents[2 * k + 1]);
         let gap = a.state.pos.distance(b.state.pos);
@@ -133,7 +229,48 @@ fn p000_fig6_pairs_meet_face_to_face() {
             gap < 2.0 * 1.2 && facing < 20.0,
             "pair {k}: {gap} m, {facing}°"
         );
+        gaps.push(gap);
+        facings.push(facing);
     }
+    let (g0, g1) = min_max(&gaps);
+    record_fig(
+        "p000_fig6_pairs_meet_face_to_face",
+        "000",
+        "Fig. 6",
+        "pairs attracted to each other's pose meet face to face",
+        "ours",
+        Verdict::Reproduced,
+        &[
+            Figure::new(
+                "p000.fig6.pairs",
+                "pairs, both done",
+                gaps.len() as f64,
+                "",
+                0,
+            ),
+            Figure::new(
+                "p000.fig6.gap.min",
+                "final distance between the two of a pair, smallest",
+                g0,
+                "m",
+                2,
+            ),
+            Figure::new(
+                "p000.fig6.gap.max",
+                "final distance between the two of a pair, largest",
+                g1,
+                "m",
+                2,
+            ),
+            Figure::new(
+                "p000.fig6.facing.max",
+                "final headings' difference from opposite, largest",
+                min_max(&facings).1,
+                "°",
+                1,
+            ),
+        ],
+    );
 }
 
 /// Mean |μ| (the heading's offset from the seek direction, degrees) of
@@ -187,6 +324,41 @@ fn p000_fig7_distant_targets_are_first_sought_then_funnelled() {
     // modulates from the start (bound atan(8·R/D): 38° at 10 m).
     assert!(paper[0] < 0.5 * paper[2], "literal {paper:?}");
     assert!(ours[0] > 0.8 * ours[2], "ours {ours:?}");
+    let mut figs = vec![Figure::new(
+        "p000.fig7.finished",
+        "agents finishing their three goals (ours)",
+        done as f64,
+        "of 8",
+        0,
+    )];
+    for (reading, v) in [("ours", ours), ("literal", paper)] {
+        for (band, x) in ["far", "mid", "near"].iter().zip(v) {
+            let what = format!(
+                "mean |μ| at D {} ({reading} bound)",
+                match *band {
+                    "far" => "> 10 m",
+                    "mid" => "4–10 m",
+                    _ => "1–4 m",
+                }
+            );
+            figs.push(Figure::new(
+                &format!("p000.fig7.{reading}.mu.{band}"),
+                &what,
+                f64::from(x),
+                "°",
+                1,
+            ));
+        }
+    }
+    record_fig(
+        "p000_fig7_distant_targets_are_first_sought_then_funnelled",
+        "000",
+        "Fig. 7",
+        "distant targets are first approached like a seek, the orientation enforced when closer (holds for the literal bound; ours modulates from the start)",
+        "paper",
+        Verdict::Reproduced,
+        &figs,
+    );
 }
 
 /// Per agent of Fig. 8: the three sections of its trace (turning to the
@@ -246,6 +418,41 @@ fn p000_fig8_traces_show_three_sections() {
     assert!(three * 10 >= n * 6, "{three} of {n}");
     assert!(d[1] < 0.6 * d[0] && d[1] < 0.6 * d[2], "{d:?}");
     assert!(k[1] < 0.3 * k[0] && k[1] < 0.5 * k[2], "{k:?}");
+    let mut figs = vec![
+        Figure::new(
+            "p000.fig8.three-sections",
+            "traces showing all three sections",
+            three as f64,
+            "",
+            0,
+        ),
+        Figure::new("p000.fig8.traces", "traces", n as f64, "", 0),
+    ];
+    for (s, name) in ["turn", "straight", "final"].iter().enumerate() {
+        figs.push(Figure::new(
+            &format!("p000.fig8.{name}.curvature"),
+            &format!("mean |κ|, {name} section"),
+            f64::from(k[s]),
+            "rad/m",
+            2,
+        ));
+        figs.push(Figure::new(
+            &format!("p000.fig8.{name}.dispersion"),
+            &format!("heading dispersion (circular std), {name} section"),
+            f64::from(d[s]),
+            "°",
+            1,
+        ));
+    }
+    record_fig(
+        "p000_fig8_traces_show_three_sections",
+        "000",
+        "Fig. 8",
+        "trace bundles show three sections: turn to the target, quasi straight, final curve",
+        "ours",
+        Verdict::Reproduced,
+        &figs,
+    );
 }
 
 // ---------------------------------------------------------------- paper 001
@@ -295,6 +502,7 @@ fn curvature_near_the_end(t: &EtaTable, sc: &Scenario, l: f32) -> Vec<f32> {
 fn p001_fig5_curvature_near_the_destination_by_distance() {
     let t = table();
     let base = preset("p001_fig5_gait");
+    let mut figs = Vec::new();
     for beta in [90.0f32, 45.0, 0.0] {
         let mut sc = base.clone();
         for a in &mut sc.agents {
@@ -324,8 +532,31 @@ fn p001_fig5_curvature_near_the_destination_by_distance() {
             if o[0] > 0.05 {
                 assert!(o[2] < 0.25 * o[0], "ours β {beta} bearing {bearing}: {o:?}");
             }
+            // The preset's own β, bearings 20° and 45°, in the report.
+            if beta == 90.0 && bearing > 0 {
+                for (reading, v) in [("literal", p), ("ours", o)] {
+                    for (d, x) in [4, 8, 12].iter().zip(v) {
+                        figs.push(Figure::new(
+                            &format!("p001.fig5.bearing{bearing}.{reading}.d{d}"),
+                            &format!("mean |κ| over the last 1.5 m, target {d} m away at bearing {bearing}° ({reading})"),
+                            f64::from(*x),
+                            "rad/m",
+                            2,
+                        ));
+                    }
+                }
+            }
         }
     }
+    record_fig(
+        "p001_fig5_curvature_near_the_destination_by_distance",
+        "001",
+        "Fig. 5, §1",
+        "the curvature near the destination appears independent of the distance over 4 m (the literal reading within 2× at 4–12 m; ours arrives nearly straight from afar)",
+        "paper",
+        Verdict::Reproduced,
+        &figs,
+    );
 }
 
 /// (length, ∫|κ|) per agent over the whole run.
@@ -352,15 +583,94 @@ fn compare(t: &EtaTable, base: &str) -> (f32, f32, f32, f32, usize, usize) {
     (m(&s, 0), m(&r, 0), m(&s, 1), m(&r, 1), shorter, straighter)
 }
 
+/// [`compare`]'s result as figures `{prefix}.length.standard` … (`label`
+/// says which preset in words).
+fn compare_figures(
+    prefix: &str,
+    label: &str,
+    c: (f32, f32, f32, f32, usize, usize),
+) -> Vec<Figure> {
+    let (ls, lr, ks, kr, sh, st) = c;
+    let f = |q: &str, what: &str, v: f64, unit: &str, digits: u8| {
+        Figure::new(
+            &format!("{prefix}.{q}"),
+            &format!("{label}: {what}"),
+            v,
+            unit,
+            digits,
+        )
+    };
+    vec![
+        f(
+            "length.standard",
+            "mean path length, standard",
+            f64::from(ls),
+            "m",
+            1,
+        ),
+        f(
+            "length.relaxed",
+            "mean path length, relaxed (paper arc)",
+            f64::from(lr),
+            "m",
+            1,
+        ),
+        f(
+            "curvature.standard",
+            "mean ∫|κ|, standard",
+            f64::from(ks),
+            "rad",
+            2,
+        ),
+        f(
+            "curvature.relaxed",
+            "mean ∫|κ|, relaxed (paper arc)",
+            f64::from(kr),
+            "rad",
+            2,
+        ),
+        f(
+            "shorter",
+            "agents whose relaxed path is shorter",
+            sh as f64,
+            "of 9",
+            0,
+        ),
+        f(
+            "less-curved",
+            "agents whose relaxed path is less curved",
+            st as f64,
+            "of 9",
+            0,
+        ),
+    ]
+}
+
 #[test]
 fn p001_fig10_relaxed_is_less_curved_and_shorter() {
     let t = table();
+    let mut figs = Vec::new();
     for beta in [0, 45, 120] {
-        let (ls, lr, ks, kr, sh, st) = compare(&t, &format!("p001_fig10_beta{beta}"));
+        let c = compare(&t, &format!("p001_fig10_beta{beta}"));
+        let (ls, lr, ks, kr, sh, st) = c;
         println!("fig10 β {beta}°: length {ls:.1} → {lr:.1} m (shorter {sh}/9), ∫|κ| {ks:.2} → {kr:.2} rad (less curved {st}/9)");
         assert!(kr < ks && st >= 7, "β {beta}: ∫|κ| {ks} vs {kr}, {st}/9");
         assert!(lr < ls && sh >= 5, "β {beta}: length {ls} vs {lr}, {sh}/9");
+        figs.extend(compare_figures(
+            &format!("p001.fig10.beta{beta}"),
+            &format!("β {beta}°"),
+            c,
+        ));
     }
+    record_fig(
+        "p001_fig10_relaxed_is_less_curved_and_shorter",
+        "001",
+        "Fig. 10",
+        "relaxed funnelling gives less curved and frequently shorter paths than standard",
+        "ours",
+        Verdict::Reproduced,
+        &figs,
+    );
 }
 
 /// Where each agent first enters goal `k`'s disk (None if it never does).
@@ -486,11 +796,43 @@ fn p001_fig11_relaxed_entry_points_spread_with_tolerance() {
     assert!(at(&rows, 45, label) < 2.0 * at(&rows, 5, label), "{rows:?}");
     assert!(at(&dist, 45, label) < 1.2 * at(&dist, 5, label), "{dist:?}");
     assert!(at(&rows, 45, "standard") < 0.05, "{rows:?}");
+    let key = |label: &str| if label == "standard" { "standard" } else { "paper-arc" };
+    let mut figs: Vec<Figure> = rows
+        .iter()
+        .map(|(tol, label, v)| {
+            Figure::new(
+                &format!("p001.fig11.tol{tol}.{}.spread", key(label)),
+                &format!("spread of the entry points, ε_tol {tol}°, {label}"),
+                f64::from(*v),
+                "m",
+                2,
+            )
+        })
+        .collect();
+    figs.extend(dist.iter().map(|(tol, label, v)| {
+        Figure::new(
+            &format!("p001.fig11.tol{tol}.{}.middle-distance", key(label)),
+            &format!("mean distance from the middle path at 10/20/30 m of travel, ε_tol {tol}°, {label}"),
+            f64::from(*v),
+            "m",
+            2,
+        )
+    }));
+    record_fig(
+        "p001_fig11_relaxed_entry_points_spread_with_tolerance",
+        "001",
+        "Fig. 11",
+        "a wider orientation tolerance spreads relaxed trajectories much wider; standard barely changes",
+        "ours",
+        Verdict::Refuted,
+        &figs,
+    );
 }
 
 #[test]
 fn p001_fig12_successive_relaxed_goals_converge_to_one_path() {
     let t = table();
+    let mut figs = Vec::new();
     for (label, sc) in [
         ("standard", preset("p001_fig12_successive_standard")),
         (
@@ -510,6 +852,22 @@ fn p001_fig12_successive_relaxed_goals_converge_to_one_path() {
             assert!(mean_pairwise(&p) < 0.6, "{label}: goal {k}");
         }
         println!("{line}");
+        let key = match label {
+            "standard" => "standard",
+            "relaxed paper arc" => "paper-arc",
+            _ => "literal",
+        };
+        for (i, at) in [(0, 0), (2, 10), (3, 15)] {
+            figs.push(Figure::new(
+                &format!("p001.fig12.{key}.middle-distance.at{at}"),
+                &format!(
+                    "mean distance from the middle agent's path after {at} m of travel, {label}"
+                ),
+                f64::from(d[i]),
+                "m",
+                2,
+            ));
+        }
     }
     // "the longer and more curved path produced by the standard funnelling
     // compared to the more globally smoother and shorter one obtained with
@@ -534,11 +892,26 @@ fn p001_fig12_successive_relaxed_goals_converge_to_one_path() {
     );
     assert!(m(&r, 0) < 0.95 * m(&s, 0) && shorter >= 8, "{s:?} {r:?}");
     assert!(m(&r, 1) < m(&s, 1), "{s:?} {r:?}");
+    figs.extend(compare_figures(
+        "p001.fig12",
+        "successive goals",
+        compare(&t, "p001_fig12_successive"),
+    ));
+    record_fig(
+        "p001_fig12_successive_relaxed_goals_converge_to_one_path",
+        "001",
+        "Fig. 12",
+        "relaxed paths are smoother and shorter, and converge to one path whatever the start",
+        "ours",
+        Verdict::Reproduced,
+        &figs,
+    );
 }
 
 #[test]
 fn p001_sec5_curvature_by_tolerance_band() {
     let t = table();
+    let mut figs = Vec::new();
     for (base, band) in [
         ("p001_fig11_tol5", "5°"),
         ("p001_fig10_beta0", "10° β0"),
@@ -553,7 +926,28 @@ fn p001_sec5_curvature_by_tolerance_band() {
         println!("§5 {band}: ∫|κ| {ks:.2} → {kr:.2} rad ({st}/9 less curved), length {ls:.1} → {lr:.1} m ({sh}/9 shorter)");
         // Every band: less curved on average and for at least 8 of 9.
         assert!(kr < 0.95 * ks && st >= 8, "{band}: {ks} vs {kr}, {st}/9");
+        let c = compare_figures(
+            &format!(
+                "p001.sec5.{}",
+                base.trim_start_matches("p001_").replace('_', "-")
+            ),
+            &format!("ε_tol {band}"),
+            (ls, lr, ks, kr, sh, st),
+        );
+        figs.extend(
+            c.into_iter()
+                .filter(|f| f.id.contains("curvature") || f.id.ends_with("less-curved")),
+        );
     }
+    record_fig(
+        "p001_sec5_curvature_by_tolerance_band",
+        "001",
+        "§5",
+        "relaxed funnelling gives less curved paths at every orientation tolerance",
+        "ours",
+        Verdict::Reproduced,
+        &figs,
+    );
 }
 
 #[test]
@@ -575,6 +969,20 @@ fn p001_fig6_a_better_point_of_the_disk_gives_a_smoother_path() {
     println!("fig6: up to the disk, centre aim (6b) {lb:.1} m and ∫|κ| {kb:.2} rad; relaxed point (6c) {lc:.1} m and {kc:.2} rad");
     assert!(db && dc);
     assert!(kc < 0.95 * kb && lc < lb, "6b {mb:?} 6c {mc:?}");
+    record_fig(
+        "p001_fig6_a_better_point_of_the_disk_gives_a_smoother_path",
+        "001",
+        "Fig. 6",
+        "aiming at the disk centre gives an artificially curved path; a better point of the disk a smoother one",
+        "ours",
+        Verdict::Reproduced,
+        &[
+            Figure::new("p001.fig6.centre.length", "path length up to the disk, centre aim (6b)", f64::from(lb), "m", 1),
+            Figure::new("p001.fig6.centre.curvature", "∫|κ| up to the disk, centre aim (6b)", f64::from(kb), "rad", 2),
+            Figure::new("p001.fig6.relaxed.length", "path length up to the disk, relaxed point (6c)", f64::from(lc), "m", 1),
+            Figure::new("p001.fig6.relaxed.curvature", "∫|κ| up to the disk, relaxed point (6c)", f64::from(kc), "rad", 2),
+        ],
+    );
 }
 
 /// The relaxed direction's branch at every step of a preset's run where
@@ -659,6 +1067,59 @@ fn p001_fig8_delta_eta_zero_takes_the_smallest_alpha_r() {
     }
     println!("fig8: |α_r| minus the smallest valid |α| of a 2,001-point search, largest over {} steps: {:.5} rad", arcs.len(), worst);
     assert!(inner * 2 > s.len(), "{inner}");
+    let deg = |x: f32| f64::from(x.to_degrees());
+    record_fig(
+        "p001_fig8_delta_eta_zero_takes_the_smallest_alpha_r",
+        "001",
+        "Fig. 8",
+        "when some point of the arc gives Δη = 0, the one of smallest |α_r| is taken",
+        "ours",
+        Verdict::Reproduced,
+        &[
+            Figure::new(
+                "p001.fig8.searched",
+                "steps where the arc was searched",
+                s.len() as f64,
+                "",
+                0,
+            ),
+            Figure::new(
+                "p001.fig8.zero",
+                "searched steps with Δη = 0",
+                zero as f64,
+                "",
+                0,
+            ),
+            Figure::new(
+                "p001.fig8.inner",
+                "searched steps with α_r strictly inside the arc",
+                inner as f64,
+                "",
+                0,
+            ),
+            Figure::new(
+                "p001.fig8.first.alpha-r",
+                "first searched step: α_r",
+                deg(s[0].1),
+                "°",
+                1,
+            ),
+            Figure::new(
+                "p001.fig8.first.arc-min",
+                "first searched step: the arc's lower end",
+                deg(s[0].2),
+                "°",
+                1,
+            ),
+            Figure::new(
+                "p001.fig8.first.arc-max",
+                "first searched step: the arc's upper end",
+                deg(s[0].3),
+                "°",
+                1,
+            ),
+        ],
+    );
 }
 
 #[test]
@@ -683,6 +1144,37 @@ fn p001_fig9_no_zero_delta_eta_takes_an_arc_end() {
         s.len()
     );
     assert!(at_end * 100 >= s.len() * 99, "{at_end} of {}", s.len());
+    record_fig(
+        "p001_fig9_no_zero_delta_eta_takes_an_arc_end",
+        "001",
+        "Fig. 9",
+        "when no point gives Δη = 0, the arc end of smallest |Δη| is taken",
+        "ours",
+        Verdict::Reproduced,
+        &[
+            Figure::new(
+                "p001.fig9.searched",
+                "steps where the arc was searched",
+                s.len() as f64,
+                "",
+                0,
+            ),
+            Figure::new(
+                "p001.fig9.gap",
+                "searched steps in a gap branch",
+                gap as f64,
+                "",
+                0,
+            ),
+            Figure::new(
+                "p001.fig9.at-end",
+                "searched steps with Δη ≠ 0 and α_r at an arc end",
+                at_end as f64,
+                "",
+                0,
+            ),
+        ],
+    );
 }
 
 // ---------------------------------------------------------------- paper 003
@@ -1699,4 +2191,37 @@ fn p001_fig3_eta_is_radial_at_low_speed_and_only_in_front_at_normal_speed() {
     assert!(normal.1 > 2.0 * slow.1, "{rows:?}");
     assert!(normal.0 < 0.5 * normal.1, "{rows:?}");
     assert!(normal.2 > slow.2, "{rows:?}");
+    let mut figs = Vec::new();
+    for (key, label, r) in [("slow", "0.3 m/s", slow), ("normal", "1.3 m/s", normal)] {
+        figs.push(Figure::new(
+            &format!("p001.fig3.{key}.eta.front"),
+            &format!("mean |η|, targets 2–4 m in front, {label}"),
+            f64::from(r.0),
+            "°",
+            1,
+        ));
+        figs.push(Figure::new(
+            &format!("p001.fig3.{key}.eta.behind"),
+            &format!("mean |η|, targets 2–4 m behind, {label}"),
+            f64::from(r.1),
+            "°",
+            1,
+        ));
+        figs.push(Figure::new(
+            &format!("p001.fig3.{key}.unreachable"),
+            &format!("targets within 1.5 m unreachable, {label}"),
+            100.0 * f64::from(r.2),
+            "%",
+            0,
+        ));
+    }
+    record_fig(
+        "p001_fig3_eta_is_radial_at_low_speed_and_only_in_front_at_normal_speed",
+        "001",
+        "Fig. 3",
+        "η is radial at low speed, and only for targets in front at normal speed",
+        "ours",
+        Verdict::Reproduced,
+        &figs,
+    );
 }

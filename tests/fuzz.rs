@@ -239,6 +239,9 @@ proptest! {
                         err_has_message(&e);
                     }
                 }
+                Command::Report(a) => {
+                    assert!(!(a.check && a.prune));
+                }
             },
         }
     }

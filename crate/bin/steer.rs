@@ -7,6 +7,7 @@
 //! steer relaxed [--n N] [--seed S] [--table FILE] [--scenarios DIR] [--reading paper|ours] [--aim entry|paper-arc] [--disk-margin F] [--orientation-margin F] [--threads N]
 //! steer envelope [--n N] [--seed S] [--json FILE] [--table FILE] [--standard JSON] [--only NAMES] [--brief] [--vehicle VEHICLE.json] [--queries N]
 //! steer avoid [--seeds N] [--seed S] [--only NAMES] [--replan-every N] [--write-presets DIR] [--table FILE] [--threads N]
+//! steer report [--check] [--prune] [--records DIR] [--full-records DIR] [--store DIR] [--out FILE]
 //! ```
 //! `run` simulates a scenario file (schema: `crate/world/scenario.rs`)
 //! and streams the per-step pose, speeds and mode of every agent plus its
@@ -25,6 +26,9 @@
 //! comparison of paper 001 (path length, integrated |curvature|, reach),
 //! like for like: both controllers of `--reading` (ours, or the papers').
 //! Studies run on rayon; their output does not depend on `--threads`.
+//! `reach`, `relaxed`, `envelope` and `avoid` take `--record`: their
+//! summary also goes into a figures record (`steering::cli::records`),
+//! from which `report` builds `docs/FIGURES.md`.
 
 // `wasm-pack test` builds every binary for wasm32, where clap and rayon
 // are not dependencies: there this binary is empty.
@@ -40,6 +44,7 @@ use steering::base::metrics::PathMetrics;
 use steering::cli::steer::{
     AvoidArgs, Command, EnvelopeArgs, ReachArgs, RelaxedArgs, RunArgs, SteerCli,
 };
+use steering::cli::study_records;
 use steering::cli::trajectory::{check_out_path, create_out, stream_run};
 use steering::funnelling::config::{FunnelConfig, MuBound};
 use steering::funnelling::controller::{Controller, ControllerKind, Reading};
@@ -251,7 +256,17 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
         let body = serde_json::to_string_pretty(&report.to_json()).map_err(|e| e.to_string())?;
         std::fs::write(path, body).map_err(|e| format!("cannot write {}: {e}", path.display()))?;
     }
-    Ok(())
+    let prefix = match &args.vehicle {
+        None => "envelope".to_string(),
+        Some(v) => format!(
+            "envelope-{}",
+            study_records::id_segment(&v.file_stem().unwrap_or_default().to_string_lossy())
+        ),
+    };
+    args.record.write(
+        study_records::funnel_seeds(args.seed),
+        study_records::envelope(&prefix, &report),
+    )
 }
 
 fn reach(args: &ReachArgs) -> Result<(), String> {
@@ -294,6 +309,7 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
         (MuBound::TurningRadius { factor: 8.0 }, 1.0, 0.25),
         (MuBound::Constant, 2.0, 0.25),
     ];
+    let mut figures = Vec::new();
     for (bound, gain, th) in variants {
         let cfg = FunnelConfig {
             bound,
@@ -319,8 +335,11 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
             s.length_ratio.1,
             s.violations
         );
+        let (id, label) = study_records::reach_variant(&bound, gain, th);
+        figures.extend(study_records::reach(&id, &label, &s));
     }
-    Ok(())
+    args.record
+        .write(study_records::funnel_seeds(args.seed), figures)
 }
 
 /// Runs a scenario to its duration; per agent: path metrics and whether
@@ -377,6 +396,8 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
         .collect();
     names.sort();
     let (mut all_s, mut all_r) = (Vec::new(), Vec::new());
+    let variant = study_records::relaxed_variant(&rcfg);
+    let mut figures = Vec::new();
     for n in &names {
         let path = format!("{dir}/{n}");
         let text = std::fs::read_to_string(&path).map_err(|e| format!("{path}: {e}"))?;
@@ -387,11 +408,16 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
         sc.controller = ControllerKind::Relaxed;
         sc.relaxed = rcfg;
         let re = simulate(&sc, &table)?;
-        print_row(n.trim_end_matches("_standard.json"), &compare(&st, &re));
+        let name = n.trim_end_matches("_standard.json");
+        let c = compare(&st, &re);
+        print_row(name, &c);
+        figures.extend(study_records::relaxed(&variant, name, &c));
         all_s.extend(st);
         all_r.extend(re);
     }
-    print_row("all presets", &compare(&all_s, &all_r));
+    let c = compare(&all_s, &all_r);
+    print_row("all presets", &c);
+    figures.extend(study_records::relaxed(&variant, "all presets", &c));
     println!(
         "\nRandom region goals: {} scenarios, seed {}, D in [{}, {}] m, radius in [{}, {}] m, tau in [{:.0}, {:.0}] deg, v_d {} m/s, limit {} s (reach = ends inside the disk with heading inside T):",
         study.n,
@@ -416,14 +442,18 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     let pick = |v: &[steering::studies::region::RegionRun]| -> Vec<(PathMetrics, bool)> {
         v.iter().map(|r| (r.path, r.reached)).collect()
     };
-    print_row("random", &compare(&pick(&rs), &pick(&rr)));
+    let c = compare(&pick(&rs), &pick(&rr));
+    print_row("random", &c);
+    figures.extend(study_records::relaxed(&variant, "random", &c));
     let both: Vec<usize> = (0..rs.len().min(rr.len()))
         .filter(|&i| rs[i].reached && rr[i].reached)
         .collect();
     let sub = |v: &[steering::studies::region::RegionRun]| -> Vec<(PathMetrics, bool)> {
         both.iter().map(|&i| (v[i].path, v[i].reached)).collect()
     };
-    print_row("random, both reached", &compare(&sub(&rs), &sub(&rr)));
+    let c = compare(&sub(&rs), &sub(&rr));
+    print_row("random, both reached", &c);
+    figures.extend(study_records::relaxed(&variant, "random, both reached", &c));
     let mean = |v: &[steering::studies::region::RegionRun],
                 f: fn(&steering::studies::region::RegionRun) -> f32| {
         v.iter().map(|r| f64::from(f(r))).sum::<f64>() / v.len().max(1) as f64
@@ -439,7 +469,8 @@ fn relaxed(args: &RelaxedArgs) -> Result<(), String> {
     );
     let viol: u32 = rr.iter().map(|r| r.path.violations).sum();
     println!("relaxed limit violations: {viol}");
-    Ok(())
+    args.record
+        .write(study_records::funnel_seeds(args.seed), figures)
 }
 
 /// `steer avoid`: the avoidance benchmarks, every method on the same
@@ -474,6 +505,7 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
     );
     println!("| benchmark | method | runs | reach | oriented entries | runs finished | median finish s | length / off (median, max) | min distance m | runs with overlap | overlap pair-steps (max at once) | obstacle contacts | deadlocked agents (runs) | violations | NaN |");
     println!("|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|");
+    let mut figures = Vec::new();
     for b in benches {
         let t0 = Instant::now();
         let cells = args
@@ -503,11 +535,13 @@ fn avoid(args: &AvoidArgs) -> Result<(), String> {
                 c.violations,
                 c.nan
             );
+            figures.extend(study_records::avoid(&b.name(), m.name(), &c));
         }
         let _ = Bench::ALL;
         eprintln!("{}: {:.1} s", b.name(), t0.elapsed().as_secs_f32());
     }
-    Ok(())
+    args.record
+        .write(study_records::avoid_seeds(args.seed, args.seeds), figures)
 }
 
 fn main() -> ExitCode {
@@ -518,6 +552,7 @@ fn main() -> ExitCode {
         Command::Envelope(a) => envelope(a),
         Command::Relaxed(a) => relaxed(a),
         Command::Avoid(a) => avoid(a),
+        Command::Report(a) => steering::cli::report::run(a).map(|m| println!("{m}")),
     };
     match result {
         Ok(()) => ExitCode::SUCCESS,

@@ -10,12 +10,18 @@
 //! | [`eta_table`] | `eta-table`: output file, vehicle file, sample counts per axis, thread count |
 //! | [`crowd_metrics`] | `crowd-metrics`: `--write-presets`, repeatable `--set key=value` |
 //! | [`pool`] | `--threads`: the rayon pool a study or the table generator runs on |
+//! | [`records`] | figures records: the JSON a test, study or benchmark writes per measurement (read, checked, written atomically), `--record` |
+//! | [`study_records`] | what `steer reach / relaxed / envelope / avoid --record` write: each summary row as figures, tuning and report seeds |
+//! | [`report`] | `steer report`: `docs/FIGURES.md` from the records, the presets' `measured` templates, `--check` |
 //! | [`table_cache`] | the η tables built for other vehicles, cached by parameter key (`steer run`) |
 //! | [`trajectory`] | `steer run`'s output streamed (CSV, time-ordered JSON, JSON Lines) to a temporary file renamed onto `--out` when complete, the `--out` checks before simulating |
 
 pub mod crowd_metrics;
 pub mod eta_table;
 pub mod pool;
+pub mod records;
+pub mod report;
 pub mod steer;
+pub mod study_records;
 pub mod table_cache;
 pub mod trajectory;

@@ -31,6 +31,8 @@ pub enum Command {
     Envelope(EnvelopeArgs),
     /// Avoidance benchmarks: circle swap, corridor, doorway, Fig. 6 / Fig. 8; off vs separation vs ORCA.
     Avoid(AvoidArgs),
+    /// The figures report: docs/FIGURES.md from the records the tests, studies and benchmarks write (`--check`: compare only).
+    Report(super::report::ReportArgs),
 }
 
 /// `steer avoid`.
@@ -54,6 +56,9 @@ pub struct AvoidArgs {
     /// η table.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
     pub table: PathBuf,
+    /// `--record`: the summary as a figures record.
+    #[command(flatten)]
+    pub record: super::records::RecordArgs,
     /// Thread pool.
     #[command(flatten)]
     pub pool: PoolArgs,
@@ -146,6 +151,9 @@ pub struct ReachArgs {
     /// η table.
     #[arg(long, value_name = "FILE", default_value = "tables/eta.bin")]
     pub table: PathBuf,
+    /// `--record`: the summary as a figures record.
+    #[command(flatten)]
+    pub record: super::records::RecordArgs,
     /// Thread pool.
     #[command(flatten)]
     pub pool: PoolArgs,
@@ -180,6 +188,9 @@ pub struct RelaxedArgs {
     /// Relaxed setting `orientationMargin` (default: the relaxed controller's).
     #[arg(long, value_name = "F")]
     pub orientation_margin: Option<f32>,
+    /// `--record`: the summary as a figures record.
+    #[command(flatten)]
+    pub record: super::records::RecordArgs,
     /// Thread pool.
     #[command(flatten)]
     pub pool: PoolArgs,
@@ -300,6 +311,9 @@ pub struct EnvelopeArgs {
     /// Off-grid queries of the η accuracy measure (with `--vehicle`).
     #[arg(long, value_name = "N", default_value_t = 10_000, value_parser = clap::value_parser!(u32).range(1..=1_000_000))]
     pub queries: u32,
+    /// `--record`: the summary as a figures record.
+    #[command(flatten)]
+    pub record: super::records::RecordArgs,
 }
 
 impl RelaxedArgs {

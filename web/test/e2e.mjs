@@ -529,6 +529,19 @@ try {
     await page.waitForFunction(() => window.__lab.state().preset === "" && window.__lab.count() === 1, null, { timeout: 5000 });
   });
 
+  // The README's picture of the lab, made here so it shows the lab as it is:
+  // a paper-figure preset playing, side panel and caption in view.
+  await check("the README's screenshot (docs/lab.png): a paper-figure preset playing", async () => {
+    await page.selectOption("#preset", "p001_fig10_beta45_relaxed");
+    await page.waitForFunction(() => window.__lab.state().preset === "p001_fig10_beta45_relaxed" && window.__lab.count() > 0, null, { timeout: 5000 });
+    if ((await page.locator("#play").getAttribute("aria-pressed")) === "true") await page.locator("#play").click();
+    await page.waitForTimeout(5000);
+    await page.evaluate(() => window.scrollTo(0, 0));
+    await page.screenshot({ path: resolve(artifacts, "..", "docs", "lab.png"), scale: "css" });
+    await page.selectOption("#preset", "");
+    await page.waitForFunction(() => window.__lab.state().preset === "" && window.__lab.count() === 1, null, { timeout: 5000 });
+  });
+
   allProblems.push(...problems);
   await check("no console errors or warnings on any page", async () => {
     assert.deepEqual(allProblems, []);
