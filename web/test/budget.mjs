@@ -26,7 +26,7 @@
 // Usage: node web/test/budget.mjs [--base DIR]...  (after `make web-build`; `make bench-budget`)
 import { existsSync, readdirSync, readFileSync } from "node:fs";
 import { parseArgs } from "node:util";
-import { cpus } from "node:os";
+import { cpus, loadavg } from "node:os";
 import { serveBuilds, launch, openPage, waitReady, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
 
 if (!existsSync("/proc/self/task")) {
@@ -146,7 +146,8 @@ async function measure(what, n, build, at, round) {
       `${what}${builds.length > 1 ? ` [${build}]` : ""} n=${n} (${row.mode}, ${row.workers} workers, hardwareConcurrency ${cores}): ${states.toFixed(1)} states drawn/s = ${Math.round(row.perFrame)} per 16.7 ms frame; ` +
         `busy ${busy.toFixed(0)} % of ${100 * cores} (workers ${pct.workers.toFixed(0)}, page ${pct.page.toFixed(0)}, other ${pct.other.toFixed(0)}); ` +
         `CPU ms per drawn state: workers ${per(pct.workers).toFixed(2)}, page ${per(pct.page).toFixed(2)}, other ${per(pct.other).toFixed(2)}, all ${row.ms.toFixed(2)}; ` +
-        `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(1)} states/s = ${row.needPct.toFixed(0)} % of ${100 * cores}`,
+        `${TARGET.toLocaleString("en")} per frame needs ${need.toFixed(1)} states/s = ${row.needPct.toFixed(0)} % of ${100 * cores}; ` +
+        `host load ${loadavg()[0].toFixed(2)} (1-min average, other processes included)`,
     );
     if (problems.length) throw new Error(problems.join("\n"));
   } finally {

@@ -42,7 +42,7 @@ export class Trails {
     return this.bufs.length;
   }
 
-  /** Appends one sample per agent from `Lab.state()` (`stride` floats per agent). */
+  /** Appends one sample per agent from the drawn state (`stride` floats per agent, `Lab.stateStride()`). */
   record(t: number, state: Float32Array, stride: number, count: number): void {
     const n = Math.min(count, this.maxAgents);
     while (this.bufs.length < n) {
