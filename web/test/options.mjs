@@ -8,10 +8,11 @@ import { basename } from "node:path";
 /** Parses `process.argv` against `spec` ({ name: { type, default?,
  *  multiple?, short?, arg?, help } }; `arg` names the value in the usage).
  *  `usage`: the first lines of the help (what the script does, how it is
- *  called). `positionals`: whether bare arguments are allowed. `--help` /
- *  `-h` prints the usage and exits 0; a bad flag prints the error and the
- *  usage and exits 2. Returns parseArgs's { values, positionals }. */
-export function options(usage, spec, { positionals = false } = {}) {
+ *  called). `positionals`: how many bare arguments are allowed (a number,
+ *  or true: any; a stray one is refused, not ignored). `--help` / `-h`
+ *  prints the usage and exits 0; a bad flag prints the error and the usage
+ *  and exits 2. Returns parseArgs's { values, positionals }. */
+export function options(usage, spec, { positionals = 0 } = {}) {
   const config = { help: { type: "boolean", short: "h", default: false } };
   for (const [name, o] of Object.entries(spec)) {
     config[name] = { type: o.type };
@@ -20,9 +21,14 @@ export function options(usage, spec, { positionals = false } = {}) {
   const text = helpText(usage, spec);
   let parsed;
   try {
-    parsed = parseArgs({ options: config, allowPositionals: positionals });
+    parsed = parseArgs({ options: config, allowPositionals: positionals !== 0 });
   } catch (e) {
     console.error(`${e.message}\n\n${text}`);
+    process.exit(2);
+  }
+  const most = positionals === true ? Infinity : positionals;
+  if (parsed.positionals.length > most) {
+    console.error(`${most} argument(s) at most besides the options, not ${parsed.positionals.map((p) => JSON.stringify(p)).join(" ")}\n\n${text}`);
     process.exit(2);
   }
   if (parsed.values.help) {
@@ -72,13 +78,19 @@ export function oneOf(values, name, allowed) {
 /** `--name`'s value as a comma-separated list of whole numbers ≥ `min`
  *  (empty: none); refused naming the flag and the bad item otherwise. */
 export function wholeList(values, name, min = 1) {
-  return String(values[name])
+  return wholeItems(String(values[name]), `--${name}`, min);
+}
+
+/** `text` (a flag's value or a positional argument, named `label`) as a
+ *  comma-separated list of whole numbers ≥ `min` (empty: none). */
+export function wholeItems(text, label, min = 1) {
+  return text
     .split(",")
     .map((s) => s.trim())
     .filter(Boolean)
     .map((s) => {
       const n = Number(s);
-      if (!Number.isInteger(n) || n < min) refuse(`--${name}: whole numbers ≥ ${min}, comma-separated; not ${JSON.stringify(s)}`);
+      if (!Number.isInteger(n) || n < min) refuse(`${label}: whole numbers ≥ ${min}, comma-separated; not ${JSON.stringify(s)}`);
       return n;
     });
 }

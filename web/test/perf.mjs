@@ -9,7 +9,7 @@
 // avoidance-off figures. Then the lab's agents stepped per frame in workers
 // and the crowd's boids per frame (`--help` lists the options).
 import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
-import { options, whole, wholeList, choiceList, oneOf } from "./options.mjs";
+import { options, whole, wholeList, wholeItems, choiceList, oneOf } from "./options.mjs";
 import { resolve } from "node:path";
 import { loadavg } from "node:os";
 
@@ -39,13 +39,13 @@ N a worker per core (navigator.hardwareConcurrency).`,
     "crowd-rounds": { type: "string", default: "3", arg: "N", help: "rounds of the crowd's rows (medians)" },
     "crowd-modes": { type: "string", default: "0,1,N", arg: "M,M…", help: "the crowd's rows' modes" },
   },
-  { positionals: true },
+  { positionals: 2 },
 );
 const baseDirs = opts.base;
 const LOADS = whole(opts, "loads", 1);
 const SERVER = oneOf(opts, "server", ["inproc", "child", "both"]);
 // An empty size list ("") runs the first-frame loads alone.
-const sizes = (positionals[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const sizes = wholeItems(positionals[0] ?? "1000,10000", "SIZES");
 const onlyFirst = sizes.length === 0;
 const onlyWorkers = opts["only-workers"];
 const onlyCrowd = opts["only-crowd"];

@@ -18,7 +18,7 @@ const { positionals } = options(
   `Quantised η table variants: bytes, gunzip time, largest change; lossy variants written to OUTDIR.
 Usage: node web/test/table-quant.mjs [OUTDIR]   (default /tmp/eta-quant)`,
   {},
-  { positionals: true },
+  { positionals: 1 },
 );
 const out = resolve(positionals[0] ?? "/tmp/eta-quant");
 mkdirSync(out, { recursive: true });

@@ -26,7 +26,7 @@ Usage: node web/test/wasmnative.mjs [N] [options]   (N agents, default 10000; \`
     pkg: { type: "string", multiple: true, default: [], arg: "DIR", help: "a wasm package directory (default web/pkg)" },
     native: { type: "string", default: resolve(root, "target/release/examples/world_bench"), arg: "BIN", help: "the native world_bench binary" },
   },
-  { positionals: true },
+  { positionals: 1 },
 );
 const pkgs = values.pkg.map((d) => resolve(d));
 const native = resolve(values.native);
