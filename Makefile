@@ -132,9 +132,11 @@ test-smoke: setup-web wasm
 	node web/test/smoke.mjs
 
 # Seeded fuzz of the lab's URL decoder: 10,000 mutated fragments, each
-# decoded state built in the release wasm package (about 11 s).
+# decoded state built in the release wasm package (about 11 s);
+# URLFUZZ_ARGS="--cases N --seed S" for another run.
+URLFUZZ_ARGS ?=
 test-urlfuzz: setup-web wasm
-	node web/test/urlfuzz.mjs
+	node web/test/urlfuzz.mjs $(URLFUZZ_ARGS)
 
 # The type check, then the web sources' house rules (web/test/source.mjs:
 # no function in web/src over 150 lines, no comment naming an issue or a stop).
@@ -142,41 +144,48 @@ test-tsc: setup-web wasm
 	cd web && npx tsc --noEmit -p tsconfig.json
 	cd web && node test/source.mjs
 
-# The workers' continuing-jobs protocol on real threads in Node (~25 s).
+# The workers' continuing-jobs protocol on real threads in Node (~25 s;
+# PROTOCOL_ARGS="--frames N").
+PROTOCOL_ARGS ?=
 test-protocol: setup-web
-	cd web && node test/protocol.mjs
+	cd web && node test/protocol.mjs $(PROTOCOL_ARGS)
+
+# Extra flags for node in the node:test suites below, e.g.
+# NODE_TEST_ARGS=--test-name-pattern=drag: only the tests whose name matches
+# (the rest reported skipped).
+NODE_TEST_ARGS ?=
 
 # Playwright (playwright-core + Debian's chromium) against the built page.
 test-e2e: setup-browser web-build-test
-	node web/test/e2e.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e.mjs
 
 # Playwright against the gallery pages (crowd.html, wander.html); also prints
 # the crowd's step cost (boids stepped per 16.7 ms frame at 300/3,000/30,000).
 test-e2e-gallery: setup-browser web-build-test
-	node web/test/e2e-gallery.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e-gallery.mjs
 
 # Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build-test
-	node web/test/e2e-learn.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e-learn.mjs
 
 # axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
 # 390×844: no serious or critical violation; also prints the learn page's
 # bytes fetched and first contentful paint.
 test-e2e-axe: setup-browser web-build-test
-	node web/test/e2e-axe.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e-axe.mjs
 
 # Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build-test
-	node web/test/e2e-vehicle.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e-vehicle.mjs
 
 # Avoidance in the lab: the page plays the circle swap and reads the core's
 # overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
 # dragged by mouse and finger, the link; screenshots in artifacts/.
 test-e2e-avoid: setup-browser web-build-test
-	node web/test/e2e-avoid.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e-avoid.mjs
 
 # Performance paths in the browser: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
@@ -184,14 +193,16 @@ test-e2e-avoid: setup-browser web-build-test
 # the lab stepped in Web Workers (shared memory, by message without
 # cross-origin isolation, facing pairs) equals one core after 120 steps.
 test-e2e-perf: setup-browser web-build-test
-	node web/test/e2e-perf.mjs
+	node $(NODE_TEST_ARGS) web/test/e2e-perf.mjs
 
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
 # then wasm / native per funnelling agent update, and agents
 # stepped per 16.7 ms frame at 10k / 30k / 100k with 0, 1 and N workers.
 # First the time to the first frame, 9 fresh loads (median, p90, where the
 # time went); BENCH_WEB_ARGS="--base DIR" alternates them with another
-# build's test dist (web/dist-test), e.g. main's built into /tmp.
+# build's test dist (web/dist-test), e.g. main's built into /tmp; the rows'
+# sizes, rounds and modes are flags too (`node web/test/perf.mjs --help`),
+# e.g. BENCH_WEB_ARGS="--only-crowd --crowd-sizes 100000 --crowd-rounds 1".
 BENCH_WEB_ARGS ?=
 bench-web: setup-browser web-build-test bench-wasm-native
 	node web/test/perf.mjs 1000,10000 $(BENCH_WEB_ARGS)
@@ -200,14 +211,19 @@ bench-web: setup-browser web-build-test bench-wasm-native
 # thread, the rest; Linux /proc) on the lab at 100,000 agents and the crowd
 # at 150,000 / 200,000 boids, and the CPU 100,000 per frame would need
 # (BENCH_BUDGET_ARGS="--base DIR": against another build's test dist,
-# web/dist-test, same run; a build older than the test mode: its web/dist).
+# web/dist-test, same run; a build older than the test mode: its web/dist;
+# sizes, rounds and workers are flags too, `node web/test/budget.mjs --help`,
+# e.g. BENCH_BUDGET_ARGS="--rounds 3 --lab-sizes 100000 --crowd-sizes '' --workers 2").
+BENCH_BUDGET_ARGS ?=
 bench-budget: setup-browser web-build-test
 	node web/test/budget.mjs $(BENCH_BUDGET_ARGS)
 
 # η table build in Chromium's Web Workers and the cached reload,
-# per reference vehicle, REPS fresh contexts each (median, max, host load).
+# per reference vehicle, 5 fresh contexts each (median, max, host load;
+# BENCH_TABLES_ARGS="--reps N").
+BENCH_TABLES_ARGS ?=
 bench-tables: setup-browser web-build-test
-	node web/test/bench-tables.mjs
+	node web/test/bench-tables.mjs $(BENCH_TABLES_ARGS)
 
 # The same funnelling world natively (examples/world_bench.rs) and
 # in Node on the release wasm package, alternating rounds, one run; prints

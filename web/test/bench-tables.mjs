@@ -4,11 +4,17 @@
 // Prints every run, median and max per vehicle and the host load
 // (1-minute load average before and after), as the README quotes them.
 // The pedestrian's own table is the committed one, so its build is timed
-// at v_max 1.2 m/s (the e2e test's limit change). REPS=N sets the runs.
+// at v_max 1.2 m/s (the e2e test's limit change). `--reps N` sets the runs.
 import { serve, launch, openPage, waitReady } from "./harness.mjs";
+import { options, whole } from "./options.mjs";
 import { loadavg } from "node:os";
 
-const REPS = Number(process.env.REPS ?? 5);
+const { values } = options(
+  `The η table build in Chromium's Web Workers and the cached reload, per reference vehicle.
+Usage: node web/test/bench-tables.mjs [options]   (after \`make web-build-test\`; \`make bench-tables\`)`,
+  { reps: { type: "string", default: "5", arg: "N", help: "fresh browser contexts per vehicle (median, max)" } },
+);
+const REPS = whole(values, "reps", 1);
 const VEHICLES = {
   "pedestrian (vmax 1.2)": ["vmax=1.2", "1.19"],
   car: ["vmax=15&amax=3&wmax=0.8&awmax=2&anmax=4", "14.9"],

@@ -4,8 +4,8 @@
 // The frame counts of `perf.mjs` say how far a page is from the target;
 // they do not say why. This samples every thread of the browser it launched
 // (Linux /proc: user + system ticks per thread, over SAMPLE_MS) while a page
-// steps in WORKERS workers (default one per core), and divides by the states
-// drawn meanwhile (DIST: serve another build's dist instead of web/dist):
+// steps in `--workers` workers (default one per core), and divides by the
+// states drawn meanwhile:
 // - per drawn state, the CPU ms of the stepping workers, of the page's
 //   thread (drawing, Chromium's frame), and of every other thread (the
 //   compositor, the GPU process's display compositor, I/O);
@@ -16,18 +16,31 @@
 //   per second × ms per state, against 100 × cores %. Above it, the target
 //   needs cheaper states (the core's update, the drawing), not better
 //   scheduling; below it, the idle time is the lever.
-// The lab at LAB_SIZES agents (default 100,000, the page's maximum: 60 states
-// a second), the crowd at CROWD_SIZES boids (Test IV density; 150,000: 40 a
-// second), ROUNDS rounds each (default 2), one line per round.
-// `--base DIR` (repeatable): a previous build's dist measured in the same
-// run, the builds in rotating order each round; the summary then gives each
-// build's medians and, per base, the paired ratios of this build's rounds to
-// the base's (agents per frame, CPU per drawn state, the page's thread).
-// Usage: node web/test/budget.mjs [--base DIR]...  (after `make web-build`; `make bench-budget`)
+// The lab at `--lab-sizes` agents (default 100,000, the page's maximum: 60
+// states a second), the crowd at `--crowd-sizes` boids (Test IV density;
+// 150,000: 40 a second), `--rounds` rounds each (default 2), one line per
+// round. `--base DIR` (repeatable): a previous build's dist measured in the
+// same run, the builds in rotating order each round; the summary then gives
+// each build's medians and, per base, the paired ratios of this build's
+// rounds to the base's (agents per frame, CPU per drawn state, the page's
+// thread). `--help` lists the options.
 import { existsSync, readdirSync, readFileSync } from "node:fs";
-import { parseArgs } from "node:util";
 import { cpus, loadavg } from "node:os";
 import { serveBuilds, launch, openPage, waitReady, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
+import { options, whole, wholeList } from "./options.mjs";
+
+const { values } = options(
+  `CPU per drawn state per thread group (workers, page, other) in headless Chromium.
+Usage: node web/test/budget.mjs [options]   (after \`make web-build-test\`; \`make bench-budget\`)`,
+  {
+    "lab-sizes": { type: "string", default: "100000", arg: "N,N…", help: "the lab's agent counts (empty: no lab rows)" },
+    "crowd-sizes": { type: "string", default: "150000,200000", arg: "N,N…", help: "the crowd's boid counts, Test IV density (empty: no crowd rows)" },
+    rounds: { type: "string", default: "2", arg: "N", help: "rounds of every size and build" },
+    workers: { type: "string", default: String(cpus().length), arg: "N", help: "workers stepping each page (a worker per core)" },
+    dist: { type: "string", arg: "DIR", help: "serve this build from DIR instead of web/dist-test" },
+    ...BASE_OPTION,
+  },
+);
 
 if (!existsSync("/proc/self/task")) {
   console.error("budget.mjs: needs Linux's /proc (per-thread CPU time)");
@@ -35,11 +48,10 @@ if (!existsSync("/proc/self/task")) {
 }
 const SAMPLE_MS = 4000;
 const TARGET = 100_000;
-const list = (v, d) => (v ?? d).split(",").filter(Boolean).map(Number);
-const labSizes = list(process.env.LAB_SIZES, "100000");
-const crowdSizes = list(process.env.CROWD_SIZES, "150000,200000");
-const rounds = Number(process.env.ROUNDS ?? 2);
-const workers = Number(process.env.WORKERS ?? cpus().length);
+const labSizes = wholeList(values, "lab-sizes");
+const crowdSizes = wholeList(values, "crowd-sizes");
+const rounds = whole(values, "rounds", 1);
+const workers = whole(values, "workers", 0);
 const TICK_MS = 1000 / 100; // USER_HZ: Linux reports ticks of 10 ms
 
 /** The browser's processes: `root` and its descendants (by parent pid). */
@@ -96,9 +108,7 @@ function sample(root) {
   return out;
 }
 
-const { values } = parseArgs({ options: BASE_OPTION });
-const baseDirs = values.base;
-const { builds, close } = await serveBuilds(baseDirs, process.env.DIST);
+const { builds, close } = await serveBuilds(values.base, values.dist);
 const browser = await launch();
 // Playwright starts the browser as this process's child: its processes are
 // our descendants whose command line names Chromium.

@@ -8,12 +8,18 @@
 // cost of copying positions + velocities out.
 import { readFileSync } from "node:fs";
 import { resolve } from "node:path";
-import { parseArgs } from "node:util";
-const { values, positionals: pkgs } = parseArgs({
-  allowPositionals: true,
-  options: { n: { type: "string", default: "30000" }, scaled: { type: "boolean", default: false }, simd: { type: "boolean", default: false } },
-});
-const N = Number(values.n);
+import { options, whole } from "./options.mjs";
+const { values, positionals: pkgs } = options(
+  `Crowd step cost in Node for each wasm package directory given, rounds alternating.
+Usage: node web/test/crowdstep.mjs PKG_DIR... [options]`,
+  {
+    n: { type: "string", default: "30000", arg: "N", help: "boids" },
+    scaled: { type: "boolean", default: false, help: "Test IV density (pathway scaled by n / 300); metrics on / off instead of separation on / off" },
+    simd: { type: "boolean", default: false, help: "the package's steering_simd_bg.wasm" },
+  },
+  { positionals: true },
+);
+const N = whole(values, "n", 1);
 const { scaled, simd } = values;
 const libs = [];
 for (const pkg of pkgs) {

@@ -42,10 +42,11 @@ export async function serve(outDir = testDist) {
   return { server, url };
 }
 
-/** The `--base DIR` option of the benches (repeatable, node:util
- *  parseArgs): the dists of other builds to measure beside this one in the
- *  same run. */
-export const BASE_OPTION = { base: { type: "string", multiple: true, default: [] } };
+/** The `--base DIR` option of the benches (repeatable; test/options.mjs):
+ *  the dists of other builds to measure beside this one in the same run. */
+export const BASE_OPTION = {
+  base: { type: "string", multiple: true, default: [], arg: "DIR", help: "another build's dist (e.g. main's web/dist-test) measured beside this one, same run" },
+};
 
 /** Serves this build (web/dist-test, or `outDir`) and each base dist: `url`,
  *  `bases` ({ dir, url, server }), `builds` ([name, url], "this" first) and
@@ -83,6 +84,8 @@ export function serveChild(outDir) {
   });
 }
 
+/** Chromium from Debian's package, or the binary at $CHROMIUM: where the
+ *  browser is installed is a fact of the host, not an option of a run. */
 export async function launch() {
   return chromium.launch({
     executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
@@ -131,11 +134,11 @@ export function settle(page) {
 /** One test of a suite, on node:test (its runner prints each result and,
  *  at the end, the suite's pass / fail counts; a failure sets the exit
  *  code): awaited in turn, so a suite's tests share its browser and run in
- *  order. CHECK=text runs only the tests whose name contains it (the rest
- *  are reported skipped). */
+ *  order. To run some of a suite's tests, the runner's own filter:
+ *  `node --test-name-pattern=REGEX web/test/e2e.mjs` (the rest are reported
+ *  skipped; `make test-e2e NODE_TEST_ARGS=--test-name-pattern=REGEX`). */
 export function check(name, f) {
-  const only = process.env.CHECK;
-  return test(name, { skip: only && !name.includes(only) ? `CHECK=${only}` : false }, () => f());
+  return test(name, () => f());
 }
 
 /** Counts the pixels of the canvas `selector` (`index`: which match) per

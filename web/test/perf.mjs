@@ -5,38 +5,56 @@
 // waits 0.5 s, then samples ~2 s with performance.now(): mean rAF interval,
 // mean and p95 work per frame (core step + drawing) and core step time.
 // Then the largest N again with each avoidance method of AVOID
-// (default separation,orca; the second argument), beside the same run's avoidance-off figures.
+// (default separation,orca; the second argument), beside the same run's
+// avoidance-off figures. Then the lab's agents stepped per frame in workers
+// and the crowd's boids per frame (`--help` lists the options).
 import { serveBuilds, serveChild, launch, openPage, waitReady, artifacts, loadCrowd, BASE_OPTION, rotated } from "./harness.mjs";
-import { parseArgs } from "node:util";
+import { options, whole, wholeList, wholeItems, choiceList, oneOf } from "./options.mjs";
 import { resolve } from "node:path";
 import { loadavg } from "node:os";
 
-const { values: opts, positionals } = parseArgs({
-  allowPositionals: true,
-  options: {
-    // `--base DIR` (repeatable): a previous build's dist (e.g. main's, built
-    // into /tmp) is served beside this one and the first-frame loads and the
-    // crowd rows alternate between them, in rotating order.
+const MODES = ["0", "1", "N"];
+const { values: opts, positionals } = options(
+  `Frame times, first-frame loads, workers and crowd rows in headless Chromium.
+Usage: node web/test/perf.mjs [SIZES [AVOID]] [options]   (after \`make web-build-test\`; \`make bench-web\`)
+  SIZES  the lab's agent counts for the frame-time rows (default 1000,10000;
+         "" runs the first-frame loads alone)
+  AVOID  avoidance methods run at the largest size (default separation,orca)
+Modes (--worker-modes, --crowd-modes): 0 the page's thread, 1 one worker,
+N a worker per core (navigator.hardwareConcurrency).`,
+  {
+    // Served beside this one: the first-frame loads and the workers' and
+    // crowd's rows alternate between the builds, in rotating order.
     ...BASE_OPTION,
-    loads: { type: "string", default: "9" },
-    // `--server inproc|child|both`: the first-frame loads' builds served by a
-    // preview server in this process (the default), by one in a child
-    // process (test/serve.mjs: a user's server does not share the browser
-    // driver's event loop), or both, alternating in one run.
-    server: { type: "string", default: "inproc" },
+    loads: { type: "string", default: "9", arg: "N", help: "fresh loads per build for the time to the first frame" },
+    // A user's server does not share the browser driver's event loop: the
+    // child-process server (test/serve.mjs) measures without that.
+    server: { type: "string", default: "inproc", arg: "inproc|child|both", help: "first-frame loads served in this process, by a child process, or both alternating" },
+    "only-workers": { type: "boolean", default: false, help: "the workers' rows alone" },
+    "only-crowd": { type: "boolean", default: false, help: "the crowd's rows alone" },
+    "worker-sizes": { type: "string", default: "10000,30000,100000", arg: "N,N…", help: "the lab's agent counts in the workers' rows" },
+    "worker-rounds": { type: "string", default: "1", arg: "N", help: "rounds of the workers' rows" },
+    "worker-modes": { type: "string", default: "0,1,N", arg: "M,M…", help: "the workers' rows' modes" },
+    "crowd-sizes": { type: "string", default: "30000,100000,150000,200000", arg: "N,N…", help: "the crowd's boid counts (Test IV density)" },
+    "crowd-rounds": { type: "string", default: "3", arg: "N", help: "rounds of the crowd's rows (medians)" },
+    "crowd-modes": { type: "string", default: "0,1,N", arg: "M,M…", help: "the crowd's rows' modes" },
   },
-});
+  { positionals: 2 },
+);
 const baseDirs = opts.base;
-const LOADS = Number(opts.loads);
-const SERVER = opts.server;
-if (!["inproc", "child", "both"].includes(SERVER)) throw new Error(`--server: inproc, child or both, not ${SERVER}`);
+const LOADS = whole(opts, "loads", 1);
+const SERVER = oneOf(opts, "server", ["inproc", "child", "both"]);
 // An empty size list ("") runs the first-frame loads alone.
-const sizes = (positionals[0] ?? "1000,10000").split(",").filter(Boolean).map(Number);
+const sizes = wholeItems(positionals[0] ?? "1000,10000", "SIZES");
 const onlyFirst = sizes.length === 0;
-const onlyWorkers = process.env.ONLY_WORKERS === "1";
-// ONLY_CROWD=1: the crowd page's rows alone (crowd boids per frame).
-// CROWD_SIZES (30000,100000,150000,200000), CROWD_ROUNDS (3), CROWD_MODES (0,1,N: page's thread, 1 worker, a worker per core).
-const onlyCrowd = process.env.ONLY_CROWD === "1";
+const onlyWorkers = opts["only-workers"];
+const onlyCrowd = opts["only-crowd"];
+const workerSizes = wholeList(opts, "worker-sizes");
+const workerRounds = whole(opts, "worker-rounds", 1);
+const workerModes = choiceList(opts, "worker-modes", MODES);
+const crowdSizes = wholeList(opts, "crowd-sizes");
+const crowdRounds = whole(opts, "crowd-rounds", 1);
+const crowdModes = choiceList(opts, "crowd-modes", MODES);
 const { url, bases, builds, close } = await serveBuilds(baseDirs);
 const children = [];
 if (SERVER !== "inproc" && !onlyWorkers) {
@@ -140,14 +158,13 @@ try {
   // page's thread and to one worker. Agents stepped per frame = agent
   // updates finished / (sampled wall time / 16.7 ms); every frame draws the
   // last complete state (fps), "states" = frames that drew a new one.
-  const wsizes = onlyFirst || onlyCrowd ? [] : (process.env.WORKER_SIZES ?? "10000,30000,100000").split(",").map(Number);
-  const rounds = Number(process.env.WORKER_ROUNDS ?? 1);
+  const wsizes = onlyFirst || onlyCrowd ? [] : workerSizes;
+  const rounds = workerRounds;
   let cores = 0;
   const rows = new Map();
   const drawnRows = new Map();
   // With `--base DIR`: every row for each build, this one and the bases,
   // in rotating order (the crowd's rows too; `builds`).
-  const workerModes = (process.env.WORKER_MODES ?? "0,1,N").split(",");
   for (let round = 0; round < rounds; round++) {
     for (const n of wsizes) {
       // Alternating order by round, so a drift in the host's load does not favour one mode.
@@ -203,13 +220,11 @@ try {
   // Test IV's density (Parker 10 %, separation, pathway scaled by n / 300:
   // `window.__crowd.loadScaled`), the crowd on the page's thread
   // (workers=0), in one worker and in as many as the browser reports cores,
-  // same run, alternating order by round; medians of CROWD_ROUNDS (3)
+  // same run, alternating order by round; medians of `--crowd-rounds` (3)
   // rounds. Per frame = boids of the states drawn (each a complete new
   // step of every boid) / (sampled wall time / 16.7 ms).
-  const csizes = onlyWorkers || (onlyFirst && !onlyCrowd) ? [] : (process.env.CROWD_SIZES ?? "30000,100000,150000,200000").split(",").filter(Boolean).map(Number);
-  const crounds = Number(process.env.CROWD_ROUNDS ?? 3);
-  // CROWD_MODES (default "0,1,N"): page's thread, 1 worker, one per core.
-  const crowdModes = (process.env.CROWD_MODES ?? "0,1,N").split(",");
+  const csizes = onlyWorkers || (onlyFirst && !onlyCrowd) ? [] : crowdSizes;
+  const crounds = crowdRounds;
   // With `--base DIR`: every row for each build too, this one and the
   // bases in rotating order (the same-run baseline of a change; `builds`).
   const crows = new Map();

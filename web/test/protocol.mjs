@@ -14,7 +14,8 @@
 // (`runIndependent`, 2 and 3 workers) and the crowd's (`runContinuing`,
 // its barrier; a worker also checks that the step it reads from is whole).
 //
-// Usage: node test/protocol.mjs   (about 25 s; node:test, exits 1 on a failure)
+// Usage: node test/protocol.mjs [--frames N]   (about 25 s; node:test,
+// exits 1 on a failure; `--help` lists the options)
 
 import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
 import { tmpdir } from "node:os";
@@ -23,6 +24,13 @@ import { Worker } from "node:worker_threads";
 import { transformWithOxc } from "vite";
 import assert from "node:assert/strict";
 import { test } from "node:test";
+import { options, whole } from "./options.mjs";
+
+const { values } = options(
+  `The workers' continuing-jobs protocol (src/workers/continuing.ts) on real threads in Node.
+Usage: node test/protocol.mjs [options]   (from web/; \`make test-protocol\`)`,
+  { frames: { type: "string", default: "200", arg: "N", help: "page frames per protocol run" } },
+);
 
 const here = new URL(".", import.meta.url).pathname;
 const dir = mkdtempSync(join(tmpdir(), "protocol-"));
@@ -42,7 +50,7 @@ function moduleFor(depth, lead) {
 }
 
 const SLICE = 4096;
-const FRAMES = Number(process.env.PROTOCOL_FRAMES ?? 200);
+const FRAMES = whole(values, "frames", 1);
 
 // The worker: its slice of each step's buffer set to the step number, in
 // random time (0–3 ms busy); the note keeps the step's buffer.

@@ -11,10 +11,15 @@ import { readFileSync, writeFileSync, mkdirSync } from "node:fs";
 import { gzipSync, gunzipSync, brotliCompressSync, constants } from "node:zlib";
 import { resolve, dirname } from "node:path";
 import { fileURLToPath } from "node:url";
-import { parseArgs } from "node:util";
+import { options } from "./options.mjs";
 
 const root = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
-const { positionals } = parseArgs({ allowPositionals: true });
+const { positionals } = options(
+  `Quantised η table variants: bytes, gunzip time, largest change; lossy variants written to OUTDIR.
+Usage: node web/test/table-quant.mjs [OUTDIR]   (default /tmp/eta-quant)`,
+  {},
+  { positionals: 1 },
+);
 const out = resolve(positionals[0] ?? "/tmp/eta-quant");
 mkdirSync(out, { recursive: true });
 const bytes = readFileSync(resolve(root, "tables/eta.bin"));

@@ -11,6 +11,7 @@
 // state re-encodes to a fragment that decodes with no message to the same
 // state. The avoidance method (`avoid`) and the obstacles (`obs`)
 // too, set in the core with setAvoidance / setObstacles. Prints "urlfuzz: N cases, M refused values, T ms" (node:test).
+// `--cases N --seed S` set the run (`--help`).
 import { readFileSync, writeFileSync, mkdtempSync, rmSync } from "node:fs";
 import { tmpdir } from "node:os";
 import { fileURLToPath, pathToFileURL } from "node:url";
@@ -18,12 +19,22 @@ import { dirname, resolve, join } from "node:path";
 import assert from "node:assert/strict";
 import { test } from "node:test";
 import { rolldown } from "rolldown";
+import { options, whole } from "./options.mjs";
+
+const { values } = options(
+  `Seeded fuzz of the lab's URL decoder against the release wasm package.
+Usage: node web/test/urlfuzz.mjs [options]   (after \`make wasm\`; \`make test-urlfuzz\`)`,
+  {
+    cases: { type: "string", default: "10000", arg: "N", help: "mutated fragments decoded" },
+    seed: { type: "string", default: "16", arg: "S", help: "the fuzzer's seed (a 32-bit whole number)" },
+  },
+);
 
 const here = dirname(fileURLToPath(import.meta.url));
 const src = resolve(here, "../src/lab");
 const root = resolve(here, "../..");
-const CASES = Number(process.env.URLFUZZ_CASES ?? 10_000);
-const SEED = Number(process.env.URLFUZZ_SEED ?? 16);
+const CASES = whole(values, "cases", 1);
+const SEED = whole(values, "seed");
 
 // The page's decoder, as the page runs it.
 const tmp = mkdtempSync(join(tmpdir(), "urlfuzz-"));

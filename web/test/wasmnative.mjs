@@ -15,14 +15,19 @@ import { fileURLToPath } from "node:url";
 import { dirname, resolve } from "node:path";
 import { existsSync } from "node:fs";
 import { pathToFileURL } from "node:url";
-import { parseArgs } from "node:util";
+import { options } from "./options.mjs";
 
 const here = dirname(fileURLToPath(import.meta.url));
 const root = resolve(here, "../..");
-const { values, positionals: pos } = parseArgs({
-  allowPositionals: true,
-  options: { pkg: { type: "string", multiple: true, default: [] }, native: { type: "string", default: resolve(root, "target/release/examples/world_bench") } },
-});
+const { values, positionals: pos } = options(
+  `Wasm / native per funnelling agent update, alternating rounds in one run.
+Usage: node web/test/wasmnative.mjs [N] [options]   (N agents, default 10000; \`make bench-wasm-native\`)`,
+  {
+    pkg: { type: "string", multiple: true, default: [], arg: "DIR", help: "a wasm package directory (default web/pkg)" },
+    native: { type: "string", default: resolve(root, "target/release/examples/world_bench"), arg: "BIN", help: "the native world_bench binary" },
+  },
+  { positionals: 1 },
+);
 const pkgs = values.pkg.map((d) => resolve(d));
 const native = resolve(values.native);
 if (!pkgs.length) pkgs.push(resolve(here, "../pkg"));
