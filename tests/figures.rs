@@ -430,3 +430,90 @@ fn the_report_is_the_same_text_for_the_same_records() {
                 .contains("2099")
     );
 }
+
+/// Where test `name` starts in `text`: the `fn name(` line right after a
+/// `#[test]` line, inside `mod m {` when the source names module `m`.
+fn test_fn(text: &str, path: &str) -> Result<usize, String> {
+    let mut parts: Vec<&str> = path.split("::").collect();
+    let name = parts.pop().ok_or("no test name")?;
+    let mut from = 0;
+    for m in parts {
+        from += text[from..]
+            .find(&format!("mod {m} {{"))
+            .ok_or(format!("no `mod {m}`"))?;
+    }
+    let at = from
+        + text[from..]
+            .find(&format!("fn {name}("))
+            .ok_or(format!("no `fn {name}(`"))?;
+    let attr = text[..at].trim_end().lines().last().unwrap_or("").trim();
+    if attr == "#[test]" {
+        Ok(at)
+    } else {
+        Err(format!(
+            "`fn {name}` is not a #[test] (preceded by `{attr}`)"
+        ))
+    }
+}
+
+#[test]
+fn every_claim_row_names_an_existing_test_that_asserts() {
+    // Each row of the fidelity table is a committed claim record; its
+    // `source` is the test that measured it. That test must exist as a
+    // #[test] fn of the file (and module) named, spell the record's name
+    // (so it is the one writing it), and assert something: a row whose
+    // test was renamed or deleted, or that records without asserting,
+    // fails here.
+    let store = store();
+    let mut rows = 0;
+    let mut bad = Vec::new();
+    for r in store.values() {
+        if r.claim.is_none() {
+            continue;
+        }
+        rows += 1;
+        let Some((file, path)) = r.source.split_once("::") else {
+            bad.push(format!("{}: source names no test (`file::test`)", r.source));
+            continue;
+        };
+        let text = match std::fs::read_to_string(root().join(file)) {
+            Ok(t) => t,
+            Err(e) => {
+                bad.push(format!("{}: {file}: {e}", r.source));
+                continue;
+            }
+        };
+        let name = path.rsplit("::").next().unwrap_or(path);
+        match test_fn(&text, path) {
+            Err(e) => bad.push(format!("{}: {e}", r.source)),
+            Ok(at) => {
+                let rest = &text[at..];
+                let body = &rest[..rest[1..].find("#[test]").map_or(rest.len(), |e| e + 1)];
+                if !text.contains(&format!("\"{name}\"")) {
+                    bad.push(format!("{}: the file never spells \"{name}\"", r.source));
+                }
+                if !body.contains("assert") {
+                    bad.push(format!("{}: the test asserts nothing", r.source));
+                }
+            }
+        }
+    }
+    assert!(
+        bad.is_empty(),
+        "claim rows without their test:\n{}",
+        bad.join("\n")
+    );
+    // The fidelity tests' rows: 000, 001 (both readings), 003, 004.
+    assert!(rows >= 38, "{rows} claim records in docs/figures");
+}
+
+#[test]
+fn the_test_finder_refuses_a_missing_or_plain_fn() {
+    let text = "#[test]\nfn a() {}\nfn b() {}\nmod m {\n    #[test]\n    fn c() {}\n}\n";
+    assert_eq!(test_fn(text, "a"), Ok(text.find("fn a(").unwrap()));
+    assert!(test_fn(text, "b").unwrap_err().contains("not a #[test]"));
+    assert!(test_fn(text, "m::c").is_ok());
+    assert!(test_fn(text, "m::a").is_err());
+    assert!(test_fn(text, "n::c").unwrap_err().contains("no `mod n`"));
+    assert!(test_fn(text, "z").unwrap_err().contains("no `fn z(`"));
+}
