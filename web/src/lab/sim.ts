@@ -12,7 +12,7 @@ import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields"
 import { funnelConfig, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import { recipeFor } from "./recipe";
-import { fitPlayground, goalConfig, type LabState, type Pose } from "./state";
+import { fitPlayground, goalConfig, stageInsets, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { HereWorld, type LabWorld, type Took } from "./world";
@@ -437,13 +437,13 @@ export class LabSim {
     if (b.kind === "scenario") {
       const sc = info.scenario;
       this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
-      if (fit && sc) this.view.fit(...sc.box);
+      if (fit && sc) this.view.fit(...sc.box, stageInsets(this.view, 40));
     } else {
       this.focus = info.count > 0 ? 0 : -1;
       this.onScene(PLAYGROUND_HELP, true);
       if (fit && b.spawn) {
         const r = b.spawn.extent + 3;
-        this.view.fit(-r, -r, r, r);
+        this.view.fit(-r, -r, r, r, stageInsets(this.view, 40));
       } else if (fit) fitPlayground(this.view, this.st);
     }
     this.trails.record(0, this.state, this.stride, this.count);

@@ -1,6 +1,6 @@
 // The lab's user-editable state: everything the URL shares. Plain data.
 
-import type { View } from "../view";
+import type { Insets, View } from "../view";
 import type { GoalConfig } from "../wasm";
 
 export interface Pose {
@@ -152,5 +152,17 @@ export function goalConfig(st: LabState): GoalConfig {
 export function fitPlayground(view: View, st: LabState): void {
   const xs = [st.vehicle.x, st.target.x];
   const ys = [st.vehicle.y, st.target.y];
-  view.fit(Math.min(...xs) - 3, Math.min(...ys) - 3, Math.max(...xs) + 3, Math.max(...ys) + 3, 60);
+  // A phone's stage is small: less world round the two, so that the
+  // target's tolerance circle is not a dot; the handles (56 px) fit in the margins.
+  const pad = view.width < PHONE_PX ? 1.2 : 3;
+  view.fit(Math.min(...xs) - pad, Math.min(...ys) - pad, Math.max(...xs) + pad, Math.max(...ys) + pad, stageInsets(view, 60));
+}
+
+/** Below this stage width (CSS px) the lab lays out for a phone. */
+export const PHONE_PX = 560;
+
+/** The margins a fit keeps on the lab's stage: `margin` on a wide one; on
+ *  a phone, room for the folded HUD above and the legend below. */
+export function stageInsets(view: View, margin: number): number | Insets {
+  return view.width < PHONE_PX ? { left: 28, right: 28, top: 76, bottom: 64 } : margin;
 }
