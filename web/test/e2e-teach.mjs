@@ -180,6 +180,29 @@ try {
       assert.equal(back, false);
     });
 
+    await check(`${tag}: the reading selector puts the papers' controller or ours in force and names it as the core does`, async () => {
+      const label = () => page.locator(".controller-label").textContent();
+      assert.equal(await label(), "In force: ours standard");
+      await page.selectOption("#reading", "paper");
+      await page.waitForFunction(() => /paper 000 standard/.test(document.querySelector(".controller-label").textContent));
+      const core = await page.evaluate(() => window.__lab.funnel());
+      assert.deepEqual([core.bound.kind, core.gain, core.seekThreshold, core.aim, core.terminal ?? null], ["literal", 1, 1, "centre", null]);
+      assert.deepEqual([await page.inputValue("#mu-bound"), await page.inputValue("#aim"), await page.inputValue("#pursuit")], ["lit", "centre", "off"]);
+      await page.waitForFunction(() => location.hash.includes("rd=paper"), null, { timeout: 3000 });
+      await page.locator("#mu-gain").fill("1.5");
+      await page.waitForFunction(() => /custom standard/.test(document.querySelector(".controller-label").textContent));
+      assert.equal(await page.inputValue("#reading"), "custom");
+      await page.selectOption("#preset", "p001_fig6c_relaxed");
+      await page.waitForFunction(() => window.__lab.state().preset === "p001_fig6c_relaxed" && window.__lab.count() === 1);
+      await page.selectOption("#reading", "paper");
+      await page.waitForFunction(() => /paper 001 relaxed/.test(document.querySelector(".controller-label").textContent));
+      await page.selectOption("#reading", "ours");
+      await page.waitForFunction(() => /ours relaxed/.test(document.querySelector(".controller-label").textContent));
+      await page.selectOption("#preset", "");
+      await page.waitForFunction(() => window.__lab.count() === 1 && /ours standard/.test(document.querySelector(".controller-label").textContent));
+      console.log(`# ${tag}: reading selector: ours standard → paper 000 standard → custom standard; p001 Fig. 6c: paper 001 relaxed → ours relaxed`);
+    });
+
     await check(`${tag}: the β number box shows its whole number`, async () => {
       const fits = await page.$eval(".numbox input", () => {
         const i = document.querySelector("#beta")?.closest(".slider")?.querySelector(".numbox input");

@@ -203,7 +203,7 @@ try {
     for (const id of ["aim", "pursuit", "relaxed-aim"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
     // The page's defaults are the core's.
     assert.deepEqual(await coreFunnel(page), CORE_DEFAULT);
-    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 });
+    assert.deepEqual(await page.evaluate(() => window.__lab.state().funnel), { reading: "ours", bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 });
     assert.equal(await page.inputValue("#mu-gain"), "2");
     assert.equal(await page.inputValue("#seek-th"), "0.25");
     const n = await page.evaluate(() => window.__lab.count());

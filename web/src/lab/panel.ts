@@ -90,7 +90,8 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   const relaxedBox = checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
   relaxedBox.el.title = "paper 001: any point of the disk and any heading within β ± ε_tol is a valid goal";
 
-  funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); }, (parent, url, w, onInput) => numeric(parent, url, w, onInput));
+  const controller = funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); }, (parent, url, w, onInput) => numeric(parent, url, w, onInput));
+  sim.onController = (error) => controller.inForce(sim.controllerLabel(), error);
 
   const limBox = section(panel, "Vehicle limits");
   const lim = (url: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax" | "kp" | "kd", hi: number): void => {

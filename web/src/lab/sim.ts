@@ -9,7 +9,7 @@ import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
 import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
-import { funnelConfig, relaxedConfig } from "./funnelsettings";
+import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import { recipeFor } from "./recipe";
 import { fitPlayground, goalConfig, stageInsets, type LabState, type Pose } from "./state";
@@ -76,6 +76,15 @@ export class LabSim {
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
   onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
+  /** Called once the controller's settings are in force (after an edit or a build). */
+  onController: (error: string | null) => void = () => {};
+
+  /** The core's name for the controller in force (`Lab.controllerLabel`:
+   *  "paper 001 relaxed", "ours standard", "custom standard", …), where the
+   *  world steps on this thread; null where it steps in workers. */
+  controllerLabel(): string | null {
+    return this.world.core()?.controllerLabel() ?? null;
+  }
   /** The η table's status (the HUD's table line). */
   table: TableStatus;
   /** The world: stepped by the page's core (`here`) or by the workers. */
@@ -327,7 +336,7 @@ export class LabSim {
 
   /** The page's controller settings to the world (presets included). */
   applyFunnel(): void {
-    this.edit({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel) });
+    this.edit({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel), reading: readingOf(this.st.funnel) }, (a) => this.onController(a.error));
   }
 
   /** The focus agent's goal from the page's state. */
@@ -447,6 +456,7 @@ export class LabSim {
       } else if (fit) fitPlayground(this.view, this.st);
     }
     this.trails.record(0, this.state, this.stride, this.count);
+    this.onController(null);
     this.dirty = true;
   }
 
