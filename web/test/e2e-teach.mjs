@@ -216,6 +216,48 @@ try {
       assert.equal(fits, true);
     });
 
+    await check(`${tag}: learn §3 measures a seek simulation against a table lookup on this machine`, async () => {
+      const p = await context.newPage();
+      await p.goto(`${url}learn.html`);
+      await p.waitForFunction(() => /^\d/.test(document.querySelector('[data-live="table-ratio"]')?.textContent ?? ""), null, { timeout: 30000 });
+      const r = await p.evaluate(() => Object.fromEntries(["table-sim-us", "table-lookup-us", "table-ratio", "table-sim-frame", "table-lookup-frame"].map((k) => [k, document.querySelector(`[data-live="${k}"]`).textContent])));
+      console.log(`# ${tag}: learn §3 on this host: seek simulation ${r["table-sim-us"]}, lookup ${r["table-lookup-us"]}, ratio ${r["table-ratio"]}; 1,000 agents: ${r["table-sim-frame"]} vs ${r["table-lookup-frame"]} per frame`);
+      assert.ok(Number(r["table-ratio"].replace(/,/g, "")) > 10, JSON.stringify(r));
+      await p.close();
+    });
+
+    await check(`${tag}: crowd explains Paper 003 and its tests and has one boid-count control; wander tiles have titles, a line per panel, one scale per row`, async () => {
+      const c = await context.newPage();
+      await c.goto(`${url}crowd.html`);
+      await c.waitForFunction(() => window.__crowd?.ready);
+      const crowd = await c.evaluate(() => ({
+        text: document.querySelector("#panel").textContent,
+        counts: document.querySelectorAll("#boids, #boids-slider, [id^='boids-'][id$='0'], #boids-1").length,
+      }));
+      assert.match(crowd.text, /Paper 003 is a student report/);
+      for (const t of ["Test I", "Test II", "Test III", "Test IV", "What to compare"]) assert.ok(crowd.text.includes(t), t);
+      assert.equal(crowd.counts, 1, "one boid-count control");
+      await c.close();
+      const w = await context.newPage();
+      await w.goto(`${url}wander.html`);
+      await w.waitForFunction(() => window.__wander?.ready && !window.__wander.busy() && window.__wander.frames > 2, null, { timeout: 60000 });
+      const g = await w.evaluate(() => ({
+        captions: [...document.querySelectorAll(".tile .label")].map((e) => e.textContent),
+        compare: document.querySelectorAll(".wpanel .compare").length,
+        panels: window.__wander.panels(),
+        height: document.documentElement.scrollHeight,
+      }));
+      assert.ok(g.captions.every((t) => !/screenshot\d/.test(t)), "no image file names in the titles");
+      assert.equal(g.compare, g.panels.length);
+      for (const p of g.panels) {
+        const rows = new Map();
+        for (const s of p.scales) rows.set(s.top, [...(rows.get(s.top) ?? []), s.scale]);
+        for (const [top, scales] of rows) assert.ok(scales.every((x) => Math.abs(x - scales[0]) < 1e-9 * scales[0]), `${p.name} row at ${top}: ${scales}`);
+      }
+      console.log(`# ${tag}: wander gallery ${g.height} px tall, ${g.captions.length} tiles`);
+      await w.close();
+    });
+
     await check(`${tag}: no console errors`, async () => {
       assert.deepEqual(problems.filter((p) => !/warning/.test(p)), []);
     });
