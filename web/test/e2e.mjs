@@ -11,7 +11,10 @@ import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
 
 /** The core's funnelling settings as the page sets them (JSON: absent options drop out). */
-const CORE_DEFAULT = { bound: { kind: "turningRadius", factor: 8 }, gain: 2, seekThreshold: 0.25, aim: "entry", minBoundRadius: 1, terminal: { lookahead: 1, heading: 0.5, range: 1 } };
+const CORE_DEFAULT = {
+  bound: { kind: "turningRadius", factor: 8 }, gain: 2, seekThreshold: 0.25, aim: "entry", minBoundRadius: 1, terminal: { lookahead: 1, heading: 0.5, range: 1 },
+  reachability: "vote", orientationOnly: "stop", tolerance: "latched", lead: true, orbitFree: true, commitTurn: true,
+};
 const coreFunnel = (page) => page.evaluate(() => JSON.parse(JSON.stringify(window.__lab.funnel())));
 
 
