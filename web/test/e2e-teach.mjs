@@ -223,6 +223,7 @@ try {
       const r = await p.evaluate(() => Object.fromEntries(["table-sim-us", "table-lookup-us", "table-ratio", "table-sim-frame", "table-lookup-frame"].map((k) => [k, document.querySelector(`[data-live="${k}"]`).textContent])));
       console.log(`# ${tag}: learn §3 on this host: seek simulation ${r["table-sim-us"]}, lookup ${r["table-lookup-us"]}, ratio ${r["table-ratio"]}; 1,000 agents: ${r["table-sim-frame"]} vs ${r["table-lookup-frame"]} per frame`);
       assert.ok(Number(r["table-ratio"].replace(/,/g, "")) > 10, JSON.stringify(r));
+      await p.locator("#table .prose").screenshot({ path: resolve(SHOTS, `learn-table-${tag}.png`) });
       await p.close();
     });
 

@@ -303,7 +303,7 @@ try {
     assert.match(text, /th="2"/);
     assert.match(text, /aim="left"/);
     assert.match(text, /lp="2"/);
-    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 });
+    assert.deepEqual(await p5.page.evaluate(() => window.__lab.state().funnel), { reading: "ours", bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 });
     assert.deepEqual(await coreFunnel(p5.page), CORE_DEFAULT);
     assert.equal(await p5.page.inputValue("#mu-bound"), "tr");
     await shot(p5.page, "11-bad-controller-link-message");
