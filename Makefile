@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
+	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
 	npm test-npm test-library-user figures figures-full
 
 setup: setup-rust setup-browser setup-web
@@ -108,7 +108,7 @@ wasm: setup-rust
 
 # web/dist, the shipped build: no test hook in it (checked: HOOK_NAMES, the
 # test hooks' globals and their own method names).
-HOOK_NAMES := __lab|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames
+HOOK_NAMES := __lab|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 	if grep -rnoE --include='*.js' --include='*.html' '\b($(HOOK_NAMES))\b' web/dist; then echo "web/dist holds test hooks (above)"; exit 1; fi
@@ -169,6 +169,13 @@ test-e2e-gallery: setup-browser web-build-test
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/e2e-learn.mjs
+
+# The lab as a learner meets it (1440×900 and 390×844): the legend names the
+# core's modes in words, the HUD's mode chip, diagnostics behind a toggle,
+# preset titles, every handle's hit area ≥ 24 CSS px on a phone; writes the
+# screenshots of the four pages into docs/screenshots/.
+test-e2e-teach: setup-browser web-build-test
+	node web/test/e2e-teach.mjs
 
 # axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
 # 390×844: no serious or critical violation; also prints the learn page's
@@ -256,7 +263,7 @@ test-npm: setup-web setup-browser npm
 test-library-user:
 	cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-npm test-library-user
+test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-npm test-library-user
 	@echo "make test: all suites passed"
 
 demo: setup web-build

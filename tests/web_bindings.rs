@@ -369,6 +369,28 @@ fn the_reading_selects_the_papers_algorithms_or_ours() {
     assert!(m.contains("reading"), "{m}");
 }
 
+/// The learn page's cost of the η table: the seek simulations and the
+/// lookups run on the same seeded samples (counts deterministic, bounded
+/// by n), and both refuse a lab without its table or a count out of range.
+#[wasm_bindgen_test]
+fn seek_simulations_and_table_lookups_share_their_samples() {
+    let lab = Lab::new(TABLE).map_err(message).unwrap();
+    let reached = lab.seek_simulations(64, 7).map_err(message).unwrap();
+    let found = lab.table_lookups(64, 7).map_err(message).unwrap();
+    assert!(reached > 0 && reached <= 64, "{reached}");
+    assert!(found > 0 && found <= 64, "{found}");
+    assert_eq!(
+        lab.seek_simulations(64, 7).map_err(message).unwrap(),
+        reached
+    );
+    assert_eq!(lab.table_lookups(64, 7).map_err(message).unwrap(), found);
+    let m = message(lab.table_lookups(2_000_000, 7).unwrap_err());
+    assert!(m.contains('n'), "{m}");
+    let empty = Lab::without_table().map_err(message).unwrap();
+    let m = message(empty.seek_simulations(4, 7).unwrap_err());
+    assert!(m.contains("η table"), "{m}");
+}
+
 /// A value of the wrong type names its field, for every config (serde's
 /// own message carries no path).
 #[wasm_bindgen_test]

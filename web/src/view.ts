@@ -66,14 +66,25 @@ export class View {
     this.cy += dyScreen / this.scale;
   }
 
-  /** Fits the world box [x0,x1]×[y0,y1] with a margin in CSS pixels. */
-  fit(x0: number, y0: number, x1: number, y1: number, margin = 40): void {
+  /** Fits the world box [x0,x1]×[y0,y1] with a margin in CSS pixels, the
+   *  same on every side or per side (room kept for what floats over the
+   *  canvas: the lab's HUD above, its legend below). */
+  fit(x0: number, y0: number, x1: number, y1: number, margin: number | Insets = 40): void {
+    const m = typeof margin === "number" ? { left: margin, right: margin, top: margin, bottom: margin } : margin;
     const w = Math.max(1e-3, x1 - x0);
     const h = Math.max(1e-3, y1 - y0);
-    this.cx = (x0 + x1) / 2;
-    this.cy = (y0 + y1) / 2;
-    const sx = Math.max(1, this.width - 2 * margin) / w;
-    const sy = Math.max(1, this.height - 2 * margin) / h;
+    const sx = Math.max(1, this.width - m.left - m.right) / w;
+    const sy = Math.max(1, this.height - m.top - m.bottom) / h;
     this.scale = this.clamp(Math.min(sx, sy));
+    this.cx = (x0 + x1) / 2 - (m.left - m.right) / 2 / this.scale;
+    this.cy = (y0 + y1) / 2 + (m.top - m.bottom) / 2 / this.scale;
   }
+}
+
+/** Room per side, CSS pixels. */
+export interface Insets {
+  left: number;
+  right: number;
+  top: number;
+  bottom: number;
 }

@@ -31,6 +31,7 @@ export type {
   Internals,
   MuBound,
   PrecisionRule,
+  Reading,
   RelaxedConfig,
   ScenarioInfo,
   TableInfo,

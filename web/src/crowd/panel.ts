@@ -1,4 +1,4 @@
-// The crowd page's side panel: seek, separation, boid count, path radius,
+// The crowd page's side panel: seek, separation, boid count (one box), path radius,
 // display switches, path editing buttons, metrics. Built on ../controls.
 
 import { button, checkbox, help, row, section, slider } from "../controls";
@@ -65,13 +65,6 @@ export interface Panel {
   metricsOff(why: string): void;
 }
 
-/** Largest count on the boid slider (the number box goes further). */
-export const SLIDER_MAX_BOIDS = 30_000;
-const LOG_MAX = Math.log10(SLIDER_MAX_BOIDS + 1);
-
-const toSlider = (n: number): number => Math.log10(n + 1) / LOG_MAX;
-const fromSlider = (x: number): number => Math.round(10 ** (x * LOG_MAX) - 1);
-
 function fmt(v: number | null, digits: number, unit = ""): string {
   return v === null ? "—" : `${v.toFixed(digits)}${unit}`;
 }
@@ -114,19 +107,18 @@ function steeringSection(parent: HTMLElement, initial: PanelState, a: PanelActio
   };
 }
 
-/** The boid count (slider, number box, quick counts; a heavy count asks
- *  first), the density switch and the steps per frame. */
+/** The boid count: one box (typed, or picked from its list of the
+ *  paper's and larger counts; a heavy count asks first), the density
+ *  switch and the steps per frame. */
 function crowdSection(parent: HTMLElement, initial: PanelState, a: PanelActions): (boids: number) => void {
   const crowd = section(parent, "Crowd");
   let boids = initial.boids;
   /** Test IV density on: count changes scale the pathway (other limits, ./count). */
   let dense = false;
-  /** The count in force, everywhere it shows. */
+  /** The count in force, where it shows. */
   const showBoids = (n: number): void => {
     boids = n;
     num.value = String(n);
-    count.set(toSlider(n));
-    showCount(n);
   };
   /** Runs `n` boids, after asking when the count is heavy; a refused count changes nothing. */
   const askBoids = (text: string): void => {
@@ -149,16 +141,6 @@ function crowdSection(parent: HTMLElement, initial: PanelState, a: PanelActions)
       });
     }
   };
-  const count = slider(crowd, {
-    id: "boids-slider", label: "boids", unit: "", min: 0, max: 1, step: 0.001, value: toSlider(initial.boids), digits: 0,
-    onInput: (x) => askBoids(String(fromSlider(x))),
-  });
-  // Show the boid count, not the slider position.
-  const countOut = count.el.querySelector("output");
-  const showCount = (n: number): void => {
-    if (countOut) countOut.textContent = n.toLocaleString("en");
-  };
-  count.el.querySelector("input")?.addEventListener("input", () => showCount(Number(num.value)));
   const num = countBox(crowd, initial.boids, askBoids);
   const note = document.createElement("div");
   note.id = "boids-msg";
@@ -166,10 +148,7 @@ function crowdSection(parent: HTMLElement, initial: PanelState, a: PanelActions)
   note.setAttribute("role", "alert");
   note.hidden = true;
   crowd.append(note);
-  const quick = row(crowd);
-  for (const n of [1, 10, 100, 300, 1000, 3000, 10_000]) {
-    button(quick, `boids-${n}`, n >= 1000 ? `${n / 1000}k` : String(n), `${n} boids`, () => askBoids(String(n)));
-  }
+  help(crowd).textContent = "The paper's tests: 1, 10, 100 and 300 boids (the preset menu). Type any count up to 200,000, or pick one from the box's list.";
   checkbox(crowd, "density", "Test IV density (the pathway grows with the count)", false, (on) => {
     dense = on;
     a.density(on);
@@ -183,11 +162,14 @@ function crowdSection(parent: HTMLElement, initial: PanelState, a: PanelActions)
   };
 }
 
-/** The boid count's text box; `ask` gets what was typed. */
+/** Counts the box suggests. */
+const QUICK_COUNTS = [1, 10, 100, 300, 1000, 3000, 10_000, 30_000, 100_000] as const;
+
+/** The boid count's text box; `ask` gets what was typed or picked. */
 function countBox(parent: HTMLElement, value: number, ask: (text: string) => void): HTMLInputElement {
   const numRow = document.createElement("label");
   numRow.className = "numrow";
-  numRow.append("boid count");
+  numRow.append("boids");
   const num = document.createElement("input");
   num.id = "boids";
   num.min = "0";
@@ -197,8 +179,12 @@ function countBox(parent: HTMLElement, value: number, ask: (text: string) => voi
   // A text box reads what was typed: type=number hides "1e6" and "0x10" behind "".
   num.type = "text";
   num.inputMode = "numeric";
+  const list = document.createElement("datalist");
+  list.id = "boid-counts";
+  for (const n of QUICK_COUNTS) list.append(new Option(n.toLocaleString("en"), String(n)));
+  num.setAttribute("list", list.id);
   num.addEventListener("change", () => ask(num.value));
-  numRow.append(num);
+  numRow.append(num, list);
   parent.append(numRow);
   return num;
 }

@@ -10,6 +10,14 @@ import type { LabState, Pose } from "./state";
 
 const DEG = Math.PI / 180;
 
+/** Half the side of every handle's hit area, CSS px: at least 24 px
+ *  across (WCAG 2.5.8's target size). */
+export const HIT_PX = 12;
+/** The tolerance circle's knob sits at least this far from the target's
+ *  centre, CSS px: on a small stage the circle itself may be a few pixels
+ *  wide, and its knob would otherwise share the centre's hit area. */
+export const RIM_MIN_PX = 2 * HIT_PX + 2;
+
 /** CSS-pixel canvas positions of every handle. */
 export interface Handles {
   target: Vec;
@@ -28,8 +36,8 @@ export function handlePositions(view: View, st: LabState, vehicle: Pose, handleP
   const a1 = b + st.epsTol;
   return {
     target: c,
-    rim: { x: c.x + Math.cos(b + Math.PI / 2) * r, y: c.y - Math.sin(b + Math.PI / 2) * r },
-    beta: { x: c.x + Math.cos(b) * (handlePx + 12), y: c.y - Math.sin(b) * (handlePx + 12) },
+    rim: { x: c.x + Math.cos(b + Math.PI / 2) * Math.max(r, RIM_MIN_PX), y: c.y - Math.sin(b + Math.PI / 2) * Math.max(r, RIM_MIN_PX) },
+    beta: { x: c.x + Math.cos(b) * (handlePx + 24), y: c.y - Math.sin(b) * (handlePx + 24) },
     opening: { x: c.x + Math.cos(a1) * handlePx, y: c.y - Math.sin(a1) * handlePx },
     vehicle: vs,
     heading: { x: vs.x + Math.cos(vehicle.theta) * handlePx * 0.7, y: vs.y - Math.sin(vehicle.theta) * handlePx * 0.7 },
@@ -43,6 +51,8 @@ export interface DragSink {
   epsTol(eps: number): void;
   dTol(d: number): void;
   vehicle(pose: Pose): void;
+  /** The target's tolerance radius D_tol in force, m. */
+  dTolNow(): number;
   /** The focus vehicle's current pose (a body drag starts from it). */
   vehiclePose(): Pose;
   redraw(): void;
@@ -50,25 +60,34 @@ export interface DragSink {
 
 type Kind = "beta" | "opening" | "heading" | "vehicle" | "target" | "rim";
 
-const near = (a: Vec, b: Vec, r: number): boolean => Math.hypot(a.x - b.x, a.y - b.y) <= r;
 /** World angle (CCW) of the screen direction from `from` to `p`. */
 const screenAngle = (from: Vec, p: Vec): number => Math.atan2(-(p.y - from.y), p.x - from.x);
 
-/** The handle under `p`, in priority order (small knobs first). */
-export function pick(p: Vec, h: Handles): Kind | null {
-  if (near(p, h.beta, 10)) return "beta";
-  if (near(p, h.opening, 10)) return "opening";
-  if (near(p, h.heading, 10)) return "heading";
-  if (near(p, h.vehicle, 14)) return "vehicle";
-  if (near(p, h.target, 10)) return "target";
-  const rimR = Math.hypot(h.rim.x - h.target.x, h.rim.y - h.target.y);
-  if (Math.abs(Math.hypot(p.x - h.target.x, p.y - h.target.y) - rimR) <= 7) return "rim";
+const KINDS: readonly Kind[] = ["beta", "opening", "heading", "vehicle", "target", "rim"];
+
+/** The handle under `p`: the nearest whose hit area (radius {@link HIT_PX},
+ *  the vehicle's body a little more) holds it; else the tolerance circle
+ *  itself, when it is drawn larger than its knob's place. */
+export function pick(p: Vec, h: Handles, ring = 0): Kind | null {
+  let best: Kind | null = null;
+  let bestD = Infinity;
+  for (const k of KINDS) {
+    const d = Math.hypot(p.x - h[k].x, p.y - h[k].y);
+    if (d <= (k === "vehicle" ? HIT_PX + 2 : HIT_PX) && d < bestD) {
+      best = k;
+      bestD = d;
+    }
+  }
+  if (best) return best;
+  if (ring >= RIM_MIN_PX && Math.abs(Math.hypot(p.x - h.target.x, p.y - h.target.y) - ring) <= 7) return "rim";
   return null;
 }
 
 /** `extra`: other draggable things (the obstacles), tried after the
  *  playground's handles and before panning. */
 export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () => Handles | null, sink: DragSink, extra?: (p: Vec) => Drag | null): void {
+  /** The tolerance circle's radius on screen, CSS px. */
+  const ring = (): number => sink.dTolNow() * view.scale;
   const grab = (p: Vec, h: Handles, kind: Kind): Drag => {
     switch (kind) {
       case "beta":
@@ -112,20 +131,24 @@ export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () =
           },
         };
       }
-      case "rim":
+      case "rim": {
+        // Relative: the knob may sit outside a small circle (RIM_MIN_PX).
+        const d0 = Math.hypot(p.x - h.target.x, p.y - h.target.y);
+        const tol0 = ring() / view.scale;
         return {
           move: (q) => {
             const c = handles()?.target ?? h.target;
-            sink.dTol(Math.min(20, Math.max(0.02, Math.hypot(q.x - c.x, q.y - c.y) / view.scale)));
+            sink.dTol(Math.min(20, Math.max(0.02, tol0 + (Math.hypot(q.x - c.x, q.y - c.y) - d0) / view.scale)));
           },
         };
+      }
     }
   };
   attachPointer(
     canvas,
     (p): Drag => {
       const h = handles();
-      const kind = h ? pick(p, h) : null;
+      const kind = h ? pick(p, h, ring()) : null;
       if (h && kind) return grab(p, h, kind);
       const other = extra?.(p);
       if (other) return other;
@@ -133,7 +156,7 @@ export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () =
     },
     (p) => {
       const h = handles();
-      const over = p !== null && ((h !== null && pick(p, h) !== null) || (extra !== undefined && extra(p) !== null));
+      const over = p !== null && ((h !== null && pick(p, h, ring()) !== null) || (extra !== undefined && extra(p) !== null));
       canvas.style.cursor = over ? "grab" : "";
     },
   );

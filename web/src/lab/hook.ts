@@ -11,7 +11,7 @@ import { cacheKeys } from "../workers/tablecache";
 import type { Vec } from "../view";
 import type { FrameProbe, LabPage, LabParts } from "./app";
 import type { TableStatus } from "./sim";
-import type { Handles } from "./handles";
+import { pick, type Handles } from "./handles";
 import { obstacleKnobs } from "./obstacles";
 import { presetNames } from "./presets";
 import { defaultState, type LabState } from "./state";
@@ -58,6 +58,10 @@ export interface LabHook {
   /** CSS-pixel canvas coordinates of the focus target's centre, rim, handles and of the vehicle. */
   handles(): Handles | null;
   setPreset(name: string): Promise<void>;
+  /** The core's control modes by name (the bindings' `Mode`). */
+  coreModes(): string[];
+  /** The handle a press at canvas point (x, y), CSS px, would grab, or null. */
+  handleKindAt(x: number, y: number): string | null;
   presets(): string[];
   setPaused(p: boolean): void;
   perfReset(): void;
@@ -187,6 +191,12 @@ export function installHook(page: LabPage): void {
     funnel: on((p) => core(p)?.funnel() ?? null, null),
     state: on((p) => structuredClone(p.sim.st), defaultState()),
     handles: on((p) => p.handles(), null),
+    coreModes: () => Object.keys(Mode).filter((k) => Number.isNaN(Number(k))),
+    handleKindAt: (x, y) => {
+      const p = page.parts;
+      const h = p?.handles() ?? null;
+      return p && h ? pick({ x, y }, h, p.sim.st.dTol * p.view.scale) : null;
+    },
     setPreset: (name) => page.parts?.transport.setPreset(name) ?? Promise.resolve(),
     presets: () => presetNames(),
     setPaused: (b) => page.parts?.transport.setPaused(b),

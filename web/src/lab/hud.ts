@@ -1,17 +1,21 @@
-// The heads-up display: the focus agent's controller internals (μ and its
-// bound μ_max included) and timing.
+// The heads-up display: what the described agent is doing, in plain words
+// (a mode chip linking to the learn page's mode list, and why it slows
+// down when it does), its controller quantities, and, behind a toggle, the
+// diagnostics (update cost, frame time, table, stepping).
 
 import { Mode, type Internals } from "../wasm";
-import { MODE_NAMES } from "./render";
+import { modeWords } from "../modes";
 
 /** The focus agent's internals as the core declares them (`Internals`,
  *  crate/bindings/lab_types.rs; NaN where there is no agent) and timing. */
-export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" | "muMax" | "reachable"> & {
+export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" | "muMax" | "reachable" | "vDt"> & {
   mode: number | null;
   speed: number;
   usPerUpdate: number;
   frameMs: number;
   agents: number;
+  /** The agent described (0-based). */
+  shown: number;
   time: number;
   paused: boolean;
   slow: boolean;
@@ -28,14 +32,31 @@ function deg(a: number): string {
   return Number.isFinite(a) ? `${(a * DEG).toFixed(1).padStart(7)}°` : "      —";
 }
 
+/** The HUD's parts as text. */
+interface HudText {
+  /** The mode in words (the chip), and its number for its colour. */
+  chip: string;
+  mode: number | null;
+  /** What the agent is doing, and which agent it is. */
+  say: string;
+  /** Why it slows down (unreachable at the desired speed), or "". */
+  warn: string;
+  numbers: string;
+  diagnostics: string;
+}
+
 /** The HUD's text, and its settled part: everything but the numbers that
  *  change while the world runs (mode, table, stepping, agents, pause). */
-function hudText(h: HudData): { text: string; key: string } {
-  const mode = h.mode === null ? "—" : (MODE_NAMES[h.mode] ?? `mode ${h.mode}`);
-  const reach = h.reachable ? "" : " (unreachable: v_dt)";
+function hudText(h: HudData): { parts: HudText; key: string } {
+  const words = h.mode === null ? undefined : modeWords(h.mode);
+  const chip = h.mode === null ? "—" : (words?.word ?? `mode ${h.mode}`);
+  const who = h.agents > 1 ? `agent ${h.shown + 1} of ${h.agents} (ringed): ` : "";
+  const say = `${who}${words?.meaning ?? ""}`;
+  const warn = h.reachable
+    ? ""
+    : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β (the table says unreachable; v_dt)`;
   const flags = `${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`;
-  const lines = [
-    `mode   ${mode}${reach}`,
+  const numbers = [
     `D      ${Number.isFinite(h.d) ? h.d.toFixed(3).padStart(7) : "      —"} m`,
     `α      ${deg(h.alpha)}`,
     `η      ${deg(h.eta)}`,
@@ -43,18 +64,91 @@ function hudText(h: HudData): { text: string; key: string } {
     `μ      ${deg(h.mu)}`,
     `μ_max  ${h.mode === Mode.Funnelling ? deg(h.muMax) : "      —"}`,
     `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
+    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${flags}`,
+  ].join("\n");
+  const diagnostics = [
     `update ${h.usPerUpdate.toFixed(2).padStart(7)} µs/agent`,
     `frame  ${h.frameMs.toFixed(2).padStart(7)} ms`,
     `table  ${h.table}`,
     ...(h.stepping ? [`step   ${h.stepping}`] : []),
-    `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${flags}`,
-  ];
-  return { text: lines.join("\n"), key: [mode, reach, h.table, h.stepping ?? "", h.agents, flags].join("\u0000") };
+  ].join("\n");
+  const parts = { chip, mode: h.mode, say, warn, numbers, diagnostics };
+  return { parts, key: [chip, say, warn, h.table, h.stepping ?? "", h.agents, flags].join("\u0000") };
+}
+
+/** The HUD's elements, made once inside #hud. */
+class HudView {
+  private readonly chip: HTMLAnchorElement;
+  private readonly say: HTMLElement;
+  private readonly warn: HTMLElement;
+  private readonly numbers: HTMLElement;
+  private readonly diagnostics: HTMLElement;
+
+  constructor(el: HTMLElement) {
+    const made = el.querySelector(".hud-chip") === null;
+    if (made) {
+      el.replaceChildren();
+      const head = document.createElement("div");
+      head.className = "hud-head";
+      const chip = document.createElement("a");
+      chip.className = "hud-chip";
+      chip.href = "learn.html#modes";
+      chip.title = "the control modes, explained (Learn, section 5)";
+      const fold = document.createElement("button");
+      fold.type = "button";
+      fold.className = "hud-fold";
+      fold.textContent = "numbers";
+      fold.setAttribute("aria-expanded", matchMedia("(max-width: 760px)").matches ? "false" : "true");
+      fold.title = "show or hide the numbers";
+      fold.addEventListener("click", () => {
+        const open = fold.getAttribute("aria-expanded") !== "true";
+        fold.setAttribute("aria-expanded", String(open));
+        el.classList.toggle("folded", !open);
+      });
+      el.classList.toggle("folded", fold.getAttribute("aria-expanded") !== "true");
+      head.append(chip, fold);
+      const say = document.createElement("p");
+      say.className = "hud-say";
+      const warn = document.createElement("p");
+      warn.className = "hud-warn";
+      warn.hidden = true;
+      const numbers = document.createElement("pre");
+      numbers.className = "hud-num";
+      const details = document.createElement("details");
+      details.className = "hud-diag";
+      const summary = document.createElement("summary");
+      summary.textContent = "diagnostics";
+      const diag = document.createElement("pre");
+      details.append(summary, diag);
+      el.append(head, say, warn, numbers, details);
+    }
+    this.chip = el.querySelector<HTMLAnchorElement>(".hud-chip")!;
+    this.say = el.querySelector<HTMLElement>(".hud-say")!;
+    this.warn = el.querySelector<HTMLElement>(".hud-warn")!;
+    this.numbers = el.querySelector<HTMLElement>(".hud-num")!;
+    this.diagnostics = el.querySelector<HTMLElement>(".hud-diag pre")!;
+  }
+
+  write(p: HudText): void {
+    if (this.chip.textContent !== p.chip) {
+      this.chip.textContent = p.chip;
+      const w = p.mode === null ? undefined : modeWords(p.mode);
+      this.chip.style.setProperty("--mode", w?.colour ?? "#888888");
+      this.chip.dataset["mode"] = p.mode === null ? "" : String(p.mode);
+    }
+    if (this.say.textContent !== p.say) this.say.textContent = p.say;
+    if (this.warn.textContent !== p.warn) {
+      this.warn.textContent = p.warn;
+      this.warn.hidden = p.warn === "";
+    }
+    if (this.numbers.textContent !== p.numbers) this.numbers.textContent = p.numbers;
+    if (this.diagnostics.textContent !== p.diagnostics) this.diagnostics.textContent = p.diagnostics;
+  }
 }
 
 /** Writes the HUD once (the first frame's HUD, before the loop runs). */
 export function renderHud(el: HTMLElement, h: HudData): void {
-  el.textContent = hudText(h).text;
+  new HudView(el).write(hudText(h).parts);
 }
 
 /** At most this often, ms, the HUD's running numbers are rewritten. */
@@ -71,18 +165,21 @@ export const HUD_MS = 1000 / 15;
  *  at once, a held-back text shows once due even if no frame is drawn, and
  *  an unchanged text is not written at all. */
 export class Hud {
+  private readonly view: HudView;
   private shown = "";
   private key = "";
   private at = -Infinity;
-  private pending: string | null = null;
+  private pending: HudText | null = null;
 
-  constructor(private readonly el: HTMLElement) {}
+  constructor(el: HTMLElement) {
+    this.view = new HudView(el);
+  }
 
   /** The HUD of the frame drawn at `now` (ms). */
   show(h: HudData, now: number): void {
-    const { text, key } = hudText(h);
-    if (key !== this.key || now - this.at >= HUD_MS) this.write(text, key, now);
-    else this.pending = text;
+    const { parts, key } = hudText(h);
+    if (key !== this.key || now - this.at >= HUD_MS) this.write(parts, key, now);
+    else this.pending = parts;
   }
 
   /** A frame at `now`: writes the held-back text once it is due. */
@@ -90,12 +187,13 @@ export class Hud {
     if (this.pending !== null && now - this.at >= HUD_MS) this.write(this.pending, this.key, now);
   }
 
-  private write(text: string, key: string, now: number): void {
+  private write(parts: HudText, key: string, now: number): void {
     this.pending = null;
     this.key = key;
     this.at = now;
+    const text = Object.values(parts).join("\u0000");
     if (text !== this.shown) {
-      this.el.textContent = text;
+      this.view.write(parts);
       this.shown = text;
     }
   }

@@ -22,6 +22,7 @@ import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
 import { openTableCache } from "../workers/tablecache";
 import { tableBadge } from "./loading";
+import { buildLegend } from "./legend";
 
 const page: LabPage = {
   status: { ready: false, error: null, problems: [], version: "", tableAt: NaN },
@@ -33,6 +34,8 @@ const status = page.status;
 // The test build's window.__lab; the shipped build drops this line and hook.ts.
 if (import.meta.env.MODE === "test") installHook(page);
 performance.mark("lab:main");
+const legendEl = document.querySelector<HTMLElement>(".stage .legend");
+if (legendEl) buildLegend(legendEl);
 
 async function start(): Promise<void> {
   // The table's fetch starts with the core's instantiation, and the first
@@ -81,6 +84,7 @@ async function start(): Promise<void> {
     dTol: (d) => { st.dTol = d; goal.dTol.set(d); sim.updateGoal(); },
     vehicle: (pose) => { st.vehicle = pose; sim.placeVehicle(); },
     vehiclePose: () => sim.pose(sim.focus),
+    dTolNow: () => st.dTol,
     redraw: () => { sim.dirty = true; sim.url.save(); },
   }, obstacleDrags(view, sim.avoid, obstacleLimits(table), changed));
 

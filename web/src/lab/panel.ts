@@ -62,6 +62,13 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   };
 
   const goalBox = section(panel, "Target (playground)");
+  // Under a preset the targets are the scenario's: the playground's
+  // controls are hidden (not left greyed with the playground's values).
+  const presetNote = document.createElement("p");
+  presetNote.className = "help preset-note";
+  presetNote.textContent = "This preset brings its own vehicles and targets. Choose \u201cplayground\u201d in the preset menu to drag and edit a target of your own.";
+  presetNote.hidden = true;
+  goalBox.before(presetNote);
   sim.onScene = (text, playground, claim, measured) => {
     caption.textContent = text;
     for (const [cls, head, body] of [["claim", "Paper: ", claim], ["measured", "Ours: ", measured]] as const) {
@@ -71,7 +78,8 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
       p.append(Object.assign(document.createElement("b"), { textContent: head }), body);
       caption.append(p);
     }
-    goalBox.disabled = !playground;
+    goalBox.hidden = !playground;
+    presetNote.hidden = playground;
   };
   numeric(goalBox, "vd", { id: "speed", lo: 0, hi: 4, step: 0.01 }, (v) => { st.speed = v; updateGoal(); });
   const dTol = numeric(goalBox, "dtol", { id: "dtol", lo: 0, hi: 3, step: 0.01 }, (v) => { st.dTol = v; updateGoal(); });
@@ -82,7 +90,8 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   const relaxedBox = checkbox(goalRow, "relaxed", "relaxed (region goal)", st.relaxed, (v) => { st.relaxed = v; updateGoal(); });
   relaxedBox.el.title = "paper 001: any point of the disk and any heading within β ± ε_tol is a valid goal";
 
-  funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); }, (parent, url, w, onInput) => numeric(parent, url, w, onInput));
+  const controller = funnelSettingsSection(panel, st.funnel, () => { sim.applyFunnel(); sim.url.save(); }, (parent, url, w, onInput) => numeric(parent, url, w, onInput));
+  sim.onController = (error) => controller.inForce(sim.controllerLabel(), error);
 
   const limBox = section(panel, "Vehicle limits");
   const lim = (url: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax" | "kp" | "kd", hi: number): void => {

@@ -8,17 +8,21 @@ import { abgr, headingAt, PixelSprites, triangle } from "../sprites";
 import type { View } from "../view";
 import { FIELD_STRIDE, Mode, StateField } from "../wasm";
 import { drawObstacles } from "./obstacles";
+import { MODE_WORDS, modeColour } from "../modes";
+import { RIM_MIN_PX } from "./handles";
 import type { Trails } from "./trails";
 
 /** The paper's names of the modes, indexed by the core's `Mode` number. */
 export const MODE_NAMES = ["End_of_Steering", "Orientation_only", "Position_only", "Funnelling"] as const;
 
-/** Paper 000 §6: red circle = seek, blue triangle = orientation only,
- *  red circle + triangle = funnelling; our neutral grey = end of steering. */
+/** Paper 000 §6's shapes (circle = seek, triangle = orientation only,
+ *  circle + triangle = funnelling), each mode in its own colour
+ *  (src/modes.ts); grey = end of steering. */
 export const COLOURS = {
-  seek: "#d62728",
-  orientation: "#1f5fd1",
-  end: "#8a8f98",
+  seek: MODE_WORDS.PositionOnly.colour,
+  funnelling: MODE_WORDS.Funnelling.colour,
+  orientation: MODE_WORDS.OrientationOnly.colour,
+  end: MODE_WORDS.EndOfSteering.colour,
   background: "#fbfaf7",
   grid: "#e6e3dc",
   axis: "#cfcac0",
@@ -119,6 +123,8 @@ export interface Scene {
   trails: Trails | null;
   /** Index of the editable agent (handles drawn), or -1. */
   focus: number;
+  /** The agent the HUD describes: ringed when there are several. */
+  shown: number;
   focusTarget: TargetDraw | null;
   overlay: Overlay | null;
   showRadial: boolean;
@@ -181,7 +187,7 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
   const r = Math.max(2, t.dTol * v.scale);
   const circle = t.mode === Mode.PositionOnly || t.mode === Mode.Funnelling || t.mode === Mode.EndOfSteering;
   const triangle = t.mode === Mode.OrientationOnly || t.mode === Mode.Funnelling || t.mode === Mode.EndOfSteering;
-  const colour = t.mode === Mode.EndOfSteering ? COLOURS.end : t.mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
+  const colour = modeColour(t.mode);
   ctx.lineWidth = 2;
   ctx.strokeStyle = colour;
   ctx.fillStyle = colour;
@@ -218,7 +224,7 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
   // The orientation needle β.
   ctx.beginPath();
   ctx.moveTo(c.x, c.y);
-  ctx.lineTo(c.x + Math.cos(t.beta) * (L + 12), c.y - Math.sin(t.beta) * (L + 12));
+  ctx.lineTo(c.x + Math.cos(t.beta) * (L + 24), c.y - Math.sin(t.beta) * (L + 24));
   ctx.stroke();
   ctx.beginPath();
   ctx.arc(c.x, c.y, 3, 0, Math.PI * 2);
@@ -226,9 +232,11 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
   if (handles) {
     ctx.fillStyle = "#ffffff";
     ctx.lineWidth = 1.5;
+    const rk = Math.max(r, RIM_MIN_PX);
     for (const [hx, hy] of [
-      [c.x + Math.cos(t.beta) * (L + 12), c.y - Math.sin(t.beta) * (L + 12)],
+      [c.x + Math.cos(t.beta) * (L + 24), c.y - Math.sin(t.beta) * (L + 24)],
       [c.x + Math.cos(a1) * L, c.y - Math.sin(a1) * L],
+      [c.x + Math.cos(t.beta + Math.PI / 2) * rk, c.y - Math.sin(t.beta + Math.PI / 2) * rk],
     ] as const) {
       ctx.beginPath();
       ctx.arc(hx, hy, 5, 0, Math.PI * 2);
@@ -238,10 +246,14 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
   }
 }
 
-export function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: number, lineWidth: number): void {
+/** `gapPx` > 0: at most one arrow per `gapPx` square of the screen (the
+ *  core samples the field densely near the vehicle; drawn all, the arrows
+ *  there are a tangle). */
+export function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, lenPx: number, lineWidth: number, gapPx = 0): void {
   const n = Math.floor(f.samples.length / FIELD_STRIDE);
   const cos = Math.cos(f.theta);
   const sin = Math.sin(f.theta);
+  const taken = new Set<number>();
   for (const reach of [1, 0]) {
     ctx.strokeStyle = reach ? f.light : f.dark;
     ctx.lineWidth = lineWidth;
@@ -255,6 +267,11 @@ export function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, 
       const lx = d * Math.cos(a);
       const ly = d * Math.sin(a);
       const p = v.toScreen(f.originX + lx * cos - ly * sin, f.originY + lx * sin + ly * cos);
+      if (gapPx > 0) {
+        const cell = Math.floor(p.x / gapPx) * 65536 + Math.floor(p.y / gapPx);
+        if (taken.has(cell)) continue;
+        taken.add(cell);
+      }
       const ex = p.x + Math.cos(dir) * lenPx;
       const ey = p.y - Math.sin(dir) * lenPx;
       ctx.moveTo(p.x, p.y);
@@ -264,10 +281,6 @@ export function drawField(ctx: CanvasRenderingContext2D, v: View, f: FieldDraw, 
     }
     ctx.stroke();
   }
-}
-
-function modeColour(mode: number): string {
-  return mode === Mode.EndOfSteering ? COLOURS.end : mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
 }
 
 /** Agents above this count are drawn as pixel sprites (../sprites)
@@ -351,11 +364,48 @@ function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
   }
 }
 
+/** Faint lines from each vehicle to its own target, and a ring round the
+ *  agent the HUD describes (presets with several agents). */
+function drawLinks(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
+  const { X, Y, GoalX, GoalY } = StateField;
+  ctx.save();
+  ctx.strokeStyle = "rgba(43, 43, 43, 0.16)";
+  ctx.lineWidth = 1;
+  ctx.setLineDash([3, 4]);
+  ctx.beginPath();
+  for (let i = 0; i < sc.count; i++) {
+    const o = i * sc.stride;
+    const p = v.toScreen(sc.state[o + X]!, sc.state[o + Y]!);
+    const t = v.toScreen(sc.state[o + GoalX]!, sc.state[o + GoalY]!);
+    ctx.moveTo(p.x, p.y);
+    ctx.lineTo(t.x, t.y);
+  }
+  ctx.stroke();
+  ctx.setLineDash([]);
+  if (sc.shown >= 0 && sc.shown < sc.count) {
+    const o = sc.shown * sc.stride;
+    const p = v.toScreen(sc.state[o + X]!, sc.state[o + Y]!);
+    const t = v.toScreen(sc.state[o + GoalX]!, sc.state[o + GoalY]!);
+    ctx.strokeStyle = "rgba(20, 20, 20, 0.55)";
+    ctx.lineWidth = 1.5;
+    ctx.beginPath();
+    ctx.moveTo(p.x, p.y);
+    ctx.lineTo(t.x, t.y);
+    ctx.stroke();
+    ctx.strokeStyle = "#111111";
+    ctx.lineWidth = 2;
+    ctx.beginPath();
+    ctx.arc(p.x, p.y, 15, 0, Math.PI * 2);
+    ctx.stroke();
+  }
+  ctx.restore();
+}
+
 export function drawScene(s: Surface, v: View, sc: Scene): void {
   const { ctx } = s;
   grid(s, v);
   drawObstacles(ctx, v, sc.obstacles, true);
-  if (sc.field) drawField(ctx, v, sc.field, 10, 1);
+  if (sc.field) drawField(ctx, v, sc.field, 12, 1.25, 26);
   if (sc.trails) {
     ctx.strokeStyle = COLOURS.trail;
     ctx.lineWidth = 1.25;
@@ -417,6 +467,7 @@ export function drawScene(s: Surface, v: View, sc: Scene): void {
     }
   }
   if (sc.ring) drawField(ctx, v, sc.ring, 22, 1.5);
+  if (sc.count > 1 && sc.count <= CROWD_THRESHOLD) drawLinks(ctx, v, sc);
   if (sc.count > CROWD_THRESHOLD) drawCrowd(s, v, sc);
   else drawAgents(ctx, v, sc);
   if (sc.focus >= 0 && sc.focus < sc.count) {

@@ -9,10 +9,10 @@ import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
 import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
-import { funnelConfig, relaxedConfig } from "./funnelsettings";
+import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import { recipeFor } from "./recipe";
-import { fitPlayground, goalConfig, type LabState, type Pose } from "./state";
+import { fitPlayground, goalConfig, stageInsets, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { HereWorld, type LabWorld, type Took } from "./world";
@@ -76,6 +76,15 @@ export class LabSim {
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
   onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
+  /** Called once the controller's settings are in force (after an edit or a build). */
+  onController: (error: string | null) => void = () => {};
+
+  /** The core's name for the controller in force (`Lab.controllerLabel`:
+   *  "paper 001 relaxed", "ours standard", "custom standard", …), where the
+   *  world steps on this thread; null where it steps in workers. */
+  controllerLabel(): string | null {
+    return this.world.core()?.controllerLabel() ?? null;
+  }
   /** The η table's status (the HUD's table line). */
   table: TableStatus;
   /** The world: stepped by the page's core (`here`) or by the workers. */
@@ -327,7 +336,7 @@ export class LabSim {
 
   /** The page's controller settings to the world (presets included). */
   applyFunnel(): void {
-    this.edit({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel) });
+    this.edit({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel), reading: readingOf(this.st.funnel) }, (a) => this.onController(a.error));
   }
 
   /** The focus agent's goal from the page's state. */
@@ -437,16 +446,17 @@ export class LabSim {
     if (b.kind === "scenario") {
       const sc = info.scenario;
       this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
-      if (fit && sc) this.view.fit(...sc.box);
+      if (fit && sc) this.view.fit(...sc.box, stageInsets(this.view, 40));
     } else {
       this.focus = info.count > 0 ? 0 : -1;
       this.onScene(PLAYGROUND_HELP, true);
       if (fit && b.spawn) {
         const r = b.spawn.extent + 3;
-        this.view.fit(-r, -r, r, r);
+        this.view.fit(-r, -r, r, r, stageInsets(this.view, 40));
       } else if (fit) fitPlayground(this.view, this.st);
     }
     this.trails.record(0, this.state, this.stride, this.count);
+    this.onController(null);
     this.dirty = true;
   }
 

@@ -1,6 +1,6 @@
 // The lab's user-editable state: everything the URL shares. Plain data.
 
-import type { View } from "../view";
+import type { Insets, View } from "../view";
 import type { GoalConfig } from "../wasm";
 
 export interface Pose {
@@ -48,12 +48,20 @@ export type AimKey = (typeof AIM_KEYS)[number];
 export const RELAXED_AIM_KEYS = ["entry", "paperArc"] as const;
 export type RelaxedAimKey = (typeof RELAXED_AIM_KEYS)[number];
 
+/** Which reading of the papers is in force (the core's `Reading`): the
+ *  papers' algorithms as written, ours (the defaults), or custom (a
+ *  setting edited by hand). */
+export const READING_KEYS = ["ours", "paper", "custom"] as const;
+export type ReadingKey = (typeof READING_KEYS)[number];
+
 /** The avoidance methods, as the core and the URL name them. */
 export const AVOID_KEYS = ["off", "separation", "orca"] as const;
 export type AvoidKey = (typeof AVOID_KEYS)[number];
 
 /** The funnelling controller's settings as the page edits them. */
 export interface FunnelSettings {
+  /** The reading the settings below are (custom: edited by hand). */
+  reading: ReadingKey;
   bound: BoundKey;
   aim: AimKey;
   /** The terminal line pursuit on the last stretch (core default: on). */
@@ -64,6 +72,29 @@ export interface FunnelSettings {
   gain: number;
   /** Position_only once |Δη| < threshold·ε_tol. */
   threshold: number;
+}
+
+/** The page's controls as each reading sets them (the core's
+ *  `FunnelConfig::default` / `paper_000`, `RelaxedConfig::default` /
+ *  `paper_001`; what the panel does not show, `Lab.setReading` sets). */
+export const READING_SETTINGS: Readonly<Record<"ours" | "paper", Omit<FunnelSettings, "reading">>> = {
+  ours: { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 },
+  paper: { bound: "lit", aim: "centre", pursuit: false, relaxedAim: "paperArc", gain: 1, threshold: 1 },
+};
+
+/** `f` made consistent: a named reading puts its settings on the
+ *  controls; without one (`named` false: an older link) the settings
+ *  are ours if they equal ours, else custom. */
+export function settleReading(f: FunnelSettings, named: boolean): void {
+  if (named && f.reading !== "custom") {
+    Object.assign(f, READING_SETTINGS[f.reading]);
+    return;
+  }
+  if (!named) {
+    const o = READING_SETTINGS.ours;
+    const same = (Object.keys(o) as Array<keyof typeof o>).every((k) => o[k] === f[k]);
+    f.reading = same ? "ours" : "custom";
+  }
 }
 
 export interface LabState {
@@ -116,7 +147,7 @@ export function defaultState(): LabState {
     relaxed: false,
     limits: {},
     // The core's FunnelConfig::default() (e2e checks they agree).
-    funnel: { bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 },
+    funnel: { reading: "ours", bound: "tr", aim: "entry", pursuit: true, relaxedAim: "entry", gain: 2, threshold: 0.25 },
     overlays: { radial: true, eta: true, gamma: true, ring: false, field: false, trails: true, arc: false, ghost: true },
     field: { vC: 0.5, omegaC: 0, vD: 1.3 },
     avoidance: null,
@@ -152,5 +183,17 @@ export function goalConfig(st: LabState): GoalConfig {
 export function fitPlayground(view: View, st: LabState): void {
   const xs = [st.vehicle.x, st.target.x];
   const ys = [st.vehicle.y, st.target.y];
-  view.fit(Math.min(...xs) - 3, Math.min(...ys) - 3, Math.max(...xs) + 3, Math.max(...ys) + 3, 60);
+  // A phone's stage is small: less world round the two, so that the
+  // target's tolerance circle is not a dot; the handles (56 px) fit in the margins.
+  const pad = view.width < PHONE_PX ? 1.2 : 3;
+  view.fit(Math.min(...xs) - pad, Math.min(...ys) - pad, Math.max(...xs) + pad, Math.max(...ys) + pad, stageInsets(view, 60));
+}
+
+/** Below this stage width (CSS px) the lab lays out for a phone. */
+export const PHONE_PX = 560;
+
+/** The margins a fit keeps on the lab's stage: `margin` on a wide one; on
+ *  a phone, room for the folded HUD above and the legend below. */
+export function stageInsets(view: View, margin: number): number | Insets {
+  return view.width < PHONE_PX ? { left: 28, right: 28, top: 76, bottom: 64 } : margin;
 }

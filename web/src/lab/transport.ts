@@ -3,7 +3,7 @@
 
 import { button } from "../controls";
 import { $ } from "../page";
-import { PRESETS, presetGroup } from "./presets";
+import { PRESET_GROUPS, PRESETS, presetGroup, presetOrder, presetTitle } from "./presets";
 import type { LabSim } from "./sim";
 
 export interface Transport {
@@ -48,17 +48,16 @@ export function buildTransport(sim: LabSim): Transport {
   // Grouped by paper and figure; each preset's claim and our
   // measurement show in the side panel's caption.
   const groups = new Map<string, HTMLOptGroupElement>();
-  for (const p of PRESETS) {
-    const label = presetGroup(p.name);
-    let g = groups.get(label);
-    if (!g) {
-      g = document.createElement("optgroup");
-      g.label = label;
-      groups.set(label, g);
-      presetSel.append(g);
-    }
-    addOpt(g, p.name, p.name);
+  for (const label of PRESET_GROUPS) {
+    const g = document.createElement("optgroup");
+    g.label = label;
+    groups.set(label, g);
   }
+  for (const p of [...PRESETS].sort((a, b) => presetOrder(a.name, b.name))) {
+    const g = groups.get(presetGroup(p.name));
+    if (g) addOpt(g, p.name, presetTitle(p.name));
+  }
+  for (const g of groups.values()) if (g.children.length > 0) presetSel.append(g);
   presetSel.value = st.preset;
   const setPreset = async (name: string): Promise<void> => {
     st.preset = name;

@@ -7,7 +7,7 @@
 import type { View } from "../view";
 import { clampToLimits, clip, FIELDS, parseField, type LimitDefaults, type RangeTable } from "./fields";
 import { decodeObstacles, encodeObstacles } from "./obstacles";
-import { AIM_KEYS, AVOID_KEYS, BOUND_KEYS, RELAXED_AIM_KEYS, defaultState, type AimKey, type AvoidKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
+import { AIM_KEYS, AVOID_KEYS, BOUND_KEYS, READING_KEYS, RELAXED_AIM_KEYS, defaultState, settleReading, type AimKey, type ReadingKey, type AvoidKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
 
 const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc", "ghost"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];
@@ -31,6 +31,7 @@ export function encodeState(s: LabState, ranges: RangeTable, d: LimitDefaults): 
     p.set(f.url, "value" in parseField(f, short, ranges, s, d) ? short : String(v));
   }
   for (const k of FLAGS) p.set(k, s[k] ? "1" : "0");
+  p.set("rd", s.funnel.reading);
   p.set("bound", s.funnel.bound);
   p.set("aim", s.funnel.aim);
   p.set("lp", s.funnel.pursuit ? "1" : "0");
@@ -68,7 +69,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
+  const known = new Set<string>(["rd", "ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
   const seen = new Set<string>();
   for (const key of p.keys()) {
     if (seen.has(key)) problems.push(`field "${clip(key)}" given twice; the first kept`);
@@ -101,6 +102,11 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
     if (t === "1" || t === "0") s[k] = t === "1";
     else problems.push(`${k}="${clip(t)}" must be 0 or 1; default kept`);
   }
+  const rd = p.get("rd");
+  if (rd !== null) {
+    if ((READING_KEYS as readonly string[]).includes(rd)) s.funnel.reading = rd as ReadingKey;
+    else problems.push(`rd="${clip(rd)}" is not one of ${READING_KEYS.join(", ")}; default kept`);
+  }
   const bound = p.get("bound");
   if (bound !== null) {
     if (isBoundKey(bound)) s.funnel.bound = bound;
@@ -121,6 +127,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
     if (lp === "1" || lp === "0") s.funnel.pursuit = lp === "1";
     else problems.push(`lp="${clip(lp)}" must be 0 or 1; default kept`);
   }
+  settleReading(s.funnel, rd !== null && s.funnel.reading === rd);
   // The avoidance method and the obstacles (absent: the scenario's own).
   const avoid = p.get("avoid");
   if (avoid !== null) {

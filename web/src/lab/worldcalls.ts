@@ -5,7 +5,7 @@
 // each call once and says what it refused (`EditAnswer`). No DOM here: the
 // worker bundle imports this module.
 
-import { errorText, type AgentConfig, type FunnelConfig, type GoalConfig, type Lab, type RelaxedConfig, type VehicleParams } from "../wasm";
+import { errorText, type AgentConfig, type FunnelConfig, type GoalConfig, type Lab, type Reading, type RelaxedConfig, type VehicleParams } from "../wasm";
 import { AVOID_KEYS, type AvoidKey } from "./state";
 
 /** Where the η table in force comes from: its bytes (a table built for
@@ -29,6 +29,9 @@ export interface Recipe {
   params: VehicleParams;
   funnel: FunnelConfig;
   relaxed: RelaxedConfig;
+  /** A reading of the papers in force (`Lab.setReading`, every setting of
+   *  it), or null: `funnel` and `relaxed` as they are. */
+  reading: Reading | null;
   build:
     | { kind: "scenario"; name: string; text: string }
     | { kind: "playground"; agent: AgentConfig; spawn: { n: number; seed: number; extent: number; speed: number } | null };
@@ -67,7 +70,7 @@ export interface BuildInfo {
 export type Edit =
   | { kind: "goal"; i: number; goal: GoalConfig }
   | { kind: "pose"; i: number; x: number; y: number; theta: number }
-  | { kind: "funnel"; funnel: FunnelConfig; relaxed: RelaxedConfig }
+  | { kind: "funnel"; funnel: FunnelConfig; relaxed: RelaxedConfig; reading: Reading | null }
   | { kind: "params"; params: VehicleParams }
   | { kind: "table"; bytes: Uint8Array; key: string }
   | { kind: "avoid"; method?: AvoidKey; replanEvery?: number; obstacles?: number[] };
@@ -148,8 +151,7 @@ export function buildWorld(lab: Lab, recipe: Recipe): BuildInfo {
     }
   }
   try {
-    lab.setFunnel(recipe.funnel);
-    lab.setRelaxed(recipe.relaxed);
+    setController(lab, recipe);
   } catch (e) {
     warn(`Controller settings rejected: ${errorText(e)}`);
   }
@@ -160,6 +162,16 @@ export function buildWorld(lab: Lab, recipe: Recipe): BuildInfo {
   }
   const params = lab.params();
   return { count: lab.count(), dt: params.dt, params, scenario, avoid: avoidInfo(lab), messages, paramsRefused };
+}
+
+/** The controller's settings: a whole reading, or the page's own. */
+function setController(lab: Lab, c: { funnel: FunnelConfig; relaxed: RelaxedConfig; reading: Reading | null }): void {
+  if (c.reading !== null) {
+    lab.setReading(c.reading);
+  } else {
+    lab.setFunnel(c.funnel);
+    lab.setRelaxed(c.relaxed);
+  }
 }
 
 /** Applies `e` to `lab`, which holds the world's agents `start..end`
@@ -176,8 +188,7 @@ export function applyEdit(lab: Lab, e: Edit, start: number, end: number): EditAn
         if (e.i >= start && e.i < end) lab.setPose(e.i - start, e.x, e.y, e.theta);
         break;
       case "funnel":
-        lab.setFunnel(e.funnel);
-        lab.setRelaxed(e.relaxed);
+        setController(lab, e);
         break;
       case "params":
         lab.setParams(e.params);

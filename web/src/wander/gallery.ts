@@ -8,7 +8,8 @@ import { button, slider } from "../controls";
 import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../wasm";
 import { PAPER_UNITS, View } from "../view";
 import { tooDeep } from "./jsontext";
-import { drawTile } from "./render";
+import { drawTile, traceSpan } from "./render";
+import { COMPARE } from "./compare";
 
 /** Frames a re-run takes to draw the traces. */
 const RUN_FRAMES = 45;
@@ -68,6 +69,8 @@ export interface PanelStatus {
   drawn: number;
   errors: string[];
   running: boolean;
+  /** Each tile's grid row (its top, CSS px) and drawing scale (px per unit). */
+  scales: Array<{ top: number; scale: number }>;
 }
 
 export class GalleryPanel {
@@ -88,6 +91,13 @@ export class GalleryPanel {
     sec.textContent = `(${preset.section}, ${preset.variants.length} variants)`;
     h.append(sec);
     this.root.append(h);
+    const compare = COMPARE[name];
+    if (compare) {
+      const p = document.createElement("p");
+      p.className = "compare";
+      p.textContent = compare;
+      this.root.append(p);
+    }
 
     const knobs = document.createElement("div");
     knobs.className = "knobs";
@@ -133,12 +143,8 @@ export class GalleryPanel {
     const cap = document.createElement("figcaption");
     cap.className = "label";
     cap.textContent = variant.label;
-    if (variant.figure) {
-      const fig = document.createElement("span");
-      fig.className = "fig";
-      fig.textContent = ` · ${variant.figure}`;
-      cap.append(fig);
-    }
+    // The paper's image file name is for finding it in the paper, not a title.
+    if (variant.figure) cap.title = `the paper's image: ${variant.figure}`;
     const error = document.createElement("div");
     error.className = "err";
     const details = document.createElement("details");
@@ -176,7 +182,7 @@ export class GalleryPanel {
       this.chunk = Math.ceil(this.knobs.steps / RUN_FRAMES);
     });
     this.tiles.push(tile);
-    tile.surface = setupCanvas(canvas, () => this.draw(tile));
+    tile.surface = setupCanvas(canvas, () => this.drawAll());
     return el;
   }
 
@@ -192,7 +198,7 @@ export class GalleryPanel {
     } catch (e) {
       tile.error.textContent = errorText(e);
       tile.pending = 0;
-      this.draw(tile);
+      this.drawAll();
     }
   }
 
@@ -204,8 +210,8 @@ export class GalleryPanel {
         t.lab.run(t.pending);
         t.pending = 0;
       }
-      this.draw(t);
     }
+    this.drawAll();
   }
 
   /** Replays from step 0, the traces growing over RUN_FRAMES frames. */
@@ -222,24 +228,38 @@ export class GalleryPanel {
 
   /** One animation frame: replays the next chunk of every pending tile. */
   tick(): void {
+    let ran = false;
     for (const t of this.tiles) {
       if (!t.lab || t.pending <= 0) continue;
       const n = Math.min(t.pending, this.chunk);
       t.lab.run(n);
       t.pending -= n;
-      this.draw(t);
+      ran = true;
     }
+    if (ran) this.drawAll();
   }
 
-  private draw(t: Tile): void {
-    const s = t.surface;
-    if (!s) return;
-    if (!t.lab) {
-      beginFrame(s, "#fbeaea");
-      return;
-    }
-    drawTile(s, t.view, t.lab.trace(), t.lab.pathPoints());
-    t.drawn = t.lab.traceLen() > 1;
+  /** Draws every tile, the tiles of one grid row at one scale (the
+   *  row's largest trace), so that a row compares like with like. */
+  private drawAll(): void {
+    const traces = this.tiles.map((t) => (t.lab ? { trace: t.lab.trace(), path: t.lab.pathPoints() } : null));
+    const rowOf = this.tiles.map((t) => Math.round(t.canvas.getBoundingClientRect().top));
+    const span = new Map<number, number>();
+    this.tiles.forEach((_, i) => {
+      const tr = traces[i];
+      if (tr) span.set(rowOf[i]!, Math.max(span.get(rowOf[i]!) ?? 0, traceSpan(tr.trace, tr.path)));
+    });
+    this.tiles.forEach((t, i) => {
+      const s = t.surface;
+      if (!s) return;
+      const tr = traces[i];
+      if (!t.lab || !tr) {
+        beginFrame(s, "#fbeaea");
+        return;
+      }
+      drawTile(s, t.view, tr.trace, tr.path, span.get(rowOf[i]!) ?? 0);
+      t.drawn = t.lab.traceLen() > 1;
+    });
   }
 
   status(): PanelStatus {
@@ -249,6 +269,7 @@ export class GalleryPanel {
       drawn: this.tiles.filter((t) => t.drawn).length,
       errors: this.tiles.map((t) => t.error.textContent ?? "").filter((e) => e !== ""),
       running: this.tiles.some((t) => t.pending > 0),
+      scales: this.tiles.map((t) => ({ top: Math.round(t.canvas.getBoundingClientRect().top), scale: t.view.scale })),
     };
   }
 }

@@ -25,10 +25,13 @@ function niceLength(span: number): number {
   return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
 }
 
-/** `trace` is flat [x, y, θ, ...]; `path` flat [x, y, ...] (may be empty). */
-export function drawTile(s: Surface, view: View, trace: Float32Array, path: Float32Array): void {
-  const ctx = s.ctx;
-  beginFrame(s, "#ffffff");
+/** The larger side of the box round `trace` and `path` (world units), or 0. */
+export function traceSpan(trace: Float32Array, path: Float32Array): number {
+  const b = bounds(trace, path);
+  return b ? Math.max(b.x1 - b.x0, b.y1 - b.y0) : 0;
+}
+
+function bounds(trace: Float32Array, path: Float32Array): { x0: number; y0: number; x1: number; y1: number } | null {
   const n = Math.floor(trace.length / 3);
   let x0 = Infinity, y0 = Infinity, x1 = -Infinity, y1 = -Infinity;
   const grow = (x: number, y: number): void => {
@@ -39,10 +42,25 @@ export function drawTile(s: Surface, view: View, trace: Float32Array, path: Floa
   };
   for (let i = 0; i < n; i++) grow(trace[3 * i] ?? 0, trace[3 * i + 1] ?? 0);
   for (let i = 0; i + 1 < path.length; i += 2) grow(path[i] ?? 0, path[i + 1] ?? 0);
-  if (!Number.isFinite(x0)) return;
-  const pad = Math.max(4, 0.02 * Math.max(x1 - x0, y1 - y0));
+  return Number.isFinite(x0) ? { x0, y0, x1, y1 } : null;
+}
+
+/** `trace` is flat [x, y, θ, ...]; `path` flat [x, y, ...] (may be empty).
+ *  `span`: the world length the tile's side shows (the largest trace of
+ *  its row, so that a row's tiles share one scale), centred on this trace;
+ *  0 fits the trace alone. */
+export function drawTile(s: Surface, view: View, trace: Float32Array, path: Float32Array, span = 0): void {
+  const ctx = s.ctx;
+  beginFrame(s, "#ffffff");
+  const n = Math.floor(trace.length / 3);
+  const box = bounds(trace, path);
+  if (!box) return;
+  const { x0, y0, x1, y1 } = box;
+  const side = Math.max(span, x1 - x0, y1 - y0);
+  const pad = Math.max(4, 0.02 * side);
+  const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   view.resize(s.width, s.height);
-  view.fit(x0 - pad, y0 - pad, x1 + pad, y1 + pad, 8);
+  view.fit(cx - side / 2 - pad, cy - side / 2 - pad, cx + side / 2 + pad, cy + side / 2 + pad, 8);
 
   ctx.lineJoin = "round";
   ctx.lineCap = "round";
@@ -91,7 +109,7 @@ export function drawTile(s: Surface, view: View, trace: Float32Array, path: Floa
   }
 
   // Scale bar.
-  const len = niceLength(Math.max(x1 - x0, y1 - y0));
+  const len = niceLength(side);
   const px = len * view.scale;
   ctx.strokeStyle = "#555";
   ctx.lineWidth = 1.5;

@@ -1,7 +1,7 @@
 // Section 5, "Modes" (paper 000 §5, Fig. 5; colours §6): the decision
 // diagram of the four control modes, the one in force lit live in the
-// paper's colours while the vehicle runs, and the target drawn as the lab
-// draws it (red circle: seek, blue triangle: Orientation_only, both:
+// lab's colours (src/modes.ts) while the vehicle runs, and the target drawn
+// as the lab draws it (circle: seek, triangle: Orientation_only, both:
 // Funnelling, grey: End_of_Steering).
 
 import { slider } from "../../controls";
@@ -10,6 +10,9 @@ import { backdrop, COLOURS, deg, drawTarget, MODE_NAMES, path, vehicle } from ".
 import { LiveFigure } from "../figure";
 import { typesetText } from "../glossary";
 import { goal, labState, live, Run } from "../run";
+import { modeColour, modeTextColour, modeWords } from "../../modes";
+
+export { modeColour };
 
 const DEG = Math.PI / 180;
 
@@ -21,14 +24,11 @@ const DIAGRAM: ReadonlyArray<{ mode: number; test: string }> = [
   { mode: Mode.Funnelling, test: "else" },
 ];
 
-export function modeColour(mode: number): string {
-  return mode === Mode.EndOfSteering ? COLOURS.end : mode === Mode.OrientationOnly ? COLOURS.orientation : COLOURS.seek;
-}
-
-/** The mode's colour for text on the page's paper (the drawing's grey and
- *  red darkened to a 4.5:1 contrast, WCAG AA). */
-function modeTextColour(mode: number): string {
-  return mode === Mode.EndOfSteering ? "#5f646c" : mode === Mode.OrientationOnly ? COLOURS.orientation : "#b3141c";
+/** The paper's name of mode `m`, with the lab's word for it where that differs. */
+function withWord(m: number): string {
+  const name = MODE_NAMES[m] ?? "";
+  const word = modeWords(m)?.word ?? "";
+  return word === "" || word === name.toLowerCase() ? name : `${name} (${word})`;
 }
 
 export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
@@ -51,7 +51,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     li.innerHTML = `<code></code> → <b></b>`;
     li.querySelector("code")!.innerHTML = typesetText(d.test);
     const b = li.querySelector("b")!;
-    b.textContent = MODE_NAMES[d.mode] ?? "";
+    b.textContent = withWord(d.mode);
     b.style.color = modeTextColour(d.mode);
     diagram.append(li);
   }
@@ -74,7 +74,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     },
     numbers() {
       const m = inter?.mode ?? Mode.Funnelling;
-      live("modes-mode", MODE_NAMES[m] ?? "—");
+      live("modes-mode", MODE_NAMES[m] !== undefined ? withWord(m) : "—");
       live("modes-D", inter ? `${inter.d.toFixed(2)} m` : "—");
       const e = beta - run.field(0, StateField.Theta);
       live("modes-head", deg(Math.abs(Math.atan2(Math.sin(e), Math.cos(e)))));

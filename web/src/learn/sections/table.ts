@@ -10,10 +10,51 @@ import { backdrop, COLOURS, deg, drawField, drawGhost, ray, vehicle } from "../d
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";
 
+/** Times `f` (which does `n` of something) until a call takes at least
+ *  `ms`, doubling `n`: µs per item. */
+function perItemUs(f: (n: number) => void, n0: number, ms: number): number {
+  let n = n0;
+  for (;;) {
+    const t0 = performance.now();
+    f(n);
+    const dt = performance.now() - t0;
+    if (dt >= ms || n >= 1_000_000) return (1000 * dt) / n;
+    n *= dt > 0 ? Math.min(8, Math.max(2, Math.ceil(ms / dt))) : 8;
+  }
+}
+
+function us(x: number): string {
+  return x >= 100 ? `${x.toFixed(0)} µs` : x >= 1 ? `${x.toFixed(1)} µs` : `${(1000 * x).toFixed(0)} ns`;
+}
+
+/** Why the table exists, measured by the core on the reader's machine
+ *  once the page is idle: a plain seek simulated to its end (what η
+ *  means; the table's entries were made so) against a table lookup, on the
+ *  same seeded targets and speeds. */
+function measureCost(lab: Lab): void {
+  const seed = 7;
+  const sim = perItemUs((n) => lab.seekSimulations(n, seed), 8, 60);
+  const look = perItemUs((n) => lab.tableLookups(n, seed), 2000, 20);
+  live("table-sim-us", us(sim));
+  live("table-lookup-us", us(look));
+  live("table-ratio", `${Math.round(sim / look).toLocaleString("en")}`);
+  // 1,000 agents, one η each per update, 60 updates a second.
+  live("table-sim-frame", `${((1000 * sim) / 1000).toFixed(0)} ms`);
+  live("table-lookup-frame", `${((1000 * look) / 1000).toFixed(2)} ms`);
+}
+
 export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
   const probe = { x: 1.2, y: 1.4 };
   const speeds = { vC: 1.6, omegaC: 0, vD: 1.6 };
   const lab = base.fork();
+  const idle = window.requestIdleCallback ?? ((f: () => void) => window.setTimeout(f, 300));
+  idle(() => {
+    try {
+      measureCost(lab);
+    } catch {
+      live("table-sim-us", "(not measured)");
+    }
+  });
   const A = lab.params().normalAccelMax;
   const wMax = lab.params().omegaMax;
   let field: Float32Array = new Float32Array(0);
