@@ -11,7 +11,7 @@ import { setLinkContext, type LiveFigure } from "./figure";
 import { defineSymbols, typesetText } from "./glossary";
 import { challengesSection } from "./sections/challenges";
 import { etaSection } from "./sections/eta";
-import { modesSection } from "./sections/modes";
+import { modesSection, nameModes } from "./sections/modes";
 import { modulationSection } from "./sections/modulation";
 import { movingSection } from "./sections/moving";
 import { regionSection } from "./sections/region";
@@ -62,6 +62,7 @@ if (import.meta.env.MODE === "test") {
 
 async function start(): Promise<void> {
   defineSymbols(document);
+  nameModes(document);
   showVersion(await loadCore());
   // The table in byte planes (src/tableplanes.ts: less than half the gzipped bytes).
   const lab = await createLab("tables/eta.planes");

@@ -5,7 +5,8 @@
 // error, modes visited); the reader can drag the target to try worse.
 
 import { Mode, StateField, type Lab } from "../../wasm";
-import { backdrop, COLOURS, deg, drawTarget, MODE_NAMES, path, vehicle } from "../draw";
+import { backdrop, COLOURS, deg, drawTarget, path, vehicle } from "../draw";
+import { modeWords } from "../../modes";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run, type Outcome } from "../run";
 
@@ -64,13 +65,13 @@ export function challengesSection(host: HTMLElement, base: Lab): LiveFigure {
       live("break-error", o ? deg(o.headingError[0]!) : "—");
       live("break-length", o ? `${o.length[0]!.toFixed(1)} m` : "—");
       // Modes in the order first entered, and how often the mode changed
-      // (Funnelling ⇄ Position_only alternate where |Δη| hovers at the threshold).
+      // (funnelling ⇄ seeking alternate where |Δη| hovers at the threshold).
       const seq = o ? o.modes[0]! : [];
       const firsts = seq.filter((m, k) => seq.indexOf(m) === k);
-      live("break-modes", o ? `${firsts.map((m) => MODE_NAMES[m] ?? "?").join(" → ")} (${seq.length - 1} mode changes)` : "—");
+      live("break-modes", o ? `${firsts.map((m) => modeWords(m)?.word ?? "?").join(" → ")} (${seq.length - 1} mode changes)` : "—");
       live("break-D", `${Math.hypot(target.x, target.y).toFixed(2)} m`);
       live("break-tol", `D_tol ${ch.dTol.toFixed(2)} m, ε_tol ${deg(ch.epsTol)}`);
-      live("break-mode-now", MODE_NAMES[run.field(0, StateField.Mode)] ?? "—");
+      live("break-mode-now", modeWords(run.field(0, StateField.Mode))?.word ?? "—");
       const orbit = o ? o.modes[0]!.filter((m) => m === Mode.OrientationOnly).length : 0;
       live("break-returns", String(orbit));
       for (const el of document.querySelectorAll<HTMLElement>("[data-challenge]")) el.hidden = el.dataset["challenge"] !== ch.key;

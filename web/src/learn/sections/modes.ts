@@ -1,16 +1,18 @@
 // Section 5, "Modes" (paper 000 §5, Fig. 5; colours §6): the decision
 // diagram of the four control modes, the one in force lit live in the
-// lab's colours (src/modes.ts) while the vehicle runs, and the target drawn
-// as the lab draws it (circle: seek, triangle: Orientation_only, both:
-// Funnelling, grey: End_of_Steering).
+// lab's words and colours (src/modes.ts) while the vehicle runs, and the
+// target drawn as the lab draws it (circle: seeking, triangle: turning on
+// the spot, both: funnelling, grey: arrived). The prose's mode names
+// (b[data-mode]) take their words and colours from the same module, so the
+// page and the lab's legend cannot drift apart.
 
 import { slider } from "../../controls";
 import { Mode, StateField, type Internals, type Lab } from "../../wasm";
-import { backdrop, COLOURS, deg, drawTarget, MODE_NAMES, path, vehicle } from "../draw";
+import { backdrop, COLOURS, deg, drawTarget, path, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { typesetText } from "../glossary";
 import { goal, labState, live, Run } from "../run";
-import { modeColour, modeTextColour, modeWords } from "../../modes";
+import { MODE_WORDS, modeColour, modeTextColour, modeWords, type ModeKey } from "../../modes";
 
 export { modeColour };
 
@@ -24,11 +26,20 @@ const DIAGRAM: ReadonlyArray<{ mode: number; test: string }> = [
   { mode: Mode.Funnelling, test: "else" },
 ];
 
-/** The paper's name of mode `m`, with the lab's word for it where that differs. */
-function withWord(m: number): string {
-  const name = MODE_NAMES[m] ?? "";
-  const word = modeWords(m)?.word ?? "";
-  return word === "" || word === name.toLowerCase() ? name : `${name} (${word})`;
+/** The lab's word for mode `m` ("—" for none). */
+function word(m: number): string {
+  return modeWords(m)?.word ?? "—";
+}
+
+/** Writes the lab's word (capitalised) and text colour into each
+ *  b[data-mode] of `root`, keyed by the core's mode name. */
+export function nameModes(root: ParentNode): void {
+  for (const b of root.querySelectorAll<HTMLElement>("b[data-mode]")) {
+    const w = MODE_WORDS[b.dataset["mode"] as ModeKey] as (typeof MODE_WORDS)[ModeKey] | undefined;
+    if (!w) continue;
+    b.textContent = w.word.charAt(0).toUpperCase() + w.word.slice(1);
+    b.style.color = w.text;
+  }
 }
 
 export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
@@ -51,7 +62,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     li.innerHTML = `<code></code> → <b></b>`;
     li.querySelector("code")!.innerHTML = typesetText(d.test);
     const b = li.querySelector("b")!;
-    b.textContent = withWord(d.mode);
+    b.textContent = word(d.mode);
     b.style.color = modeTextColour(d.mode);
     diagram.append(li);
   }
@@ -74,7 +85,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
     },
     numbers() {
       const m = inter?.mode ?? Mode.Funnelling;
-      live("modes-mode", MODE_NAMES[m] !== undefined ? withWord(m) : "—");
+      live("modes-mode", word(m));
       live("modes-D", inter ? `${inter.d.toFixed(2)} m` : "—");
       const e = beta - run.field(0, StateField.Theta);
       live("modes-head", deg(Math.abs(Math.atan2(Math.sin(e), Math.cos(e)))));
