@@ -223,7 +223,24 @@ try {
       const r = await p.evaluate(() => Object.fromEntries(["table-sim-us", "table-lookup-us", "table-ratio", "table-sim-frame", "table-lookup-frame"].map((k) => [k, document.querySelector(`[data-live="${k}"]`).textContent])));
       console.log(`# ${tag}: learn §3 on this host: seek simulation ${r["table-sim-us"]}, lookup ${r["table-lookup-us"]}, ratio ${r["table-ratio"]}; 1,000 agents: ${r["table-sim-frame"]} vs ${r["table-lookup-frame"]} per frame`);
       assert.ok(Number(r["table-ratio"].replace(/,/g, "")) > 10, JSON.stringify(r));
-      await p.locator("#table .prose").screenshot({ path: resolve(SHOTS, `learn-table-${tag}.png`) });
+      if (tag === "phone") {
+        // As a reader sees it: the cost paragraph scrolled up under the
+        // pinned figure, whole, with the page's margin on its left.
+        const last = p.locator("#table .prose p").last();
+        await last.evaluate((el) => el.scrollIntoView({ block: "end" }));
+        await p.waitForTimeout(300);
+        const g = await p.evaluate(() => {
+          const fig = document.querySelector('[data-figure="table"]').getBoundingClientRect();
+          const para = [...document.querySelectorAll("#table .prose p")].at(-1).getBoundingClientRect();
+          return { figBottom: fig.bottom, figHeight: fig.height, paraTop: para.top, paraLeft: para.left, vh: window.innerHeight };
+        });
+        assert.ok(g.figHeight <= 0.45 * g.vh + 1, `pinned figure ${g.figHeight} px of ${g.vh}`);
+        assert.ok(g.paraTop >= g.figBottom, `paragraph top ${g.paraTop} under the figure (bottom ${g.figBottom})`);
+        assert.ok(g.paraLeft >= 12, `text ${g.paraLeft} px from the left edge`);
+        await p.screenshot({ path: resolve(SHOTS, `learn-table-${tag}.png`) });
+      } else {
+        await p.locator("#table .prose").screenshot({ path: resolve(SHOTS, `learn-table-${tag}.png`) });
+      }
       await p.close();
     });
 

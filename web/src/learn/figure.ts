@@ -53,6 +53,37 @@ export const REWIND_MS = 1500;
 
 const reducedMotion = (): boolean => window.matchMedia("(prefers-reduced-motion: reduce)").matches;
 
+/** The stacked layout of learn.css (phones), where each figure is pinned
+ *  above its prose. */
+const stacked = window.matchMedia("(max-width: 820px)");
+/** Share of the viewport's height a pinned figure is sized to, so that
+ *  the paragraph read under it (about 10 lines) stays in view beside it. */
+const PINNED_SHARE = 0.45;
+/** A figure taller than this share even with the smallest canvas is not
+ *  pinned: it would leave too little room for the text. */
+const UNPIN_SHARE = 0.5;
+/** The canvas's height range on a phone, CSS px: below 150 px the
+ *  figures' labels crowd; above 300 px nothing more is seen. */
+const STAGE_MIN = 150;
+const STAGE_MAX = 300;
+
+/** On a phone, sizes `stage` so that the whole pinned figure `host` (its
+ *  buttons, sliders and diagram included) takes at most PINNED_SHARE of
+ *  the viewport; a figure over UNPIN_SHARE even at STAGE_MIN is not
+ *  pinned (it scrolls away with its section rather than cover the text). */
+function fitPinned(host: HTMLElement, stage: HTMLElement): void {
+  if (!stacked.matches) {
+    stage.style.height = "";
+    host.classList.remove("unpinned");
+    return;
+  }
+  const room = PINNED_SHARE * window.innerHeight;
+  const chrome = host.offsetHeight - stage.offsetHeight;
+  const h = Math.round(Math.min(STAGE_MAX, Math.max(STAGE_MIN, room - chrome)));
+  if (stage.style.height !== `${h}px`) stage.style.height = `${h}px`;
+  host.classList.toggle("unpinned", chrome + h > UNPIN_SHARE * window.innerHeight);
+}
+
 /** Figures currently playing; one animation frame drives them all. */
 const playing = new Set<LiveFigure>();
 let rafId = 0;
@@ -112,6 +143,10 @@ export class LiveFigure {
       this.refit();
     });
     this.handles = spec.handles.map((h) => new Handle(h, stage, this.view, () => this.changed()));
+    const fit = (): void => fitPinned(host, stage);
+    new ResizeObserver(fit).observe(host);
+    window.addEventListener("resize", fit);
+    stacked.addEventListener("change", fit);
     new IntersectionObserver((entries) => {
       if (entries.some((e) => e.isIntersecting) && !this.autoplayed && !reducedMotion()) {
         this.autoplayed = true;

@@ -67,10 +67,45 @@ function rewrite(el: Element, define: boolean): void {
   })).join("");
 }
 
+/** Keeps an open definition inside the viewport (a symbol near the right
+ *  edge of a phone would push it off screen). */
+function keepInView(sym: Element): void {
+  const def = sym.querySelector<HTMLElement>(".def");
+  if (!def) return;
+  def.style.left = "";
+  const r = def.getBoundingClientRect();
+  const over = r.right - (document.documentElement.clientWidth - 8);
+  if (over > 0) def.style.left = `${-Math.min(over, r.left - 8)}px`;
+}
+
+/** Tap (or click) on a symbol toggles its definition, for touch screens
+ *  where there is no hover and only a symbol's first use takes focus; a
+ *  tap elsewhere closes it. */
+function tapToDefine(root: Document): void {
+  root.addEventListener("click", (e) => {
+    const sym = e.target instanceof Element ? e.target.closest(".sym") : null;
+    for (const o of root.querySelectorAll(".sym.open")) {
+      if (o !== sym) o.classList.remove("open");
+    }
+    if (!sym) return;
+    const open = sym.classList.toggle("open");
+    if (open) keepInView(sym);
+    else if (sym instanceof HTMLElement) sym.blur();
+  });
+  root.addEventListener("focusin", (e) => {
+    if (e.target instanceof Element && e.target.classList.contains("sym")) keepInView(e.target);
+  });
+  root.addEventListener("pointerover", (e) => {
+    const sym = e.target instanceof Element ? e.target.closest(".sym") : null;
+    if (sym) keepInView(sym);
+  });
+}
+
 /** Typesets the page's headings and prose, defines its symbols, and adds
  *  the glossary after the introduction. Run before the figures write their
  *  live numbers (the rewrite replaces the prose's elements). */
-export function defineSymbols(root: ParentNode): void {
+export function defineSymbols(root: Document): void {
+  tapToDefine(root);
   for (const h of root.querySelectorAll("section.chapter h2")) rewrite(h, false);
   for (const p of root.querySelectorAll(".prose p")) rewrite(p, true);
   const intro = root.querySelector("header.intro");
