@@ -254,6 +254,18 @@ try {
         }
       }
     });
+    await check("phone: a tap on a symbol shows its definition inside the screen, a tap elsewhere hides it", async () => {
+      // A later use of η: not focusable, so only the tap handler can open it.
+      const sym = page.locator("#table .prose .sym:not([tabindex])").first();
+      await sym.scrollIntoViewIfNeeded();
+      await sym.tap();
+      const def = sym.locator(".def");
+      assert.ok(await def.isVisible(), "definition shown on tap");
+      const box = await def.boundingBox();
+      assert.ok(box.x >= 0 && box.x + box.width <= 390, `definition at ${box.x}..${box.x + box.width}`);
+      await page.locator("#table h2").tap();
+      assert.ok(!(await def.isVisible()), "definition hidden after a tap elsewhere");
+    });
     await playedChecks(page, "phone");
     await check("phone: no console errors", async () => assert.deepEqual(problems, []));
     allProblems.push(...problems);
