@@ -149,6 +149,18 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   limBox.addEventListener("input", syncVehicle);
   limBox.addEventListener("change", syncVehicle);
 
+  overlaySections(panel, sim, numeric);
+  followLimits();
+  exportSection(panel, sim, canvas);
+
+  return { beta, epsTol, dTol };
+}
+
+type Numeric = (parent: HTMLElement, url: string, w: Window, onInput: (v: number) => void) => Control;
+
+/** The overlay switches and the η field view's sliders. */
+function overlaySections(panel: HTMLElement, sim: LabSim, numeric: Numeric): void {
+  const st = sim.st;
   const ovBox = section(panel, "Overlays");
   const ov = (key: keyof Overlays, label: string): void => {
     checkbox(ovBox, `ov-${key}`, label, st.overlays[key], (v) => { st.overlays[key] = v; sim.dirty = true; sim.url.save(); });
@@ -169,9 +181,11 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   fieldSlider("fvc", "vC", 0, 4);
   fieldSlider("fwc", "omegaC", -3, 3);
   fieldSlider("fvd", "vD", 0, 4);
-  followLimits();
   help(fieldBox).textContent = "Arrows: final direction α+η at each sampled target around the vehicle; darker = unreachable at v_d (η shown for the stored v_dt).";
+}
 
+/** Share and export: link, trajectories, picture. */
+function exportSection(panel: HTMLElement, sim: LabSim, canvas: HTMLCanvasElement): void {
   const exBox = section(panel, "Share and export");
   const exRow = row(exBox);
   button(exRow, "copy-link", "Copy link", "Copy a link with the whole state", () => {
@@ -179,9 +193,7 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
     void navigator.clipboard?.writeText(location.href).catch(() => {});
   });
   button(exRow, "csv", "CSV", "Trajectories as CSV", () => downloadCsv(sim.trails));
-  button(exRow, "json", "JSON", "Trajectories as JSON", () => downloadJson(sim.trails, { state: st, params: sim.params() }));
+  button(exRow, "json", "JSON", "Trajectories as JSON", () => downloadJson(sim.trails, { state: sim.st, params: sim.params() }));
   button(exRow, "png", "PNG", "The canvas as PNG", () => downloadPng(canvas));
   help(exBox).innerHTML = "<kbd>space</kbd> pause · <kbd>s</kbd> step · <kbd>r</kbd> reset · drag empty space to pan, wheel to zoom.";
-
-  return { beta, epsTol, dTol };
 }
