@@ -796,7 +796,13 @@ fn p001_fig11_relaxed_entry_points_spread_with_tolerance() {
     assert!(at(&rows, 45, label) < 2.0 * at(&rows, 5, label), "{rows:?}");
     assert!(at(&dist, 45, label) < 1.2 * at(&dist, 5, label), "{dist:?}");
     assert!(at(&rows, 45, "standard") < 0.05, "{rows:?}");
-    let key = |label: &str| if label == "standard" { "standard" } else { "paper-arc" };
+    let key = |label: &str| {
+        if label == "standard" {
+            "standard"
+        } else {
+            "paper-arc"
+        }
+    };
     let mut figs: Vec<Figure> = rows
         .iter()
         .map(|(tol, label, v)| {
@@ -812,7 +818,9 @@ fn p001_fig11_relaxed_entry_points_spread_with_tolerance() {
     figs.extend(dist.iter().map(|(tol, label, v)| {
         Figure::new(
             &format!("p001.fig11.tol{tol}.{}.middle-distance", key(label)),
-            &format!("mean distance from the middle path at 10/20/30 m of travel, ε_tol {tol}°, {label}"),
+            &format!(
+                "mean distance from the middle path at 10/20/30 m of travel, ε_tol {tol}°, {label}"
+            ),
             f64::from(*v),
             "m",
             2,
