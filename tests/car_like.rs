@@ -9,6 +9,8 @@
 
 mod common;
 
+use common::figures::{record, Figure, Kind, Seeds};
+
 use std::sync::OnceLock;
 
 use steering::base::metrics::percentile;
@@ -130,9 +132,10 @@ struct Band {
     oriented_far5: (usize, usize),
     ratios: Vec<f32>,
     ratios_speed: Vec<f32>,
+    ratios_slow: Vec<f32>,
 }
 
-fn summarise(runs: &[CarRun]) -> Vec<Band> {
+fn summarise(runs: &[CarRun], v_slow: f32) -> Vec<Band> {
     let mut bands: Vec<Band> = BANDS.iter().map(|_| Band::default()).collect();
     for r in runs {
         let k = BANDS
@@ -157,10 +160,52 @@ fn summarise(runs: &[CarRun]) -> Vec<Band> {
         if r.finished && r.dubins > 0.0 {
             b.ratios.push(r.length / r.dubins);
             b.ratios_speed.push(r.length / r.dubins_at_speed);
+            if r.v0 <= v_slow {
+                b.ratios_slow.push(r.length / r.dubins);
+            }
         }
     }
     bands
 }
+
+/// Oriented on entry per cell (band × ε_tol × D_tol), one line per band
+/// and ε_tol; and the smallest share over the cells at D ≥ 5 R_min with
+/// ε_tol ≥ 5° (cells of at least 10 entries).
+fn cells(runs: &[CarRun]) -> (Vec<String>, f64) {
+    let mut lines = Vec::new();
+    let mut worst = 100.0f64;
+    for (lo, hi) in BANDS {
+        for eps in steering::studies::envelope::EPS_TOLS_DEG {
+            let mut line = format!("  oriented on entry, D {lo}–{hi} R_min, ε_tol {eps}°:");
+            for dt in steering::studies::car_like::D_TOLS {
+                let sel: Vec<&CarRun> = runs
+                    .iter()
+                    .filter(|r| {
+                        r.d0 >= lo * 0.999
+                            && r.d0 < hi
+                            && (r.eps_tol_deg - eps).abs() < 0.01
+                            && (r.d_tol - dt).abs() < 1e-3
+                            && r.reached
+                            && !r.starts_inside
+                    })
+                    .collect();
+                let ok = sel.iter().filter(|r| r.oriented_on_entry).count();
+                let share = pct(ok, sel.len());
+                line += &format!(" D_tol {dt} R: {share:.0} % of {};", sel.len());
+                if lo >= 5.0 && eps >= 5.0 && sel.len() >= 10 {
+                    worst = worst.min(share);
+                }
+            }
+            lines.push(line);
+        }
+    }
+    (lines, worst)
+}
+
+/// The report seed (never tuned on: the parameters of
+/// `crate::funnelling::manoeuvre` were chosen on seed 1) and its runs.
+const REPORT_SEED: u64 = 2;
+const REPORT_N: usize = 1500;
 
 fn pct(a: usize, b: usize) -> f64 {
     100.0 * a as f64 / b.max(1) as f64
@@ -178,7 +223,14 @@ fn car_like_arrives_oriented_without_pivoting() {
         .unwrap_or(1500);
     let p = car_like();
     let runs = run_all(table(), &p, seed, n);
-    let bands = summarise(&runs);
+    let v_slow = steering::funnelling::manoeuvre::manoeuvre_speed(
+        &p,
+        &steering::funnelling::goal::Goal {
+            speed: p.v_max,
+            ..Default::default()
+        },
+    );
+    let bands = summarise(&runs, v_slow);
     let violations: u32 = runs.iter().map(|r| r.violations).sum();
     let pivots: u32 = runs.iter().map(|r| r.pivots).sum();
     let max_solves = runs
@@ -193,8 +245,9 @@ fn car_like_arrives_oriented_without_pivoting() {
     for (b, (lo, hi)) in bands.iter().zip(BANDS) {
         let mut r = b.ratios.clone();
         let mut rs = b.ratios_speed.clone();
+        let mut rl = b.ratios_slow.clone();
         eprintln!(
-            "D {lo}–{hi} R_min: {} runs, reach {:.2} %, rest ok {:.2} % of {}, oriented on entry {:.1} % of {} ({:.1} % of {} at ε ≥ 5°), length/Dubins(R_min) median {:.2} p90 {:.2}, /Dubins(speed) median {:.2} p90 {:.2}",
+            "D {lo}–{hi} R_min: {} runs, reach {:.2} %, rest ok {:.2} % of {}, oriented on entry {:.1} % of {} ({:.1} % of {} at ε ≥ 5°), length/Dubins(R_min) median {:.2} p90 {:.2}, /Dubins(speed) median {:.2} p90 {:.2}; starting at most {v_slow:.1} m/s: /Dubins(R_min) median {:.2} p90 {:.2} of {}",
             b.runs,
             pct(b.reached, b.runs),
             pct(b.rest_ok, b.halting),
@@ -207,39 +260,129 @@ fn car_like_arrives_oriented_without_pivoting() {
             percentile(&mut r, 0.9),
             percentile(&mut rs, 0.5),
             percentile(&mut rs, 0.9),
+            percentile(&mut rl, 0.5),
+            percentile(&mut rl, 0.9),
+            rl.len(),
         );
+    }
+    let mut all: Vec<f32> = bands
+        .iter()
+        .flat_map(|b| b.ratios.iter().copied())
+        .collect();
+    eprintln!(
+        "all bands: length/Dubins(R_min) median {:.2} p90 {:.2} of {}",
+        percentile(&mut all, 0.5),
+        percentile(&mut all, 0.9),
+        all.len()
+    );
+    let cells = cells(&runs);
+    for line in &cells.0 {
+        eprintln!("{line}");
     }
     for r in runs.iter().filter(|r| r.halting && !r.rest_ok).take(10) {
         eprintln!("  not at rest inside: {r:?}");
     }
-    assert_eq!(violations, 0);
-    assert!(max_solves <= 1);
-}
-
-#[test]
-fn zz_trace() {
-    let Ok(i) = std::env::var("CAR_TRACE").map(|s| s.parse::<usize>().unwrap()) else {
+    if seed != REPORT_SEED || n != REPORT_N {
         return;
-    };
-    let p = car_like();
-    let (start, g) = steering::studies::car_like::scenario(&p, 1, i);
-    eprintln!("{start:?} {g:?}");
-    let mut w = steering::world::World::new(p, Default::default()).unwrap();
-    w.add_agent(
-        start,
-        vec![steering::world::goals::GoalSpec {
-            goal: g,
-            motion: steering::world::goals::GoalMotion::Static,
-            switch: steering::world::goals::SwitchRule::EndOfSteering,
-        }],
-    )
-    .unwrap();
-    for k in 0..6000 {
-        w.step(table());
-        let a = &w.agents[0];
-        if k % 60 == 0 {
-            let m = &a.memory.manoeuvre;
-            eprintln!("{k} pos {:.1} {:.1} th {:.2} v {:.2} w {:.3} mode {:?} d {:.2} vdt {:.2} act {} s {:.1} len {:.1} solves {}", a.state.pos.x, a.state.pos.y, a.state.theta, a.state.v, a.state.omega, a.internals.mode, a.internals.d, a.internals.v_dt, m.active, m.s, m.path.length(), m.solves);
+    }
+    let mut figs = vec![
+        Figure::new(
+            "car_like.violations",
+            "steps with a violated limit (|ω| ≤ v/R_min included), all runs",
+            f64::from(violations),
+            "steps",
+            0,
+        ),
+        Figure::new(
+            "car_like.pivots",
+            "steps turning > 1° slower than 2 % of v_max, all runs",
+            f64::from(pivots),
+            "steps",
+            0,
+        ),
+        Figure::new(
+            "car_like.solves_per_update_max",
+            "Dubins solves in one update, most",
+            f64::from(max_solves),
+            "",
+            0,
+        ),
+        Figure::new(
+            "car_like.solves_per_1000_updates",
+            "Dubins solves per 1,000 updates",
+            1000.0 * solves as f64 / updates.max(1) as f64,
+            "",
+            2,
+        ),
+        Figure::new(
+            "car_like.length_ratio.median",
+            "path length / Dubins shortest (R_min), all bands, median",
+            f64::from(percentile(&mut all, 0.5)),
+            "×",
+            2,
+        ),
+        Figure::new(
+            "car_like.length_ratio.p90",
+            "path length / Dubins shortest (R_min), all bands, p90",
+            f64::from(percentile(&mut all, 0.9)),
+            "×",
+            2,
+        ),
+    ];
+    for (b, (lo, hi)) in bands.iter().zip(BANDS) {
+        let key = format!("car_like.d{lo}-{hi}");
+        let mut r = b.ratios.clone();
+        figs.push(Figure::new(
+            &format!("{key}.rest_ok"),
+            &format!("halting runs at rest inside both tolerances, D {lo}–{hi} R_min"),
+            pct(b.rest_ok, b.halting),
+            "%",
+            2,
+        ));
+        figs.push(Figure::new(
+            &format!("{key}.oriented_eps5"),
+            &format!("oriented on entry at ε_tol ≥ 5°, D {lo}–{hi} R_min"),
+            pct(b.oriented_far5.1, b.oriented_far5.0),
+            "%",
+            1,
+        ));
+        figs.push(Figure::new(
+            &format!("{key}.length_ratio.median"),
+            &format!("path length / Dubins shortest (R_min), D {lo}–{hi} R_min, median"),
+            f64::from(percentile(&mut r, 0.5)),
+            "×",
+            2,
+        ));
+        figs.push(Figure::new(
+            &format!("{key}.length_ratio.p90"),
+            &format!("path length / Dubins shortest (R_min), D {lo}–{hi} R_min, p90"),
+            f64::from(percentile(&mut r, 0.9)),
+            "×",
+            2,
+        ));
+    }
+    record(
+        "tests/car_like.rs::car_like_arrives_oriented_without_pivoting",
+        "cargo test --features cli,counters --test car_like car_like_arrives -- --nocapture",
+        Kind::Deterministic,
+        &Seeds {
+            tuning: vec![1],
+            report: vec![REPORT_SEED],
+        },
+        &figs,
+    );
+    assert_eq!(violations, 0);
+    assert_eq!(pivots, 0);
+    assert!(max_solves <= 1);
+    for (b, (lo, hi)) in bands.iter().zip(BANDS) {
+        assert!(pct(b.rest_ok, b.halting) >= 99.5, "D {lo}–{hi}: {b:?}");
+        if lo >= 5.0 {
+            assert!(
+                b.oriented_far5.0 >= 300 && pct(b.oriented_far5.1, b.oriented_far5.0) >= 95.0,
+                "D {lo}–{hi}: {b:?}"
+            );
         }
     }
+    assert!(cells.1 >= 95.0, "{:?}", cells.0);
+    assert!(percentile(&mut all, 0.5) <= 1.3);
 }

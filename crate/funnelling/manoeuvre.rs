@@ -42,29 +42,34 @@ use crate::funnelling::update::{Internals, Mode, Update};
 
 /// The path radius over `R_min`: tracking a change of curvature takes the
 /// time the angular acceleration needs, and the path must leave room for it.
-pub const RHO_FACTOR: f32 = 1.3;
+pub const RHO_FACTOR: f32 = 1.1;
 /// The manoeuvre takes over within this many path radii of the goal
 /// (beyond the position tolerance).
-pub const NEAR: f32 = 4.0;
+pub const NEAR: f32 = 6.0;
 /// A goal further than [`NEAR`] but at a bearing beyond this is reached
 /// by the manoeuvre too: the shortest forward path turns round at once,
 /// where funnelling a fast car towards a goal right behind it can drive
 /// straight away (the seek's heading error flips at ±π).
-pub const BEHIND: f32 = 2.0 * core::f32::consts::FRAC_PI_3;
+pub const BEHIND: f32 = core::f32::consts::FRAC_PI_2;
 /// The pure-pursuit aim point, path radii ahead along the path.
 pub const LOOKAHEAD: f32 = 0.5;
 /// Straying this many path radii from the path solves a new one.
 pub const REPLAN_ERR: f32 = 0.3;
+/// The manoeuvre speed over the fastest speed whose turning radius is
+/// `R_min` ([`manoeuvre_speed`]): slower, a change of curvature is
+/// tracked over a shorter distance (`2v²/(ρ·ω̇_max)`), so the path radius
+/// can be closer to `R_min`.
+pub const SPEED_FACTOR: f32 = 0.5;
 /// The run-in beyond the position tolerance, path radii ([`runway`]).
-pub const RUNWAY: f32 = 1.0;
+pub const RUNWAY: f32 = 0.5;
 
 /// The speed a car-like vehicle manoeuvres at: the goal's desired speed,
-/// at most 90 % of the fastest speed whose turning radius is still `R_min`
+/// at most [`SPEED_FACTOR`] of the fastest speed whose turning radius is still `R_min`
 /// (`min(ω_max·R_min, √(A·R_min))`).
 #[must_use]
 pub fn manoeuvre_speed(p: &VehicleParams, g: &Goal) -> f32 {
     let v = (p.omega_max * p.r_min).at_most((p.normal_accel_max * p.r_min).sqrt());
-    g.speed.at_most(0.9 * v)
+    g.speed.at_most(SPEED_FACTOR * v)
 }
 
 /// The path radius of a car-like vehicle, m.
@@ -83,6 +88,9 @@ pub fn runway(g: &Goal, rho: f32) -> f32 {
 }
 
 /// Solves the path from the vehicle's pose to the start of the run-in.
+/// A vehicle faster than the manoeuvre brakes along it and strays at
+/// first, then solves again from where it is (planning with the radius
+/// of its current speed instead made the study's paths twice as long).
 fn solve(m: &mut Manoeuvre, s: &VehicleState, g: &Goal, rho: f32) {
     let from = (s.pos.x, s.pos.y, s.theta);
     let start = g.pos - trig::unit(g.beta) * runway(g, rho);

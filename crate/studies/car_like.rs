@@ -78,6 +78,8 @@ pub struct CarRun {
     pub d_tol: f32,
     /// ε_tol, degrees.
     pub eps_tol_deg: f32,
+    /// Start speed, m/s.
+    pub v0: f32,
     /// Halting goal.
     pub halting: bool,
     /// Started inside the disk (no entry to judge).
@@ -120,6 +122,7 @@ pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize) -> CarRun {
         d0: d0 / p.r_min,
         d_tol: g.d_tol / p.r_min,
         eps_tol_deg: g.eps_tol.to_degrees(),
+        v0: start.v,
         halting: g.halting,
         starts_inside: d0 < g.d_tol,
         dubins: dubins::shortest_length(
