@@ -13,6 +13,8 @@ use common::figures::{record, Figure, Kind, Seeds};
 
 use std::sync::OnceLock;
 
+use proptest::prelude::*;
+
 use steering::base::metrics::percentile;
 use steering::base::vehicle::{VehicleParams, VehicleState};
 use steering::funnelling::table::format::TableError;
@@ -74,6 +76,34 @@ fn the_curvature_bound_holds_at_every_step_and_at_rest_nothing_turns() {
     let bad = VehicleState::new(glam::Vec2::ZERO, 0.0, 1.0, 0.5);
     let e = bad.validate(&p).unwrap_err().to_string();
     assert!(e.contains("minTurnRadius"), "{e}");
+}
+
+proptest! {
+    #![proptest_config(ProptestConfig::with_cases(300))]
+    /// Whatever the commands, from any admissible state of any car-like
+    /// vehicle, every limit holds after every step, `|ω| ≤ v/R_min` too.
+    #[test]
+    fn every_limit_holds_for_any_car_like_vehicle(
+        r_min in 0.05f32..50.0,
+        omega_accel in 0.5f32..20.0,
+        accel in 0.2f32..10.0,
+        v0 in 0.0f32..1.0,
+        w0 in -1.0f32..1.0,
+        seed in 0u64..1000,
+    ) {
+        let p = VehicleParams { r_min, omega_accel_max: omega_accel, accel_max: accel, ..VehicleParams::default() };
+        let v = v0 * p.v_max;
+        let mut s = VehicleState::new(glam::Vec2::ZERO, 0.0, v, w0 * p.omega_limit(v));
+        prop_assert!(s.validate(&p).is_ok());
+        let mut r = steering::base::rng::Rng::new(seed);
+        for _ in 0..600 {
+            let prev = s;
+            p.integrate(&mut s, r.range(-1e4, 1e4), r.range(-1.0, 2.0 * p.v_max));
+            prop_assert!(s.within_limits(&p), "{:?} -> {:?}", prev, s);
+            prop_assert!((s.omega - prev.omega).abs() <= p.omega_accel_max * p.dt * 1.0001);
+            prop_assert!((s.v - prev.v).abs() <= p.accel_max * p.dt * 1.0001);
+        }
+    }
 }
 
 #[test]

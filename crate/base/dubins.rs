@@ -160,6 +160,9 @@ pub struct DubinsPath {
     pub kappa: [f32; 3],
     /// Length of each segment, m.
     pub len: [f32; 3],
+    /// Position and heading where each segment starts (the first is the
+    /// start pose), so a sample advances along one segment only.
+    pub knots: [(Vec2, f32); 3],
 }
 
 impl DubinsPath {
@@ -182,12 +185,30 @@ impl DubinsPath {
             .min_by(|x, y| (x.1 .0 + x.1 .1 + x.1 .2).total_cmp(&(y.1 .0 + y.1 .1 + y.1 .2)))?;
         let k = (1.0 / r) as f32;
         let tn = turns(word);
-        Some(Self {
-            start: Vec2::new(start.0, start.1),
-            theta: start.2,
-            kappa: [tn[0] * k, tn[1] * k, tn[2] * k],
-            len: [(t * r) as f32, (p * r) as f32, (q * r) as f32],
-        })
+        Some(Self::from_segments(
+            Vec2::new(start.0, start.1),
+            start.2,
+            [tn[0] * k, tn[1] * k, tn[2] * k],
+            [(t * r) as f32, (p * r) as f32, (q * r) as f32],
+        ))
+    }
+
+    /// The path from `start` at heading `theta` through three segments of
+    /// curvature `kappa` and length `len` (a zero length for none).
+    #[must_use]
+    pub fn from_segments(start: Vec2, theta: f32, kappa: [f32; 3], len: [f32; 3]) -> Self {
+        let mut knots = [(start, theta); 3];
+        for i in 1..3 {
+            let (p, t) = knots[i - 1];
+            knots[i] = advance(p, t, kappa[i - 1], len[i - 1]);
+        }
+        Self {
+            start,
+            theta,
+            kappa,
+            len,
+            knots,
+        }
     }
 
     /// Total length, m.
@@ -215,20 +236,18 @@ impl DubinsPath {
     /// at 0; past the end, straight on along the final heading).
     #[must_use]
     pub fn at(&self, s: f32) -> (Vec2, f32, f32) {
-        let mut pos = self.start;
-        let mut th = self.theta;
         let mut left = s.max(0.0);
         for i in 0..3 {
-            let l = left.min(self.len[i]);
-            let (p, t) = advance(pos, th, self.kappa[i], l);
-            pos = p;
-            th = t;
-            left -= l;
-            if left <= 0.0 {
-                return (pos, th, self.kappa[i]);
+            if left <= self.len[i] {
+                let (pos, th) = self.knots[i];
+                let (p, t) = advance(pos, th, self.kappa[i], left);
+                return (p, t, self.kappa[i]);
             }
+            left -= self.len[i];
         }
-        (pos + crate::base::trig::unit(th) * left, th, 0.0)
+        let (pos, th) = self.knots[2];
+        let (end, th) = advance(pos, th, self.kappa[2], self.len[2]);
+        (end + crate::base::trig::unit(th) * left, th, 0.0)
     }
 }
 

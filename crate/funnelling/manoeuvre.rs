@@ -23,6 +23,12 @@
 //! bound), its desired speed capped so that the vehicle reaches the
 //! manoeuvre's range no faster than it can brake to the manoeuvre speed.
 //!
+//! The manoeuvre reports the mode Orientation_only (paper 000 Fig. 5's
+//! blue triangle: the orientation is what is being fixed), End_of_Steering
+//! once inside both tolerances (for a halting goal with the braking disk
+//! and the heading at rest, as [`crate::funnelling::approach::tolerance_phase`]
+//! judges them).
+//!
 //! Cost per update is bounded: at most one Dubins solve (six closed forms)
 //! and three path samples. A path is solved again only when the goal pose
 //! moved, the vehicle strayed from the path by more than [`REPLAN_ERR`]
@@ -95,11 +101,8 @@ fn solve(m: &mut Manoeuvre, s: &VehicleState, g: &Goal, rho: f32) {
     let from = (s.pos.x, s.pos.y, s.theta);
     let start = g.pos - trig::unit(g.beta) * runway(g, rho);
     let to = (start.x, start.y, g.beta);
-    m.path = DubinsPath::shortest(from, to, rho).unwrap_or(DubinsPath {
-        start: s.pos,
-        theta: s.theta,
-        ..DubinsPath::default()
-    });
+    m.path = DubinsPath::shortest(from, to, rho)
+        .unwrap_or_else(|| DubinsPath::from_segments(s.pos, s.theta, [0.0; 3], [0.0; 3]));
     m.s = 0.0;
     m.goal = g.pos;
     m.beta = g.beta;
@@ -190,13 +193,16 @@ fn follow(
     let moved =
         (g.pos - m.goal).length() > 0.1 * g.d_tol || diff(g.beta, m.beta).abs() > 0.1 * g.eps_tol;
     let vm = manoeuvre_speed(p, g);
-    if !m.active || moved {
+    // At most one solve per update: a fresh path starts at the vehicle.
+    let fresh = !m.active || moved;
+    if fresh {
         solve(m, s, g, rho);
     }
     let on_path = progress(m, s, rho, p.dt);
     let len = m.path.length() + runway(g, rho);
     let stopped = s.v < 0.05 * vm && m.s > len - 0.05 * rho;
-    if (s.pos - on_path).length() > REPLAN_ERR * rho || stopped || m.s > len + rho {
+    let strayed = (s.pos - on_path).length() > REPLAN_ERR * rho;
+    if !fresh && (strayed || stopped || m.s > len + rho) {
         solve(m, s, g, rho);
     }
     let (aim, _, _) = m.path.at(m.s + LOOKAHEAD * rho);
