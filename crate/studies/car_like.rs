@@ -13,7 +13,8 @@
 //! | desired speed | the envelope's, scaled with `v_max` |
 //! | halting | half the runs |
 //!
-//! Each run is a one-agent [`World`] with the standard controller, stepped
+//! Each run is a one-agent [`World`] with the standard or the relaxed
+//! controller, stepped
 //! as the lab steps it. A run records reach, oriented on entry, the rest
 //! pose of a halting run, path length against the Dubins shortest path
 //! (radius `R_min`, and the radius at the desired speed), limit violations
@@ -30,7 +31,9 @@ use crate::base::dubins;
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
+use crate::funnelling::controller::ControllerKind;
 use crate::funnelling::goal::Goal;
+use crate::funnelling::relaxed::RelaxedConfig;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::table::spec::VehicleScale;
 use crate::studies::envelope::{EPS_TOLS_DEG, SPEEDS};
@@ -112,9 +115,16 @@ pub struct CarRun {
     pub pivots: u32,
 }
 
-/// Runs scenario `i` of `seed`.
+/// Runs scenario `i` of `seed` with controller `kind` (standard or
+/// relaxed: both manoeuvre near the goal).
 #[must_use]
-pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize) -> CarRun {
+pub fn run(
+    table: &EtaTable,
+    p: &VehicleParams,
+    kind: ControllerKind,
+    seed: u64,
+    i: usize,
+) -> CarRun {
     let (start, g) = scenario(p, seed, i);
     let d0 = (g.pos - start.pos).length();
     let mut rec = CarRun {
@@ -145,7 +155,9 @@ pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize) -> CarRun {
         motion: GoalMotion::Static,
         switch: SwitchRule::EndOfSteering,
     };
-    if w.add_agent(start, vec![spec]).is_err() {
+    if w.set_controller(kind, RelaxedConfig::default()).is_err()
+        || w.add_agent(start, vec![spec]).is_err()
+    {
         return rec;
     }
     let limit = (MAX_TIME / p.dt) as u32;
@@ -198,8 +210,14 @@ pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize) -> CarRun {
     rec
 }
 
-/// Runs `n` scenarios of `seed` (in parallel natively).
+/// Runs `n` scenarios of `seed` with `kind` (in parallel natively).
 #[must_use]
-pub fn run_all(table: &EtaTable, p: &VehicleParams, seed: u64, n: usize) -> Vec<CarRun> {
-    crate::base::parallel::map_indices(n, |i| run(table, p, seed, i))
+pub fn run_all(
+    table: &EtaTable,
+    p: &VehicleParams,
+    kind: ControllerKind,
+    seed: u64,
+    n: usize,
+) -> Vec<CarRun> {
+    crate::base::parallel::map_indices(n, |i| run(table, p, kind, seed, i))
 }
