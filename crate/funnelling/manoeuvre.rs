@@ -16,6 +16,9 @@
 //! before the goal ([`runway`]) and goes on straight past it, so the
 //! vehicle enters the position tolerance facing β.
 //!
+//! Goals in motion are left to funnelling (led to where they will be,
+//! never finished by turning on the spot).
+//!
 //! Once begun, the manoeuvre goes on to the goal (this goal's memory
 //! keeps it). Far from the goal, and not behind the vehicle ([`BEHIND`]),
 //! the controller is the funnelling one (standard or
@@ -142,6 +145,13 @@ fn arrived(p: &VehicleParams, s: &VehicleState, g: &Goal, d: f32) -> bool {
 /// manoeuvre near the goal, `far` (the funnelling controller) elsewhere.
 #[inline(never)]
 pub fn plan(u: &mut Update<'_>, far: impl FnOnce(&mut Update<'_>) -> Internals) -> Internals {
+    if u.memory.goal_moves {
+        // A goal in motion is never finished by turning on the spot (the
+        // tolerance phase declares End_of_Steering only inside the disk
+        // facing β), and a path solved to where it is now is stale at
+        // once: funnelling, led to where it will be, steers it.
+        return far(u);
+    }
     let p = *u.params;
     let s = *u.state;
     let g = *u.goal;

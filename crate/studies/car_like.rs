@@ -221,3 +221,169 @@ pub fn run_all(
 ) -> Vec<CarRun> {
     crate::base::parallel::map_indices(n, |i| run(table, p, kind, seed, i))
 }
+
+/// One distance band's summary of a seed's runs.
+#[derive(Clone, Debug, Default, PartialEq)]
+pub struct Band {
+    /// Runs.
+    pub runs: usize,
+    /// Entered the disk (or started inside).
+    pub reached: usize,
+    /// Halting runs.
+    pub halting: usize,
+    /// Halting runs at rest inside both tolerances.
+    pub rest_ok: usize,
+    /// Runs that entered from outside.
+    pub entries: usize,
+    /// Of those, oriented on entry.
+    pub oriented: usize,
+    /// Entries at ε_tol ≥ 5°, and the oriented ones.
+    pub oriented_eps5: (usize, usize),
+    /// Path length / Dubins shortest (`R_min`) of the finished runs.
+    pub ratios: Vec<f32>,
+    /// Path length / Dubins shortest at the desired speed's radius.
+    pub ratios_speed: Vec<f32>,
+    /// [`Band::ratios`] of the runs starting at most `v_slow`.
+    pub ratios_slow: Vec<f32>,
+}
+
+/// The runs summarised per band of [`BANDS`]; `v_slow` selects
+/// [`Band::ratios_slow`].
+#[must_use]
+pub fn summarise(runs: &[CarRun], v_slow: f32) -> Vec<Band> {
+    let mut bands: Vec<Band> = BANDS.iter().map(|_| Band::default()).collect();
+    for r in runs {
+        let k = BANDS
+            .iter()
+            .position(|(lo, hi)| r.d0 >= lo * 0.999 && r.d0 < *hi)
+            .unwrap_or(BANDS.len() - 1);
+        let b = &mut bands[k];
+        b.runs += 1;
+        b.reached += usize::from(r.reached || r.starts_inside);
+        if r.halting {
+            b.halting += 1;
+            b.rest_ok += usize::from(r.rest_ok);
+        }
+        if r.reached && !r.starts_inside {
+            b.entries += 1;
+            b.oriented += usize::from(r.oriented_on_entry);
+            if r.eps_tol_deg >= 4.9 {
+                b.oriented_eps5.0 += 1;
+                b.oriented_eps5.1 += usize::from(r.oriented_on_entry);
+            }
+        }
+        if r.finished && r.dubins > 0.0 {
+            b.ratios.push(r.length / r.dubins);
+            b.ratios_speed.push(r.length / r.dubins_at_speed);
+            if r.v0 <= v_slow {
+                b.ratios_slow.push(r.length / r.dubins);
+            }
+        }
+    }
+    bands
+}
+
+/// Oriented on entry per cell (band × ε_tol × D_tol), one line per band
+/// and ε_tol; and the smallest share over the cells at D ≥ 5 R_min with
+/// ε_tol ≥ 5° (cells of at least 10 entries).
+#[must_use]
+pub fn cells(runs: &[CarRun]) -> (Vec<String>, f64) {
+    let mut lines = Vec::new();
+    let mut worst = 100.0f64;
+    for (lo, hi) in BANDS {
+        for eps in EPS_TOLS_DEG {
+            let mut line = format!("  oriented on entry, D {lo}–{hi} R_min, ε_tol {eps}°:");
+            for dt in D_TOLS {
+                let sel: Vec<&CarRun> = runs
+                    .iter()
+                    .filter(|r| {
+                        r.d0 >= lo * 0.999
+                            && r.d0 < hi
+                            && (r.eps_tol_deg - eps).abs() < 0.01
+                            && (r.d_tol - dt).abs() < 1e-3
+                            && r.reached
+                            && !r.starts_inside
+                    })
+                    .collect();
+                let ok = sel.iter().filter(|r| r.oriented_on_entry).count();
+                let share = pct(ok, sel.len());
+                line += &format!(" D_tol {dt} R: {share:.0} % of {};", sel.len());
+                if lo >= 5.0 && eps >= 5.0 && sel.len() >= 10 {
+                    worst = worst.min(share);
+                }
+            }
+            lines.push(line);
+        }
+    }
+    (lines, worst)
+}
+
+/// `100·a/b` (0 for an empty `b`).
+#[must_use]
+pub fn pct(a: usize, b: usize) -> f64 {
+    100.0 * a as f64 / b.max(1) as f64
+}
+
+/// The slowest start the ratios of [`Band::ratios_slow`] keep: the
+/// manoeuvre speed at `v_max`.
+#[must_use]
+pub fn slow_start(p: &VehicleParams) -> f32 {
+    crate::funnelling::manoeuvre::manoeuvre_speed(
+        p,
+        &Goal {
+            speed: p.v_max,
+            ..Goal::default()
+        },
+    )
+}
+
+/// The summary lines (per band, then over all bands) of `runs`.
+#[must_use]
+pub fn text(p: &VehicleParams, runs: &[CarRun]) -> String {
+    use crate::base::metrics::percentile;
+    use core::fmt::Write;
+    let v_slow = slow_start(p);
+    let bands = summarise(runs, v_slow);
+    let mut out = String::new();
+    for (b, (lo, hi)) in bands.iter().zip(BANDS) {
+        let mut r = b.ratios.clone();
+        let mut rs = b.ratios_speed.clone();
+        let mut rl = b.ratios_slow.clone();
+        let _ = writeln!(
+            out,
+            "D {lo}–{hi} R_min: {} runs, reach {:.2} %, rest ok {:.2} % of {}, oriented on entry {:.1} % of {} ({:.1} % of {} at ε ≥ 5°), length/Dubins(R_min) median {:.2} p90 {:.2}, /Dubins(speed) median {:.2} p90 {:.2}; starting at most {v_slow:.1} m/s: /Dubins(R_min) median {:.2} p90 {:.2} of {}",
+            b.runs,
+            pct(b.reached, b.runs),
+            pct(b.rest_ok, b.halting),
+            b.halting,
+            pct(b.oriented, b.entries),
+            b.entries,
+            pct(b.oriented_eps5.1, b.oriented_eps5.0),
+            b.oriented_eps5.0,
+            percentile(&mut r, 0.5),
+            percentile(&mut r, 0.9),
+            percentile(&mut rs, 0.5),
+            percentile(&mut rs, 0.9),
+            percentile(&mut rl, 0.5),
+            percentile(&mut rl, 0.9),
+            rl.len(),
+        );
+    }
+    let mut all: Vec<f32> = bands
+        .iter()
+        .flat_map(|b| b.ratios.iter().copied())
+        .collect();
+    let _ = writeln!(
+        out,
+        "all bands: length/Dubins(R_min) median {:.2} p90 {:.2} of {}; limit violations {}, pivot steps {}",
+        percentile(&mut all, 0.5),
+        percentile(&mut all, 0.9),
+        all.len(),
+        runs.iter().map(|r| r.violations).sum::<u32>(),
+        runs.iter().map(|r| r.pivots).sum::<u32>(),
+    );
+    for line in cells(runs).0 {
+        let _ = writeln!(out, "{line}");
+    }
+    out
+}
