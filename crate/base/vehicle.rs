@@ -229,6 +229,28 @@ impl VehicleParams {
         (w1.clamp(-wl, wl), v1)
     }
 
+    /// The speeds after one step from `v0`, `w0` under the commanded
+    /// angular acceleration `ang_acc` and desired speed `v_des`: (ω₁, v₁),
+    /// as [`VehicleParams::integrate`] sets them. Public so that the table
+    /// generator's interleaved simulations
+    /// (`crate::funnelling::table::batch`) run the very same operations.
+    #[inline(always)]
+    #[must_use]
+    pub fn new_speeds(&self, v0: f32, w0: f32, ang_acc: f32, v_des: f32) -> (f32, f32) {
+        let dt = self.dt;
+        let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
+        let wl = self.omega_limit(v0);
+        let w1 = (w0 + a * dt).clamp(-wl, wl);
+        let dv = self.accel_max * dt;
+        let vcap = self.speed_limit(w1);
+        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
+        if self.car_like() {
+            self.curvature_bound(w0, w1, v1)
+        } else {
+            (w1, v1)
+        }
+    }
+
     /// Advances `s` by one step under the commanded angular acceleration
     /// `ang_acc` and the desired forward speed `v_des`.
     ///
@@ -242,17 +264,7 @@ impl VehicleParams {
     pub fn integrate(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
         let dt = self.dt;
         let (v0, w0) = (s.v, s.omega);
-        let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
-        let wl = self.omega_limit(v0);
-        let w1 = (w0 + a * dt).clamp(-wl, wl);
-        let dv = self.accel_max * dt;
-        let vcap = self.speed_limit(w1);
-        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
-        let (w1, v1) = if self.car_like() {
-            self.curvature_bound(w0, w1, v1)
-        } else {
-            (w1, v1)
-        };
+        let (w1, v1) = self.new_speeds(v0, w0, ang_acc, v_des);
         match self.integrator {
             Integrator::Euler => {
                 s.pos += crate::base::trig::unit(s.theta) * (v0 * dt);
