@@ -198,6 +198,13 @@ fn car_like_arrives_oriented_without_pivoting() {
     }
     let mut figs = vec![
         Figure::new(
+            "car_like.d5-20.oriented_eps5.worst_cell",
+            "oriented on entry, the worst cell (ε_tol ≥ 5° × D_tol, ≥ 10 entries) at D ≥ 5 R_min",
+            cells.1,
+            "%",
+            1,
+        ),
+        Figure::new(
             "car_like.violations",
             "steps with a violated limit (|ω| ≤ v/R_min included), all runs",
             f64::from(violations),
