@@ -10,6 +10,9 @@
 
 use core::f64::consts::TAU;
 
+use glam::Vec2;
+use serde::{Deserialize, Serialize};
+
 /// The six Dubins words.
 #[derive(Clone, Copy, Debug, PartialEq, Eq)]
 pub enum Word {
@@ -123,6 +126,142 @@ pub fn shortest_length(start: (f32, f32, f32), goal: (f32, f32, f32), rho: f32) 
     (best * rho) as f32
 }
 
+/// The turn of each segment of `word`: +1 left, −1 right, 0 straight.
+#[must_use]
+pub fn turns(word: Word) -> [f32; 3] {
+    match word {
+        Word::Lsl => [1.0, 0.0, 1.0],
+        Word::Rsr => [-1.0, 0.0, -1.0],
+        Word::Lsr => [1.0, 0.0, -1.0],
+        Word::Rsl => [-1.0, 0.0, 1.0],
+        Word::Rlr => [-1.0, 1.0, -1.0],
+        Word::Lrl => [1.0, -1.0, 1.0],
+    }
+}
+
+/// One shortest Dubins path, kept to be followed: the start pose, the
+/// signed curvature of each of its three segments and their lengths in
+/// metres. Solved once in constant time ([`DubinsPath::shortest`]: six
+/// closed forms), sampled in constant time ([`DubinsPath::at`]: at most
+/// three segments). Beyond its end the path goes on straight along the
+/// goal heading, so a follower aiming ahead of the end is led onto it.
+///
+/// The solve runs in f64 and is rounded to f32; the sampling uses only
+/// [`crate::base::trig`], so following it is bit-identical natively and
+/// in wasm as long as the f64 solve rounds alike (it runs once per plan).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(rename_all = "camelCase")]
+pub struct DubinsPath {
+    /// Start position, m.
+    pub start: Vec2,
+    /// Start heading, rad.
+    pub theta: f32,
+    /// Signed curvature of each segment (±1/ρ or 0), 1/m.
+    pub kappa: [f32; 3],
+    /// Length of each segment, m.
+    pub len: [f32; 3],
+    /// Position and heading where each segment starts (the first is the
+    /// start pose), so a sample advances along one segment only.
+    pub knots: [(Vec2, f32); 3],
+}
+
+impl DubinsPath {
+    /// The shortest forward path from `start` (x, y, θ) to `goal` with
+    /// turning radius `rho` (> 0); `None` only for a degenerate input
+    /// (non-finite).
+    #[must_use]
+    pub fn shortest(start: (f32, f32, f32), goal: (f32, f32, f32), rho: f32) -> Option<Self> {
+        let r = f64::from(rho.max(1e-6));
+        let dx = f64::from(goal.0 - start.0);
+        let dy = f64::from(goal.1 - start.1);
+        let d = (dx * dx + dy * dy).sqrt() / r;
+        let phi = if d > 0.0 { dy.atan2(dx) } else { 0.0 };
+        let a = m2pi(f64::from(start.2) - phi);
+        let b = m2pi(f64::from(goal.2) - phi);
+        let (word, (t, p, q)) = WORDS
+            .iter()
+            .filter_map(|&w| segments(w, a, b, d).map(|s| (w, s)))
+            .filter(|(_, (t, p, q))| (t + p + q).is_finite())
+            .min_by(|x, y| (x.1 .0 + x.1 .1 + x.1 .2).total_cmp(&(y.1 .0 + y.1 .1 + y.1 .2)))?;
+        let k = (1.0 / r) as f32;
+        let tn = turns(word);
+        Some(Self::from_segments(
+            Vec2::new(start.0, start.1),
+            start.2,
+            [tn[0] * k, tn[1] * k, tn[2] * k],
+            [(t * r) as f32, (p * r) as f32, (q * r) as f32],
+        ))
+    }
+
+    /// The path from `start` at heading `theta` through three segments of
+    /// curvature `kappa` and length `len` (a zero length for none).
+    #[must_use]
+    pub fn from_segments(start: Vec2, theta: f32, kappa: [f32; 3], len: [f32; 3]) -> Self {
+        let mut knots = [(start, theta); 3];
+        for i in 1..3 {
+            let (p, t) = knots[i - 1];
+            knots[i] = advance(p, t, kappa[i - 1], len[i - 1]);
+        }
+        Self {
+            start,
+            theta,
+            kappa,
+            len,
+            knots,
+        }
+    }
+
+    /// Total length, m.
+    #[must_use]
+    pub fn length(&self) -> f32 {
+        self.len[0] + self.len[1] + self.len[2]
+    }
+
+    /// The straight distance ahead at arc length `s`: what is left of the
+    /// straight segment `s` lies on (unbounded past the end, where the
+    /// path goes on straight), 0 on an arc.
+    #[must_use]
+    pub fn straight_ahead(&self, s: f32) -> f32 {
+        let mut end = 0.0;
+        for i in 0..3 {
+            end += self.len[i];
+            if s < end {
+                return if self.kappa[i] == 0.0 { end - s } else { 0.0 };
+            }
+        }
+        f32::INFINITY
+    }
+
+    /// Position, heading and curvature at arc length `s` (clamped below
+    /// at 0; past the end, straight on along the final heading).
+    #[must_use]
+    pub fn at(&self, s: f32) -> (Vec2, f32, f32) {
+        let mut left = s.max(0.0);
+        for i in 0..3 {
+            if left <= self.len[i] {
+                let (pos, th) = self.knots[i];
+                let (p, t) = advance(pos, th, self.kappa[i], left);
+                return (p, t, self.kappa[i]);
+            }
+            left -= self.len[i];
+        }
+        let (pos, th) = self.knots[2];
+        let (end, th) = advance(pos, th, self.kappa[2], self.len[2]);
+        (end + crate::base::trig::unit(th) * left, th, 0.0)
+    }
+}
+
+/// Moves `l` along a segment of curvature `k` from `pos` at heading `th`.
+fn advance(pos: Vec2, th: f32, k: f32, l: f32) -> (Vec2, f32) {
+    if k == 0.0 {
+        return (pos + crate::base::trig::unit(th) * l, th);
+    }
+    let th1 = th + k * l;
+    let (s0, c0) = crate::base::trig::sin_cos(th);
+    let (s1, c1) = crate::base::trig::sin_cos(th1);
+    (pos + Vec2::new(s1 - s0, c0 - c1) / k, th1)
+}
+
 #[cfg(test)]
 mod tests {
     use super::*;
@@ -183,6 +322,34 @@ mod tests {
             }
         }
         assert!(solved > 6000);
+    }
+
+    #[test]
+    fn a_kept_path_ends_at_the_goal_pose_and_has_the_shortest_length() {
+        let mut r = crate::base::rng::Rng::new(5);
+        for _ in 0..2000 {
+            let g = (
+                r.range(-20.0, 20.0),
+                r.range(-20.0, 20.0),
+                r.range(-3.1, 3.1),
+            );
+            let st = (r.range(-5.0, 5.0), r.range(-5.0, 5.0), r.range(-3.1, 3.1));
+            let rho = r.range(0.5, 6.0);
+            let path = DubinsPath::shortest(st, g, rho).unwrap();
+            let (p, th, _) = path.at(path.length());
+            assert!(
+                (p - Vec2::new(g.0, g.1)).length() < 1e-3 * (1.0 + rho),
+                "{p} {g:?}"
+            );
+            assert!(crate::base::angle::diff(th, g.2).abs() < 1e-3);
+            assert!(
+                (path.length() - shortest_length(st, g, rho)).abs() < 1e-3 * path.length().max(1.0)
+            );
+            // Beyond the end: straight on along the goal heading.
+            let (q, _, k) = path.at(path.length() + 2.0);
+            assert!((q - p - crate::base::trig::unit(th) * 2.0).length() < 1e-3);
+            assert_eq!(k, 0.0);
+        }
     }
 
     #[test]

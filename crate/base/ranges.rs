@@ -143,6 +143,15 @@ pub const NORMAL_ACCEL_MAX: FieldRange = range(
 pub const KP: FieldRange = range("kp", 0.01, 10_000.0, "1/s²", "seek proportional gain");
 /// Damping gain of the seek's angular controller.
 pub const KD: FieldRange = range("kd", 0.01, 10_000.0, "1/s", "seek damping gain");
+/// Minimum turning radius at every speed (0: the unicycle, which turns on
+/// the spot).
+pub const MIN_TURN_RADIUS: FieldRange = range(
+    "minTurnRadius",
+    0.0,
+    1000.0,
+    "m",
+    "minimum turning radius (0: turns on the spot)",
+);
 
 // A vehicle's state (the start pose of an agent). Positions have a
 // cross-field rule too: an agent and its goals stay within
@@ -370,7 +379,7 @@ pub const OBSTACLE_RADIUS: FieldRange =
 const _: () = assert!(GOAL_SPEED.min <= V_MAX.min && GOAL_SPEED.max >= V_MAX.max);
 
 /// Every range, in the order above (exported to the page as `ranges()`).
-pub const ALL: [FieldRange; 47] = [
+pub const ALL: [FieldRange; 48] = [
     DT,
     V_MAX,
     ACCEL_MAX,
@@ -379,6 +388,7 @@ pub const ALL: [FieldRange; 47] = [
     NORMAL_ACCEL_MAX,
     KP,
     KD,
+    MIN_TURN_RADIUS,
     POS_X,
     POS_Y,
     THETA,

@@ -77,6 +77,17 @@ pub struct VehicleParams {
     pub kd: f32,
     /// Pose integrator.
     pub integrator: Integrator,
+    /// Minimum turning radius `R_min`, m, holding at every speed
+    /// (`|ω| ≤ v / R_min`, so no rotation at rest): a car, a cart, a boat.
+    /// 0, the default, is the paper's unicycle, which may turn on the spot
+    /// (and whose serialised form, table key and bytes omit the field).
+    #[serde(rename = "minTurnRadius", skip_serializing_if = "is_zero")]
+    pub r_min: f32,
+}
+
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn is_zero(x: &f32) -> bool {
+    *x == 0.0
 }
 
 impl Default for VehicleParams {
@@ -91,6 +102,7 @@ impl Default for VehicleParams {
             kp: 12.0,
             kd: 6.0,
             integrator: Integrator::Euler,
+            r_min: 0.0,
         }
     }
 }
@@ -149,18 +161,33 @@ impl VehicleParams {
         r::NORMAL_ACCEL_MAX.check(self.normal_accel_max)?;
         r::KP.check(self.kp)?;
         r::KD.check(self.kd)?;
+        r::MIN_TURN_RADIUS.check(self.r_min)?;
         Ok(())
     }
 
+    /// True for a car-like vehicle (a minimum turning radius at every
+    /// speed, [`VehicleParams::r_min`]).
+    #[inline]
+    #[must_use]
+    pub fn car_like(&self) -> bool {
+        self.r_min > 0.0
+    }
+
     /// Largest admissible angular speed at forward speed `v`:
-    /// `min(ω_max, A / v)`.
+    /// `min(ω_max, A / v)`, and `v / R_min` for a car-like vehicle (the one
+    /// place the curvature bound enters the limits).
     #[inline]
     #[must_use]
     pub fn omega_limit(&self, v: f32) -> f32 {
-        if v * self.omega_max > self.normal_accel_max {
+        let w = if v * self.omega_max > self.normal_accel_max {
             self.normal_accel_max / v
         } else {
             self.omega_max
+        };
+        if self.car_like() {
+            w.at_most(v.at_least(0.0) / self.r_min)
+        } else {
+            w
         }
     }
 
@@ -185,6 +212,45 @@ impl VehicleParams {
         v / self.omega_limit(v)
     }
 
+    /// The curvature bound of a car-like vehicle applied after the speed
+    /// is chosen: the new speed `v1` must carry the new angular speed
+    /// (`|ω₁| ≤ v₁ / R_min`). Braking has priority over turning (a car
+    /// can stop with its wheels turned): ω₁ is lowered towards 0, but no
+    /// faster than the angular acceleration allows, and where even that
+    /// is not enough, v₁ is held up to `|ω| · R_min` for the smallest
+    /// reachable `|ω|`. Both stay inside every other window: that `|ω|` is
+    /// at most `|ω₀| ≤ v₀ / R_min` and `(|ω₀| − ω̇·dt)(|ω₀| + ω̇·dt)·R_min
+    /// ≤ |ω₀|²·R_min ≤ A`, so `A / |ω₁|` is not crossed.
+    #[inline]
+    fn curvature_bound(&self, w0: f32, w1: f32, v1: f32) -> (f32, f32) {
+        let need = (w0.abs() - self.omega_accel_max * self.dt).at_least(0.0);
+        let v1 = v1.at_least(need * self.r_min);
+        let wl = v1 / self.r_min;
+        (w1.clamp(-wl, wl), v1)
+    }
+
+    /// The speeds after one step from `v0`, `w0` under the commanded
+    /// angular acceleration `ang_acc` and desired speed `v_des`: (ω₁, v₁),
+    /// as [`VehicleParams::integrate`] sets them. Public so that the table
+    /// generator's interleaved simulations
+    /// (`crate::funnelling::table::batch`) run the very same operations.
+    #[inline(always)]
+    #[must_use]
+    pub fn new_speeds(&self, v0: f32, w0: f32, ang_acc: f32, v_des: f32) -> (f32, f32) {
+        let dt = self.dt;
+        let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
+        let wl = self.omega_limit(v0);
+        let w1 = (w0 + a * dt).clamp(-wl, wl);
+        let dv = self.accel_max * dt;
+        let vcap = self.speed_limit(w1);
+        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
+        if self.car_like() {
+            self.curvature_bound(w0, w1, v1)
+        } else {
+            (w1, v1)
+        }
+    }
+
     /// Advances `s` by one step under the commanded angular acceleration
     /// `ang_acc` and the desired forward speed `v_des`.
     ///
@@ -198,12 +264,7 @@ impl VehicleParams {
     pub fn integrate(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
         let dt = self.dt;
         let (v0, w0) = (s.v, s.omega);
-        let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
-        let wl = self.omega_limit(v0);
-        let w1 = (w0 + a * dt).clamp(-wl, wl);
-        let dv = self.accel_max * dt;
-        let vcap = self.speed_limit(w1);
-        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
+        let (w1, v1) = self.new_speeds(v0, w0, ang_acc, v_des);
         match self.integrator {
             Integrator::Euler => {
                 s.pos += crate::base::trig::unit(s.theta) * (v0 * dt);
@@ -265,6 +326,7 @@ impl VehicleState {
             && self.v <= p.v_max + eps
             && self.omega.abs() <= p.omega_max + eps
             && (self.v * self.omega).abs() <= p.normal_accel_max * (1.0 + eps) + eps
+            && (!p.car_like() || self.omega.abs() * p.r_min <= self.v * (1.0 + eps) + eps)
     }
 
     /// Rejects non-finite or out-of-limit states (negative speed, speed or
@@ -279,6 +341,15 @@ impl VehicleState {
         r::THETA.check(self.theta)?;
         r::V.check_at_most(self.v, p.v_max)?;
         r::OMEGA.check_at_most(self.omega, p.omega_max)?;
+        if p.car_like() {
+            let lim = self.v / p.r_min;
+            check_range(
+                "omega (curvature |ω| ≤ v / minTurnRadius)",
+                self.omega,
+                -lim,
+                lim,
+            )?;
+        }
         let lim = p.omega_limit(self.v);
         check_range(
             "omega (normal acceleration |v·ω| ≤ A)",

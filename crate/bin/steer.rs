@@ -241,6 +241,25 @@ fn envelope(args: &EnvelopeArgs) -> Result<(), String> {
         }
         println!("(tables below: distances and D_tol in pedestrian-equivalent m = × {:.4} for this vehicle, speeds × {:.4})\n", study.scale.length, study.scale.speed);
     }
+    if p.car_like() {
+        // Its own envelope too, scaled to R_min (distance bands in turning
+        // radii down to 0.15 R_min).
+        use steering::studies::car_like;
+        let runs = car_like::run_all(
+            &table,
+            &p,
+            steering::funnelling::controller::ControllerKind::Standard,
+            args.seed,
+            args.n,
+        );
+        println!(
+            "car-like, minTurnRadius R_min = {} m: {} runs scaled to R_min (seed {}), standard controller\n{}",
+            p.r_min,
+            args.n,
+            args.seed,
+            car_like::text(&p, &runs)
+        );
+    }
     let detail: &[&str] = if args.brief {
         &[]
     } else {

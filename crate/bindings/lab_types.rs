@@ -47,6 +47,8 @@ export interface VehicleParams {
   kp: number;
   kd: number;
   integrator: "euler" | "semiImplicitEuler";
+  /** Minimum turning radius at every speed, m (car-like); absent or 0: turns on the spot. */
+  minTurnRadius?: number;
 }
 /** How the modulation μ is bounded (crate::funnelling::config::MuBound). `literal`: the
  *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at

@@ -104,7 +104,7 @@ struct Reference {
 }
 
 /// The reference vehicles (`scenarios/vehicles/*.json`): pedestrian, car,
-/// robot.
+/// robot, and the car-like car (`vehicle.minTurnRadius` set).
 #[wasm_bindgen(
     js_name = referenceVehicles,
     unchecked_return_type = "{ name: string; description: string; vehicle: VehicleParams }[]"

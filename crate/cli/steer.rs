@@ -305,7 +305,9 @@ pub struct EnvelopeArgs {
     /// the table is `--table` if built for it, else the cached or newly
     /// built one (`steer run`'s cache); the per-vehicle measures
     /// (η accuracy at D ≥ 4 turning radii, reach, oriented entries at
-    /// D ≥ 5 turning radii and ε_tol 5°) are printed first.
+    /// D ≥ 5 turning radii and ε_tol 5°) are printed first; for a
+    /// car-like vehicle (`minTurnRadius`), `--n` runs of the envelope
+    /// scaled to R_min too, per distance band in R_min.
     #[arg(long, value_name = "VEHICLE.json")]
     pub vehicle: Option<PathBuf>,
     /// Off-grid queries of the η accuracy measure (with `--vehicle`).

@@ -62,6 +62,14 @@ impl ControllerKind {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         match self {
+            // A car-like vehicle manoeuvres where the unicycle would turn
+            // on the spot (crate::funnelling::manoeuvre).
+            Self::Standard | Self::Relaxed if u.params.car_like() => {
+                crate::funnelling::manoeuvre::plan(u, |u| match self {
+                    Self::Relaxed => relaxed.plan(funnel, u, ri),
+                    _ => funnel.plan(u),
+                })
+            }
             Self::Standard => funnel.plan(u),
             Self::Seek => funnel
                 .plain_seek()

@@ -8,6 +8,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::base::angle::diff;
+use crate::base::dubins::DubinsPath;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 
 /// A goal: an oriented target with tolerances (paper 000 §5).
@@ -125,6 +126,42 @@ pub struct FunnelMemory {
     /// ([`crate::funnelling::goal::BetaDir`]): a cache, not part of the mode logic.
     #[serde(skip)]
     pub beta_dir: crate::funnelling::goal::BetaDir,
+    /// A car-like vehicle's manoeuvre towards this goal
+    /// ([`crate::funnelling::manoeuvre`]); idle for a unicycle, and then
+    /// left out of the serialised memory.
+    #[serde(default, skip_serializing_if = "Manoeuvre::is_idle")]
+    pub manoeuvre: Manoeuvre,
+}
+
+/// What a car-like vehicle remembers of its manoeuvre
+/// ([`crate::funnelling::manoeuvre`]): the Dubins path it follows, how far
+/// along it is, the goal pose the path was solved for, and how many times
+/// a path was solved for this goal (a deterministic count the cost tests
+/// assert).
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
+pub struct Manoeuvre {
+    /// Following the path (within reach of the goal).
+    pub active: bool,
+    /// The path followed.
+    pub path: DubinsPath,
+    /// Arc length reached along it, m.
+    pub s: f32,
+    /// The goal position the path ends at, m.
+    pub goal: Vec2,
+    /// The goal orientation it ends with, rad.
+    pub beta: f32,
+    /// Paths solved for this goal.
+    pub solves: u32,
+}
+
+impl Manoeuvre {
+    /// Never used (a unicycle's, or a car's far from its goal so far).
+    #[must_use]
+    #[allow(clippy::trivially_copy_pass_by_ref)]
+    pub fn is_idle(&self) -> bool {
+        *self == Self::default()
+    }
 }
 
 impl FunnelMemory {

@@ -45,14 +45,19 @@ struct Wrapped {
 }
 
 /// The reference vehicles (name, file text): pedestrian (the default),
-/// car-like, small fast-turning robot.
-pub const REFERENCE: [(&str, &str); 3] = [
+/// car (a unicycle with a car's limits), small fast-turning robot, and
+/// the car-like car (the car's limits with a minimum turning radius).
+pub const REFERENCE: [(&str, &str); 4] = [
     (
         "pedestrian",
         include_str!("../../scenarios/vehicles/pedestrian.json"),
     ),
     ("car", include_str!("../../scenarios/vehicles/car.json")),
     ("robot", include_str!("../../scenarios/vehicles/robot.json")),
+    (
+        "car_like",
+        include_str!("../../scenarios/vehicles/car_like.json"),
+    ),
 ];
 
 /// The key whose value starts before byte `at` of `text` (the last

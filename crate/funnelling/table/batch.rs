@@ -32,7 +32,6 @@
 use glam::Vec2;
 
 use crate::base::angle::{diff, wrap};
-use crate::base::minmax::MinMax;
 use crate::base::trig;
 use crate::base::vehicle::{Integrator, VehicleParams, VehicleState};
 use crate::funnelling::table::{format::FLAG_ETA_VALID, format::FLAG_REACHABLE};
@@ -149,15 +148,8 @@ impl Lane {
     fn speeds(&self, p: &VehicleParams, bearing: f32) -> (f32, f32, f32, f32) {
         let s = &self.s;
         let acc = p.kp * diff(bearing, s.theta) - p.kd * s.omega;
-        let dt = p.dt;
         let (v0, w0) = (s.v, s.omega);
-        let a = acc.clamp(-p.omega_accel_max, p.omega_accel_max);
-        let wl = p.omega_limit(v0);
-        let w1 = (w0 + a * dt).clamp(-wl, wl);
-        let dv = p.accel_max * dt;
-        let vcap = p.speed_limit(w1);
-        // As `VehicleParams::integrate` (no `fminf` / `fmaxf` calls in wasm).
-        let v1 = self.v_d.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
+        let (w1, v1) = p.new_speeds(v0, w0, acc, self.v_d);
         (w0, w1, v0, v1)
     }
 }
@@ -389,7 +381,11 @@ mod tests {
             v_max: 4.0,
             ..VehicleParams::default()
         };
-        for p in [VehicleParams::default(), robot, semi, fast] {
+        let car_like = VehicleParams {
+            r_min: 1.5,
+            ..VehicleParams::default()
+        };
+        for p in [VehicleParams::default(), robot, semi, fast, car_like] {
             let spec = TableSpec::with_counts(p, [6, 24, 3, 4, 3]);
             let n = spec.len();
             let bits = |v: Vec<Option<Entry>>| -> Vec<Option<(u32, u32, u8)>> {

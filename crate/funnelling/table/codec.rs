@@ -9,8 +9,8 @@
 use core::f32::consts::PI;
 
 use super::format::{
-    BuildParams, TableError, AXES, AXIS_NAMES, FLAG_ETA_VALID, FLAG_REACHABLE, FORMAT_VERSION,
-    HEADER_LEN, MAGIC, MAX_ENTRIES,
+    header_len, BuildParams, TableError, AXES, AXIS_NAMES, FLAG_ETA_VALID, FLAG_REACHABLE,
+    FORMAT_VERSION, FORMAT_VERSION_CAR, HEADER_LEN, MAGIC, MAX_ENTRIES,
 };
 use super::lookup::EtaTable;
 use crate::base::vehicle::{Integrator, VehicleParams};
@@ -65,6 +65,12 @@ impl EtaTable {
                     index: i,
                 });
             }
+        }
+        if !v.r_min.is_finite() {
+            return Err(TableError::NonFinite {
+                what: "build parameter",
+                index: 11,
+            });
         }
         v.validate()
             .map_err(|e| TableError::Invalid(format!("build parameters: {e}")))?;
@@ -180,10 +186,13 @@ impl EtaTable {
     pub fn to_bytes(&self) -> Vec<u8> {
         let mut b = Vec::with_capacity(self.encoded_len());
         b.extend_from_slice(&MAGIC);
-        b.extend_from_slice(&FORMAT_VERSION.to_le_bytes());
+        b.extend_from_slice(&self.params.version().to_le_bytes());
         b.extend_from_slice(&self.params.vehicle.integrator.code().to_le_bytes());
         for x in self.params.to_array() {
             b.extend_from_slice(&x.to_le_bytes());
+        }
+        if self.params.vehicle.car_like() {
+            b.extend_from_slice(&self.params.vehicle.r_min.to_le_bytes());
         }
         for a in &self.axes {
             b.extend_from_slice(&(a.len() as u32).to_le_bytes());
@@ -207,7 +216,10 @@ impl EtaTable {
 
     fn encoded_len(&self) -> usize {
         let n = self.eta.len();
-        HEADER_LEN + 4 * self.axes.iter().map(Vec::len).sum::<usize>() + 9 * n + 4
+        header_len(self.params.version())
+            + 4 * self.axes.iter().map(Vec::len).sum::<usize>()
+            + 9 * n
+            + 4
     }
 
     /// Parses and validates a table file. Never panics, whatever the bytes.
@@ -232,7 +244,7 @@ impl EtaTable {
         }
         let mut r = Reader { b: bytes, at: 8 };
         let version = r.u32()?;
-        if version != FORMAT_VERSION {
+        if version != FORMAT_VERSION && version != FORMAT_VERSION_CAR {
             return Err(TableError::UnknownVersion(version));
         }
         let icode = r.u32()?;
@@ -240,6 +252,11 @@ impl EtaTable {
         for x in &mut pf {
             *x = r.f32()?;
         }
+        let r_min = if version == FORMAT_VERSION_CAR {
+            r.f32()?
+        } else {
+            0.0
+        };
         let mut counts = [0usize; AXES];
         for c in &mut counts {
             *c = r.u32()? as usize;
@@ -253,7 +270,7 @@ impl EtaTable {
                 "axis sizes {counts:?} are implausible"
             )));
         }
-        let expected = HEADER_LEN + 4 * counts.iter().sum::<usize>() + 9 * n + 4;
+        let expected = header_len(version) + 4 * counts.iter().sum::<usize>() + 9 * n + 4;
         if bytes.len() < expected {
             return Err(TableError::Truncated {
                 expected,
@@ -292,6 +309,7 @@ impl EtaTable {
             kp: pf[6],
             kd: pf[7],
             integrator,
+            r_min,
         };
         let params = BuildParams {
             vehicle,
@@ -325,6 +343,7 @@ impl EtaTable {
             ("normalAccelMax", t.normal_accel_max, p.normal_accel_max),
             ("kp", t.kp, p.kp),
             ("kd", t.kd, p.kd),
+            ("minTurnRadius", t.r_min, p.r_min),
         ];
         for (field, table, controller) in pairs {
             if table.to_bits() != controller.to_bits() {

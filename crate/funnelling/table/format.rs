@@ -16,8 +16,12 @@ use crate::base::vehicle::{Integrator, VehicleParams};
 
 /// File magic, the first 8 bytes.
 pub const MAGIC: [u8; 8] = *b"STEERETA";
-/// The format version this build reads and writes.
+/// The format version this build reads and writes for a unicycle.
 pub const FORMAT_VERSION: u32 = 1;
+/// The format version of a car-like vehicle's table: version 1 with one
+/// more f32 after the 11 parameters, the minimum turning radius. A
+/// unicycle's table stays version 1, byte for byte.
+pub const FORMAT_VERSION_CAR: u32 = 2;
 /// Number of axes.
 pub const AXES: usize = 5;
 /// Upper bound on entries accepted from a file (guards allocation).
@@ -87,6 +91,7 @@ impl BuildParams {
             kp: a[6],
             kd: a[7],
             integrator,
+            r_min: 0.0,
         };
         Self {
             vehicle,
@@ -184,3 +189,26 @@ impl std::error::Error for TableError {}
 /// Bytes before the axis values: magic, version, integrator, 11 f32
 /// parameters, 5 axis counts.
 pub const HEADER_LEN: usize = 8 + 4 + 4 + 11 * 4 + AXES * 4;
+
+/// Bytes before the axis values in format `version` ([`HEADER_LEN`], plus
+/// the minimum turning radius in [`FORMAT_VERSION_CAR`]).
+#[must_use]
+pub fn header_len(version: u32) -> usize {
+    if version == FORMAT_VERSION_CAR {
+        HEADER_LEN + 4
+    } else {
+        HEADER_LEN
+    }
+}
+
+impl BuildParams {
+    /// The format version a table with these parameters is written in.
+    #[must_use]
+    pub fn version(&self) -> u32 {
+        if self.vehicle.car_like() {
+            FORMAT_VERSION_CAR
+        } else {
+            FORMAT_VERSION
+        }
+    }
+}

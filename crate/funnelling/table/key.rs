@@ -1,6 +1,6 @@
 //! The η table's parameter key: one 64-bit FNV-1a hash of
 //! everything a table's bytes depend on (format version, integrator, the
-//! 11 build parameters, every axis value and the generator's time step
+//! 11 build parameters, the minimum turning radius when not 0, every axis value and the generator's time step
 //! when it is not the vehicle's), written as 16 hex digits.
 //!
 //! Why: tables are built on demand for any vehicle, and cached
@@ -35,6 +35,12 @@ pub fn key_of(params: &BuildParams, axes: [&[f32]; AXES]) -> String {
     }
     // The generator's step, when not the vehicle's own (so the keys of
     // tables whose step never changed stay as they were).
+    // The minimum turning radius, when there is one (a unicycle's key is
+    // unchanged).
+    if params.vehicle.car_like() {
+        mix(&mut h, 0x524D_494E);
+        mix(&mut h, params.vehicle.r_min.to_bits());
+    }
     let step = generator_dt(&params.vehicle);
     if step.to_bits() != params.vehicle.dt.to_bits() {
         mix(&mut h, 0x5354_4550);

@@ -107,7 +107,10 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
       sim.url.save();
     });
   };
-  const reference = referenceVehicles();
+  // The lab's limits have no minimum turning radius yet: a car-like
+  // reference vehicle (minTurnRadius > 0) would load as its unicycle twin,
+  // so the menu lists only the unicycles.
+  const reference = referenceVehicles().filter((r) => !r.vehicle.minTurnRadius);
   const LIMIT_KEYS = ["vMax", "accelMax", "omegaMax", "omegaAccelMax", "normalAccelMax", "kp", "kd"] as const;
   const urlOf = { vMax: "vmax", accelMax: "amax", omegaMax: "wmax", omegaAccelMax: "awmax", normalAccelMax: "anmax", kp: "kp", kd: "kd" } as const;
   const current = (): string =>
