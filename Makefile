@@ -74,6 +74,8 @@ figures:
 # Full mode: the studies at their report sizes and the benchmarks that
 # write timed records (benches/*.rs using the figures records), into
 # target/figures-full, then the fast mode with them (docs/figures/full/).
+# The benches' criterion runs are short (1 s warm-up, 2 s per piece): the
+# records are their own interleaved same-run ratios, not criterion's times.
 FULL_STUDIES := "reach" "relaxed" "relaxed --aim paper-arc" "envelope --n 10000 --seed 2 --brief" "avoid --seeds 100 --seed 0"
 FIGURE_BENCHES = $(patsubst benches/%.rs,%,$(shell grep -l 'figures' benches/*.rs))
 figures-full:
@@ -82,7 +84,8 @@ figures-full:
 	for s in $(FULL_STUDIES); do \
 	  FIGURES_DIR=target/figures-full ./target/release/steer $$s --record > /dev/null; done
 	for b in $(FIGURE_BENCHES); do \
-	  FIGURES_DIR=$(CURDIR)/target/figures-full cargo bench --features cli,counters --bench $$b; done
+	  FIGURES_DIR=$(CURDIR)/target/figures-full cargo bench --features cli,counters --bench $$b \
+	    -- --warm-up-time 1 --measurement-time 2; done
 	$(MAKE) figures REPORT_ARGS="--full-records target/figures-full"
 
 # The release wasm package the page and the smoke test load (wasm-opt is

@@ -9,7 +9,11 @@
 //! for a quick run). Criterion times each piece; then a plain timing loop
 //! measures every piece in turn, seven rounds, and prints the ratios of the
 //! per-piece minima: interleaving the rounds keeps a busy machine from
-//! favouring whichever piece ran in a quiet moment.
+//! favouring whichever piece ran in a quiet moment. With `FIGURES_DIR`
+//! set, the ratios are written as timed records for the figures report
+//! (`tests/common/figures.rs` documents the format), one per claim: paper
+//! 000 §7's far / near cost in the paper's reading and ours, the lookup
+//! and the update against the seek step, the paper-size table against ours.
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -24,13 +28,20 @@ use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::seek::seek_point;
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::Update;
-use steering::studies::cost::{oriented_goals, start_states};
+use steering::studies::cost::{
+    oriented_goals, start_states, PAPER_SIZE_COUNTS, SEC7_FAR_CLAIM, SEC7_FAR_NEAR,
+};
+
+#[path = "../tests/common/figures.rs"]
+mod figures;
+use figures::{record_timed, Figure};
+
+/// Interleaved rounds of [`ratio`]'s timing loop, each piece timed over
+/// 1,000,000 iterations per round; the minimum over the rounds is kept.
+const ROUNDS: usize = 7;
 
 fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
+    EtaTable::for_vehicle(&VehicleParams::default()).unwrap()
 }
 
 /// 1,024 random queries, cycled, so the lookup is not measured on one hot cell.
@@ -227,7 +238,7 @@ fn ratio() {
     // The like-for-like seek, near and far.
     let mut like = [f64::INFINITY; 2];
     let mut s = VehicleState::new(Vec2::ZERO, 0.0, 1.0, 0.0);
-    for _ in 0..7 {
+    for _ in 0..ROUNDS {
         best[0] = best[0].min(time(&mut |k| x.seek(&mut s, k)));
         for (j, far) in [false, true].into_iter().enumerate() {
             like[j] = like[j].min(time(&mut |k| x.seek_like(far, k)));
@@ -240,11 +251,11 @@ fn ratio() {
             }
         }
     }
-    // A table at paper 000's own size (43,200 entries; counts as in
-    // tests/fidelity.rs), generated here (0.1 s), beside ours.
+    // A table at paper 000's own size (43,200 entries), generated here
+    // (0.1 s), beside ours.
     let small = steering::funnelling::table::spec::TableSpec::with_counts(
         VehicleParams::default(),
-        [10, 24, 5, 4, 6],
+        PAPER_SIZE_COUNTS,
     )
     .generate()
     .unwrap();
@@ -255,7 +266,7 @@ fn ratio() {
     let (mut ours, mut paper) = (f64::INFINITY, f64::INFINITY);
     let dflt = FunnelConfig::default();
     let (mut ours_f, mut paper_f) = (f64::INFINITY, f64::INFINITY);
-    for _ in 0..7 {
+    for _ in 0..ROUNDS {
         ours = ours.min(time(&mut |k| x.lookup(k)));
         paper = paper.min(time(&mut |k| small_pieces.lookup(k)));
         ours_f = ours_f.min(time(&mut |k| x.funnel(&dflt, k & 1 == 0, k)));
@@ -286,9 +297,74 @@ fn ratio() {
             near / like[0],
             far / like[1]
         );
-        // Paper 000 §7: 9.5 µs far (30 units) against 12.5 µs near: 0.76.
-        println!("same-run ratio: funnelling update far / near, {name}: {:.2} (paper 000 §7: 9.5 / 12.5 = 0.76)", far / near);
+        println!("same-run ratio: funnelling update far / near, {name}: {:.2} (paper 000 §7: 9.5 / 12.5 = {SEC7_FAR_NEAR:.2})", far / near);
     }
+    record(&cfgs, &best, like, [paper / ours, paper_f / ours_f]);
+}
+
+/// [`ratio`]'s minima as timed records, one per claim: `best` holds the
+/// seek step, the lookup, then the update near and far per bound of
+/// `cfgs`; `like` the like-for-like seek near and far; `paper_size` the
+/// lookup and the update on the paper-size table over ours.
+fn record(
+    cfgs: &[(&str, FunnelConfig); 4],
+    best: &[f64; 10],
+    like: [f64; 2],
+    paper_size: [f64; 2],
+) {
+    let seek = best[0];
+    let f = |id: &str, what: &str, v: f64| Figure::new(id, what, v, "×", 2);
+    // bounds()[0] is ours (the default), [1] the paper's literal controller.
+    for (i, reading) in [(0, "ours"), (1, "paper")] {
+        let (name, _) = &cfgs[i];
+        record_timed(
+            "core",
+            &format!("p000_sec7_far_targets_cost_less_{reading}"),
+            &[f(
+                &format!("p000.sec7.far.{reading}.time_ratio"),
+                &format!("000 §7 far targets cost less, {reading} reading ({name}): far (20–30 m) / near (1–4 m) time per funnelling update (paper {SEC7_FAR_NEAR:.2}: {SEC7_FAR_CLAIM})"),
+                best[3 + 2 * i] / best[2 + 2 * i],
+            )],
+        );
+    }
+    let mut figs = vec![f(
+        "core.lookup.over_seek",
+        "η-table lookup / seek step (design target ≤ 10)",
+        best[1] / seek,
+    )];
+    for (i, reading) in [(0, "ours"), (1, "paper")] {
+        let name = cfgs[i].0;
+        for (j, dist) in ["near", "far"].into_iter().enumerate() {
+            let update = best[2 + 2 * i + j];
+            figs.push(f(
+                &format!("core.update.{reading}.{dist}.over_seek"),
+                &format!("{reading} reading ({name}): funnelling update, {dist} targets / seek step (design target ≤ 4)"),
+                update / seek,
+            ));
+            figs.push(f(
+                &format!("core.update.{reading}.{dist}.over_seek_like"),
+                &format!("{reading} reading ({name}): funnelling update, {dist} targets / the seek step from the same states to the same goals"),
+                update / like[j],
+            ));
+        }
+    }
+    record_timed("core", "lookup_and_update_against_seek", &figs);
+    record_timed(
+        "core",
+        "paper_size_table",
+        &[
+            f(
+                "core.paper_size_table.lookup",
+                "η-table lookup on a table at paper 000 §3's size (43,200 entries) / on ours (362,880)",
+                paper_size[0],
+            ),
+            f(
+                "core.paper_size_table.update",
+                "default funnelling update, near and far mixed, on the 43,200-entry table / on ours",
+                paper_size[1],
+            ),
+        ],
+    );
 }
 
 criterion_group!(benches, bench);

@@ -9,6 +9,9 @@
 //! plain timing loop gives the [min, max] over 16 goal-parameter bins
 //! (centre distance 1.5, 4, 10, 25 m × β offset 0°, 60°, 120°, 180° from the
 //! bearing; 256 random bearings and (v, ω) per bin), as in Table 1.
+//! With `FIGURES_DIR` set, Table 1's two claims, each in the paper's
+//! reading and ours, are written as timed records for the figures report
+//! (`tests/common/figures.rs` documents the format).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -21,27 +24,23 @@ use steering::funnelling::goal::{FunnelMemory, Goal};
 use steering::funnelling::relaxed::{EndEta, RelaxedAim, RelaxedConfig, RelaxedInternals};
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::Update;
-use steering::studies::cost::{table1_bin, TABLE1_BETAS_DEG, TABLE1_DISTANCES};
+use steering::studies::cost::{
+    table1_bins, TABLE1_LARGE, TABLE1_LARGE_CLAIM, TABLE1_SMALL, TABLE1_SMALL_CLAIM,
+};
+
+#[path = "../tests/common/figures.rs"]
+mod figures;
 
 fn table() -> EtaTable {
-    EtaTable::from_bytes(
-        &std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap(),
-    )
-    .unwrap()
+    EtaTable::for_vehicle(&VehicleParams::default()).unwrap()
 }
 
+/// The first 64 cases of each Table 1 bin.
 fn mixed(tol: (f32, f32)) -> Vec<(VehicleState, Goal)> {
-    let mut v = Vec::new();
-    for (i, d) in TABLE1_DISTANCES.iter().enumerate() {
-        for (j, b) in TABLE1_BETAS_DEG.iter().enumerate() {
-            v.extend(
-                table1_bin(*d, *b, tol, (i * 4 + j) as u64)
-                    .into_iter()
-                    .take(64),
-            );
-        }
-    }
-    v
+    table1_bins(tol)
+        .into_iter()
+        .flat_map(|b| b.into_iter().take(64))
+        .collect()
 }
 
 #[inline]
@@ -60,7 +59,7 @@ fn update(t: &EtaTable, p: &VehicleParams, c: &Controller, case: &(VehicleState,
     black_box(&s);
 }
 
-const TOLS: [(&str, (f32, f32)); 2] = [("small", (0.1, 1.0)), ("large", (2.5, 15.0))];
+const TOLS: [(&str, (f32, f32)); 2] = [("small", TABLE1_SMALL), ("large", TABLE1_LARGE)];
 
 /// Ours (defaults, then the paper arc variants), then like for like the
 /// paper's literal standard controller against its literal relaxed one
@@ -130,18 +129,15 @@ fn table1() {
         let mut cells = Vec::new();
         for (ti, (_, tol)) in TOLS.iter().enumerate() {
             let (mut lo, mut hi, mut sum) = (f64::INFINITY, 0.0f64, 0.0);
-            for (i, d) in TABLE1_DISTANCES.iter().enumerate() {
-                for (j, b) in TABLE1_BETAS_DEG.iter().enumerate() {
-                    let cases = table1_bin(*d, *b, *tol, (i * 4 + j) as u64);
-                    let t0 = Instant::now();
-                    for k in 0..n {
-                        update(&t, &p, ctl, &cases[k & 255]);
-                    }
-                    let ns = t0.elapsed().as_secs_f64() * 1e9 / n as f64;
-                    lo = lo.min(ns);
-                    hi = hi.max(ns);
-                    sum += ns;
+            for cases in table1_bins(*tol) {
+                let t0 = Instant::now();
+                for k in 0..n {
+                    update(&t, &p, ctl, &cases[k & 255]);
                 }
+                let ns = t0.elapsed().as_secs_f64() * 1e9 / n as f64;
+                lo = lo.min(ns);
+                hi = hi.max(ns);
+                sum += ns;
             }
             means[ci][ti] = sum / 16.0;
             cells.push(format!("[{lo:.0}, {hi:.0}] (mean {:.0})", sum / 16.0));
@@ -165,6 +161,42 @@ fn table1() {
         means[5][0] / means[4][0],
         means[5][1] / means[4][1]
     );
+    record(&means);
+}
+
+/// Table 1's claims as timed records: relaxed / standard mean time per
+/// update, ours (rows 1 / 0 of [`controllers`]) and the paper's literal
+/// controllers (rows 5 / 4), at each tolerance.
+fn record(means: &[[f64; 2]; 6]) {
+    let claims = [
+        ("small_tolerances_cost_alike", TABLE1_SMALL_CLAIM, "about 1"),
+        (
+            "large_tolerances_relaxed_cheaper",
+            TABLE1_LARGE_CLAIM,
+            "about 0.5",
+        ),
+    ];
+    for (ti, ((size, _), (name, claim, paper))) in TOLS.iter().zip(claims).enumerate() {
+        for (reading, (std, rel), who) in [
+            ("ours", (0, 1), "the default controllers (entry aim)"),
+            ("paper", (4, 5), "the paper's literal controllers"),
+        ] {
+            let what = format!(
+                "001 Table 1, {reading} reading ({who}): relaxed / standard mean time per update over the 16 bins × 256 cases (paper {paper}: {claim})"
+            );
+            figures::record_timed(
+                "relaxed",
+                &format!("p001_table1_{name}_{reading}"),
+                &[figures::Figure::new(
+                    &format!("p001.table1.{size}.{reading}.time_ratio"),
+                    &what,
+                    means[rel][ti] / means[std][ti],
+                    "×",
+                    2,
+                )],
+            );
+        }
+    }
 }
 
 criterion_group!(benches, bench);

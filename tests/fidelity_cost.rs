@@ -43,7 +43,8 @@ use steering::funnelling::table::lookup::counters::{self, Counts};
 use steering::funnelling::table::lookup::EtaTable;
 use steering::funnelling::update::{Mode, Update};
 use steering::studies::cost::{
-    oriented_goals, start_states, table1_bin, TABLE1_BETAS_DEG, TABLE1_DISTANCES,
+    oriented_goals, start_states, table1_bins, PAPER_SIZE_COUNTS, SEC7_FAR_CLAIM, TABLE1_LARGE,
+    TABLE1_LARGE_CLAIM, TABLE1_SMALL, TABLE1_SMALL_CLAIM,
 };
 
 mod common;
@@ -406,7 +407,7 @@ fn far_near(name: &str, reading: &str, cfg: FunnelConfig, verdict: Verdict) -> f
         &Claim {
             paper: "000".into(),
             place: "§7".into(),
-            claim: "the update costs less for a distant target (30 units): 9.5 against 12.5 µs (0.76)".into(),
+            claim: SEC7_FAR_CLAIM.into(),
             reading: reading.into(),
             verdict,
         },
@@ -450,24 +451,19 @@ fn p000_sec7_far_targets_cost_less_paper() {
 
 // ------------------------------------------------------- paper 001 Table 1
 
-const SMALL: (f32, f32) = (0.1, 1.0);
-const LARGE: (f32, f32) = (2.5, 15.0);
-
 /// One controller over Table 1's 16 bins at tolerances `tol`: the tally
 /// per bin (Table 1 gives [min, max] over its bins) and over all.
 fn table1(t: &EtaTable, c: &Controller, tol: (f32, f32)) -> (Vec<Tally>, Tally) {
     let mut bins = Vec::new();
     let mut all = Tally::default();
-    for (i, d) in TABLE1_DISTANCES.iter().enumerate() {
-        for (j, b) in TABLE1_BETAS_DEG.iter().enumerate() {
-            let mut tb = Tally::default();
-            for (s, g) in table1_bin(*d, *b, tol, (i * 4 + j) as u64) {
-                let cost = update(t, c, s, &g);
-                tb.add(cost);
-                all.add(cost);
-            }
-            bins.push(tb);
+    for bin in table1_bins(tol) {
+        let mut tb = Tally::default();
+        for (s, g) in bin {
+            let cost = update(t, c, s, &g);
+            tb.add(cost);
+            all.add(cost);
         }
+        bins.push(tb);
     }
     (bins, all)
 }
@@ -604,19 +600,14 @@ fn relaxed_vs_standard(
     ratio
 }
 
-const SMALL_CLAIM: &str =
-    "standard and relaxed funnelling costs do not differ significantly for small tolerances (0.1 m, 1°)";
-const LARGE_CLAIM: &str =
-    "relaxed funnelling is on average 50 % cheaper than standard for large tolerances (2.5 m, 15°)";
-
 #[test]
 fn p001_table1_small_tolerances_cost_alike_ours() {
     let r = relaxed_vs_standard(
         "p001_table1_small_tolerances_cost_alike_ours",
         "ours",
         "small",
-        SMALL,
-        SMALL_CLAIM,
+        TABLE1_SMALL,
+        TABLE1_SMALL_CLAIM,
         Verdict::Reproduced,
     );
     assert!((0.8..=1.25).contains(&r), "relaxed / standard {r}");
@@ -628,8 +619,8 @@ fn p001_table1_small_tolerances_cost_alike_paper() {
         "p001_table1_small_tolerances_cost_alike_paper",
         "paper",
         "small",
-        SMALL,
-        SMALL_CLAIM,
+        TABLE1_SMALL,
+        TABLE1_SMALL_CLAIM,
         Verdict::Refuted,
     );
     // A 0.1 m disk seldom meets the sampled ring nearest its centre; the
@@ -644,8 +635,8 @@ fn p001_table1_large_tolerances_relaxed_cheaper_ours() {
         "p001_table1_large_tolerances_relaxed_cheaper_ours",
         "ours",
         "large",
-        LARGE,
-        LARGE_CLAIM,
+        TABLE1_LARGE,
+        TABLE1_LARGE_CLAIM,
         Verdict::Refuted,
     );
     assert!(r >= 0.9, "relaxed / standard {r}");
@@ -657,18 +648,14 @@ fn p001_table1_large_tolerances_relaxed_cheaper_paper() {
         "p001_table1_large_tolerances_relaxed_cheaper_paper",
         "paper",
         "large",
-        LARGE,
-        LARGE_CLAIM,
+        TABLE1_LARGE,
+        TABLE1_LARGE_CLAIM,
         Verdict::Refuted,
     );
     assert!(r >= 0.9, "relaxed / standard {r}");
 }
 
 // ------------------------------------------- the table at the paper's size
-
-/// Axis counts of a 43,200-entry table, paper 000 §3's size (as
-/// `tests/fidelity.rs`'s `paper_size_table`).
-const PAPER_COUNTS: [usize; 5] = [10, 24, 5, 4, 6];
 
 #[test]
 fn paper_size_table_reads_about_as_much_per_update() {
@@ -678,7 +665,7 @@ fn paper_size_table_reads_about_as_much_per_update() {
     // two tables is not a difference in reads).
     use steering::funnelling::table::spec::TableSpec;
     let ours = table();
-    let small = TableSpec::with_counts(VehicleParams::default(), PAPER_COUNTS)
+    let small = TableSpec::with_counts(VehicleParams::default(), PAPER_SIZE_COUNTS)
         .generate()
         .expect("a 43,200-entry table");
     assert_eq!(small.len(), 43_200);

@@ -169,6 +169,23 @@ pub fn record(source: &str, command: &str, kind: Kind, seeds: &Seeds, figures: &
     write(source, command, kind, seeds, None, figures);
 }
 
+/// [`record`] for a benchmark's same-run ratios, one record per claim:
+/// source `benches/<bench>.rs::<name>`, kind `timed`, the inputs' seeds
+/// fixed (none reported). Written only when `FIGURES_DIR` is set (by
+/// `make figures-full`), so a plain `cargo bench` leaves no record behind.
+pub fn record_timed(bench: &str, name: &str, figures: &[Figure]) {
+    if std::env::var_os("FIGURES_DIR").is_none() {
+        return;
+    }
+    record(
+        &format!("benches/{bench}.rs::{name}"),
+        &format!("FIGURES_DIR=target/figures cargo bench --features cli,counters --bench {bench}"),
+        Kind::Timed,
+        &Seeds::default(),
+        figures,
+    );
+}
+
 /// [`record`] for a fidelity test: the claim it checks and its verdict too
 /// (one row of the fidelity table).
 pub fn record_claim(source: &str, command: &str, seeds: &Seeds, claim: &Claim, figures: &[Figure]) {
