@@ -19,6 +19,7 @@ use steering::world::World;
 
 mod common;
 use common::figures::{record_claim, Claim, Figure, Seeds, Verdict};
+use common::paths::distance_to_middle_path;
 use common::table;
 
 /// Writes the record of a paper 000 / 001 test (fixed presets: no seeds):
@@ -720,34 +721,6 @@ fn traces(t: &EtaTable, sc: &Scenario) -> Vec<Vec<Vec2>> {
         }
     });
     out
-}
-
-/// Distance of each agent's trace, sampled every `step` metres of travel
-/// up to `until` m, from the nearest point of the middle agent's trace:
-/// mean over the agents at each sample.
-fn distance_to_middle_path(tr: &[Vec<Vec2>], step: f32, until: f32) -> Vec<f32> {
-    let mid = &tr[tr.len() / 2];
-    let n = (until / step) as usize;
-    let mut sums = vec![Vec::new(); n + 1];
-    for (i, t) in tr.iter().enumerate() {
-        if i == tr.len() / 2 {
-            continue;
-        }
-        let mut s = 0.0;
-        let mut k = 0;
-        for w in t.windows(2) {
-            s += w[0].distance(w[1]);
-            while k <= n && s >= step * k as f32 {
-                let d = mid
-                    .iter()
-                    .map(|m| m.distance(w[1]))
-                    .fold(f32::INFINITY, f32::min);
-                sums[k].push(d);
-                k += 1;
-            }
-        }
-    }
-    sums.iter().map(|v| mean(v)).collect()
 }
 
 #[test]

@@ -446,6 +446,12 @@ fn misspelt_keys_are_errors_naming_them() {
     set(&cfg, "note", JsValue::UNDEFINED);
     lab.set_funnel(cfg).map_err(message).unwrap();
 
+    // A declared field the decoded value does not serialise at its
+    // default (the unicycle's `minTurnRadius: 0`) is known, not misspelt.
+    let p = lab.params().map_err(message).unwrap();
+    set(&p, "minTurnRadius", 0.0.into());
+    lab.set_params(p).map_err(message).unwrap();
+
     let p = lab.params().map_err(message).unwrap();
     set(&p, "maxSpeeed", 9.0.into());
     let m = message(lab.set_params(p).unwrap_err());

@@ -9,7 +9,8 @@
 //! misspelt `{gian: 3}` would be dropped without a word and the default used
 //! instead, which breaks the project rule that bad input gets a clear error.
 //! [`from_js`] therefore serialises what it decoded back to a JSON tree and
-//! requires every key of the input object, at every depth, to be in it.
+//! requires every key of the input object, at every depth, to be in it or
+//! to be read by the type (a field left out of the tree at its default).
 
 use serde::{Deserialize, Serialize};
 use serde_json::Value;
@@ -80,17 +81,29 @@ pub(crate) fn to_js<T: Serialize>(v: &T) -> Result<JsValue, JsError> {
 }
 
 /// The error for the first key of `input` that `decoded` (the value it was
-/// decoded to) does not have; `Ok` when there is none.
-pub(crate) fn check_known_keys<T: Serialize>(
-    what: &str,
-    input: &JsValue,
-    decoded: &T,
-) -> Result<(), JsError> {
+/// decoded to) does not have and that `T` does not read; `Ok` when there is
+/// none.
+pub(crate) fn check_known_keys<T>(what: &str, input: &JsValue, decoded: &T) -> Result<(), JsError>
+where
+    T: for<'de> Deserialize<'de> + Serialize,
+{
     // A value serde_json cannot represent (none of our configs) is not checked.
     let Ok(tree) = serde_json::to_value(decoded) else {
         return Ok(());
     };
-    match unknown_key(input, &tree, "") {
+    // A field serialised only when it differs from its default
+    // (`skip_serializing_if`: `minTurnRadius: 0`, an empty obstacle list)
+    // is missing from the tree yet declared. It is known when decoding
+    // fails with a string put in its place: serde-wasm-bindgen asks the
+    // object only for the fields the type declares, and every such field
+    // is a number, a list, a struct or an enum of other names. An unknown
+    // key stays unread, or is buffered whole by an internally tagged enum
+    // (which takes any string), so decoding still succeeds.
+    let read = |path: &[JsValue]| {
+        let probe = JsValue::from_str("\u{1}probe");
+        serde_wasm_bindgen::from_value::<T>(replaced(input, path, &probe)).is_err()
+    };
+    match unknown_key(input, &tree, &mut Vec::new(), &read) {
         None => Ok(()),
         Some((path, known)) => Err(js_err(
             what,
@@ -99,11 +112,51 @@ pub(crate) fn check_known_keys<T: Serialize>(
     }
 }
 
+/// A shallow copy of `input` along `path` (object keys, array indices) with
+/// the value at its end replaced by `value`; the rest is shared.
+fn replaced(input: &JsValue, path: &[JsValue], value: &JsValue) -> JsValue {
+    let Some((key, rest)) = path.split_first() else {
+        return value.clone();
+    };
+    let copy: JsValue = if js_sys::Array::is_array(input) {
+        js_sys::Array::from(input).into()
+    } else {
+        js_sys::Object::assign(&js_sys::Object::new(), input.unchecked_ref()).into()
+    };
+    let inner = js_sys::Reflect::get(input, key).unwrap_or(JsValue::UNDEFINED);
+    // Setting a property on a fresh plain object or array cannot fail.
+    let _ = js_sys::Reflect::set(&copy, key, &replaced(&inner, rest, value));
+    copy
+}
+
+/// The dotted form of a path (`goals[0].speed`).
+fn dotted(path: &[JsValue]) -> String {
+    let mut out = String::new();
+    for key in path {
+        match key.as_f64() {
+            Some(i) => out.push_str(&format!("[{i}]")),
+            None => {
+                if !out.is_empty() {
+                    out.push('.');
+                }
+                out.push_str(&key.as_string().unwrap_or_default());
+            }
+        }
+    }
+    out
+}
+
 /// Walks `input` alongside `tree`; returns the dotted path of the first
-/// unknown key and the keys known at that depth. Keys whose value is `null`
-/// or `undefined` are skipped: an absent optional field serialises to
-/// nothing, and such a key asks for nothing anyway.
-fn unknown_key(input: &JsValue, tree: &Value, path: &str) -> Option<(String, Vec<String>)> {
+/// key that is neither in the tree nor `read` by the type (see
+/// [`check_known_keys`]), and the keys known at that depth. Keys whose
+/// value is `null` or `undefined` are skipped: an absent optional field
+/// serialises to nothing, and such a key asks for nothing anyway.
+fn unknown_key(
+    input: &JsValue,
+    tree: &Value,
+    path: &mut Vec<JsValue>,
+    read: &dyn Fn(&[JsValue]) -> bool,
+) -> Option<(String, Vec<String>)> {
     match tree {
         Value::Object(map) => {
             if js_sys::Array::is_array(input) {
@@ -116,25 +169,25 @@ fn unknown_key(input: &JsValue, tree: &Value, path: &str) -> Option<(String, Vec
                 if value.is_null() || value.is_undefined() {
                     continue;
                 }
-                let here = if path.is_empty() {
-                    k.clone()
-                } else {
-                    format!("{path}.{k}")
+                path.push(key);
+                let found = match map.get(&k) {
+                    None if read(path) => None,
+                    None => Some((dotted(path), map.keys().cloned().collect())),
+                    Some(sub) => unknown_key(&value, sub, path, read),
                 };
-                match map.get(&k) {
-                    None => return Some((here, map.keys().cloned().collect())),
-                    Some(sub) => {
-                        if let Some(found) = unknown_key(&value, sub, &here) {
-                            return Some(found);
-                        }
-                    }
+                path.pop();
+                if found.is_some() {
+                    return found;
                 }
             }
             None
         }
         Value::Array(items) => items.iter().enumerate().find_map(|(i, sub)| {
             let value = js_sys::Reflect::get_u32(input, i as u32).ok()?;
-            unknown_key(&value, sub, &format!("{path}[{i}]"))
+            path.push(JsValue::from(i as u32));
+            let found = unknown_key(&value, sub, path, read);
+            path.pop();
+            found
         }),
         _ => None,
     }

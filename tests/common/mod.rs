@@ -9,6 +9,7 @@
 #![allow(dead_code, unsafe_code)]
 
 pub mod figures;
+pub mod paths;
 
 use std::alloc::{GlobalAlloc, Layout, System};
 use std::cell::Cell;
