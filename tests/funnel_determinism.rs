@@ -3,10 +3,12 @@
 //!
 //! The golden values hash the raw f32 bits of every agent's state at every
 //! step of paper presets: plain seek, standard funnelling with static, successive and
-//! moving goals (each other's pose, Fig. 6) and relaxed funnelling. The
+//! moving goals (each other's pose, Fig. 6) and relaxed funnelling; and of
+//! a car-like vehicle parking without pivoting. The
 //! controllers use only IEEE-exact arithmetic and the crate's own trig
-//! (`steering::base::trig`), never the platform's libm, so the bits must agree on
-//! every target. This file has no proptest and no file I/O so it also runs
+//! (`steering::base::trig`), never the platform's libm (a car-like agent's
+//! Dubins plan uses the `libm` crate, the same code on every target), so
+//! the bits must agree on every target. This file has no proptest and no file I/O so it also runs
 //! under `wasm-pack test --headless --chrome`.
 
 #[cfg(target_arch = "wasm32")]
@@ -65,4 +67,24 @@ fn presets_match_golden_hashes() {
     for ((name, h), (_, _, golden)) in got.iter().zip(PRESETS) {
         assert_eq!(*h, golden, "preset {name}: got {h:#018x}; all: {got:#x?}");
     }
+}
+
+/// The car-like parking preset: a car that cannot turn on the spot loops
+/// round a forward Dubins path into a bay (the one plan solved in f64,
+/// with libm on both targets). Its η table is the small car-like one of
+/// `tests/web_tables.rs` (6 × 12 × 3 × 4 × 4 entries, built here on each
+/// target from the same generator): the full table would take minutes to
+/// build in wasm, and any table the car uses pins the bits alike.
+#[test]
+#[cfg_attr(target_arch = "wasm32", wasm_bindgen_test::wasm_bindgen_test)]
+fn the_car_like_parking_preset_matches_its_golden_hash() {
+    use steering::funnelling::table::spec::TableSpec;
+    use steering::funnelling::vehicle_file;
+    let car = vehicle_file::reference("car_like").unwrap().vehicle;
+    let table = TableSpec::for_vehicle(car, [6, 12, 3, 4, 4])
+        .unwrap()
+        .generate()
+        .unwrap();
+    let h = trajectory_hash(&table, include_str!("../scenarios/car_like_parking.json"));
+    assert_eq!(h, 0xde60_1823_d0da_f540, "car_like_parking: got {h:#018x}");
 }

@@ -5,10 +5,17 @@
 //!
 //! Formulas follow Shkel & Lumelsky (2001) in the frame where the start is
 //! at the origin and the goal on the positive x axis at normalised distance
-//! `d`; computed in f64, only lengths are returned. Each word is checked in
+//! `d`; computed in f64 with libm, only lengths are returned. Each word is checked in
 //! the tests by integrating its segments to the goal pose.
 
 use core::f64::consts::TAU;
+
+// The crate's libm, not std's f64 methods: natively std calls the host's C
+// library, in wasm a port of musl's, and the two may round a last bit
+// apart. One implementation on both targets keeps a planned path, and so
+// a car-like agent's trajectory, bit-identical natively and in the
+// browser. (`sqrt` and `rem_euclid` are exact in IEEE arithmetic.)
+use libm::{acos, atan2, cos, sin};
 
 use glam::Vec2;
 use serde::{Deserialize, Serialize};
@@ -49,15 +56,15 @@ fn m2pi(x: f64) -> f64 {
 /// the word has no solution.
 #[must_use]
 pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
-    let (sa, ca, sb, cb) = (a.sin(), a.cos(), b.sin(), b.cos());
-    let cab = (a - b).cos();
+    let (sa, ca, sb, cb) = (sin(a), cos(a), sin(b), cos(b));
+    let cab = cos(a - b);
     match word {
         Word::Lsl => {
             let p2 = 2.0 + d * d - 2.0 * cab + 2.0 * d * (sa - sb);
             if p2 < 0.0 {
                 return None;
             }
-            let th = (cb - ca).atan2(d + sa - sb);
+            let th = atan2(cb - ca, d + sa - sb);
             Some((m2pi(th - a), p2.sqrt(), m2pi(b - th)))
         }
         Word::Rsr => {
@@ -65,7 +72,7 @@ pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
             if p2 < 0.0 {
                 return None;
             }
-            let th = (ca - cb).atan2(d - sa + sb);
+            let th = atan2(ca - cb, d - sa + sb);
             Some((m2pi(a - th), p2.sqrt(), m2pi(th - b)))
         }
         Word::Lsr => {
@@ -74,7 +81,7 @@ pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
                 return None;
             }
             let p = p2.sqrt();
-            let th = (-ca - cb).atan2(d + sa + sb) - (-2.0f64).atan2(p);
+            let th = atan2(-ca - cb, d + sa + sb) - atan2(-2.0, p);
             Some((m2pi(th - a), p, m2pi(th - b)))
         }
         Word::Rsl => {
@@ -83,7 +90,7 @@ pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
                 return None;
             }
             let p = p2.sqrt();
-            let th = (ca + cb).atan2(d - sa - sb) - 2.0f64.atan2(p);
+            let th = atan2(ca + cb, d - sa - sb) - atan2(2.0, p);
             Some((m2pi(a - th), p, m2pi(b - th)))
         }
         Word::Rlr => {
@@ -91,8 +98,8 @@ pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
             if tmp.abs() > 1.0 {
                 return None;
             }
-            let p = m2pi(TAU - tmp.acos());
-            let t = m2pi(a - (ca - cb).atan2(d - sa + sb) + p / 2.0);
+            let p = m2pi(TAU - acos(tmp));
+            let t = m2pi(a - atan2(ca - cb, d - sa + sb) + p / 2.0);
             Some((t, p, m2pi(a - b - t + p)))
         }
         Word::Lrl => {
@@ -100,24 +107,35 @@ pub fn segments(word: Word, a: f64, b: f64, d: f64) -> Option<(f64, f64, f64)> {
             if tmp.abs() > 1.0 {
                 return None;
             }
-            let p = m2pi(TAU - tmp.acos());
-            let t = m2pi(-a - (ca - cb).atan2(d + sa - sb) + p / 2.0);
+            let p = m2pi(TAU - acos(tmp));
+            let t = m2pi(-a - atan2(ca - cb, d + sa - sb) + p / 2.0);
             Some((t, p, m2pi(b - a - t + p)))
         }
     }
+}
+
+/// The normalised frame of a query: the radius in f64 (at least 1e-6), the
+/// distance `d` in radii and the start and goal headings `a`, `b` measured
+/// from the start→goal direction.
+fn frame(start: (f32, f32, f32), goal: (f32, f32, f32), rho: f32) -> (f64, f64, f64, f64) {
+    let rho = f64::from(rho.max(1e-6));
+    let dx = f64::from(goal.0 - start.0);
+    let dy = f64::from(goal.1 - start.1);
+    let d = (dx * dx + dy * dy).sqrt() / rho;
+    let phi = if d > 0.0 { atan2(dy, dx) } else { 0.0 };
+    (
+        rho,
+        d,
+        m2pi(f64::from(start.2) - phi),
+        m2pi(f64::from(goal.2) - phi),
+    )
 }
 
 /// Length of the shortest Dubins path from `(x0, y0, θ0)` to `(x1, y1, θ1)`
 /// with minimum turning radius `rho` (> 0), in the units of the input.
 #[must_use]
 pub fn shortest_length(start: (f32, f32, f32), goal: (f32, f32, f32), rho: f32) -> f32 {
-    let rho = f64::from(rho.max(1e-6));
-    let dx = f64::from(goal.0 - start.0);
-    let dy = f64::from(goal.1 - start.1);
-    let d = (dx * dx + dy * dy).sqrt() / rho;
-    let phi = if d > 0.0 { dy.atan2(dx) } else { 0.0 };
-    let a = m2pi(f64::from(start.2) - phi);
-    let b = m2pi(f64::from(goal.2) - phi);
+    let (rho, d, a, b) = frame(start, goal, rho);
     let best = WORDS
         .iter()
         .filter_map(|&w| segments(w, a, b, d))
@@ -146,9 +164,9 @@ pub fn turns(word: Word) -> [f32; 3] {
 /// three segments). Beyond its end the path goes on straight along the
 /// goal heading, so a follower aiming ahead of the end is led onto it.
 ///
-/// The solve runs in f64 and is rounded to f32; the sampling uses only
-/// [`crate::base::trig`], so following it is bit-identical natively and
-/// in wasm as long as the f64 solve rounds alike (it runs once per plan).
+/// The solve runs in f64 with libm (the same code on every target) and is
+/// rounded to f32; the sampling uses only [`crate::base::trig`]; so
+/// following it is bit-identical natively and in wasm.
 #[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
 #[serde(rename_all = "camelCase")]
 pub struct DubinsPath {
@@ -171,13 +189,7 @@ impl DubinsPath {
     /// (non-finite).
     #[must_use]
     pub fn shortest(start: (f32, f32, f32), goal: (f32, f32, f32), rho: f32) -> Option<Self> {
-        let r = f64::from(rho.max(1e-6));
-        let dx = f64::from(goal.0 - start.0);
-        let dy = f64::from(goal.1 - start.1);
-        let d = (dx * dx + dy * dy).sqrt() / r;
-        let phi = if d > 0.0 { dy.atan2(dx) } else { 0.0 };
-        let a = m2pi(f64::from(start.2) - phi);
-        let b = m2pi(f64::from(goal.2) - phi);
+        let (r, d, a, b) = frame(start, goal, rho);
         let (word, (t, p, q)) = WORDS
             .iter()
             .filter_map(|&w| segments(w, a, b, d).map(|s| (w, s)))
