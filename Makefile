@@ -7,12 +7,12 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 WASM_PACK_VERSION := 0.15.1
 WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"/,"",$$3); print $$3; exit}' Cargo.lock)
 
-.PHONY: setup setup-rust setup-browser setup-web test test-native lint table bench demo \
+.PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
 	npm test-npm test-library-user figures figures-full
 
-setup: setup-rust setup-browser setup-web
+setup: setup-rust setup-browser setup-web setup-wasm-strip
 
 setup-rust:
 	rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
@@ -26,6 +26,11 @@ setup-rust:
 setup-browser:
 	if [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; then \
 	  apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends chromium chromium-driver; fi
+
+# wabt's wasm-strip, from Debian (wasm-pack's own wasm-opt is off: its
+# binaries come from GitHub, which these machines cannot reach).
+setup-wasm-strip:
+	command -v wasm-strip >/dev/null || (apt-get update && DEBIAN_FRONTEND=noninteractive apt-get install -y --no-install-recommends wabt)
 
 # Vite 8 does not install with npm 10 (seen on machines where npm's own
 # upgrade at boot failed): upgrade npm first, from the npm registry.
@@ -99,12 +104,16 @@ figures-full:
 # `--no-default-features`: the pages call no study, so `studies` (and
 # anything else on by default for native users) stays out of the download.
 SIMD_FLAGS := -C target-feature=+simd128
-wasm: setup-rust
+# The pages' wasm without its custom sections: the function names (a
+# tenth of the module, there for stack traces, and no panic crosses the
+# boundary), the producers and target features; they carry no semantics.
+wasm: setup-rust setup-wasm-strip
 	wasm-pack build --target web --release --out-dir web/pkg --no-pack -- --no-default-features
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
 	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack -- --no-default-features
 	cmp web/pkg/steering.js target/wasm-simd/pkg/steering.js
 	cp target/wasm-simd/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm
+	for f in web/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm; do wasm-strip $$f; done
 	@ls -l web/pkg/steering_bg.wasm | awk '{print "wasm size: " $$5 " bytes"}'
 	@gzip -9 -c web/pkg/steering_bg.wasm | wc -c | awk '{print "wasm gzipped: " $$1 " bytes"}'
 	@ls -l web/pkg/steering_simd_bg.wasm | awk '{print "wasm (simd128) size: " $$5 " bytes"}'

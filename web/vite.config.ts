@@ -12,9 +12,28 @@ import { toPlanes } from "./src/tableplanes.ts";
 
 const TABLES = resolve(import.meta.dirname, "../tables");
 
-/** Gzipped tables by file, compressed once (the byte planes, `NAME.planes`,
- *  gzip to less than half of `NAME.bin`; src/tableplanes.ts). */
+/** Gzipped files, compressed once per change: the tables (the byte planes,
+ *  `NAME.planes`, gzip to less than half of `NAME.bin`; src/tableplanes.ts)
+ *  and the built core (its wasm to about two fifths). */
 const gzipped = new Map<string, { mtimeMs: number; body: Buffer }>();
+
+/** Sends `bytes()` (the content of `file`, as served under `key`),
+ *  gzipped when the client takes gzip. */
+function send(req: IncomingMessage, res: ServerResponse, key: string, file: string, bytes: () => Buffer): void {
+  res.setHeader("Vary", "Accept-Encoding");
+  if (!/\bgzip\b/.test(String(req.headers["accept-encoding"] ?? ""))) {
+    res.end(bytes());
+    return;
+  }
+  const mtimeMs = statSync(file).mtimeMs;
+  let z = gzipped.get(key);
+  if (!z || z.mtimeMs !== mtimeMs) {
+    z = { mtimeMs, body: gzipSync(bytes(), { level: 6 }) };
+    gzipped.set(key, z);
+  }
+  res.setHeader("Content-Encoding", "gzip");
+  res.end(z.body);
+}
 
 /** A table file's bytes as served: `NAME.planes` is `NAME.bin` in byte
  *  planes (the page's `fromPlanes` rejoins them; the e2e suite loads the
@@ -36,20 +55,21 @@ function serveTables(req: IncomingMessage, res: ServerResponse, next: () => void
     return;
   }
   res.setHeader("Content-Type", "application/octet-stream");
-  res.setHeader("Vary", "Accept-Encoding");
-  if (/\bgzip\b/.test(String(req.headers["accept-encoding"] ?? ""))) {
-    const mtimeMs = statSync(file).mtimeMs;
-    const k = `${file}${planes ? "#planes" : ""}`;
-    let z = gzipped.get(k);
-    if (!z || z.mtimeMs !== mtimeMs) {
-      z = { mtimeMs, body: gzipSync(tableBytes(file, planes), { level: 6 }) };
-      gzipped.set(k, z);
-    }
-    res.setHeader("Content-Encoding", "gzip");
-    res.end(z.body);
-    return;
-  }
-  res.end(tableBytes(file, planes));
+  send(req, res, `${file}${planes ? "#planes" : ""}`, file, () => tableBytes(file, planes));
+}
+
+/** The built core's wasm (`assets/*.wasm` of `outDir`), gzipped: Vite's
+ *  preview compresses scripts and pages but not wasm, the heaviest file
+ *  of every page (the browser inflates it while compiling the stream). */
+function serveWasm(outDir: string) {
+  return (req: IncomingMessage, res: ServerResponse, next: () => void): void => {
+    const m = /^\/assets\/([A-Za-z0-9_.-]+\.wasm)(\?.*)?$/.exec(req.url ?? "");
+    const file = m?.[1] === undefined ? undefined : resolve(outDir, "assets", m[1]);
+    if (file === undefined || !existsSync(file)) return next();
+    res.setHeader("Content-Type", "application/wasm");
+    res.setHeader("Cache-Control", "public, max-age=31536000, immutable");
+    send(req, res, file, file, () => readFileSync(file));
+  };
 }
 
 function tables(): Plugin {
@@ -60,6 +80,7 @@ function tables(): Plugin {
     },
     configurePreviewServer(server) {
       server.middlewares.use(serveTables);
+      server.middlewares.use(serveWasm(resolve(server.config.root, server.config.build.outDir)));
     },
     generateBundle() {
       if (!existsSync(TABLES)) return;
