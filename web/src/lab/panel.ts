@@ -111,9 +111,10 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
       applyLimits(url);
     });
   };
-  const vehicleSelect = vehicleMenu(limBox, sim, controls, () => {
+  const vehicleSelect = vehicleMenu(limBox, sim, controls, (radiusChanged) => {
     followLimits();
     applyLimits("rmin");
+    if (radiusChanged) sim.refitPlayground();
   });
   lim("vmax", "vMax", 0.05, 20);
   lim("amax", "accelMax", 0.05, 10);
@@ -152,7 +153,7 @@ const LIMIT_KEYS = Object.keys(LIMIT_URL) as Array<keyof typeof LIMIT_URL>;
 /** The reference vehicles' menu (every one, car-like included): choosing
  *  one sets every limit, then `applied`; `sync` shows the vehicle the
  *  limits match, or "custom". */
-function vehicleMenu(parent: HTMLElement, sim: LabSim, controls: Map<string, Control>, applied: () => void): { sync(): void } {
+function vehicleMenu(parent: HTMLElement, sim: LabSim, controls: Map<string, Control>, applied: (radiusChanged: boolean) => void): { sync(): void } {
   const st = sim.st;
   const reference = referenceVehicles();
   // A unicycle's file has no radius: 0, turns on the spot.
@@ -165,13 +166,14 @@ function vehicleMenu(parent: HTMLElement, sim: LabSim, controls: Map<string, Con
     onChange: (name) => {
       const r = reference.find((x) => x.name === name);
       if (!r) return;
+      const radius = st.limits.minTurnRadius ?? sim.defaults.minTurnRadius;
       for (const k of LIMIT_KEYS) {
         const v = limit(r, k);
         if (v === sim.defaults[k]) delete st.limits[k];
         else st.limits[k] = v;
         controls.get(LIMIT_URL[k])?.set(v);
       }
-      applied();
+      applied(limit(r, "minTurnRadius") !== radius);
     },
   });
   menu.el.title = reference.map((r) => `${r.name}: ${r.description}`).join("\n");

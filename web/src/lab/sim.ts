@@ -356,6 +356,15 @@ export class LabSim {
     this.url.save();
   }
 
+  /** The playground's view fitted again (a vehicle of another turning
+   *  radius loops round further); a preset's or a crowd's view stays. */
+  refitPlayground(): void {
+    if (this.st.preset || this.st.agents > 0) return;
+    fitPlayground(this.view, this.st);
+    this.dirty = true;
+    this.url.save();
+  }
+
   /** The page's controller settings to the world (presets included). */
   applyFunnel(): void {
     this.edit({ kind: "funnel", funnel: funnelConfig(this.st.funnel), relaxed: relaxedConfig(this.st.funnel), reading: readingOf(this.st.funnel) }, (a) => this.onController(a.error));
@@ -470,10 +479,10 @@ export class LabSim {
       const sc = info.scenario;
       this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
       if (fit && sc) {
-        // A car-like vehicle loops round up to two turning radii beyond
+        // A car-like vehicle loops round up to three turning radii beyond
         // its start and goals: the view keeps the loop in.
         const [x0, y0, x1, y1] = sc.box;
-        const r = 2 * (info.params.minTurnRadius ?? 0);
+        const r = 3 * (info.params.minTurnRadius ?? 0);
         this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, stageInsets(this.view, 40));
       }
     } else {
