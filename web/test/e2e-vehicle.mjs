@@ -17,7 +17,8 @@
 //   the menu after a reload, a hand edit shows "custom", an out-of-range
 //   radius is a note at its control; the playground car never turns
 //   faster than v/R_min and arrives; the car-like parking preset ends at
-//   rest inside both tolerances, without console errors;
+//   rest inside both tolerances, without console errors, and its car goes
+//   with it when another preset is chosen;
 // - no console errors. Prints the build and cache timings; a node:test
 //   suite (harness.mjs `check`). Screenshots in artifacts/.
 import { serve, launch, openPage, check, shot, waitReady, settle } from "./harness.mjs";
@@ -219,6 +220,12 @@ try {
     assert.ok(off <= (5 * Math.PI) / 180, `heading off by ${(off * 180) / Math.PI}°`);
     await settle(opened.page);
     await shot(opened.page, "preset-car-like-parking");
+    // The car goes with its preset: Fig. 1's walkers turn on the spot again.
+    await opened.page.selectOption("#preset", "p000_fig1_seek");
+    await opened.page.waitForFunction(() => window.__lab.state().preset === "p000_fig1_seek" && window.__lab.count() > 0, null, { timeout: 5000 });
+    assert.equal((await opened.page.evaluate(() => window.__lab.params())).minTurnRadius ?? 0, 0);
+    assert.equal(await opened.page.inputValue("#vehicle"), "pedestrian");
+    assert.equal(await opened.page.locator("#message").isHidden(), true, await opened.page.locator("#message").textContent());
     // The phone's view is fitted on loading: a fresh page (its table from the context's cache).
     const phone = await opened.context.newPage();
     await phone.setViewportSize({ width: 390, height: 844 });

@@ -59,7 +59,7 @@ export const FIELDS: readonly LabField[] = [
   lim("anmax", "normalAccelMax", "max normal acc. A", "m/s²"),
   lim("kp", "kp", "seek gain kp", "1/s²"),
   lim("kd", "kd", "seek gain kd", "1/s"),
-  lim("rmin", "minTurnRadius", "min. turning radius (0: turns on the spot)", "m"),
+  lim("rmin", "minTurnRadius", "min. turning radius", "m"),
   num("vx", "pos.x", "vehicle x", "m", (s) => s.vehicle.x, (s, v) => { s.vehicle.x = v; }),
   num("vy", "pos.y", "vehicle y", "m", (s) => s.vehicle.y, (s, v) => { s.vehicle.y = v; }),
   num("vth", "theta", "vehicle heading", "°", (s) => s.vehicle.theta, (s, v) => { s.vehicle.theta = v; }, 1 / DEG),

@@ -124,7 +124,7 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   lim("kp", "kp", 0.05, 400);
   lim("kd", "kd", 0.05, 60);
   lim("rmin", "minTurnRadius", 0, 20, 0.1);
-  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit. A turning radius above 0 makes the vehicle car-like: it cannot turn on the spot, so it arrives oriented by driving round.";
+  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit. Min. turning radius 0: turns on the spot; above 0 the vehicle is car-like (|ω| ≤ v/R_min): it arrives oriented by driving round.";
   // A limit edited by hand shows "custom" (or the vehicle it matches); the
   // select's own events are its own business.
   const syncVehicle = (ev: Event): void => {

@@ -111,6 +111,9 @@ export class LabSim {
   private notInWorkers = false;
   /** Edits made while a world is being built: the new world's, once built. */
   private waiting: Array<[Edit, (a: EditAnswer) => void]> | null = null;
+  /** The page's limits as a preset's own vehicle set them (adoptLimits),
+   *  null once edited or when the preset brought none. */
+  private adopted: string | null = null;
   /** The URL's view, shown once (the first build); later builds fit when asked. */
   private sharedView: LabState["view"];
 
@@ -351,9 +354,20 @@ export class LabSim {
       changed = true;
     }
     if (!changed) return;
+    this.adopted = JSON.stringify(this.st.limits);
     this.onLimits();
     this.syncTable();
     this.url.save();
+  }
+
+  /** Before another preset (or the playground): the vehicle the last
+   *  preset brought goes with it, unless its limits were edited since. */
+  dropPresetVehicle(): void {
+    if (this.adopted !== null && this.adopted === JSON.stringify(this.st.limits)) {
+      this.st.limits = {};
+      this.onLimits();
+    }
+    this.adopted = null;
   }
 
   /** The playground's view fitted again (a vehicle of another turning

@@ -142,7 +142,9 @@ export function buildWorld(lab: Lab, recipe: Recipe): BuildInfo {
         ...(info.measured ? { measured: info.measured } : {}),
         box: [info.minX, info.minY, info.maxX, info.maxY],
       };
-      if (info.warning) warn(`Preset ${b.name}: ${info.warning}`);
+      // The core's warning is a table built for other limits: the page
+      // builds the matching one and the HUD labels the old one approximate
+      // meanwhile (sim.ts, syncTable).
     } catch (e) {
       warn(`Preset ${b.name} could not be loaded: ${errorText(e)}`, "error");
     }
