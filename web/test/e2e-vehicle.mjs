@@ -13,6 +13,12 @@
 // - a build whose workers cannot load the core (wasm requests refused)
 //   ends in an error the page shows, not at 0 % for ever;
 // - the reference vehicles (select "vehicle"): the car's table built;
+// - the car-like vehicle (minimum turning radius): R_min in the link and
+//   the menu after a reload, a hand edit shows "custom", an out-of-range
+//   radius is a note at its control; the playground car never turns
+//   faster than v/R_min and arrives; the car-like parking preset ends at
+//   rest inside both tolerances, without console errors, and its car goes
+//   with it when another preset is chosen;
 // - no console errors. Prints the build and cache timings; a node:test
 //   suite (harness.mjs `check`). Screenshots in artifacts/.
 import { serve, launch, openPage, check, shot, waitReady, settle } from "./harness.mjs";
@@ -136,6 +142,108 @@ try {
     await settle(page);
     await shot(page, "vehicle-car-phone");
     assert.deepEqual(problems, []);
+    await context.close();
+  });
+
+  /** Runs the paused world from t = 0 one step at a time (at most `limit`
+   *  steps) until agent 0 rests in End_of_Steering: the largest excess of
+   *  |ω| over v/R_min, the steps taken and the last record. */
+  const runCar = (page, limit) =>
+    page.evaluate(async (limit) => {
+      const l = window.__lab;
+      l.setPaused(true);
+      await l.restart();
+      const R = l.params().minTurnRadius;
+      let excess = -Infinity;
+      let steps = 0;
+      let a = l.agentRecord(0);
+      for (; steps < limit && !(a.mode === 0 && a.v === 0); steps++) {
+        await l.stepN(1);
+        a = l.agentRecord(0);
+        excess = Math.max(excess, Math.abs(a.omega) - a.v / R);
+      }
+      return { R, excess, steps, last: a };
+    }, limit);
+
+  await check("the car-like vehicle: R_min in the link and the menu after a reload; |ω| ≤ v/R_min and it arrives", async () => {
+    ({ context, page, problems } = await openPage(browser, { width: 1440, height: 900 }));
+    await page.goto(`${url}index.html`);
+    assert.equal(await waitReady(page), null);
+    await page.selectOption("#vehicle", "car_like");
+    await waitExact(page);
+    assert.equal(Number(await page.inputValue("#rmin-num")), 5);
+    await page.waitForFunction(() => /[#&]rmin=5(&|$)/.test(location.hash), null, { timeout: 5000 });
+    await page.reload();
+    assert.equal(await waitReady(page), null);
+    assert.equal(await page.inputValue("#vehicle"), "car_like");
+    await waitExact(page, 10000);
+    const p = await page.evaluate(() => window.__lab.params());
+    assert.equal(p.minTurnRadius, 5);
+    const r = await runCar(page, 60 * 60);
+    assert.ok(r.excess <= 1e-4, `|ω| − v/R_min reached ${r.excess} rad/s`);
+    assert.equal(r.last.mode, 0, `arrived within 60 s: ${JSON.stringify(r)}`);
+    const st = await page.evaluate(() => window.__lab.state());
+    assert.ok(Math.hypot(r.last.x - st.target.x, r.last.y - st.target.y) <= st.dTol, JSON.stringify(r.last));
+    await settle(page);
+    await shot(page, "vehicle-car-like");
+    // On a phone the playground is fitted for the car's loop when the car is chosen (its table from the cache).
+    const phone = await context.newPage();
+    await phone.setViewportSize({ width: 390, height: 844 });
+    await phone.goto(`${url}index.html`);
+    assert.equal(await waitReady(phone), null);
+    await phone.selectOption("#vehicle", "car_like");
+    await waitExact(phone, 10000);
+    assert.equal((await runCar(phone, 60 * 60)).last.mode, 0);
+    await settle(phone);
+    await shot(phone, "vehicle-car-like-phone");
+    await phone.close();
+  });
+
+  await check("the car-like vehicle: a hand edit of R_min shows custom; a radius out of range is a note", async () => {
+    await page.locator("#rmin-num").fill("3");
+    await page.locator("#rmin-num").press("Enter");
+    assert.equal(await page.inputValue("#vehicle"), "custom");
+    await page.waitForFunction(() => /[#&]rmin=3(&|$)/.test(location.hash), null, { timeout: 5000 });
+    await page.locator("#rmin-num").fill("-1");
+    await page.locator("#rmin-num").press("Enter");
+    assert.match(await page.locator("#rmin-msg").textContent(), /turning radius.*not a number in \[0, 1000\] m/);
+    assert.equal((await page.evaluate(() => window.__lab.params())).minTurnRadius, 3);
+    assert.deepEqual(problems, []);
+  });
+
+  await check("the car-like parking preset: its own vehicle and table, at rest inside both tolerances, no console errors", async () => {
+    const opened = await openPage(browser, { width: 1440, height: 900 });
+    await opened.page.goto(`${url}index.html#preset=car_like_parking`);
+    assert.equal(await waitReady(opened.page), null);
+    assert.equal(await opened.page.inputValue("#vehicle"), "car_like");
+    await waitExact(opened.page);
+    const r = await runCar(opened.page, 60 * 40);
+    assert.equal(r.R, 5);
+    assert.ok(r.excess <= 1e-4, `|ω| − v/R_min reached ${r.excess} rad/s`);
+    const { x, y, theta, v } = r.last;
+    assert.equal(v, 0, JSON.stringify(r));
+    assert.ok(Math.hypot(x, y - 4) <= 0.5, `at (${x}, ${y}), the bay at (0, 4) ± 0.5 m`);
+    const off = Math.abs(Math.atan2(Math.sin(theta - Math.PI), Math.cos(theta - Math.PI)));
+    assert.ok(off <= (5 * Math.PI) / 180, `heading off by ${(off * 180) / Math.PI}°`);
+    await settle(opened.page);
+    await shot(opened.page, "preset-car-like-parking");
+    // The car goes with its preset: Fig. 1's walkers turn on the spot again.
+    await opened.page.selectOption("#preset", "p000_fig1_seek");
+    await opened.page.waitForFunction(() => window.__lab.state().preset === "p000_fig1_seek" && window.__lab.count() > 0, null, { timeout: 5000 });
+    assert.equal((await opened.page.evaluate(() => window.__lab.params())).minTurnRadius ?? 0, 0);
+    assert.equal(await opened.page.inputValue("#vehicle"), "pedestrian");
+    assert.equal(await opened.page.locator("#message").isHidden(), true, await opened.page.locator("#message").textContent());
+    // The phone's view is fitted on loading: a fresh page (its table from the context's cache).
+    const phone = await opened.context.newPage();
+    await phone.setViewportSize({ width: 390, height: 844 });
+    await phone.goto(`${url}index.html#preset=car_like_parking`);
+    assert.equal(await waitReady(phone), null);
+    await waitExact(phone, 10000);
+    await phone.evaluate(() => window.__lab.stepN(600));
+    await settle(phone);
+    await shot(phone, "preset-car-like-parking-phone");
+    assert.deepEqual(opened.problems, []);
+    await opened.context.close();
     await context.close();
   });
 } finally {

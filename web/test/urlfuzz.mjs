@@ -57,7 +57,8 @@ const core = await import(resolve(pkg, "steering.js"));
 core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
 const tableBytes = readFileSync(resolve(root, "tables/eta.bin"));
 let lab = new core.Lab(tableBytes);
-const defaults = lab.params();
+// The core leaves a zero turning radius out; the page counts it as a limit.
+const defaults = { minTurnRadius: 0, ...lab.params() };
 const table = new page.RangeTable(core.ranges(), core.precision());
 const PRESETS = ["p000_fig1_seek", "p000_fig7_variety"];
 

@@ -4,7 +4,7 @@
 // accepts. Pure: no wasm at run time, so the Node fuzz test runs it as is.
 
 import { parseDecimal } from "../controls";
-import type { FieldRange, PrecisionRule } from "../wasm";
+import type { FieldRange, PrecisionRule, VehicleParams } from "../wasm";
 
 export { parseDecimal };
 import type { LabState, Limits } from "./state";
@@ -14,6 +14,13 @@ const DEG = Math.PI / 180;
 /** The core's default vehicle limits (`lab.params()`): what an unset limit
  *  is, and the time step (the coordinate rule needs it). */
 export type LimitDefaults = Required<Limits> & { dt: number };
+
+/** `p` (the core's default parameters) as the page's defaults: the core
+ *  leaves a zero turning radius out of what it hands over, the page needs
+ *  every limit. */
+export function limitDefaults(p: VehicleParams): VehicleParams & LimitDefaults {
+  return { ...p, minTurnRadius: p.minTurnRadius ?? 0 };
+}
 
 /** One number of the lab state, tied to the core's range `core`. */
 export interface LabField {
@@ -52,6 +59,7 @@ export const FIELDS: readonly LabField[] = [
   lim("anmax", "normalAccelMax", "max normal acc. A", "m/s²"),
   lim("kp", "kp", "seek gain kp", "1/s²"),
   lim("kd", "kd", "seek gain kd", "1/s"),
+  lim("rmin", "minTurnRadius", "min. turning radius", "m"),
   num("vx", "pos.x", "vehicle x", "m", (s) => s.vehicle.x, (s, v) => { s.vehicle.x = v; }),
   num("vy", "pos.y", "vehicle y", "m", (s) => s.vehicle.y, (s, v) => { s.vehicle.y = v; }),
   num("vth", "theta", "vehicle heading", "°", (s) => s.vehicle.theta, (s, v) => { s.vehicle.theta = v; }, 1 / DEG),

@@ -96,6 +96,8 @@ export interface LabHook {
   simTime(): number;
   /** The view's CSS pixels per metre. */
   viewScale(): number;
+  /** Agent i's pose, speed, angular speed and mode as drawn (null: no such agent). */
+  agentRecord(i: number): { x: number; y: number; theta: number; v: number; omega: number; mode: number } | null;
 }
 
 declare global {
@@ -221,6 +223,12 @@ export function installHook(page: LabPage): void {
     }, 0),
     simTime: on((p) => p.sim.time, 0),
     viewScale: on((p) => p.view.scale, 1),
+    agentRecord: (i) => {
+      const sim = page.parts?.sim;
+      if (!sim || i < 0 || i >= sim.count) return null;
+      const f = (k: StateField): number => sim.field(i, k) ?? NaN;
+      return { x: f(StateField.X), y: f(StateField.Y), theta: f(StateField.Theta), v: f(StateField.V), omega: f(StateField.Omega), mode: f(StateField.Mode) };
+    },
   };
   window.__lab = hook;
 }

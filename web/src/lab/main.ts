@@ -5,7 +5,7 @@ import { setupCanvas } from "../canvas";
 import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
 import { View } from "../view";
 import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges } from "../wasm";
-import { RangeTable } from "./fields";
+import { limitDefaults, RangeTable } from "./fields";
 import { obstacleDrags } from "./avoidance";
 import { avoidanceSection } from "./avoidpanel";
 import { attachDrags, handlePositions, type Handles } from "./handles";
@@ -53,7 +53,7 @@ async function start(): Promise<void> {
 
   // The link is read against the core's ranges and default limits.
   const table = new RangeTable(ranges(), precision());
-  const decoded = decodeState(location.hash, presetNames(), table, lab.params());
+  const decoded = decodeState(location.hash, presetNames(), table, limitDefaults(lab.params()));
   const st = decoded.state;
   status.problems = decoded.problems;
   const title = "Some of the link's state was ignored:";

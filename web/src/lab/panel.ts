@@ -14,7 +14,7 @@ import { downloadPng } from "../download";
 import { downloadCsv, downloadJson } from "./export";
 import { funnelSettingsSection } from "./funnelsettings";
 import type { LabSim } from "./sim";
-import type { Overlays } from "./state";
+import type { Limits, Overlays } from "./state";
 
 const DEG = Math.PI / 180;
 
@@ -94,69 +94,90 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   sim.onController = (error) => controller.inForce(sim.controllerLabel(), error);
 
   const limBox = section(panel, "Vehicle limits");
-  const lim = (url: string, key: "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax" | "kp" | "kd", hi: number): void => {
-    numeric(limBox, url, { id: url, lo: 0.05, hi, step: 0.05 }, (v) => {
+  /** Clamped fields and a refusal of the core noted at their controls. */
+  const applyLimits = (at: string): void => {
+    const clamped = sim.applyParams((error) => controls.get(at)?.note(error));
+    for (const c of clamped) {
+      const ctl = controls.get(c.field.url);
+      ctl?.set(c.field.get(st, sim.defaults));
+      ctl?.note(c.message);
+    }
+    sim.url.save();
+  };
+  const lim = (url: string, key: keyof Limits, lo: number, hi: number, step = 0.05): void => {
+    numeric(limBox, url, { id: url, lo, hi, step }, (v) => {
       st.limits[key] = v;
       followLimits();
-      const clamped = sim.applyParams();
-      for (const c of clamped) {
-        const ctl = controls.get(c.field.url);
-        ctl?.set(c.field.get(st, sim.defaults));
-        ctl?.note(c.message);
-      }
-      sim.url.save();
+      applyLimits(url);
     });
   };
-  // The lab's limits have no minimum turning radius yet: a car-like
-  // reference vehicle (minTurnRadius > 0) would load as its unicycle twin,
-  // so the menu lists only the unicycles.
-  const reference = referenceVehicles().filter((r) => !r.vehicle.minTurnRadius);
-  const LIMIT_KEYS = ["vMax", "accelMax", "omegaMax", "omegaAccelMax", "normalAccelMax", "kp", "kd"] as const;
-  const urlOf = { vMax: "vmax", accelMax: "amax", omegaMax: "wmax", omegaAccelMax: "awmax", normalAccelMax: "anmax", kp: "kp", kd: "kd" } as const;
-  const current = (): string =>
-    reference.find((r) => LIMIT_KEYS.every((k) => Math.fround(st.limits[k] ?? sim.defaults[k]) === Math.fround(r.vehicle[k])))?.name ?? "custom";
-  const vehicleSelect = select(limBox, {
-    id: "vehicle", label: "vehicle", value: current(),
-    options: [...reference.map((r) => ({ value: r.name, label: r.name })), { value: "custom", label: "custom" }],
-    onChange: (name) => {
-      const r = reference.find((x) => x.name === name);
-      if (!r) return;
-      for (const k of LIMIT_KEYS) {
-        if (r.vehicle[k] === sim.defaults[k]) delete st.limits[k];
-        else st.limits[k] = r.vehicle[k];
-        controls.get(urlOf[k])?.set(r.vehicle[k]);
-      }
-      followLimits();
-      for (const c of sim.applyParams()) {
-        const ctl = controls.get(c.field.url);
-        ctl?.set(c.field.get(st, sim.defaults));
-        ctl?.note(c.message);
-      }
-      sim.url.save();
-    },
+  const vehicleSelect = vehicleMenu(limBox, sim, controls, (radiusChanged) => {
+    followLimits();
+    applyLimits("rmin");
+    if (radiusChanged) sim.refitPlayground();
   });
-  vehicleSelect.el.title = reference.map((r) => `${r.name}: ${r.description}`).join("\n");
-  lim("vmax", "vMax", 20);
-  lim("amax", "accelMax", 10);
-  lim("wmax", "omegaMax", 10);
-  lim("awmax", "omegaAccelMax", 60);
-  lim("anmax", "normalAccelMax", 10);
-  lim("kp", "kp", 400);
-  lim("kd", "kd", 60);
-  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit.";
+  lim("vmax", "vMax", 0.05, 20);
+  lim("amax", "accelMax", 0.05, 10);
+  lim("wmax", "omegaMax", 0.05, 10);
+  lim("awmax", "omegaAccelMax", 0.05, 60);
+  lim("anmax", "normalAccelMax", 0.05, 10);
+  lim("kp", "kp", 0.05, 400);
+  lim("kd", "kd", 0.05, 60);
+  lim("rmin", "minTurnRadius", 0, 20, 0.1);
+  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit. Min. turning radius 0: turns on the spot; above 0 the vehicle is car-like (|ω| ≤ v/R_min): it arrives oriented by driving round.";
   // A limit edited by hand shows "custom" (or the vehicle it matches); the
   // select's own events are its own business.
   const syncVehicle = (ev: Event): void => {
-    if (!(ev.target instanceof HTMLSelectElement)) vehicleSelect.set(current());
+    if (!(ev.target instanceof HTMLSelectElement)) vehicleSelect.sync();
   };
   limBox.addEventListener("input", syncVehicle);
   limBox.addEventListener("change", syncVehicle);
+  // A preset bringing its own vehicle puts its limits on the controls.
+  sim.onLimits = () => {
+    for (const k of LIMIT_KEYS) controls.get(LIMIT_URL[k])?.set(st.limits[k] ?? sim.defaults[k]);
+    followLimits();
+    vehicleSelect.sync();
+  };
 
   overlaySections(panel, sim, numeric);
   followLimits();
   exportSection(panel, sim, canvas);
 
   return { beta, epsTol, dTol };
+}
+
+/** The vehicle limits a reference vehicle sets, and their URL keys. */
+const LIMIT_URL = { vMax: "vmax", accelMax: "amax", omegaMax: "wmax", omegaAccelMax: "awmax", normalAccelMax: "anmax", kp: "kp", kd: "kd", minTurnRadius: "rmin" } as const;
+const LIMIT_KEYS = Object.keys(LIMIT_URL) as Array<keyof typeof LIMIT_URL>;
+
+/** The reference vehicles' menu (every one, car-like included): choosing
+ *  one sets every limit, then `applied`; `sync` shows the vehicle the
+ *  limits match, or "custom". */
+function vehicleMenu(parent: HTMLElement, sim: LabSim, controls: Map<string, Control>, applied: (radiusChanged: boolean) => void): { sync(): void } {
+  const st = sim.st;
+  const reference = referenceVehicles();
+  // A unicycle's file has no radius: 0, turns on the spot.
+  const limit = (r: (typeof reference)[number], k: keyof Limits): number => r.vehicle[k] ?? 0;
+  const current = (): string =>
+    reference.find((r) => LIMIT_KEYS.every((k) => Math.fround(st.limits[k] ?? sim.defaults[k]) === Math.fround(limit(r, k))))?.name ?? "custom";
+  const menu = select(parent, {
+    id: "vehicle", label: "vehicle", value: current(),
+    options: [...reference.map((r) => ({ value: r.name, label: r.name.replace(/_/g, "-") })), { value: "custom", label: "custom" }],
+    onChange: (name) => {
+      const r = reference.find((x) => x.name === name);
+      if (!r) return;
+      const radius = st.limits.minTurnRadius ?? sim.defaults.minTurnRadius;
+      for (const k of LIMIT_KEYS) {
+        const v = limit(r, k);
+        if (v === sim.defaults[k]) delete st.limits[k];
+        else st.limits[k] = v;
+        controls.get(LIMIT_URL[k])?.set(v);
+      }
+      applied(limit(r, "minTurnRadius") !== radius);
+    },
+  });
+  menu.el.title = reference.map((r) => `${r.name}: ${r.description}`).join("\n");
+  return { sync: () => menu.set(current()) };
 }
 
 type Numeric = (parent: HTMLElement, url: string, w: Window, onInput: (v: number) => void) => Control;

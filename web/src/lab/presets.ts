@@ -21,18 +21,21 @@ export function findPreset(name: string): Preset | undefined {
   return PRESETS.find((p) => p.name === name);
 }
 
-/** The menu's groups, in order: each paper's figures, then the
- *  avoidance scenarios, which go beyond the papers. */
+/** The menu's groups, in order: each paper's figures, then what goes
+ *  beyond the papers: the avoidance scenarios, the car-like vehicles. */
 export const PRESET_GROUPS = [
   "Paper 000 · funnelling towards oriented targets",
   "Paper 001 · region goals (relaxed funnelling)",
   "Avoidance between agents (beyond the papers)",
+  "Car-like vehicles (beyond the papers)",
 ] as const;
 
-/** The menu group of a preset, from its name (`p000_…`, `p001_…`, the rest). */
+/** The menu group of a preset, from its name (`p000_…`, `p001_…`,
+ *  `car_like_…`, the rest). */
 export function presetGroup(name: string): string {
   if (name.startsWith("p000_")) return PRESET_GROUPS[0];
   if (name.startsWith("p001_")) return PRESET_GROUPS[1];
+  if (name.startsWith("car_like_")) return PRESET_GROUPS[3];
   return PRESET_GROUPS[2];
 }
 
@@ -72,6 +75,7 @@ const TITLES: Readonly<Record<string, string>> = {
   avoid_doorway: "Doorway: ten agents through a narrow gap",
   avoid_fig6: "Paper 000 Fig. 6 with avoidance",
   avoid_fig8: "Paper 000 Fig. 8 with avoidance",
+  car_like_parking: "Parking a car that cannot turn on the spot",
 };
 
 /** The title the menu shows for a preset. */

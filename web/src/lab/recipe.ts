@@ -12,7 +12,7 @@ import type { Recipe, TableSource } from "./worldcalls";
  *  `scenario` (its name and text), or the playground when null. */
 export function recipeFor(st: LabState, params: VehicleParams, table: TableSource, scenario: { name: string; text: string } | null): Recipe {
   const settings = {
-    table, params, funnel: funnelConfig(st.funnel), relaxed: relaxedConfig(st.funnel), reading: readingOf(st.funnel),
+    table, params, limits: { ...st.limits }, funnel: funnelConfig(st.funnel), relaxed: relaxedConfig(st.funnel), reading: readingOf(st.funnel),
     avoid: { method: st.avoidance, replanEvery: st.replanEvery, obstacles: st.obstacles },
   };
   if (scenario) return { ...settings, build: { kind: "scenario", ...scenario } };

@@ -8,7 +8,7 @@ import { showMessage } from "../page";
 import type { View } from "../view";
 import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
 import { LabAvoidance } from "./avoidance";
-import { clampToLimits, FIELDS, type LabField, type RangeTable } from "./fields";
+import { clampToLimits, FIELDS, limitDefaults, type LabField, type LimitDefaults, type RangeTable } from "./fields";
 import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import { recipeFor } from "./recipe";
@@ -62,7 +62,7 @@ export class LabSim {
   /** Floats per agent in `state`. */
   readonly stride: number;
   readonly trails = new Trails(200, 3000);
-  readonly defaults: VehicleParams;
+  readonly defaults: VehicleParams & LimitDefaults;
   /** The state in the address bar. */
   readonly url: UrlSync;
   /** The playground's editable agent, or -1 (presets). */
@@ -76,6 +76,8 @@ export class LabSim {
   usPerUpdate = 0;
   /** Called by every rebuild: the caption, and whether the playground's target is editable. */
   onScene: (caption: string, playground: boolean, claim?: string, measured?: string) => void = () => {};
+  /** Called when a preset's own vehicle became the page's limits. */
+  onLimits: () => void = () => {};
   /** Called once the controller's settings are in force (after an edit or a build). */
   onController: (error: string | null) => void = () => {};
 
@@ -109,13 +111,16 @@ export class LabSim {
   private notInWorkers = false;
   /** Edits made while a world is being built: the new world's, once built. */
   private waiting: Array<[Edit, (a: EditAnswer) => void]> | null = null;
+  /** The page's limits as a preset's own vehicle set them (adoptLimits),
+   *  null once edited or when the preset brought none. */
+  private adopted: string | null = null;
   /** The URL's view, shown once (the first build); later builds fit when asked. */
   private sharedView: LabState["view"];
 
   /** `core`: the page's core (its η table; the world while no worker steps). */
   constructor(private readonly core: Lab, readonly st: LabState, private readonly view: View, readonly ranges: RangeTable) {
     this.stride = Lab.stateStride();
-    this.defaults = core.params();
+    this.defaults = limitDefaults(core.params());
     this.inForce = this.defaults;
     this.dt = this.defaults.dt;
     this.sharedView = st.view;
@@ -315,15 +320,17 @@ export class LabSim {
    *  playground's goal updated: the core would refuse the goal, and a reset
    *  would leave an empty playground. Returns what was clamped, with a
    *  message for its field. Limits the core refuses (none within the
-   *  ranges) give way to those in force. */
-  applyParams(): Array<{ field: LabField; message: string }> {
+   *  ranges) give way to those in force, and `refused` has the core's reason. */
+  applyParams(refused: (error: string) => void = () => {}): Array<{ field: LabField; message: string }> {
     const clamped = clampToLimits(this.ranges, this.st, this.defaults);
     const params = this.params();
     // A mismatched table is labelled approximate in the HUD while the
     // matching one is built (syncTable), not warned about.
     this.edit({ kind: "params", params }, (a) => {
-      if (a.error) this.restoreLimits(this.inForce);
-      else this.inForce = params;
+      if (a.error) {
+        this.restoreLimits(this.inForce);
+        refused(a.error);
+      } else this.inForce = params;
     });
     this.syncTable();
     if (clamped.fields.length > 0) this.updateGoal();
@@ -331,7 +338,45 @@ export class LabSim {
   }
 
   private restoreLimits(p: VehicleParams): void {
-    for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = p[f.limit];
+    for (const f of FIELDS) if (f.limit) this.st.limits[f.limit] = p[f.limit] ?? this.defaults[f.limit];
+  }
+
+  /** The world's vehicle (a preset's own, under the page's limits) as the
+   *  page's limits: the controls, the link and the η table follow it, so a
+   *  car-like preset runs on its own table and a reset keeps its vehicle. */
+  private adoptLimits(p: VehicleParams): void {
+    let changed = false;
+    for (const f of FIELDS) {
+      if (!f.limit) continue;
+      const v = p[f.limit] ?? this.defaults[f.limit];
+      if (v === (this.st.limits[f.limit] ?? this.defaults[f.limit])) continue;
+      this.st.limits[f.limit] = v;
+      changed = true;
+    }
+    if (!changed) return;
+    this.adopted = JSON.stringify(this.st.limits);
+    this.onLimits();
+    this.syncTable();
+    this.url.save();
+  }
+
+  /** Before another preset (or the playground): the vehicle the last
+   *  preset brought goes with it, unless its limits were edited since. */
+  dropPresetVehicle(): void {
+    if (this.adopted !== null && this.adopted === JSON.stringify(this.st.limits)) {
+      this.st.limits = {};
+      this.onLimits();
+    }
+    this.adopted = null;
+  }
+
+  /** The playground's view fitted again (a vehicle of another turning
+   *  radius loops round further); a preset's or a crowd's view stays. */
+  refitPlayground(): void {
+    if (this.st.preset || this.st.agents > 0) return;
+    fitPlayground(this.view, this.st);
+    this.dirty = true;
+    this.url.save();
   }
 
   /** The page's controller settings to the world (presets included). */
@@ -439,6 +484,7 @@ export class LabSim {
   private built(recipe: Recipe, info: BuildInfo, fit: boolean): void {
     for (const m of info.messages) showMessage(m.text, m.level);
     if (info.paramsRefused) this.restoreLimits(info.params);
+    else if (recipe.build.kind === "scenario") this.adoptLimits(info.params);
     this.inForce = info.params;
     this.dt = info.dt;
     this.avoid.take(info.avoid);
@@ -446,7 +492,13 @@ export class LabSim {
     if (b.kind === "scenario") {
       const sc = info.scenario;
       this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
-      if (fit && sc) this.view.fit(...sc.box, stageInsets(this.view, 40));
+      if (fit && sc) {
+        // A car-like vehicle loops round up to three turning radii beyond
+        // its start and goals: the view keeps the loop in.
+        const [x0, y0, x1, y1] = sc.box;
+        const r = 3 * (info.params.minTurnRadius ?? 0);
+        this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, stageInsets(this.view, 40));
+      }
     } else {
       this.focus = info.count > 0 ? 0 : -1;
       this.onScene(PLAYGROUND_HELP, true);

@@ -31,6 +31,9 @@ export interface Limits {
   /** Seek gains (a reference vehicle may set them). */
   kp?: number;
   kd?: number;
+  /** Minimum turning radius at every speed, m (car-like: |ω| ≤ v/R_min;
+   *  0, the core's default, turns on the spot). */
+  minTurnRadius?: number;
 }
 
 /** The μ-bound choices of the controller section, as the URL writes them:
@@ -185,7 +188,8 @@ export function fitPlayground(view: View, st: LabState): void {
   const ys = [st.vehicle.y, st.target.y];
   // A phone's stage is small: less world round the two, so that the
   // target's tolerance circle is not a dot; the handles (56 px) fit in the margins.
-  const pad = view.width < PHONE_PX ? 1.2 : 3;
+  // A car-like vehicle's loops reach up to two turning radii out.
+  const pad = Math.max(view.width < PHONE_PX ? 1.2 : 3, 2 * (st.limits.minTurnRadius ?? 0));
   view.fit(Math.min(...xs) - pad, Math.min(...ys) - pad, Math.max(...xs) + pad, Math.max(...ys) + pad, stageInsets(view, 60));
 }
 

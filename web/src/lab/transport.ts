@@ -60,6 +60,7 @@ export function buildTransport(sim: LabSim): Transport {
   for (const g of groups.values()) if (g.children.length > 0) presetSel.append(g);
   presetSel.value = st.preset;
   const setPreset = async (name: string): Promise<void> => {
+    sim.dropPresetVehicle();
     st.preset = name;
     // Each scenario brings its own avoidance and obstacles.
     st.avoidance = null;

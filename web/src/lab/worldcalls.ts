@@ -27,6 +27,8 @@ export interface AvoidChoice {
 export interface Recipe {
   table: TableSource;
   params: VehicleParams;
+  /** The limits the page set (over a preset's own vehicle). */
+  limits: Partial<VehicleParams>;
   funnel: FunnelConfig;
   relaxed: RelaxedConfig;
   /** A reading of the papers in force (`Lab.setReading`, every setting of
@@ -116,29 +118,33 @@ export function buildWorld(lab: Lab, recipe: Recipe): BuildInfo {
   const messages: BuildMessage[] = [];
   const warn = (text: string, level: BuildMessage["level"] = "warn"): void => void messages.push({ text, level });
   let paramsRefused = false;
-  const setParams = (): void => {
+  const setParams = (params: VehicleParams): void => {
     try {
-      lab.setParams(recipe.params);
+      lab.setParams(params);
     } catch (e) {
       paramsRefused = true;
       warn(`Vehicle limits rejected: ${errorText(e)}`);
     }
   };
-  setParams();
+  setParams(recipe.params);
   let scenario: BuildInfo["scenario"] = null;
   const b = recipe.build;
   if (b.kind === "scenario") {
     try {
       const info = lab.loadScenario(b.text);
-      // The page's vehicle limits apply to presets too (`#preset=…&vmax=0.05` runs at 0.05 m/s).
-      setParams();
+      // The page's vehicle limits apply to presets too (`#preset=…&vmax=0.05`
+      // runs at 0.05 m/s), over the preset's own vehicle (a car-like
+      // preset keeps its turning radius).
+      setParams({ ...lab.params(), ...recipe.limits });
       scenario = {
-        caption: `${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agents.`,
+        caption: `${info.description}${info.source ? ` (${info.source})` : ""} — ${info.agents} agent${info.agents === 1 ? "" : "s"}.`,
         ...(info.claim ? { claim: info.claim } : {}),
         ...(info.measured ? { measured: info.measured } : {}),
         box: [info.minX, info.minY, info.maxX, info.maxY],
       };
-      if (info.warning) warn(`Preset ${b.name}: ${info.warning}`);
+      // The core's warning is a table built for other limits: the page
+      // builds the matching one and the HUD labels the old one approximate
+      // meanwhile (sim.ts, syncTable).
     } catch (e) {
       warn(`Preset ${b.name} could not be loaded: ${errorText(e)}`, "error");
     }

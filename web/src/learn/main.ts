@@ -5,7 +5,7 @@
 // figure is up.
 
 import { $, showMessage, showVersion } from "../page";
-import { RangeTable } from "../lab/fields";
+import { limitDefaults, RangeTable } from "../lab/fields";
 import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
 import { setLinkContext, type LiveFigure } from "./figure";
 import { defineSymbols, typesetText } from "./glossary";
@@ -66,7 +66,7 @@ async function start(): Promise<void> {
   showVersion(await loadCore());
   // The table in byte planes (src/tableplanes.ts: less than half the gzipped bytes).
   const lab = await createLab("tables/eta.planes");
-  setLinkContext(new RangeTable(ranges(), precision()), lab.params());
+  setLinkContext(new RangeTable(ranges(), precision()), limitDefaults(lab.params()));
   for (const [name, build] of SECTIONS) {
     figures.push(build($(`fig-${name}`), lab));
     status.figures.push(name);
