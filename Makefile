@@ -120,7 +120,7 @@ wasm: setup-rust setup-wasm-strip
 
 # web/dist, the shipped build: no test hook in it (checked: HOOK_NAMES, the
 # test hooks' globals and their own method names).
-HOOK_NAMES := __lab|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt
+HOOK_NAMES := __lab|agentRecord|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 	if grep -rnoE --include='*.js' --include='*.html' '\b($(HOOK_NAMES))\b' web/dist; then echo "web/dist holds test hooks (above)"; exit 1; fi
