@@ -164,47 +164,49 @@ test-protocol: setup-web
 
 # Extra flags for node in the node:test suites below, e.g.
 # NODE_TEST_ARGS=--test-name-pattern=drag: only the tests whose name matches
-# (the rest reported skipped).
+# (the rest reported skipped). Each browser suite runs through
+# web/test/suite.mjs: one whose Chromium crashed under it (exit 75, said
+# loudly) runs once more from the start; a failed check is never rerun.
 NODE_TEST_ARGS ?=
 
 # Playwright (playwright-core + Debian's chromium) against the built page.
 test-e2e: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e.mjs
 
 # Playwright against the gallery pages (crowd.html, wander.html); also prints
 # the crowd's step cost (boids stepped per 16.7 ms frame at 300/3,000/30,000).
 test-e2e-gallery: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e-gallery.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-gallery.mjs
 
 # Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e-learn.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-learn.mjs
 
 # The lab as a learner meets it (1440×900 and 390×844): the legend names the
 # core's modes in words, the HUD's mode chip, diagnostics behind a toggle,
 # preset titles, every handle's hit area ≥ 24 CSS px on a phone; writes the
 # screenshots of the four pages into docs/screenshots/.
 test-e2e-teach: setup-browser web-build-test
-	node web/test/e2e-teach.mjs
+	node web/test/suite.mjs web/test/e2e-teach.mjs
 
 # axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
 # 390×844: no serious or critical violation; also prints the learn page's
 # bytes fetched and first contentful paint.
 test-e2e-axe: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e-axe.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-axe.mjs
 
 # Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e-vehicle.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-vehicle.mjs
 
 # Avoidance in the lab: the page plays the circle swap and reads the core's
 # overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
 # dragged by mouse and finger, the link; screenshots in artifacts/.
 test-e2e-avoid: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e-avoid.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-avoid.mjs
 
 # Performance paths in the browser: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
@@ -212,7 +214,7 @@ test-e2e-avoid: setup-browser web-build-test
 # the lab stepped in Web Workers (shared memory, by message without
 # cross-origin isolation, facing pairs) equals one core after 120 steps.
 test-e2e-perf: setup-browser web-build-test
-	node $(NODE_TEST_ARGS) web/test/e2e-perf.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-perf.mjs
 
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
 # then wasm / native per funnelling agent update, and agents

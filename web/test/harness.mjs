@@ -84,14 +84,33 @@ export function serveChild(outDir) {
   });
 }
 
+/** The exit code of a suite whose browser process died under it (a crash
+ *  of Chromium itself, not a failed check): test/suite.mjs runs such a
+ *  suite once more. 75 is sysexits' EX_TEMPFAIL. */
+export const BROWSER_CRASHED = 75;
+
 /** Chromium from Debian's package, or the binary at $CHROMIUM: where the
- *  browser is installed is a fact of the host, not an option of a run. */
+ *  browser is installed is a fact of the host, not an option of a run.
+ *  A browser that disconnects before the script closes it has crashed:
+ *  that is said at once, with where Chromium left its crash dump, and the
+ *  script then exits with BROWSER_CRASHED whatever its checks said (the
+ *  checks that were running were cut short by the crash, not failed by
+ *  the page). */
 export async function launch() {
-  return chromium.launch({
+  const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
     headless: true,
     args: CHROMIUM_ARGS,
   });
+  let closing = false;
+  const close = browser.close.bind(browser);
+  browser.close = (...a) => { closing = true; return close(...a); };
+  browser.on("disconnected", () => {
+    if (closing) return;
+    console.error(`\n*** Chromium's browser process exited under the suite (a crash; dumps in ~/.config/chromium/Crash Reports/pending). Exit code ${BROWSER_CRASHED}.\n`);
+    process.on("exit", () => { process.exitCode = BROWSER_CRASHED; });
+  });
+  return browser;
 }
 
 /** Opens a page that records console errors/warnings and page errors. */
