@@ -613,12 +613,11 @@ fn the_ghost_is_the_seek_the_update_asked_about_and_forks_share_the_table() {
     let end = pts.get_index(pts.length() - 2);
     assert!((end - 9.75).abs() < 1e-3, "{end}");
     // Bad input names its field; nothing panics.
-    let m = message(lab.ghost(7).err().expect("no agent 7"));
+    let m = message(lab.ghost(7).expect_err("no agent 7"));
     assert!(m.contains("agent"), "{m}");
     let m = message(
         lab.ghost_from(0.0, 0.0, 0.0, 1.0, 0.0, f32::NAN, 0.0, 1.3)
-            .err()
-            .expect("NaN target"),
+            .expect_err("NaN target"),
     );
     assert!(m.contains("ghost.tx"), "{m}");
     let fork = lab.fork().map_err(message).unwrap();
@@ -672,7 +671,7 @@ fn a_lab_without_its_table_draws_then_runs_the_same_bits() {
         let ghost = pending.ghost(0).map_err(message).unwrap();
         assert!(js_sys::Float32Array::from(get(&ghost, "points")).length() >= 4);
         assert!(pending.eta_field(1.0, 0.0, 1.3).is_empty());
-        let m = message(pending.step(1).err().expect("no step without a table"));
+        let m = message(pending.step(1).expect_err("no step without a table"));
         assert!(m.contains("η table"), "{m}");
         assert!(message(pending.table_info().err().unwrap()).contains("not loaded"));
         // The table arrives: same plan, same trajectory.

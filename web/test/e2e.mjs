@@ -183,20 +183,38 @@ try {
     await page.evaluate(() => window.__lab.setPaused(true));
   });
 
-  await check("the canvas follows the window size (HiDPI kept)", async () => {
+  await check("the canvas follows the window size (HiDPI kept), and what the view framed stays in sight", async () => {
     const size = () => page.evaluate(() => {
       const c = document.getElementById("lab");
-      return { w: c.width, h: c.height, cw: c.getBoundingClientRect().width };
+      const r = c.getBoundingClientRect();
+      return { w: c.width, h: c.height, cw: r.width, ch: r.height };
     });
+    const resize = async (width, height) => {
+      await page.setViewportSize({ width, height });
+      await page.waitForTimeout(200);
+      await settle(page);
+    };
     const a = await size();
-    await page.setViewportSize({ width: 900, height: 640 });
-    await page.waitForTimeout(200);
+    const scale0 = await page.evaluate(() => window.__lab.viewScale());
+    await resize(900, 640);
     const b = await size();
     assert.ok(b.w < a.w && b.h < a.h, `${JSON.stringify(a)} -> ${JSON.stringify(b)}`);
     assert.ok(Math.abs(b.w - b.cw * 2) <= 2);
     await shot(page, "09-resized-900x640");
-    await page.setViewportSize({ width: 1280, height: 800 });
-    await page.waitForTimeout(200);
+    // A phone's width, then a turned phone: the vehicle and the target are
+    // still on the canvas, not cut off by a scale kept from the wide window.
+    for (const [w, h] of [[900, 640], [390, 844], [844, 390]]) {
+      await resize(w, h);
+      const c = await size();
+      const hs = await page.evaluate(() => window.__lab.handles());
+      for (const k of ["vehicle", "target"]) {
+        const q = hs[k];
+        assert.ok(q.x >= 0 && q.x <= c.cw && q.y >= 0 && q.y <= c.ch, `${w}×${h}: the ${k} at ${q.x.toFixed(0)}, ${q.y.toFixed(0)} on a ${c.cw}×${c.ch} canvas`);
+      }
+    }
+    await resize(1280, 800);
+    const scale1 = await page.evaluate(() => window.__lab.viewScale());
+    assert.ok(Math.abs(scale1 / scale0 - 1) < 1e-9, `back at 1280×800 the scale is ${scale1}, was ${scale0}`);
   });
 
   await check("controller section: μ bound select, gain and threshold sliders reach the core and the URL", async () => {
@@ -336,6 +354,10 @@ try {
       assert.match(before.badge ?? "", /loading η table/);
       assert.match(before.hud, /table\s+loading/);
       assert.match(before.hud, /t 0\.00 s/);
+      // The badge covers none of the HUD (its chip and buttons).
+      const [badge, hud] = await Promise.all([".table-badge", "#hud"].map((q) => pl.page.locator(q).boundingBox()));
+      const apart = badge.x >= hud.x + hud.width || hud.x >= badge.x + badge.width || badge.y >= hud.y + hud.height || hud.y >= badge.y + badge.height;
+      assert.ok(apart, `the badge ${JSON.stringify(badge)} over the HUD ${JSON.stringify(hud)}`);
       const hs = await pl.page.evaluate(() => window.__lab.handles());
       const reds = await colours(pl.page, hs.target, 40);
       assert.ok(reds.red > 30, `the target drawn in seek red: ${JSON.stringify(reds)}`);

@@ -12,7 +12,7 @@ import { clampToLimits, FIELDS, limitDefaults, type LabField, type LimitDefaults
 import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import { recipeFor } from "./recipe";
-import { fitPlayground, goalConfig, stageInsets, type LabState, type Pose } from "./state";
+import { fitPlayground, goalConfig, loopReach, stageInsets, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { HereWorld, type LabWorld, type Took } from "./world";
@@ -406,9 +406,7 @@ export class LabSim {
     const { st, view } = this;
     const fit = fitAsked && this.sharedView === null;
     if (this.sharedView) {
-      view.cx = this.sharedView.cx;
-      view.cy = this.sharedView.cy;
-      view.scale = this.sharedView.scale;
+      view.show(this.sharedView.cx, this.sharedView.cy, this.sharedView.scale);
       this.sharedView = null;
     }
     const gen = ++this.generation;
@@ -493,18 +491,16 @@ export class LabSim {
       const sc = info.scenario;
       this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
       if (fit && sc) {
-        // A car-like vehicle loops round up to three turning radii beyond
-        // its start and goals: the view keeps the loop in.
         const [x0, y0, x1, y1] = sc.box;
-        const r = 3 * (info.params.minTurnRadius ?? 0);
-        this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, stageInsets(this.view, 40));
+        const r = loopReach(info.params.minTurnRadius);
+        this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, (v) => stageInsets(v, 40));
       }
     } else {
       this.focus = info.count > 0 ? 0 : -1;
       this.onScene(PLAYGROUND_HELP, true);
       if (fit && b.spawn) {
         const r = b.spawn.extent + 3;
-        this.view.fit(-r, -r, r, r, stageInsets(this.view, 40));
+        this.view.fit(-r, -r, r, r, (v) => stageInsets(v, 40));
       } else if (fit) fitPlayground(this.view, this.st);
     }
     this.trails.record(0, this.state, this.stride, this.count);

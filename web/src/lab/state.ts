@@ -188,9 +188,17 @@ export function fitPlayground(view: View, st: LabState): void {
   const ys = [st.vehicle.y, st.target.y];
   // A phone's stage is small: less world round the two, so that the
   // target's tolerance circle is not a dot; the handles (56 px) fit in the margins.
-  // A car-like vehicle's loops reach up to two turning radii out.
-  const pad = Math.max(view.width < PHONE_PX ? 1.2 : 3, 2 * (st.limits.minTurnRadius ?? 0));
-  view.fit(Math.min(...xs) - pad, Math.min(...ys) - pad, Math.max(...xs) + pad, Math.max(...ys) + pad, stageInsets(view, 60));
+  const pad = Math.max(view.width < PHONE_PX ? 1.2 : 3, loopReach(st.limits.minTurnRadius));
+  view.fit(Math.min(...xs) - pad, Math.min(...ys) - pad, Math.max(...xs) + pad, Math.max(...ys) + pad, (v) => stageInsets(v, 60));
+}
+
+/** How far beyond its start and its goal a fitted view keeps room for a
+ *  car-like vehicle's loops, m: a shortest (Dubins) path turns at most
+ *  two radii out, and the funnel's turns are wider than Dubins' (its path
+ *  is about 1.3 times as long), so three radii. Zero for a vehicle that
+ *  turns on the spot. */
+export function loopReach(minTurnRadius: number | undefined): number {
+  return 3 * (minTurnRadius ?? 0);
 }
 
 /** Below this stage width (CSS px) the lab lays out for a phone. */
