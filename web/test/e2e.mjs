@@ -217,6 +217,36 @@ try {
     assert.ok(Math.abs(scale1 / scale0 - 1) < 1e-9, `back at 1280×800 the scale is ${scale1}, was ${scale0}`);
   });
 
+  // A phone upright and on its side: what floats over the stage (the HUD,
+  // folded there, and the legend) covers none of the playground's handles.
+  for (const [w, h] of [[390, 844], [844, 390]]) {
+    await check(`phone ${w}×${h}: the HUD and the legend leave every handle of the playground free`, async () => {
+      const ph = await openPage(browser, { width: w, height: h }, 2, { hasTouch: true, isMobile: true });
+      await ph.page.goto(url);
+      assert.equal(await waitReady(ph.page), null);
+      await settle(ph.page);
+      const seen = await ph.page.evaluate(() => {
+        const lab = document.getElementById("lab").getBoundingClientRect();
+        const box = (q) => {
+          const r = document.querySelector(q).getBoundingClientRect();
+          return { x: r.x - lab.x, y: r.y - lab.y, w: r.width, h: r.height };
+        };
+        return { hud: box("#hud"), legend: box(".legend"), folded: document.getElementById("hud").classList.contains("folded"), handles: window.__lab.handles() };
+      });
+      assert.equal(seen.folded, true, "the HUD starts folded");
+      for (const [k, q] of Object.entries(seen.handles)) {
+        for (const name of ["hud", "legend"]) {
+          const b = seen[name];
+          const under = q.x >= b.x && q.x <= b.x + b.w && q.y >= b.y && q.y <= b.y + b.h;
+          assert.ok(!under, `the ${k} handle at ${q.x.toFixed(0)}, ${q.y.toFixed(0)} under the ${name} ${JSON.stringify(b)}`);
+        }
+      }
+      await shot(ph.page, `09-phone-${w}x${h}`);
+      assert.deepEqual(ph.problems, []);
+      await ph.context.close();
+    });
+  }
+
   await check("controller section: μ bound select, gain and threshold sliders reach the core and the URL", async () => {
     for (const id of ["mu-bound", "mu-gain", "seek-th"]) assert.equal(await page.locator(`#${id}`).count(), 1, `#${id}`);
     const opts = await page.locator("#mu-bound option").allTextContents();

@@ -10,6 +10,8 @@
 import { spawnSync } from "node:child_process";
 import { BROWSER_CRASHED } from "./harness.mjs";
 
+// No parseArgs here: everything after the script's path is the script's
+// own, passed through untouched (the script parses it itself).
 const [script, ...args] = process.argv.slice(2);
 if (!script) {
   console.error("usage: node [node flags] web/test/suite.mjs SCRIPT [ARGS...]");

@@ -6,6 +6,11 @@
 import { Mode, type Internals } from "../wasm";
 import { modeWords } from "../modes";
 
+/** A phone's width or a short window (a phone on its side): the HUD
+ *  starts folded there, its numbers a tap away. style.css's compact rules
+ *  use the same query. */
+export const COMPACT_QUERY = "(max-width: 760px), (max-height: 480px)";
+
 /** The focus agent's internals as the core declares them (`Internals`,
  *  crate/bindings/lab_types.rs; NaN where there is no agent) and timing. */
 export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" | "muMax" | "reachable" | "vDt"> & {
@@ -98,7 +103,7 @@ class HudView {
       fold.type = "button";
       fold.className = "hud-fold";
       fold.textContent = "numbers";
-      fold.setAttribute("aria-expanded", matchMedia("(max-width: 760px)").matches ? "false" : "true");
+      fold.setAttribute("aria-expanded", matchMedia(COMPACT_QUERY).matches ? "false" : "true");
       fold.title = "show or hide the numbers";
       fold.addEventListener("click", () => {
         const open = fold.getAttribute("aria-expanded") !== "true";

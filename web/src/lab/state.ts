@@ -204,8 +204,13 @@ export function loopReach(minTurnRadius: number | undefined): number {
 /** Below this stage width (CSS px) the lab lays out for a phone. */
 export const PHONE_PX = 560;
 
+/** Below this stage height (CSS px) the lab's stage is short (a phone on
+ *  its side): its HUD is folded, its margins are a phone's. */
+export const SHORT_PX = 360;
+
 /** The margins a fit keeps on the lab's stage: `margin` on a wide one; on
- *  a phone, room for the folded HUD above and the legend below. */
+ *  a phone or a short stage, room for the folded HUD above and the legend
+ *  below. */
 export function stageInsets(view: View, margin: number): number | Insets {
-  return view.width < PHONE_PX ? { left: 28, right: 28, top: 76, bottom: 64 } : margin;
+  return view.width < PHONE_PX || view.height < SHORT_PX ? { left: 28, right: 28, top: 76, bottom: 64 } : margin;
 }
