@@ -10,9 +10,16 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 .PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
-	npm test-npm test-library-user figures figures-full
+	npm test-npm test-library-user figures figures-full screenshots stages-start
+
+# `make test` says how long each stage took (its own builds included: a
+# stage's time runs from the end of the one before to its own end), from
+# the stamps each stage appends to target/stages.log.
+STAGES_LOG := target/stages.log
+stage-done = @mkdir -p target && echo "$$(date +%s) $@" >> $(STAGES_LOG)
 
 setup: setup-rust setup-browser setup-web setup-wasm-strip
+	$(stage-done)
 
 setup-rust:
 	rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
@@ -50,6 +57,7 @@ lint:
 	cargo clippy --target wasm32-unknown-unknown --lib --no-default-features -- -D warnings
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --features cli
 	RUSTDOCFLAGS="-D warnings" cargo doc --no-deps --target wasm32-unknown-unknown
+	$(stage-done)
 
 # The tests write the figures records into target/figures (cleared first,
 # so a renamed test leaves no stale record); then the report's checked
@@ -59,6 +67,7 @@ test-native:
 	cargo test --all-targets --features cli,counters
 	cargo test --doc --features cli,counters
 	cargo run --features cli,counters --bin steer -- report --check
+	$(stage-done)
 
 # The figures report, fast mode (a few minutes): every test that writes a
 # figures record (tests/*.rs using tests/common/figures.rs: the fidelity
@@ -124,6 +133,7 @@ HOOK_NAMES := __lab|agentRecord|__crowd|__learn|__wander|perfReset|perfStats|sta
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 	if grep -rnoE --include='*.js' --include='*.html' '\b($(HOOK_NAMES))\b' web/dist; then echo "web/dist holds test hooks (above)"; exit 1; fi
+	$(stage-done)
 
 # web/dist-test: the same pages with their test hooks (`vite build --mode
 # test`: window.__lab, __crowd, __learn, __wander), which the browser suites
@@ -138,10 +148,12 @@ test-wasm: setup-rust setup-browser
 	wasm-pack test --headless --chrome --release
 	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
 	  wasm-pack test --headless --chrome --release --test funnel_determinism --test wander_determinism --test web_gallery --test web_tables
+	$(stage-done)
 
 # Loads the *release* package in Node with initSync: catches broken post-processing.
 test-smoke: setup-web wasm
 	node web/test/smoke.mjs
+	$(stage-done)
 
 # Seeded fuzz of the lab's URL decoder: 10,000 mutated fragments, each
 # decoded state built in the release wasm package (about 11 s);
@@ -149,18 +161,21 @@ test-smoke: setup-web wasm
 URLFUZZ_ARGS ?=
 test-urlfuzz: setup-web wasm
 	node web/test/urlfuzz.mjs $(URLFUZZ_ARGS)
+	$(stage-done)
 
 # The type check, then the web sources' house rules (web/test/source.mjs:
 # no function in web/src over 150 lines, no comment naming an issue or a stop).
 test-tsc: setup-web wasm
 	cd web && npx tsc --noEmit -p tsconfig.json
 	cd web && node test/source.mjs
+	$(stage-done)
 
 # The workers' continuing-jobs protocol on real threads in Node (~25 s;
 # PROTOCOL_ARGS="--frames N").
 PROTOCOL_ARGS ?=
 test-protocol: setup-web
 	cd web && node test/protocol.mjs $(PROTOCOL_ARGS)
+	$(stage-done)
 
 # Extra flags for node in the node:test suites below, e.g.
 # NODE_TEST_ARGS=--test-name-pattern=drag: only the tests whose name matches
@@ -172,41 +187,48 @@ NODE_TEST_ARGS ?=
 # Playwright (playwright-core + Debian's chromium) against the built page.
 test-e2e: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e.mjs
+	$(stage-done)
 
 # Playwright against the gallery pages (crowd.html, wander.html); also prints
 # the crowd's step cost (boids stepped per 16.7 ms frame at 300/3,000/30,000).
 test-e2e-gallery: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-gallery.mjs
+	$(stage-done)
 
 # Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
 # the lab" links, reduced motion, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-learn.mjs
+	$(stage-done)
 
 # The lab as a learner meets it (1440×900 and 390×844): the legend names the
 # core's modes in words, the HUD's mode chip, diagnostics behind a toggle,
-# preset titles, every handle's hit area ≥ 24 CSS px on a phone; writes the
-# screenshots of the four pages into docs/screenshots/.
+# preset titles, every handle's hit area ≥ 24 CSS px on a phone; takes the
+# screenshots of the four pages (into artifacts/docs/; `make screenshots`).
 test-e2e-teach: setup-browser web-build-test
 	node web/test/suite.mjs web/test/e2e-teach.mjs
+	$(stage-done)
 
 # axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
 # 390×844: no serious or critical violation; also prints the learn page's
 # bytes fetched and first contentful paint.
 test-e2e-axe: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-axe.mjs
+	$(stage-done)
 
 # Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
 test-e2e-vehicle: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-vehicle.mjs
+	$(stage-done)
 
 # Avoidance in the lab: the page plays the circle swap and reads the core's
 # overlap count (0 with ORCA, > 0 off), the avoidance selector, obstacles
 # dragged by mouse and finger, the link; screenshots in artifacts/.
 test-e2e-avoid: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-avoid.mjs
+	$(stage-done)
 
 # Performance paths in the browser: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
@@ -215,6 +237,7 @@ test-e2e-avoid: setup-browser web-build-test
 # cross-origin isolation, facing pairs) equals one core after 120 steps.
 test-e2e-perf: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-perf.mjs
+	$(stage-done)
 
 # Frame time with 1,000 and 10,000 funnelling agents in headless Chromium,
 # then wasm / native per funnelling agent update, and agents
@@ -254,14 +277,13 @@ bench-wasm-native: setup-web wasm
 	node web/test/wasmnative.mjs 10000
 	node web/test/wasmnative.mjs 100000
 
-# The wasm core as an npm package (npm/): the baseline module without the
-# default features (no studies, no embedded table: the package ships
-# eta.bin beside it), its own target directory so that it and `make wasm`
-# do not rebuild each other; then `npm pack` into target/npm. wasm-pack's
-# pkg/.gitignore is removed: npm would read it and leave the module out.
-npm: setup-rust
-	CARGO_TARGET_DIR=target/npm-wasm wasm-pack build --target web --release --out-dir npm/pkg --no-pack -- --no-default-features
-	rm -f npm/pkg/.gitignore npm/pkg/package.json
+# The wasm core as an npm package (npm/): the pages' baseline module (built
+# once by `make wasm`: no default features, so no studies and no embedded
+# table: the package ships eta.bin beside it; stripped of its custom
+# sections), then `npm pack` into target/npm.
+npm: wasm
+	rm -rf npm/pkg && mkdir -p npm/pkg
+	cp web/pkg/steering.js web/pkg/steering.d.ts web/pkg/steering_bg.wasm web/pkg/steering_bg.wasm.d.ts npm/pkg/
 	cp tables/eta.bin npm/eta.bin
 	mkdir -p target/npm
 	cd npm && npm pack --pack-destination ../target/npm
@@ -271,18 +293,32 @@ npm: setup-rust
 # from there alone, run in Chromium to an oriented arrival (node:test).
 test-npm: setup-web setup-browser npm
 	node --test npm/test/
+	$(stage-done)
 
 # A crate that depends on the library as a user's would (examples/library-user:
 # default features, its table from the library); fails unless its agents arrive.
 test-library-user:
 	cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user
+	$(stage-done)
 
-test: setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-npm test-library-user
+stages-start:
+	@mkdir -p target && echo "$$(date +%s) start" > $(STAGES_LOG)
+
+test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-npm test-library-user
+	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
 	@echo "make test: all suites passed"
 
 demo: setup web-build
 	@echo "the steering lab: http://127.0.0.1:5173/"
 	cd web && npx vite preview --host 127.0.0.1 --port 5173 --strictPort
+
+# The pictures the repository commits (docs/lab.png, the README's; the four
+# pages at both widths in docs/screenshots/): the suites that take them,
+# told to write into docs/ (under `make test` they write into
+# artifacts/docs/, so a test run leaves the checkout clean).
+screenshots: setup-browser web-build-test
+	node web/test/suite.mjs web/test/e2e.mjs --docs docs
+	node web/test/suite.mjs web/test/e2e-teach.mjs --docs docs
 
 table:
 	cargo run --release --features cli --bin eta-table -- --out tables/eta.bin

@@ -6,15 +6,14 @@
 // every handle of the playground has a hit area of at least 24 CSS px, the
 // tolerance knob does not share the target's, and vehicle and target are
 // on the stage, clear of the HUD and the legend. Screenshots of the four
-// pages at both sizes go to docs/screenshots/ (committed).
+// pages at both sizes go to DOCS/screenshots/ (`--docs`: artifacts/docs by
+// default; `make screenshots` refreshes the committed docs/screenshots/).
 // A node:test suite (harness.mjs `check`).
-import { serve, launch, openPage, check, waitReady, settle, dragOnLab, webDir } from "./harness.mjs";
+import { serve, launch, openPage, check, waitReady, settle, dragOnLab, docsDir } from "./harness.mjs";
 import assert from "node:assert/strict";
-import { mkdirSync } from "node:fs";
 import { resolve } from "node:path";
 
-const SHOTS = resolve(webDir, "../docs/screenshots");
-mkdirSync(SHOTS, { recursive: true });
+const SHOTS = resolve(docsDir("node web/test/e2e-teach.mjs [--docs DIR]: the lab as a learner meets it, and the four pages' screenshots"), "screenshots");
 const VIEWPORTS = { desktop: { width: 1440, height: 900 }, phone: { width: 390, height: 844 } };
 /** The paper's code names, which the lab's words replace. */
 const CODE_NAMES = /Position_only|Orientation_only|End_of_Steering|EndOfSteering|PositionOnly|OrientationOnly/;
@@ -67,7 +66,7 @@ try {
       assert.equal(d.visible, false);
     });
 
-    await check(`${tag}: screenshots of the lab with the η field, learn, crowd and wander (docs/screenshots/)`, async () => {
+    await check(`${tag}: screenshots of the lab with the η field, learn, crowd and wander`, async () => {
       await page.waitForTimeout(1200);
       await settle(page);
       await page.screenshot({ path: resolve(SHOTS, `lab-${tag}.png`) });

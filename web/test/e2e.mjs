@@ -5,7 +5,7 @@
 // bound, gain, seek threshold) reaching the core and the URL; URL state round
 // trip and a malformed link; a corrupt table shows a readable message. Screenshots go
 // to artifacts/ (gitignored). A node:test suite (harness.mjs `check`).
-import { serve, launch, openPage, check, shot, waitReady, settle, dragOnLab as drag, artifacts, countPixels } from "./harness.mjs";
+import { serve, launch, openPage, check, shot, waitReady, settle, dragOnLab as drag, artifacts, countPixels, docsDir } from "./harness.mjs";
 import { resolve } from "node:path";
 import assert from "node:assert/strict";
 import { readFileSync, copyFileSync } from "node:fs";
@@ -28,6 +28,7 @@ const colours = (page, at, radius) =>
     grey: (r, g, b) => Math.abs(r - 138) < 12 && Math.abs(g - 143) < 12 && Math.abs(b - 152) < 12,
   });
 
+const DOCS = docsDir("node web/test/e2e.mjs [--docs DIR]: the lab end to end, and the README's picture of it (DIR/lab.png)");
 const { server, url } = await serve();
 const browser = await launch();
 const allProblems = [];
@@ -589,13 +590,13 @@ try {
 
   // The README's picture of the lab, made here so it shows the lab as it is:
   // a paper-figure preset playing, side panel and caption in view.
-  await check("the README's screenshot (docs/lab.png): a paper-figure preset playing", async () => {
+  await check("the README's screenshot (lab.png): a paper-figure preset playing", async () => {
     await page.selectOption("#preset", "p001_fig10_beta45_relaxed");
     await page.waitForFunction(() => window.__lab.state().preset === "p001_fig10_beta45_relaxed" && window.__lab.count() > 0, null, { timeout: 5000 });
     if ((await page.locator("#play").getAttribute("aria-pressed")) === "true") await page.locator("#play").click();
     await page.waitForTimeout(5000);
     await page.evaluate(() => window.scrollTo(0, 0));
-    await page.screenshot({ path: resolve(artifacts, "..", "docs", "lab.png"), scale: "css" });
+    await page.screenshot({ path: resolve(DOCS, "lab.png"), scale: "css" });
     await page.selectOption("#preset", "");
     await page.waitForFunction(() => window.__lab.state().preset === "" && window.__lab.count() === 1, null, { timeout: 5000 });
   });

@@ -9,12 +9,26 @@ import { dirname, resolve } from "node:path";
 import { mkdirSync } from "node:fs";
 import { spawn } from "node:child_process";
 import { test } from "node:test";
+import { options } from "./options.mjs";
 
 export const webDir = resolve(dirname(fileURLToPath(import.meta.url)), "..");
 export const artifacts = resolve(webDir, "../artifacts");
 /** The build the suites drive: the pages with their test hooks. */
 export const testDist = resolve(webDir, "dist-test");
 mkdirSync(artifacts, { recursive: true });
+
+/** Where a suite writes the pictures the repository commits (docs/lab.png,
+ *  docs/screenshots/): its `--docs DIR` option (test/options.mjs), by
+ *  default artifacts/docs, so that a test run leaves a clean checkout clean;
+ *  `make screenshots` passes `--docs docs` to refresh the committed ones. */
+export function docsDir(usage) {
+  const { values } = options(usage, {
+    docs: { type: "string", default: "artifacts/docs", arg: "DIR", help: "the folder for the committed pictures (docs to refresh them)" },
+  });
+  const dir = resolve(webDir, "..", values.docs);
+  mkdirSync(resolve(dir, "screenshots"), { recursive: true });
+  return dir;
+}
 
 export const CHROMIUM_ARGS = [
   "--headless=new",
