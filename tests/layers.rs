@@ -762,19 +762,22 @@ fn design_sections(design: &str) -> BTreeSet<u32> {
 /// across two comment lines is read whole. This file spells the patterns
 /// in pieces, so that it passes its own check.
 fn bad_citations(file: &str, src: &str, sections: &BTreeSet<u32>) -> Vec<String> {
-    let flat: String = src
-        .lines()
-        .map(|l| {
-            let t = l.trim_start();
-            let t = ["//!", "///", "//", "/*", "*"]
-                .iter()
-                .find_map(|m| t.strip_prefix(m))
-                .unwrap_or(t);
-            format!("{} ", t.trim())
-        })
-        .collect();
+    // `starts[i]`: where line i + 1 begins in `flat`.
+    let (mut flat, mut starts) = (String::new(), Vec::new());
+    for l in src.lines() {
+        starts.push(flat.len());
+        let t = l.trim_start();
+        let t = ["//!", "///", "//", "/*", "*"]
+            .iter()
+            .find_map(|m| t.strip_prefix(m))
+            .unwrap_or(t);
+        flat.push_str(t.trim());
+        flat.push(' ');
+    }
+    let line = |k: usize| starts.partition_point(|&s| s <= k);
     let mut bad = Vec::new();
     for (k, _) in flat.match_indices(CITED) {
+        let file = format!("{file}:{}", line(k));
         let rest = &flat[k + CITED.len()..];
         let first: String = rest.chars().take_while(char::is_ascii_digit).collect();
         let after = &rest[first.len()..];
@@ -798,12 +801,12 @@ fn bad_citations(file: &str, src: &str, sections: &BTreeSet<u32>) -> Vec<String>
         }
     }
     let bare = flat
-        .split("DESIGN")
-        .skip(1)
-        .filter(|r| r.trim_start().starts_with('§'));
-    for _ in bare {
+        .match_indices("DESIGN")
+        .filter(|&(k, w)| flat[k + w.len()..].trim_start().starts_with('§'));
+    for (k, _) in bare {
         bad.push(format!(
-            "{file}: cites a section of the design by its bare name: write docs/DESIGN.md and the section"
+            "{file}:{}: cites a section of the design by its bare name: write docs/DESIGN.md and the section",
+            line(k)
         ));
     }
     bad
