@@ -275,7 +275,7 @@ BENCH_TABLES_ARGS ?=
 bench-tables: setup-browser web-build-test
 	node web/test/bench-tables.mjs $(BENCH_TABLES_ARGS)
 
-# The same funnelling world natively (examples/world_bench.rs) and
+# The same funnelling world natively (diagnostics/world_bench.rs) and
 # in Node on the release wasm package, alternating rounds, one run; prints
 # the ratio and checks both sides end in the same states.
 bench-wasm-native: setup-web wasm

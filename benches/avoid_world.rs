@@ -1,5 +1,5 @@
 //! The avoidance benchmark's world, shared by
-//! `benches/avoidance.rs` and `examples/avoid_icount.rs` (included with
+//! `benches/avoidance.rs` and `diagnostics/avoid_icount.rs` (included with
 //! `#[path]`): `side²` agents on a square lattice of 1.6 m (π·3²/1.6² ≈ 11
 //! within the 3 m neighbour reach), each funnelling to a seeded oriented
 //! target 20–30 m away in any direction, so paths cross everywhere and the

@@ -1,4 +1,4 @@
-//! CPU-time clocks for the benchmarks and `examples/world_bench.rs`
+//! CPU-time clocks for the benchmarks and `diagnostics/world_bench.rs`
 //! (included with `#[path]`): on a loaded machine CPU time is steadier than
 //! wall time. Hand-written because it is one libc call and the crates that
 //! wrap it (`cpu-time`, `libc`) would be dependencies for two benchmarks.

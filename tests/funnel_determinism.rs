@@ -1,5 +1,5 @@
-//! Same scenario, same trajectory — natively and in WebAssembly (DESIGN
-//! §8; the lab replays exactly what `steer run` computes).
+//! Same scenario, same trajectory — natively and in WebAssembly (docs/DESIGN.md
+//! §5; the lab replays exactly what `steer run` computes).
 //!
 //! The golden values hash the raw f32 bits of every agent's state at every
 //! step of paper presets: plain seek, standard funnelling with static, successive and

@@ -1,4 +1,4 @@
-//! The house's rules, read from the source (DESIGN §12):
+//! The house's rules, read from the source (docs/DESIGN.md §2, §19):
 //!
 //! - **Layers.** Each folder of `crate/` belongs to a layer and imports only
 //!   from its own layer or those below it: `base` → the controllers
@@ -579,7 +579,7 @@ fn every_import_goes_down_the_layers_without_cycles() {
     let v = violations(&imports);
     assert!(
         v.is_empty(),
-        "{} violations of the layers (DESIGN §12):\n{}",
+        "{} violations of the layers (docs/DESIGN.md §2):\n{}",
         v.len(),
         v.join("\n")
     );
@@ -706,6 +706,155 @@ fn no_function_is_longer_than_150_lines() {
     );
 }
 
+/// A citation of a section of `docs/DESIGN.md`, as the code writes it.
+const CITED: &str = concat!("DESIGN", ".md ", "§");
+
+/// The folders whose files may cite `docs/DESIGN.md` sections.
+const CITING_DIRS: &[&str] = &[
+    "crate",
+    "tests",
+    "benches",
+    "examples",
+    "diagnostics",
+    "web/src",
+    "web/test",
+];
+
+/// Every text file under `dir` (relative to the repository root, `/`
+/// separators), skipping build output and installed packages.
+fn text_files(root: &Path, dir: &str, out: &mut Vec<String>) {
+    let Ok(entries) = fs::read_dir(root.join(dir)) else {
+        return;
+    };
+    let mut names: Vec<String> = entries
+        .map(|e| e.unwrap().file_name().to_string_lossy().into_owned())
+        .collect();
+    names.sort();
+    for name in names {
+        let rel = format!("{dir}/{name}");
+        if root.join(&rel).is_dir() {
+            if !["node_modules", "target", "pkg", "dist"].contains(&name.as_str()) {
+                text_files(root, &rel, out);
+            }
+        } else if [".rs", ".ts", ".mjs", ".js", ".md", ".css", ".html", ".json"]
+            .iter()
+            .any(|x| name.ends_with(x))
+        {
+            out.push(rel);
+        }
+    }
+}
+
+/// The section numbers `docs/DESIGN.md` defines: headings `## N. Title`.
+fn design_sections(design: &str) -> BTreeSet<u32> {
+    design
+        .lines()
+        .filter_map(|l| l.strip_prefix("## "))
+        .filter_map(|h| h.split_once(". ").and_then(|(n, _)| n.parse().ok()))
+        .collect()
+}
+
+/// What is wrong with the design citations of `src` (file `file`): a
+/// section number (or range `N–M`) cited after [`CITED`] that `sections`
+/// lacks, and any section cited after the bare word (the old shared
+/// notes' spelling, whose numbers meant other sections). Comment markers
+/// at line starts are dropped and lines joined, so a citation broken
+/// across two comment lines is read whole. This file spells the patterns
+/// in pieces, so that it passes its own check.
+fn bad_citations(file: &str, src: &str, sections: &BTreeSet<u32>) -> Vec<String> {
+    // `starts[i]`: where line i + 1 begins in `flat`.
+    let (mut flat, mut starts) = (String::new(), Vec::new());
+    for l in src.lines() {
+        starts.push(flat.len());
+        let t = l.trim_start();
+        let t = ["//!", "///", "//", "/*", "*"]
+            .iter()
+            .find_map(|m| t.strip_prefix(m))
+            .unwrap_or(t);
+        flat.push_str(t.trim());
+        flat.push(' ');
+    }
+    let line = |k: usize| starts.partition_point(|&s| s <= k);
+    let mut bad = Vec::new();
+    for (k, _) in flat.match_indices(CITED) {
+        let file = format!("{file}:{}", line(k));
+        let rest = &flat[k + CITED.len()..];
+        let first: String = rest.chars().take_while(char::is_ascii_digit).collect();
+        let after = &rest[first.len()..];
+        let last: String = after
+            .strip_prefix('–')
+            .or_else(|| after.strip_prefix('-'))
+            .map(|r| r.chars().take_while(char::is_ascii_digit).collect())
+            .unwrap_or_default();
+        let (Ok(a), b) = (first.parse::<u32>(), last.parse::<u32>().ok()) else {
+            bad.push(format!(
+                "{file}: a citation of docs/DESIGN.md without a section number"
+            ));
+            continue;
+        };
+        for n in a..=b.unwrap_or(a).max(a) {
+            if !sections.contains(&n) {
+                bad.push(format!(
+                    "{file}: cites section {n} of docs/DESIGN.md, which has none"
+                ));
+            }
+        }
+    }
+    let bare = flat
+        .match_indices("DESIGN")
+        .filter(|&(k, w)| flat[k + w.len()..].trim_start().starts_with('§'));
+    for (k, _) in bare {
+        bad.push(format!(
+            "{file}:{}: cites a section of the design by its bare name: write docs/DESIGN.md and the section",
+            line(k)
+        ));
+    }
+    bad
+}
+
+#[test]
+fn design_citations_name_sections_of_the_design() {
+    let root = Path::new(env!("CARGO_MANIFEST_DIR"));
+    let sections = design_sections(&fs::read_to_string(root.join("docs/DESIGN.md")).unwrap());
+    assert!(
+        (1..=10).all(|n| sections.contains(&n)),
+        "docs/DESIGN.md numbers its sections `## N. Title`: {sections:?}"
+    );
+    let mut files = Vec::new();
+    for d in CITING_DIRS {
+        text_files(root, d, &mut files);
+    }
+    let (mut bad, mut cited) = (Vec::new(), 0);
+    for f in &files {
+        let Ok(src) = fs::read_to_string(root.join(f)) else {
+            continue;
+        };
+        cited += src.matches(CITED).count();
+        bad.extend(bad_citations(f, &src, &sections));
+    }
+    assert!(cited > 20, "only {cited} citations of docs/DESIGN.md seen");
+    assert!(
+        bad.is_empty(),
+        "citations of docs/DESIGN.md that name no section:\n{}",
+        bad.join("\n")
+    );
+}
+
+#[test]
+fn the_citation_check_sees_a_missing_section_and_a_bare_citation() {
+    let sections = design_sections("# Design\n## 1. One\n## 2. Two\ntext\n### 3. Not a section\n");
+    assert_eq!(sections, BTreeSet::from([1, 2]));
+    let check = |src: &str| bad_citations("f.rs", src, &sections).len();
+    let design = "DESIGN";
+    assert_eq!(check(&format!("//! docs/{design}.md §2: fine")), 0);
+    assert_eq!(check(&format!("//! docs/{design}.md §1–2, ranges")), 0);
+    assert_eq!(check(&format!("//! docs/{design}.md §3")), 1);
+    assert_eq!(check(&format!("//! docs/{design}.md §1–3")), 1);
+    assert_eq!(check(&format!("//! the ({design}\n//! §2) split")), 1);
+    assert_eq!(check(&format!("/// docs/{design}.md\n/// §3 split")), 1);
+    assert_eq!(check(&format!("// {design} §1")), 1);
+}
+
 /// The word issue or stop followed by a number, case-insensitive.
 fn names_history(line: &str) -> bool {
     let lower = line.to_ascii_lowercase();
@@ -721,7 +870,7 @@ fn names_history(line: &str) -> bool {
 fn the_code_says_why_not_when() {
     let root = Path::new(env!("CARGO_MANIFEST_DIR"));
     let mut list = Vec::new();
-    for d in ["crate", "tests", "benches", "examples"] {
+    for d in ["crate", "tests", "benches", "examples", "diagnostics"] {
         let mut files = Vec::new();
         rust_files(&root.join(d), root, &mut files);
         list.extend(files);

@@ -1,5 +1,5 @@
 //! Same seed, same trajectory — natively and in WebAssembly (paper 004 §7:
-//! determinism for replay and networked games; DESIGN §8).
+//! determinism for replay and networked games; docs/DESIGN.md §5).
 //!
 //! The golden values hash the raw f32 bits of every pose of every preset
 //! variant. The toolkit uses only IEEE-exact arithmetic and its own

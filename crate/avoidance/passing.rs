@@ -10,7 +10,7 @@
 //! at full width and come to rest interlocked, every agent at the distance
 //! ORCA keeps (0.75–0.9 m) from an oncoming one ahead and its own group
 //! mates beside and behind, turning on the spot with no admissible
-//! forward ray (`examples/avoid_stuck.rs` and `examples/avoid_snap.rs`
+//! forward ray (`diagnostics/avoid_stuck.rs` and `diagnostics/avoid_snap.rs`
 //! show such jams).
 //!
 //! **Rule.** While the grid lists the neighbours in reach (all of them, not

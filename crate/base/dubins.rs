@@ -1,7 +1,7 @@
 //! Dubins shortest paths (Dubins 1957; cited by paper 000 §2): the shortest
 //! C¹ path between two oriented points with a minimum turning radius, made
 //! of arcs (L, R) and a straight (S) or three arcs. It is the geometric
-//! lower bound against which funnelling paths are compared (DESIGN §9).
+//! lower bound against which funnelling paths are compared (docs/DESIGN.md §17).
 //!
 //! Formulas follow Shkel & Lumelsky (2001) in the frame where the start is
 //! at the origin and the goal on the positive x axis at normalised distance

@@ -101,7 +101,7 @@ impl NeighbourGrid {
     /// the boids then follow last step's order, so each bucket is put back
     /// into ascending index by an insertion sort (runs already sorted but
     /// for the boids that changed cell): the same order, and so the same
-    /// bits, as the by-index sort. `examples/crowd_profile.rs` times the
+    /// bits, as the by-index sort. `diagnostics/crowd_profile.rs` times the
     /// crowd's step at Test IV's density.
     pub fn rebuild(&mut self, pos: &[f32], cell: f32) {
         let n = pos.len() / 2;

@@ -1,4 +1,4 @@
-//! Path metrics (DESIGN §9): what a trajectory is measured by.
+//! Path metrics (docs/DESIGN.md §17): what a trajectory is measured by.
 //!
 //! Accumulated step by step so that a run never stores its trajectory to be
 //! measured: path length, integrated |curvature| (`∫|κ| ds = ∫|dθ|` for a

@@ -8,7 +8,7 @@
 //! | [`trig`] | — | bit-reproducible `sin_cos` / `atan2`: the same trajectory natively and in wasm |
 //! | [`rng`] | — | seeded PCG32: the same sequence natively and in wasm |
 //! | [`vehicle`] | 000 §3 | forward-only unicycle, every limit enforced exactly; `VehicleParams`, `VehicleState` |
-//! | [`metrics`] | DESIGN §9 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
+//! | [`metrics`] | docs/DESIGN.md §17 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
 //! | [`dubins`] | 000 §2 | Dubins shortest paths, the lower bound for an oriented reach |
 //! | [`range`] | — | one error for a number out of range or not finite, one check: every paper's validation speaks it |
 //! | [`ranges`] | — | one table of validation ranges (key, min, max, unit, integer, cross-field bound) that the core's checks and the page use |

@@ -5,7 +5,7 @@
 //! `goal.dTol = 0 is outside [0.01, 1000]` or `kp = NaN is not finite`.
 //!
 //! Why a closed interval for everything: the core is f32 and must stay
-//! finite (DESIGN §9, determinism); every accepted value therefore has a
+//! finite (docs/DESIGN.md §5, determinism); every accepted value therefore has a
 //! finite lower and upper bound, written where the field is validated.
 
 use core::fmt;

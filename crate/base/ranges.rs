@@ -12,7 +12,7 @@
 //! the bindings export [`ALL`] (`ranges()`), from which the page derives its
 //! URL decoder, sliders and number inputs.
 //!
-//! Design: a range is closed and finite (DESIGN §9: an f32 core must stay
+//! Design: a range is closed and finite (docs/DESIGN.md §5: an f32 core must stay
 //! finite), stored as f64 so the page reads the written number (0.01, not
 //! 0.009999999776); the core compares in f32, and since rounding to f32 is
 //! monotone a value the page accepts in f64 is accepted by the core.

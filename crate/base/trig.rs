@@ -4,8 +4,8 @@
 //! whose last-bit rounding differs between glibc and the wasm build. Every
 //! controller feeds headings back into positions (and positions back into
 //! headings), so one ulp grows into a visibly different path and the "same
-//! scenario, same trajectory natively and in the browser" promise (DESIGN
-//! §8, "everything seeded and deterministic") breaks. These versions use only
+//! scenario, same trajectory natively and in the browser" promise (docs/DESIGN.md
+//! §5) breaks. These versions use only
 //! IEEE-exact operations (+, −, ×, ÷; `sin_cos` in f64,
 //! `atan2` in f32, no fused multiply-adds), so they are bit-identical on
 //! every target, and accurate to well under 1e-6. They are

@@ -1,4 +1,4 @@
-//! The vehicle model of paper 000 §3 (DESIGN §1).
+//! The vehicle model of paper 000 §3 (docs/DESIGN.md §6).
 //!
 //! A forward-only unicycle with unit mass and unit yaw inertia: the state is
 //! a 2D pose plus forward speed `v ≥ 0` and angular speed `ω`. Every limit

@@ -1,4 +1,4 @@
-//! Crowded path following (paper 003, "Crowded path following"; DESIGN §7):
+//! Crowded path following (paper 003, "Crowded path following"; docs/DESIGN.md §15):
 //! boids follow a polyline path with Reynolds' or Parker's seek, with or
 //! without separation, from one boid to hundreds of thousands.
 //!

@@ -102,7 +102,7 @@ pub fn rest_rotation(p: &VehicleParams, omega: f32) -> f32 {
 /// [`FunnelMemory::lap`]), and each lap lowers the speed the goal is
 /// approached with ([`lap_speed`]): at full speed a vehicle can orbit a
 /// small moving disk for the whole time limit without entering it
-/// (`examples/orbits.rs` lists the moving-goal runs of a seed that never
+/// (`diagnostics/orbits.rs` lists the moving-goal runs of a seed that never
 /// enter).
 #[inline]
 pub fn tolerance_phase(
@@ -221,7 +221,7 @@ pub fn fig5_tolerance_phase(
 /// approach enters: the paper's proactive speed adaptation, driven by
 /// what the vehicle did rather than by the table. Only goals moving by
 /// themselves and only after a lap: no other trajectory depends on it.
-/// `examples/orbits.rs -- 1 10000` lists the
+/// `diagnostics/orbits.rs -- 1 10000` lists the
 /// moving-goal runs of tune seed 1 that never enter the disk.
 #[inline]
 #[must_use]
@@ -548,7 +548,7 @@ impl<'a> Approach<'a> {
     /// facing β only) β's sin/cos and two dot products, and when it
     /// steers one atan2. The heading is tested first so that most updates
     /// skip the sin/cos, a noticeable share of an update's instructions
-    /// (`examples/icount.rs` counts them).
+    /// (`diagnostics/icount.rs` counts them).
     #[inline]
     pub fn terminal(&self, t: &Terminal, g: &Goal, out: &mut Internals) -> bool {
         let s = self.s;

@@ -1,4 +1,4 @@
-//! Funnelling control (paper 000 §4–5, Figs. 4 and 5; DESIGN §4–5): reach a
+//! Funnelling control (paper 000 §4–5, Figs. 4 and 5; docs/DESIGN.md §9–10): reach a
 //! target position *with a prescribed orientation* β by modulating the
 //! heading fed to the plain seek controller.
 //!

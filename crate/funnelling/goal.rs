@@ -254,7 +254,7 @@ impl LapCount {
 /// Why: the entry aim and the terminal pursuit need β's direction every
 /// update, and [`crate::base::trig::sin_cos`] (f64, for bits that are the
 /// same natively and in wasm) is a noticeable share of a world step
-/// (`examples/world_bench.rs` times one). A goal's β changes only with the goal (or every step for
+/// (`diagnostics/world_bench.rs` times one). A goal's β changes only with the goal (or every step for
 /// a goal that follows an agent or circles), so the vector is recomputed
 /// only when β's bits differ from the kept ones: the same vector, the same
 /// bits. A cache, not state: any two compare equal, and it is not

@@ -1,5 +1,5 @@
 //! Arrival without pivoting, for car-like vehicles (a minimum turning
-//! radius at every speed, [`VehicleParams::r_min`]; DESIGN §11).
+//! radius at every speed, [`VehicleParams::r_min`]; docs/DESIGN.md §14).
 //!
 //! The unicycle of paper 000 finishes an oriented arrival by turning on
 //! the spot where it must (Orientation_only inside the position

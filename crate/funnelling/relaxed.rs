@@ -1,5 +1,5 @@
 //! Relaxed funnelling towards oriented *region goals* (paper 001 §4,
-//! Fig. 7; DESIGN §6).
+//! Fig. 7; docs/DESIGN.md §11).
 //!
 //! A region goal is a tolerance disk (centre `Goal::pos`, radius
 //! `Goal::d_tol`) and an orientation interval T = [β − τ, β + τ]
@@ -28,7 +28,7 @@
 //!    proactive speed `v_dt`), Δη re-measured against T with that η, then
 //!    seek (Δη = 0) or the bounded modulation μ of [`FunnelConfig`].
 //!
-//! Choices where the paper is silent (written down as DESIGN asks):
+//! Choices where the paper is silent (written down, as docs/DESIGN.md §1 and §18 ask):
 //! - **Ring misses the disk** (a small disk between two sparse far rings):
 //!   the ring of radius equal to the centre distance is used instead, so 𝒜
 //!   is the disk's angular extent seen from the vehicle.

@@ -1,4 +1,4 @@
-//! The seek controller of paper 000 §3 (DESIGN §2) and the static-target
+//! The seek controller of paper 000 §3 (docs/DESIGN.md §7) and the static-target
 //! reach simulation that defines the η angle.
 //!
 //! Two controllers act each step. The angular one is a PD law on the

@@ -1,5 +1,5 @@
 //! The random steering toolkit (paper 004, "Random Steering – 7 Components
-//! for a Toolkit"; DESIGN §8).
+//! for a Toolkit"; docs/DESIGN.md §16).
 //!
 //! Forward speed is constant; components control the angular displacement,
 //! velocity or acceleration directly, under clamps. One idea per module:

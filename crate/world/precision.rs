@@ -2,7 +2,7 @@
 //! range an agent and its goals must lie in, from the agent's slowest
 //! goal speed and the time step.
 //!
-//! Problem: positions are f32 (DESIGN §8: the same bits natively and in
+//! Problem: positions are f32 (docs/DESIGN.md §5: the same bits natively and in
 //! wasm). One step moves `s = v·dt`; far from the origin the spacing of
 //! f32 numbers (ulp, `2^(e−24)` for `|x| < 2^e`) approaches `s` and every
 //! step is rounded: at x = 999,980 m a 1.3 m/s agent does not move at

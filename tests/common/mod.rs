@@ -18,7 +18,7 @@ use std::cell::Cell;
 pub const FNV_OFFSET: u64 = 0xcbf2_9ce4_8422_2325;
 
 /// FNV-1a over the f32 bit patterns (little-endian bytes), so that a golden
-/// value pins the bits, not rounded values (DESIGN §8).
+/// value pins the bits, not rounded values (docs/DESIGN.md §5).
 pub fn fnv(hash: &mut u64, values: &[f32]) {
     for v in values {
         for b in v.to_bits().to_le_bytes() {

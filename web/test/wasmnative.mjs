@@ -1,7 +1,7 @@
 // Wasm / native per funnelling agent update, in one run. The same
 // workload — the lab's performance world (spawnRandom: N agents, seed 1,
 // extent √N·1.5 m, 1.3 m/s, 16 goals each), warmed up, then rounds of
-// STEPS steps — natively (`examples/world_bench.rs`, release) and in Node on
+// STEPS steps — natively (`diagnostics/world_bench.rs`, release) and in Node on
 // the release wasm package: both its builds (web/pkg/steering_bg.wasm and
 // the SIMD one, steering_simd_bg.wasm), or those of each `--pkg DIR` given
 // (e.g. web/pkg and a package built from another commit). Native and wasm rounds alternate, ROUNDS times, so a busy

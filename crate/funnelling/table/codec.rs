@@ -1,4 +1,4 @@
-//! The η table to and from bytes (paper 000 §3; DESIGN §3): the CRC-32,
+//! The η table to and from bytes (paper 000 §3; docs/DESIGN.md §8): the CRC-32,
 //! the validation of every field of a loaded table, and the little-endian
 //! reader and writer of the layout in [`format`](super::format) and
 //! `tables/README.md`.

@@ -1,4 +1,4 @@
-//! The η table's file format (paper 000 §3; DESIGN §3): the header and its
+//! The η table's file format (paper 000 §3; docs/DESIGN.md §8): the header and its
 //! [`BuildParams`], the typed [`TableError`]s and the layout constants.
 //! The bytes themselves (CRC-32, validation of every field, to and from
 //! bytes) are in [`codec`](super::codec). `tables/README.md` gives the byte

@@ -1,5 +1,5 @@
 //! Where a query falls on the η table's sampled axes, in constant time
-//! (paper 000 §7: "the control update cost is constant"; DESIGN §3).
+//! (paper 000 §7: "the control update cost is constant"; docs/DESIGN.md §8).
 //!
 //! The table's axes are non-uniform on purpose (dense near, u² speeds,
 //! anisotropic α), so the interval holding a coordinate is not one division
@@ -183,7 +183,7 @@ impl Axis {
     /// one flag in a register (the flag's five stores and the five
     /// `periodic` tests would be a noticeable share of
     /// [`EtaTable::lookup`](crate::funnelling::table::lookup::EtaTable::lookup)'s
-    /// axis searches; `examples/icount.rs` counts them under callgrind).
+    /// axis searches; `diagnostics/icount.rs` counts them under callgrind).
     #[inline(always)]
     #[must_use]
     pub fn locate_linear(&self, v: f32) -> (AxisPos, bool) {

@@ -1,5 +1,5 @@
 //! The η table `Tη` in memory and its constant-cost multilinear ("quintic
-//! linear") lookup (paper 000 §3, paper 001 §3 and Fig. 3; DESIGN §3).
+//! linear") lookup (paper 000 §3, paper 001 §3 and Fig. 3; docs/DESIGN.md §8).
 //!
 //! The table samples the seek controller's final radial-tangential angle η
 //! over five axes: target distance `D`, radial angle `α`, current angular
@@ -298,7 +298,7 @@ impl EtaTable {
     /// Bounds: [`Grid::holds`] checks the position against the sample
     /// counts (ten comparisons) and the cells reads are then unchecked.
     /// Why: the 16 per-pair checks (overflow, then length) would be a
-    /// noticeable share of a lookup's instructions (`examples/icount.rs`
+    /// noticeable share of a lookup's instructions (`diagnostics/icount.rs`
     /// counts them under callgrind).
     /// Positions outside the grid (none from [`Axis::locate`]) take the
     /// checked path.

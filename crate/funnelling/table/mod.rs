@@ -1,4 +1,4 @@
-//! The η table `Tη` (paper 000 §3, paper 001 §3 and Fig. 3; DESIGN §3):
+//! The η table `Tη` (paper 000 §3, paper 001 §3 and Fig. 3; docs/DESIGN.md §8):
 //! the seek controller's final radial-tangential angle η, sampled once over
 //! five axes so that funnelling can predict where plain seek would arrive at
 //! constant cost per update.

@@ -1,4 +1,4 @@
-//! What the η table samples (paper 000 §3; DESIGN §3): the axes, scaled
+//! What the η table samples (paper 000 §3; docs/DESIGN.md §8): the axes, scaled
 //! with the vehicle, and one entry's simulation, which runs the very seek
 //! controller of [`crate::funnelling::seek`] from a sampled relative target
 //! and records η, reachability and the fallback speed. The whole table is

@@ -1,5 +1,6 @@
-//! The funnelling world's cost per agent update, natively, on exactly the
-//! workload `web/test/wasmnative.mjs` runs in the release wasm package
+//! Times the funnelling world's step per agent update natively, beside the wasm run.
+//!
+//! The workload is exactly the one `web/test/wasmnative.mjs` runs in the release wasm package
 //! (`make bench-wasm-native` runs both and prints wasm / native): the
 //! lab's performance world (`spawn_random`: N agents, seed, extent
 //! √N·1.5 m, 1.3 m/s, 16 goals each), warmed up, then timed over rounds of
@@ -15,7 +16,7 @@
 //! reads.
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 use std::time::Instant;

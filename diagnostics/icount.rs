@@ -1,4 +1,6 @@
-//! Deterministic cost measure for a loaded machine: run under callgrind and
+//! Counts the instructions of a seek step, a table lookup or a funnelling update (under callgrind).
+//!
+//! A deterministic cost for a loaded machine: run under callgrind and
 //! difference two iteration counts to get instructions per call, e.g.
 //!
 //! ```sh
@@ -9,7 +11,7 @@
 //! `seek`, `seek_like` (from the funnelling update's states), `lookup` or `funnel` (default funnelling update), N iterations.
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 

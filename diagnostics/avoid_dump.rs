@@ -1,11 +1,12 @@
-//! All agents of an avoidance benchmark run (ORCA) at given times: pose,
-//! speed, goal, done, the command.
+//! Dumps every agent of an avoidance benchmark run (ORCA) at given times.
+//!
+//! Per agent: pose, speed, goal, done, the command.
 //!
 //! `cargo run --release --example avoid_dump -- corridor 1015 12 20`
 //! (benchmark, seed, times in s).
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 

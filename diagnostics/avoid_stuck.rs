@@ -1,5 +1,6 @@
-//! Where avoidance benchmark agents first get stuck (the study's
-//! deadlocks): for each seed, every agent the moment it has been unfinished
+//! Lists where avoidance benchmark agents first get stuck (the study's deadlocks).
+//!
+//! For each seed, every agent the moment it has been unfinished
 //! and slower than 0.05 m/s for 10 s (the study's deadlock rule), with
 //! its goal, mode and the agents within 1.5 m.
 //!
@@ -8,7 +9,7 @@
 //! seed, seeds). Tune seeds are 1000–1019; the report seeds 0–99.
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 

@@ -1,9 +1,9 @@
-//! The avoidance examples' benchmark argument (`avoid_dump`, `avoid_stuck`,
+//! The avoidance diagnostics' benchmark argument (`avoid_dump`, `avoid_stuck`,
 //! `avoid_trace`), a clap value: `corridor` (the default) | `doorway` |
 //! `circle32` | `circle100`.
 use steering::studies::avoidance::Bench;
 
-/// A benchmark an avoidance example runs.
+/// A benchmark an avoidance diagnostic runs.
 #[derive(clap::ValueEnum, Clone, Copy, Debug)]
 pub enum BenchArg {
     /// Two groups crossing in a corridor.

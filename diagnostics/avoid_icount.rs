@@ -1,6 +1,7 @@
-//! Deterministic cost of a world step with and without avoidance, for a
-//! loaded machine: run under callgrind and difference two step
-//! counts, e.g.
+//! Counts the instructions of a world step with and without avoidance (under callgrind).
+//!
+//! A deterministic cost for a loaded machine: run under callgrind and
+//! difference two step counts, e.g.
 //!
 //! ```sh
 //! cargo build --release --example avoid_icount
@@ -14,7 +15,7 @@
 //! sets `maxNeighbours` (a change of behaviour, to measure its cost).
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 

@@ -1,12 +1,14 @@
-//! ASCII snapshots of an avoidance benchmark run (ORCA): every agent as a
+//! Prints ASCII snapshots of an avoidance benchmark run (ORCA).
+//!
+//! Every agent is a
 //! glyph of its heading (`>` `<` `^` `v`; upper-case letters at rest), and
-//! the obstacles as `#`.
+//! the obstacles are `#`.
 //!
 //! `cargo run --release --example avoid_snap -- corridor 1001 2.0`
 //! (benchmark, seed, seconds between snapshots).
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 

@@ -1,11 +1,12 @@
-//! One envelope moving-goal run step by step (to see an orbit form):
+//! Traces one envelope moving-goal run step by step, to see an orbit form.
+//!
 //! `orbit_trace -- SEED INDEX [EVERY] [standard|relaxed]` prints t, pose,
 //! speed, laps, mode, D to the goal and its least value so far, the aim
 //! point (distance, α), v_dt, passes; `--vehicle` / `VEHICLE` and
-//! `--table` / `TABLE` as in `examples/orbits.rs`. Runs 150 s.
+//! `--table` / `TABLE` as in `orbits.rs`. Runs 150 s.
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 use clap::Parser;

@@ -1,12 +1,13 @@
-//! Moving-goal runs of the envelope study that never enter the disk (or
-//! never finish): `orbits -- SEED N [standard|relaxed]`. Another vehicle:
+//! Lists the envelope study's moving-goal runs that never enter the disk or never finish.
+//!
+//! `orbits -- SEED N [standard|relaxed]`. Another vehicle:
 //! `--vehicle robot --table path/to/its/eta-KEY.bin`, or
 //! `VEHICLE=robot TABLE=path/to/its/eta-KEY.bin` (a reference vehicle
 //! of `scenarios/vehicles/` and its table, e.g. from `steer run`'s cache);
 //! runs get the study's time limit scaled to the vehicle.
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 use clap::Parser;

@@ -1,5 +1,6 @@
-//! What kind of deadlock each corridor agent is in (ORCA): every
-//! agent the moment it has been unfinished and slower than 0.05 m/s for
+//! Classifies the deadlock each corridor agent is in (ORCA).
+//!
+//! Every agent the moment it has been unfinished and slower than 0.05 m/s for
 //! 10 s (the study's rule, as `avoid_stuck.rs`), classified by where it
 //! stands and what holds it, and whether it finished by the end of the run.
 //!
@@ -15,7 +16,7 @@
 //! - `mid-jam`: the rest (inside the corridor, away from the walls).
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 

@@ -1,4 +1,6 @@
-//! Crowd step cost natively: N boids of Test IV's pathway scaled with N
+//! Times the crowd's step natively (and its separation and grid rebuild alone).
+//!
+//! N boids of Test IV's pathway scaled with N
 //! (its density), Parker 10 %, metrics off (the workers' mode), STEPS steps
 //! after 100 settling ones; then separation alone and its grid rebuild
 //! alone on the last positions (`--only-rebuild` or `ONLY_REBUILD=1`: 500
@@ -6,7 +8,7 @@
 //! alone). `cargo run --release --example crowd_profile -- N STEPS`.
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 use clap::builder::FalseyValueParser;

@@ -1,11 +1,12 @@
-//! One agent of an avoidance benchmark run, step by step: pose, the
-//! funnel's (γ, v_dt) and the avoidance's command.
+//! Traces one agent of an avoidance benchmark run, step by step.
+//!
+//! Per step: pose, the funnel's (γ, v_dt) and the avoidance's command.
 //!
 //! `cargo run --release --example avoid_trace -- corridor 1008 0 18 24 0.2`
 //! (benchmark, seed, agent, from s, to s, every s).
 
 // clap is a native dev-dependency: under `wasm-pack test` (wasm32) this
-// example is empty.
+// diagnostic is empty.
 #![cfg_attr(target_arch = "wasm32", no_main)]
 #![cfg(not(target_arch = "wasm32"))]
 
