@@ -24,9 +24,9 @@
 // (import, export … from, import(), a type's import("…"), new
 // Worker(new URL(…)), `?worker`); no cycle among folders nor among files;
 // only core/ reaches ../pkg; a worker is started from a file of workers/.
-// A failure names the file and line. The last test plants a workers/ →
-// lab/ import in memory and asserts the check reports it, so every run
-// shows that the check bites.
+// A failure names the file and line. The last test plants workers/ → lab/
+// references (one of each kind) in memory and asserts the check reports
+// each, so every run shows that the check bites.
 // Usage: node test/source.mjs   (node:test; `make test-tsc`)
 import { test } from "node:test";
 import assert from "node:assert/strict";
@@ -257,12 +257,24 @@ test("no cycle among web/src's folders, nor among its files", () => {
 
 test("the order check bites: a planted workers/ → lab/ import fails it", (t) => {
   const worker = resolve(SRC, "workers/step.worker.ts");
-  const planted = `import { LabSim } from "../lab/sim";\n`;
+  // One reference of each kind, lines 1 to 5, before the file's own text.
+  const planted = [
+    `import { LabSim } from "../lab/sim";`,
+    `export { defaultState } from "../lab/state";`,
+    `const late = () => import("../lab/hook");`,
+    `const w = () => new Worker(new URL("../lab/main.ts", import.meta.url), { type: "module" });`,
+    `import Page from "../lab/loop.ts?worker";`,
+    "",
+  ].join("\n");
   const g = importGraph((f) => (f === worker ? planted : "") + readFileSync(f, "utf8"));
   const before = new Set([...orderProblems(graph), ...cycles(graph.edges, folderOf)]);
   const found = [...orderProblems(g), ...cycles(g.edges, folderOf), ...cycles(g.edges, (f) => f)].filter((p) => !before.has(p));
   for (const p of found) t.diagnostic(`planted: ${p}`);
   assert.ok(found.some((p) => p.startsWith("workers/step.worker.ts:1: import of lab/sim.ts goes up the order")), "the planted import goes up");
+  for (const [line, kind, to] of [[2, "import", "state"], [3, "import()", "hook"], [4, "worker", "main"], [5, "worker", "loop"]]) {
+    const at = `workers/step.worker.ts:${line}: ${kind} of lab/${to}.ts goes up the order`;
+    assert.ok(found.some((p) => p.startsWith(at)), at);
+  }
   assert.ok(found.some((p) => /^cycle: .*\bworkers → lab \(workers\/step\.worker\.ts:1\)/.test(p)), "the planted import closes a cycle of folders");
-  assert.ok(found.some((p) => /^cycle: .*workers\/step\.worker\.ts → lab\/sim\.ts \(workers\/step\.worker\.ts:1\)/.test(p)), "and one of files");
+  assert.ok(found.some((p) => /^cycle: .*workers\/step\.worker\.ts → lab\/[a-z]+\.ts \(workers\/step\.worker\.ts:[1-5]\)/.test(p)), "and one of files");
 });
