@@ -107,7 +107,7 @@ figures-full:
 #
 # A second build with WebAssembly SIMD (`+simd128`, its own target
 # directory so the two builds do not invalidate each other) ships beside it
-# as web/pkg/steering_simd_bg.wasm; web/src/wasm.ts loads it where
+# as web/pkg/steering_simd_bg.wasm; web/src/core/wasm.ts loads it where
 # WebAssembly.validate accepts a SIMD instruction, else the baseline. The
 # two builds' JavaScript glue must be byte-identical (checked here).
 # `--no-default-features`: the pages call no study, so `studies` (and

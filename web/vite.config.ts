@@ -8,12 +8,12 @@ import type { IncomingMessage, ServerResponse } from "node:http";
 import { pathToFileURL } from "node:url";
 import { build as bundle } from "rolldown";
 import type { firstFrameData } from "./src/lab/firstdata";
-import { toPlanes } from "./src/tableplanes.ts";
+import { toPlanes } from "./src/core/tableplanes.ts";
 
 const TABLES = resolve(import.meta.dirname, "../tables");
 
 /** Gzipped files, compressed once per change: the tables (the byte planes,
- *  `NAME.planes`, gzip to less than half of `NAME.bin`; src/tableplanes.ts)
+ *  `NAME.planes`, gzip to less than half of `NAME.bin`; src/core/tableplanes.ts)
  *  and the built core (its wasm to about two fifths). */
 const gzipped = new Map<string, { mtimeMs: number; body: Buffer }>();
 
@@ -96,7 +96,7 @@ function tables(): Plugin {
 
 /** The lab's HTML starts compiling the core's SIMD build before
  *  its scripts run (index.html); this puts the built asset's URL (hashed,
- *  the one src/wasm.ts would fetch) in place of `%CORE_SIMD_WASM%`, or the
+ *  the one src/core/wasm.ts would fetch) in place of `%CORE_SIMD_WASM%`, or the
  *  package's own file in the dev server. */
 function coreWasmUrl(): Plugin {
   return {

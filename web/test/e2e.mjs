@@ -22,7 +22,7 @@ const coreFunnel = (page) => page.evaluate(() => JSON.parse(JSON.stringify(windo
 const colours = (page, at, radius) =>
   countPixels(page, { selector: "#lab", around: { at, radius } }, {
     red: (r, g, b) => r > 170 && g < 90 && b < 90,
-    // funnelling's own colour (src/modes.ts)
+    // funnelling's own colour (src/ui/modes.ts)
     orange: (r, g, b) => r > 190 && g > 80 && g < 140 && b < 60,
     blue: (r, g, b) => b > 160 && r < 90 && g < 140,
     grey: (r, g, b) => Math.abs(r - 138) < 12 && Math.abs(g - 143) < 12 && Math.abs(b - 152) < 12,

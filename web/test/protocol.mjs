@@ -1,4 +1,4 @@
-// The continuing-jobs protocol (src/workers/continuing.ts) under load, in
+// The continuing-jobs protocol (src/threads/continuing.ts) under load, in
 // Node: real threads (worker_threads), the real module (its types
 // stripped by Vite's `transformWithOxc`), random step and drawing times.
 //
@@ -27,14 +27,14 @@ import { test } from "node:test";
 import { options, whole } from "./options.mjs";
 
 const { values } = options(
-  `The workers' continuing-jobs protocol (src/workers/continuing.ts) on real threads in Node.
+  `The workers' continuing-jobs protocol (src/threads/continuing.ts) on real threads in Node.
 Usage: node test/protocol.mjs [options]   (from web/; \`make test-protocol\`)`,
   { frames: { type: "string", default: "200", arg: "N", help: "page frames per protocol run" } },
 );
 
 const here = new URL(".", import.meta.url).pathname;
 const dir = mkdtempSync(join(tmpdir(), "protocol-"));
-const src = readFileSync(join(here, "../src/workers/continuing.ts"), "utf8");
+const src = readFileSync(join(here, "../src/threads/continuing.ts"), "utf8");
 const { code: js } = await transformWithOxc(src, "continuing.ts", { lang: "ts" });
 
 /** The module as committed (`null`), or with other DEPTH and LEAD. */

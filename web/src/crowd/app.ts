@@ -2,7 +2,7 @@
 // paper's presets, the loop's counters and its work probe. The HUD reads
 // the counters; the test build's hook (hook.ts) reads the rest.
 
-import type { CrowdConfig } from "../wasm";
+import type { CrowdConfig } from "../core/wasm";
 import type { CrowdSession } from "./session";
 
 /** What the loop (loop.ts) counts; the figures over the last second are the HUD's. */

@@ -11,7 +11,7 @@
 // - Test IV density (the panel's switch scales the pathway with the
 //   count): HEAVY_DENSE_BOIDS below.
 
-import { parseDecimal } from "../controls";
+import { parseDecimal } from "../ui/controls";
 
 /** Largest boid count the page runs (the core allows more: `MAX_BOIDS`). */
 export const PAGE_MAX_BOIDS = 200_000;

@@ -4,9 +4,9 @@
 // it): what the tests read and drive, read from the page's session and the
 // loop's counters, and the step cost measurement behind it (bench).
 
-import { fnvHex } from "../fnv";
-import type { Vec } from "../view";
-import { CrowdLab, type CrowdConfig, type CrowdMetrics, type CrowdSeek } from "../wasm";
+import { fnvHex } from "../ui/fnv";
+import type { Vec } from "../ui/view";
+import { CrowdLab, type CrowdConfig, type CrowdMetrics, type CrowdSeek } from "../core/wasm";
 import type { CrowdPage } from "./app";
 import { isDefaultPreset } from "./presets";
 import type { CrowdSession } from "./session";

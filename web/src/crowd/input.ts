@@ -3,9 +3,9 @@
 // space plays/pauses, s steps, r resets, Delete removes the selected point,
 // Escape deselects.
 
-import { wheelZoom, panDrag } from "../panzoom";
-import { attachPointer, type Drag } from "../pointer";
-import type { Vec } from "../view";
+import { wheelZoom, panDrag } from "../ui/panzoom";
+import { attachPointer, type Drag } from "../ui/pointer";
+import type { Vec } from "../ui/view";
 import type { CrowdSession } from "./session";
 
 export function attachCanvas(canvas: HTMLCanvasElement, s: CrowdSession): void {

@@ -2,7 +2,7 @@
 // single step), draws when something changed, and every 250 ms updates the
 // metrics panel and the one-line HUD; step/draw/fps figures per second.
 
-import type { Surface } from "../canvas";
+import type { Surface } from "../ui/canvas";
 import type { CrowdPage } from "./app";
 import { drawCrowd } from "./render";
 

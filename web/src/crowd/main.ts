@@ -4,11 +4,11 @@
 // (../wasm); one step per frame by default (one step = one paper frame).
 // This file wires the page's parts together.
 
-import { setupCanvas } from "../canvas";
-import { button } from "../controls";
-import { downloadPng } from "../download";
-import { $, showMessage, showVersion } from "../page";
-import { CrowdLab, errorText, loadCore } from "../wasm";
+import { setupCanvas } from "../ui/canvas";
+import { button } from "../ui/controls";
+import { downloadPng } from "../ui/download";
+import { $, showMessage, showVersion } from "../ui/page";
+import { CrowdLab, errorText, loadCore } from "../core/wasm";
 import type { CrowdPage } from "./app";
 import { installHook } from "./hook";
 import { attachCanvas, attachKeys } from "./input";

@@ -1,9 +1,9 @@
 // The crowd page's side panel: seek, separation, boid count (one box), path radius,
 // display switches, path editing buttons, metrics. Built on ../controls.
 
-import { button, checkbox, help, row, section, slider } from "../controls";
+import { button, checkbox, help, row, section, slider } from "../ui/controls";
 import { decideCount, PAGE_MAX_BOIDS } from "./count";
-import type { CrowdMetrics, CrowdSeek } from "../wasm";
+import type { CrowdMetrics, CrowdSeek } from "../core/wasm";
 
 /** The paper's five seeks, in preset order. */
 export const SEEKS: { tag: string; label: string; seek: CrowdSeek }[] = [

@@ -4,8 +4,8 @@
 // core validates every edit (no repeated points, enough points); a rejected
 // edit leaves the path as it was and reports the core's message.
 
-import type { Drag } from "../pointer";
-import type { Vec, View } from "../view";
+import type { Drag } from "../ui/pointer";
+import type { Vec, View } from "../ui/view";
 
 export interface PathHost {
   /** The path's points as the core holds them, flat [x0, y0, ...]. */

@@ -1,7 +1,7 @@
 // The paper's crowd presets (Tests I–IV × five seeks, from the core) in the
 // header's menu, grouped by test.
 
-import type { CrowdConfig } from "../wasm";
+import type { CrowdConfig } from "../core/wasm";
 import { SEEKS } from "./panel";
 
 /** The preset the page opens with: Test IV's 300 boids, Parker 10 %. */

@@ -3,10 +3,10 @@
 // oriented triangles up to TRIANGLE_LIMIT, beyond that 2×2-pixel squares; in
 // both cases one path and one fill for all boids, not one per boid.
 
-import { beginFrame, type Surface } from "../canvas";
-import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
-import { abgr, PixelSprites, triangle } from "../sprites";
-import type { View } from "../view";
+import { beginFrame, type Surface } from "../ui/canvas";
+import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../ui/glsprites";
+import { abgr, PixelSprites, triangle } from "../ui/sprites";
+import type { View } from "../ui/view";
 
 export const COLOURS = {
   background: "#f4f3ee",

@@ -3,9 +3,9 @@
 // steps per frame, pending single steps), the display switches, the view
 // and the path editor. Every edit goes through the core, which may refuse it.
 
-import { showMessage } from "../page";
-import { PAPER_UNITS, View } from "../view";
-import { CrowdLab, errorText, type CrowdConfig } from "../wasm";
+import { showMessage } from "../ui/page";
+import { PAPER_UNITS, View } from "../ui/view";
+import { CrowdLab, errorText, type CrowdConfig } from "../core/wasm";
 import type { Panel } from "./panel";
 import { PathEditor } from "./patheditor";
 import { CrowdStepper, crowdWorkersWanted } from "./stepper";

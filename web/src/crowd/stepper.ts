@@ -1,6 +1,7 @@
 // The crowd stepped across cores: N crowd workers
-// (crowd.worker.ts) on the one worker layer (../workers/pool.ts, `each`:
-// task i to worker i), each stepping the boids of one vertical strip.
+// (../workers/crowd.worker.ts) on the one worker layer (../threads/pool.ts,
+// `each`: task i to worker i), each stepping the boids of one vertical
+// strip; what they share with it is ../world/crowdstrips.ts.
 //
 // - Split by space, re-decided every step: the cuts are quantiles of x in
 //   the last complete state (a sample of it), so each strip holds about
@@ -12,7 +13,7 @@
 // - The page records the traced boid's lap from every complete state
 //   (`CrowdLab.observeStep`).
 // - Shared memory where the page is cross-origin isolated (COOP/COEP):
-//   continuing jobs (../workers/continuing.ts: the workers step on while
+//   continuing jobs (../threads/continuing.ts: the workers step on while
 //   the page asks, meeting at a barrier after every step, and the page
 //   draws every state in order, up to DEPTH states behind the newest): a
 //   job that ended with every step would leave the workers idle until the
@@ -25,86 +26,17 @@
 //   with the front state first; then the workers restart from its
 //   configuration and state (`start`), after the job in flight.
 
-import type { CrowdConfig } from "../wasm";
-import { stateBuffers } from "../workers/buffers";
-import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "../workers/continuing";
-import { SteppingJobs } from "../workers/jobs";
-import { WorkerPool } from "../workers/pool";
-
-export interface CrowdTask {
-  init: { config: CrowdConfig; shared: SharedArrayBuffer[] | null } | null;
-  /** 0: only (re)build. */
-  steps: number;
-  /** Shared buffer holding the state to step (the other one is written). */
-  front: number;
-  /** The state to step when there is no shared memory. */
-  state: Float32Array | null;
-  time: number;
-  lo: number;
-  hi: number;
-  /** This worker's strip (shared memory: the cuts are made in the workers, each step). */
-  worker: number;
-  workers: number;
-  /** The traced boid (shared memory: worker 0 notes it after every step but the last). */
-  traced: number;
-}
-
-export interface CrowdReply {
-  stepMs: number;
-  owned: number;
-  /** Without shared memory: the stepped boids and their `[x, y, vx, vy]`. */
-  indices: Uint32Array | null;
-  states: Float32Array | null;
-}
+import type { CrowdConfig } from "../core/wasm";
+import { stateBuffers } from "../threads/buffers";
+import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "../threads/continuing";
+import { SteppingJobs } from "../threads/jobs";
+import { WorkerPool } from "../threads/pool";
+import { BALANCE, BALANCE_FLOATS, MAX_CROWD_WORKERS, SAB, SLOT, stripCuts, type CrowdReply, type CrowdTask } from "../world/crowdstrips";
 
 /** Boids from which the page steps the crowd in workers by default: below
  *  it the page's thread steps and draws them at 60 fps on a 2-core host
  *  (`make bench-web`'s crowd rows). */
 export const AUTO_WORKERS_FROM = 20_000;
-
-/** Shared memory: the state buffers (`sab[0..STATES)`, continuing.ts),
- *  then the control words, the step slots and the balance. */
-export const SAB = { ctrl: STATES, slots: STATES + 1, balance: STATES + 2 } as const;
-/** Per step `[x, y, ms, buffer]` of the traced boid, the step's wall time
- *  and the buffer it was written to (a ring of SLOT_RING). */
-export const SLOT = 4;
-/** `?workers=` goes up to this. */
-const MAX_CROWD_WORKERS = 16;
-/** Shared memory, `sab[SAB.balance]` (Float32), the strips' balance: per worker its
- *  last step's wall ms and boids, then each strip's share of the boids for
- *  the next step (worker 0 sets them at every decision; all 0 at the
- *  start: equal shares). */
-export const BALANCE = { ms: 0, boids: 1, share: 2 * MAX_CROWD_WORKERS } as const;
-const BALANCE_FLOATS = 3 * MAX_CROWD_WORKERS;
-/** Weight of the last step's rates in the new shares (the rest: the old). */
-const BALANCE_GAIN = 0.3;
-
-/** Strips of equal counts take unequal times (unequal density, and the
- *  page or the compositor taking a core from one worker), and at the
- *  barrier the faster worker waits for the slower. Each strip's next share
- *  of the boids follows its worker's measured boids per ms (smoothed by
- *  BALANCE_GAIN, at least a tenth of an equal share): the slower worker
- *  gets fewer, and both finish a step at about the same time. The split
- *  never changes a bit of the state (strips step their boids as one core
- *  would), only who waits. Writes the new shares into `bal`. */
-export function rebalance(bal: Float32Array, workers: number): void {
-  const rates: number[] = [];
-  for (let w = 0; w < workers; w++) {
-    const ms = bal[2 * w + BALANCE.ms] ?? 0;
-    const boids = bal[2 * w + BALANCE.boids] ?? 0;
-    rates.push(ms > 0 && boids > 0 ? boids / ms : 0);
-  }
-  const total = rates.reduce((a, b) => a + b, 0);
-  if (!(total > 0) || rates.some((r) => !(r > 0))) return;
-  const floor = 0.1 / workers;
-  const next = rates.map((r, w) => {
-    const old = bal[BALANCE.share + w] ?? 0;
-    const was = old > 0 ? old : 1 / workers;
-    return Math.max(floor, (1 - BALANCE_GAIN) * was + (BALANCE_GAIN * r) / total);
-  });
-  const sum = next.reduce((a, b) => a + b, 0);
-  next.forEach((v, w) => (bal[BALANCE.share + w] = v / sum));
-}
 
 /** The page's "steps / frame" goes up to 20. */
 const MAX_STEPS_PER_FRAME = 20;
@@ -120,32 +52,6 @@ export function crowdWorkersWanted(count: number, search = location.search): { n
   const n = /^\d{1,2}$/.test(raw) ? Number(raw) : NaN;
   if (!(n >= 0 && n <= MAX_CROWD_WORKERS)) return { n: auto, problem: `workers = ${raw} is not a whole number of workers in [0, ${MAX_CROWD_WORKERS}]; using ${auto}` };
   return { n, problem: null };
-}
-
-/** Cuts of x into `k` strips of about equal counts (or of `shares` of
- *  the boids, [`rebalance`], when given and set), from a sample of `pos`
- *  (flat x, y); the first is −∞ and the last +∞. */
-export function stripCuts(state: Float32Array, n: number, k: number, shares?: Float32Array): number[] {
-  const cuts = [-Infinity];
-  if (k > 1 && n > 0) {
-    const stride = Math.max(1, Math.floor(n / 4096));
-    const xs: number[] = [];
-    for (let i = 0; i < n; i += stride) {
-      const x = state[2 * i] ?? 0;
-      if (Number.isFinite(x)) xs.push(x);
-    }
-    xs.sort((a, b) => a - b);
-    const set = shares !== undefined && (shares[0] ?? 0) > 0;
-    let q = 0;
-    for (let w = 1; w < k; w++) {
-      q += set ? (shares[w - 1] ?? 0) : 1 / k;
-      cuts.push(Math.fround(xs[Math.min(xs.length - 1, Math.floor(q * xs.length))] ?? 0));
-    }
-  } else {
-    for (let w = 1; w < k; w++) cuts.push(0);
-  }
-  cuts.push(Infinity);
-  return cuts;
 }
 
 export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
@@ -181,7 +87,7 @@ export class CrowdStepper extends SteppingJobs<CrowdTask, CrowdReply> {
   owned: number[] = [];
 
   constructor(readonly workers: number) {
-    super(new WorkerPool<CrowdTask, CrowdReply>(() => new Worker(new URL("./crowd.worker.ts", import.meta.url), { type: "module" }), workers));
+    super(new WorkerPool<CrowdTask, CrowdReply>(() => new Worker(new URL("../workers/crowd.worker.ts", import.meta.url), { type: "module" }), workers));
   }
 
   /** (Re)starts the workers on `config` from `state` (`CrowdLab.state()`) at step `time`. */

@@ -2,7 +2,7 @@
 // count, its parts once started, and the loop's frame probe. The page
 // itself reads none of it back; the test build's hook (hook.ts) does.
 
-import type { View } from "../view";
+import type { View } from "../ui/view";
 import type { Handles } from "./handles";
 import type { LabSim } from "./sim";
 import type { Transport } from "./transport";

@@ -5,11 +5,11 @@
 // (at once on this thread, with the workers' next reply there) then puts
 // its own values in force, and a refusal says why.
 
-import type { Drag } from "../pointer";
-import type { Vec, View } from "../view";
+import type { Drag } from "../ui/pointer";
+import type { Vec, View } from "../ui/view";
 import { dragObstacle, pickObstacle, type ObstacleLimits } from "./obstacles";
-import type { AvoidKey, LabState } from "./state";
-import type { AvoidInfo, Edit, EditAnswer } from "./worldcalls";
+import type { LabState } from "./state";
+import type { AvoidInfo, AvoidKey, Edit, EditAnswer } from "../world/worldcalls";
 
 /** Sends an avoidance edit to the world; `answer` gets its reply. */
 export type SendAvoid = (e: Edit & { kind: "avoid" }, answer: (a: EditAnswer) => void) => void;

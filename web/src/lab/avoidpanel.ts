@@ -3,12 +3,12 @@
 // the steps between an agent's plans (the core's range); buttons that add
 // a disc or a wall at the view's centre and remove the last obstacle. The obstacles themselves are dragged on the canvas.
 
-import { button, help, row, section, select } from "../controls";
-import { ranges } from "../wasm";
-import type { Vec } from "../view";
+import { button, help, row, section, select } from "../ui/controls";
+import { ranges } from "../core/wasm";
+import type { Vec } from "../ui/view";
 import type { LabAvoidance } from "./avoidance";
 import { OBSTACLE_STRIDE } from "./obstacles";
-import { AVOID_KEYS, type AvoidKey } from "./state";
+import { AVOID_KEYS, type AvoidKey } from "../world/worldcalls";
 
 const LABELS: Record<AvoidKey, string> = { off: "off (ghosts)", separation: "separation", orca: "ORCA" };
 

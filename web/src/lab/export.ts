@@ -1,6 +1,6 @@
 // Downloads of the recorded trajectories, as CSV or JSON.
 
-import { download } from "../download";
+import { download } from "../ui/download";
 import { MODE_NAMES } from "./render";
 import type { Trails } from "./trails";
 

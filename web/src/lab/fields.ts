@@ -3,8 +3,8 @@
 // all check a value here, so the page accepts exactly what the core
 // accepts. Pure: no wasm at run time, so the Node fuzz test runs it as is.
 
-import { parseDecimal } from "../controls";
-import type { FieldRange, PrecisionRule, VehicleParams } from "../wasm";
+import { parseDecimal } from "../ui/controls";
+import type { FieldRange, PrecisionRule, VehicleParams } from "../core/wasm";
 
 export { parseDecimal };
 import type { LabState, Limits } from "./state";

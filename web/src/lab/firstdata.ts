@@ -2,15 +2,16 @@
 // frame the lab's HTML draws (firstframe.ts). Run at build time in Node on
 // the core's own package (vite.config.ts, firstFrame): the page's first
 // build of the page without a link, by the same calls (recipe.ts,
-// worldcalls.ts `buildWorld`) on a table-less lab.
+// ../world/worldcalls.ts `buildWorld`) on a table-less lab.
 
-import type * as Core from "../../pkg/steering.js";
+import type { Lab } from "../core/wasm";
 import type { FirstFrameData } from "./firstframe";
 import { recipeFor } from "./recipe";
 import { defaultState } from "./state";
-import { buildWorld } from "./worldcalls";
+import { buildWorld } from "../world/worldcalls";
 
-export function firstFrameData(core: typeof Core): FirstFrameData {
+/** `core`: the core's package (its `Lab`), loaded by the caller. */
+export function firstFrameData(core: { Lab: typeof Lab }): FirstFrameData {
   const st = defaultState();
   const lab = core.Lab.withoutTable();
   try {

@@ -20,9 +20,9 @@
 // build without the data draws nothing here; the page's own first frame
 // is the first.
 
-import { beginFrame, fitSurface, type Surface } from "../canvas";
-import { View } from "../view";
-import { StateField, type Ghost, type Internals } from "../wasm";
+import { beginFrame, fitSurface, type Surface } from "../ui/canvas";
+import { View } from "../ui/view";
+import { StateField, type Ghost, type Internals } from "../core/wasm";
 import { renderHud } from "./hud";
 import { COLOURS, drawScene } from "./render";
 import { SceneBuilder, type SceneSource } from "./scene";
@@ -71,7 +71,7 @@ export function drawFirstFrame(data: FirstFrameData | undefined): void {
   {
     const ctx = canvas.getContext("2d", { alpha: false });
     if (!ctx) return;
-    // Sized as the page will size it (canvas.ts).
+    // Sized as the page will size it (../ui/canvas.ts).
     const surface: Surface = { canvas, ctx, width: 1, height: 1, dpr: 1 };
     fitSurface(surface);
     const view = new View();

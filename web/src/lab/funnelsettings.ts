@@ -3,9 +3,9 @@
 // core's FunnelConfig. Every change goes straight to the core; agents keep
 // running.
 
-import { section, select, type Control } from "../controls";
+import { section, select, type Control } from "../ui/controls";
 import { READING_SETTINGS, type AimKey, type BoundKey, type FunnelSettings, type ReadingKey, type RelaxedAimKey } from "./state";
-import type { FunnelConfig, MuBound, Reading, RelaxedConfig } from "../wasm";
+import type { FunnelConfig, MuBound, Reading, RelaxedConfig } from "../core/wasm";
 
 /** The reading menu: which is which, in words a user can tell apart. */
 const READING_CHOICES: ReadonlyArray<{ value: ReadingKey; label: string }> = [

@@ -3,9 +3,9 @@
 // centre, β knob, tolerance circle rim (D_tol) and triangle corner (ε_tol).
 // Empty space pans the view.
 
-import { panDrag, wheelZoom } from "../panzoom";
-import { attachPointer, type Drag } from "../pointer";
-import type { Vec, View } from "../view";
+import { panDrag, wheelZoom } from "../ui/panzoom";
+import { attachPointer, type Drag } from "../ui/pointer";
+import type { Vec, View } from "../ui/view";
 import type { LabState, Pose } from "./state";
 
 const DEG = Math.PI / 180;

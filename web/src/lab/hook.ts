@@ -4,11 +4,11 @@
 // it): what the tests read and drive, read from the page's record
 // (app.ts), and the frame-time record behind perfStats().
 
-import { fnvHex } from "../fnv";
-import { Mode, StateField, type FunnelConfig, type Internals, type VehicleParams } from "../wasm";
-import type { SteppingInfo } from "../workers/stepping";
-import { cacheKeys } from "../workers/tablecache";
-import type { Vec } from "../view";
+import { fnvHex } from "../ui/fnv";
+import { Mode, StateField, type FunnelConfig, type Internals, type VehicleParams } from "../core/wasm";
+import type { SteppingInfo } from "./stepping";
+import { cacheKeys } from "./tablecache";
+import type { Vec } from "../ui/view";
 import type { FrameProbe, LabPage, LabParts } from "./app";
 import type { TableStatus } from "./sim";
 import { pick, type Handles } from "./handles";

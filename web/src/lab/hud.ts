@@ -3,8 +3,8 @@
 // down when it does), its controller quantities, and, behind a toggle, the
 // diagnostics (update cost, frame time, table, stepping).
 
-import { Mode, type Internals } from "../wasm";
-import { modeWords } from "../modes";
+import { Mode, type Internals } from "../core/wasm";
+import { modeWords } from "../ui/modes";
 
 /** A phone's width or a short window (a phone on its side): the HUD
  *  starts folded there, its numbers a tap away. style.css's compact rules

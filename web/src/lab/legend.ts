@@ -1,10 +1,10 @@
 // The lab's legend: one entry per control mode of the core (the bindings'
-// `Mode`, in plain words and colours from src/modes.ts), then the
+// `Mode`, in plain words and colours from src/ui/modes.ts), then the
 // overlays' lines. Built from the core's list, so it names every mode the
 // core has and no other.
 
-import { Mode } from "../wasm";
-import { MODE_ORDER, MODE_WORDS, type ModeKey } from "../modes";
+import { Mode } from "../core/wasm";
+import { MODE_ORDER, MODE_WORDS, type ModeKey } from "../ui/modes";
 
 /** The shapes paper 000 §6 gives a target per mode (circle: a position to
  *  reach, triangle: a heading to reach). */

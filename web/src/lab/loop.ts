@@ -3,8 +3,8 @@
 // the frames drawn and tells the probe (the test build's frame-time record)
 // each frame's timings.
 
-import { beginFrame, type Surface } from "../canvas";
-import type { View } from "../view";
+import { beginFrame, type Surface } from "../ui/canvas";
+import type { View } from "../ui/view";
 import type { FrameProbe, LoopStats } from "./app";
 import { Hud } from "./hud";
 import { COLOURS, drawScene } from "./render";

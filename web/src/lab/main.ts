@@ -1,16 +1,16 @@
 // The funnelling page (index.html): loads the core and the η table, then
 // wires the simulation, the panel, the canvas drags and the loop together.
 
-import { setupCanvas } from "../canvas";
-import { $, currentMessage, showMessage, showMessages, showVersion } from "../page";
-import { View } from "../view";
-import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges } from "../wasm";
+import { setupCanvas } from "../ui/canvas";
+import { $, currentMessage, showMessage, showMessages, showVersion } from "../ui/page";
+import { View } from "../ui/view";
+import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges } from "../core/wasm";
 import { limitDefaults, RangeTable } from "./fields";
 import { obstacleDrags } from "./avoidance";
 import { avoidanceSection } from "./avoidpanel";
 import { attachDrags, handlePositions, type Handles } from "./handles";
 import { obstacleLimits } from "./obstacles";
-import { fnvHex } from "../fnv";
+import { fnvHex } from "../ui/fnv";
 import type { LabPage } from "./app";
 import { installHook } from "./hook";
 import { runLoop } from "./loop";
@@ -20,7 +20,7 @@ import { HANDLE_PX, SceneBuilder } from "./scene";
 import { LabSim, TABLE_URL } from "./sim";
 import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
-import { openTableCache } from "../workers/tablecache";
+import { openTableCache } from "./tablecache";
 import { tableBadge } from "./loading";
 import { buildLegend } from "./legend";
 

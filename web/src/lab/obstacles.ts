@@ -6,7 +6,7 @@
 // press grabs and what a drag does to the list, and their drawing. Pure: no
 // wasm at run time (the URL fuzz runs it in Node).
 
-import type { Vec, View } from "../view";
+import type { Vec, View } from "../ui/view";
 import { clip, show, type RangeTable } from "./fields";
 
 /** Floats per obstacle. */

@@ -6,11 +6,11 @@
 // speeds' maximum follows the max speed, and lowering the max speed below
 // the desired speed clamps the desired speed, with a message at its field.
 
-import { button, checkbox, help, row, section, select, slider, type Control } from "../controls";
-import { referenceVehicles } from "../wasm";
+import { button, checkbox, help, row, section, select, slider, type Control } from "../ui/controls";
+import { referenceVehicles } from "../core/wasm";
 import { bounds, field, parseField } from "./fields";
-import { $ } from "../page";
-import { downloadPng } from "../download";
+import { $ } from "../ui/page";
+import { downloadPng } from "../ui/download";
 import { downloadCsv, downloadJson } from "./export";
 import { funnelSettingsSection } from "./funnelsettings";
 import type { LabSim } from "./sim";

@@ -1,12 +1,12 @@
-// The recipe of the world the page's state describes (worldcalls.ts): the
+// The recipe of the world the page's state describes (../world/worldcalls.ts): the
 // page's simulation builds its worlds from it (sim.ts), and so does the
 // build's first frame (firstdata.ts), so the frame drawn from the HTML is
 // the core's scene at t = 0, bit for bit.
 
-import type { VehicleParams } from "../wasm";
+import type { VehicleParams } from "../core/wasm";
 import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
 import { goalConfig, type LabState } from "./state";
-import type { Recipe, TableSource } from "./worldcalls";
+import type { Recipe, TableSource } from "../world/worldcalls";
 
 /** `st`'s world on `table` with the vehicle limits `params`: the preset
  *  `scenario` (its name and text), or the playground when null. */

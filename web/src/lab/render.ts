@@ -2,13 +2,13 @@
 // and the overlays (radial direction, η at the target, γ, the nearest η ring,
 // the η field, the relaxed arc 𝒜 and α_r). No state, no simulation.
 
-import type { Surface } from "../canvas";
-import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../glsprites";
-import { abgr, headingAt, PixelSprites, triangle } from "../sprites";
-import type { View } from "../view";
-import { FIELD_STRIDE, Mode, StateField } from "../wasm";
+import type { Surface } from "../ui/canvas";
+import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../ui/glsprites";
+import { abgr, headingAt, PixelSprites, triangle } from "../ui/sprites";
+import type { View } from "../ui/view";
+import { FIELD_STRIDE, Mode, StateField } from "../core/wasm";
 import { drawObstacles } from "./obstacles";
-import { MODE_WORDS, modeColour } from "../modes";
+import { MODE_WORDS, modeColour } from "../ui/modes";
 import { RIM_MIN_PX } from "./handles";
 import type { Trails } from "./trails";
 
@@ -17,7 +17,7 @@ export const MODE_NAMES = ["End_of_Steering", "Orientation_only", "Position_only
 
 /** Paper 000 §6's shapes (circle = seek, triangle = orientation only,
  *  circle + triangle = funnelling), each mode in its own colour
- *  (src/modes.ts); grey = end of steering. */
+ *  (src/ui/modes.ts); grey = end of steering. */
 export const COLOURS = {
   seek: MODE_WORDS.PositionOnly.colour,
   funnelling: MODE_WORDS.Funnelling.colour,

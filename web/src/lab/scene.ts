@@ -3,12 +3,12 @@
 // relaxed arc), the η ring and field, the playground's editable target.
 // The η field is cached while its three inputs stay the same.
 
-import { Mode, StateField, type Internals } from "../wasm";
+import { Mode, StateField, type Internals } from "../core/wasm";
 import type { LabAvoidance } from "./avoidance";
 import type { HudData } from "./hud";
 import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type GhostDraw, type Overlay, type Scene, type TargetDraw } from "./render";
 import type { LabSim } from "./sim";
-import type { LabWorld } from "./world";
+import type { LabWorld } from "../world/world";
 
 /** Screen length of the orientation/heading handles, CSS px. */
 export const HANDLE_PX = 56;

@@ -1,12 +1,12 @@
-// The simulation the funnelling page owns: its one world (world.ts: on
+// The simulation the funnelling page owns: its one world (../world/world.ts: on
 // this thread or in Web Workers), the state last drawn from it, the clock
 // (play, pause, single steps, slow motion) and the edits that go to it
 // (goal, pose, limits, controller settings, avoidance). A rebuild starts
 // the playground or a preset from scratch, wherever it is to step.
 
-import { showMessage } from "../page";
-import type { View } from "../view";
-import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../wasm";
+import { showMessage } from "../ui/page";
+import type { View } from "../ui/view";
+import { errorText, Lab, StateField, type GoalConfig, type Internals, type VehicleParams } from "../core/wasm";
 import { LabAvoidance } from "./avoidance";
 import { clampToLimits, FIELDS, limitDefaults, type LabField, type LimitDefaults, type RangeTable } from "./fields";
 import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
@@ -15,11 +15,11 @@ import { recipeFor } from "./recipe";
 import { fitPlayground, goalConfig, loopReach, stageInsets, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
-import { HereWorld, type LabWorld, type Took } from "./world";
-import type { BuildInfo, Edit, EditAnswer, Recipe } from "./worldcalls";
-import { Cancelled } from "../workers/pool";
-import { buildTable, cancelBuild, tableKeyFor } from "../workers/tables";
-import { workersWanted, WorkerWorld } from "../workers/stepping";
+import { HereWorld, type LabWorld, type Took } from "../world/world";
+import type { BuildInfo, Edit, EditAnswer, Recipe } from "../world/worldcalls";
+import { Cancelled } from "../threads/pool";
+import { buildTable, cancelBuild, tableKeyFor } from "./tables";
+import { workersWanted, WorkerWorld } from "./stepping";
 
 /** The η table in force against the limits in force. */
 export interface TableStatus {
@@ -46,7 +46,7 @@ export interface TableStatus {
   message: string;
 }
 
-/** The committed table in byte planes (src/tableplanes.ts: the same bytes
+/** The committed table in byte planes (src/core/tableplanes.ts: the same bytes
  *  once rejoined, less than half the gzipped size of the plain file),
  *  fetched by the page and by the stepping workers. */
 export const TABLE_URL = "tables/eta.planes";

@@ -1,7 +1,8 @@
 // The lab's user-editable state: everything the URL shares. Plain data.
 
-import type { Insets, View } from "../view";
-import type { GoalConfig } from "../wasm";
+import type { Insets, View } from "../ui/view";
+import type { GoalConfig } from "../core/wasm";
+import type { AvoidKey } from "../world/worldcalls";
 
 export interface Pose {
   x: number;
@@ -56,10 +57,6 @@ export type RelaxedAimKey = (typeof RELAXED_AIM_KEYS)[number];
  *  setting edited by hand). */
 export const READING_KEYS = ["ours", "paper", "custom"] as const;
 export type ReadingKey = (typeof READING_KEYS)[number];
-
-/** The avoidance methods, as the core and the URL name them. */
-export const AVOID_KEYS = ["off", "separation", "orca"] as const;
-export type AvoidKey = (typeof AVOID_KEYS)[number];
 
 /** The funnelling controller's settings as the page edits them. */
 export interface FunnelSettings {

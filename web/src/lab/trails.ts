@@ -2,7 +2,7 @@
 // Bounded memory: at most `maxAgents` agents and `maxSamples` samples each
 // (oldest dropped); larger crowds are drawn without trails.
 
-import { StateField } from "../wasm";
+import { StateField } from "../core/wasm";
 
 export interface Sample {
   t: number;

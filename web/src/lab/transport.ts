@@ -1,8 +1,8 @@
 // The funnelling page's header controls: play/pause, single step, slow
 // motion, reset, the preset menu, and their keys (space, s, r).
 
-import { button } from "../controls";
-import { $ } from "../page";
+import { button } from "../ui/controls";
+import { $ } from "../ui/page";
 import { PRESET_GROUPS, PRESETS, presetGroup, presetOrder, presetTitle } from "./presets";
 import type { LabSim } from "./sim";
 

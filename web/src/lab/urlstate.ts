@@ -4,10 +4,11 @@
 // against the core's ranges (fields.ts), cross-field rules included: a state
 // the decoder returns is one the core accepts.
 
-import type { View } from "../view";
+import type { View } from "../ui/view";
 import { clampToLimits, clip, FIELDS, parseField, type LimitDefaults, type RangeTable } from "./fields";
 import { decodeObstacles, encodeObstacles } from "./obstacles";
-import { AIM_KEYS, AVOID_KEYS, BOUND_KEYS, READING_KEYS, RELAXED_AIM_KEYS, defaultState, settleReading, type AimKey, type ReadingKey, type AvoidKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
+import { AIM_KEYS, BOUND_KEYS, READING_KEYS, RELAXED_AIM_KEYS, defaultState, settleReading, type AimKey, type ReadingKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
+import { AVOID_KEYS, type AvoidKey } from "../world/worldcalls";
 
 const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc", "ghost"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];

@@ -3,8 +3,8 @@
 // polyline path, a dashed line, an angle arc with its label, and a wedge.
 
 import { arrow, COLOURS, grid } from "../lab/render";
-import { triangle } from "../sprites";
-import type { View } from "../view";
+import { triangle } from "../ui/sprites";
+import type { View } from "../ui/view";
 
 export { arrow, COLOURS };
 export { drawField, drawGhost, drawTarget, MODE_NAMES } from "../lab/render";

@@ -10,12 +10,12 @@
 // start state: the prose describes the set-up the reader made, so its
 // numbers must not stay blank ("—") for the state the run ended in.
 
-import { beginFrame, setupCanvas, type Surface } from "../canvas";
+import { beginFrame, setupCanvas, type Surface } from "../ui/canvas";
 import type { LimitDefaults, RangeTable } from "../lab/fields";
 import { COLOURS } from "../lab/render";
 import type { LabState } from "../lab/state";
 import { encodeState } from "../lab/urlstate";
-import { View } from "../view";
+import { View } from "../ui/view";
 import { scaleBar } from "./draw";
 import { Handle, type HandleSpec } from "./handle";
 

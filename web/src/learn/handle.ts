@@ -3,7 +3,7 @@
 // arrow keys move it by 0.1 m (Shift: 1 m), so every figure is keyboard
 // operable. The figure owns the world ↔ screen view.
 
-import type { Vec, View } from "../view";
+import type { Vec, View } from "../ui/view";
 
 export interface HandleSpec {
   /** Stable name (the element's data-handle, for tests). */

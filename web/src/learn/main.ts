@@ -4,9 +4,9 @@
 // not copied). The test build's window.__learn tells the tests when every
 // figure is up.
 
-import { $, showMessage, showVersion } from "../page";
+import { $, showMessage, showVersion } from "../ui/page";
 import { limitDefaults, RangeTable } from "../lab/fields";
-import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../wasm";
+import { createLab, errorText, loadCore, precision, ranges, type Lab } from "../core/wasm";
 import { setLinkContext, type LiveFigure } from "./figure";
 import { defineSymbols, typesetText } from "./glossary";
 import { challengesSection } from "./sections/challenges";
@@ -64,7 +64,7 @@ async function start(): Promise<void> {
   defineSymbols(document);
   nameModes(document);
   showVersion(await loadCore());
-  // The table in byte planes (src/tableplanes.ts: less than half the gzipped bytes).
+  // The table in byte planes (src/core/tableplanes.ts: less than half the gzipped bytes).
   const lab = await createLab("tables/eta.planes");
   setLinkContext(new RangeTable(ranges(), precision()), limitDefaults(lab.params()));
   for (const [name, build] of SECTIONS) {

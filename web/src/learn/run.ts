@@ -6,7 +6,7 @@
 // link's state.
 
 import { defaultState, type LabState, type Pose } from "../lab/state";
-import { Lab, Mode, StateField, type GoalConfig } from "../wasm";
+import { Lab, Mode, StateField, type GoalConfig } from "../core/wasm";
 
 /** Writes `text` into every `[data-live="name"]` of the page. */
 export function live(name: string, text: string): void {

@@ -3,10 +3,10 @@
 // speed, hold scale). A knob edits every variant's JSON configuration and
 // rebuilds its WanderLab; a re-run replays the traces growing over ~45 frames.
 
-import { beginFrame, setupCanvas, type Surface } from "../canvas";
-import { button, slider } from "../controls";
-import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../wasm";
-import { PAPER_UNITS, View } from "../view";
+import { beginFrame, setupCanvas, type Surface } from "../ui/canvas";
+import { button, slider } from "../ui/controls";
+import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../core/wasm";
+import { PAPER_UNITS, View } from "../ui/view";
 import { tooDeep } from "./jsontext";
 import { drawTile, traceSpan } from "./render";
 import { COMPARE } from "./compare";

@@ -2,9 +2,9 @@
 // reproducing its figure series from the preset files scenarios/wander/*.json
 // (loaded at runtime as separate chunks, like the funnelling page's presets).
 
-import { button } from "../controls";
-import { $, showMessage, showVersion } from "../page";
-import { errorText, loadCore, WanderLab } from "../wasm";
+import { button } from "../ui/controls";
+import { $, showMessage, showVersion } from "../ui/page";
+import { errorText, loadCore, WanderLab } from "../core/wasm";
 import { GalleryPanel, type PanelStatus } from "./gallery";
 
 /** The components in the paper's order. */

@@ -2,9 +2,9 @@
 // aspect), shaded light → dark with time, the generated path under it, a
 // start dot, the agent at the end and a scale bar.
 
-import { beginFrame, type Surface } from "../canvas";
-import { triangle } from "../sprites";
-import type { View } from "../view";
+import { beginFrame, type Surface } from "../ui/canvas";
+import { triangle } from "../ui/sprites";
+import type { View } from "../ui/view";
 
 const SHADES = 8;
 

@@ -1,20 +1,20 @@
 // One stepping worker: owns agents start..end of the lab's world. Its
 // first task builds the whole world from the page's recipe
-// (../lab/worldcalls.ts, the calls the page's own core would make, so the
+// (../world/worldcalls.ts, the calls the page's own core would make, so the
 // same bits), splits it as every other worker does (`splitRanges`) and
 // keeps its range (`retainRange`: facing links never cut,
 // crate/funnelling/world_split.rs). Each later task applies the page's
 // edits (checked here, answered in the reply), steps k times and writes its
 // states at its offset of the shared buffer, or hands them back (no
-// cross-origin isolation). Driven by `WorkerWorld` (stepping.ts) through
+// cross-origin isolation). Driven by `WorkerWorld` (../lab/stepping.ts) through
 // `WorkerPool.each`.
 
-import { applyEdit, buildWorld, type Recipe, type TableSource } from "../lab/worldcalls";
-import { errorText, fetchTable, Lab, loadCore, type Internals } from "../wasm";
-import { runIndependent, SLOT_RING } from "./continuing";
-import type { ResultMessage, TaskMessage } from "./pool";
-import { SAB, SLOT, writeNote } from "./slicebuffers";
-import type { StepReply, StepTask } from "./stepping";
+import { applyEdit, buildWorld, type Recipe, type TableSource } from "../world/worldcalls";
+import { errorText, fetchTable, Lab, loadCore, type Internals } from "../core/wasm";
+import { runIndependent, SLOT_RING } from "../threads/continuing";
+import type { ResultMessage, TaskMessage } from "../threads/pool";
+import { SAB, SLOT, writeNote } from "../world/slicebuffers";
+import type { StepReply, StepTask } from "../world/steptask";
 
 let lab: Lab | null = null;
 let range = { start: 0, end: 0 };
@@ -76,7 +76,7 @@ async function run(task: StepTask): Promise<StepReply> {
   return { internals, state: l.state(), stepMs, answers };
 }
 
-/** Shared memory: a continuing job (continuing.ts). Each step: this
+/** Shared memory: a continuing job (../threads/continuing.ts). Each step: this
  *  worker's slice one step on, its states into the step's buffer, and (the
  *  worker owning the shown agent, `local` ≥ 0) its internals into the
  *  step's note; the last worker to finish a step notes its stepping ms and

@@ -1,10 +1,10 @@
 // One η-table worker: computes a slice of entries with the
 // core's `tableSlice` (the generator's own code, so the assembled bytes
 // equal `eta-table --vehicle`'s) and hands the Float32Array back without a
-// copy. Driven by `WorkerPool` (pool.ts) from tables.ts.
+// copy. Driven by `WorkerPool` (../threads/pool.ts) from ../lab/tables.ts.
 
-import { errorText, loadCore, tableSlice, type VehicleParams } from "../wasm";
-import type { ResultMessage, TaskMessage } from "./pool";
+import { errorText, loadCore, tableSlice, type VehicleParams } from "../core/wasm";
+import type { ResultMessage, TaskMessage } from "../threads/pool";
 
 /** One worker's share: entries `start..end` of `params`' table. */
 export interface SliceTask {

@@ -4,9 +4,9 @@
 // to its end at once so the prose can say what happened (time, heading
 // error, modes visited); the reader can drag the target to try worse.
 
-import { Mode, StateField, type Lab } from "../../wasm";
+import { Mode, StateField, type Lab } from "../../core/wasm";
 import { backdrop, COLOURS, deg, drawTarget, path, vehicle } from "../draw";
-import { modeWords } from "../../modes";
+import { modeWords } from "../../ui/modes";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run, type Outcome } from "../run";
 

@@ -4,7 +4,7 @@
 // final direction, and η between the initial radial direction and that
 // final direction — next to the η the table interpolates.
 
-import type { Ghost, Internals, Lab } from "../../wasm";
+import type { Ghost, Internals, Lab } from "../../core/wasm";
 import { angleArc, backdrop, COLOURS, deg, drawGhost, line, path, positionTarget, ray, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";

@@ -1,18 +1,18 @@
 // Section 5, "Modes" (paper 000 §5, Fig. 5; colours §6): the decision
 // diagram of the four control modes, the one in force lit live in the
-// lab's words and colours (src/modes.ts) while the vehicle runs, and the
+// lab's words and colours (src/ui/modes.ts) while the vehicle runs, and the
 // target drawn as the lab draws it (circle: seeking, triangle: turning on
 // the spot, both: funnelling, grey: arrived). The prose's mode names
 // (b[data-mode]) take their words and colours from the same module, so the
 // page and the lab's legend cannot drift apart.
 
-import { slider } from "../../controls";
-import { Mode, StateField, type Internals, type Lab } from "../../wasm";
+import { slider } from "../../ui/controls";
+import { Mode, StateField, type Internals, type Lab } from "../../core/wasm";
 import { backdrop, COLOURS, deg, drawTarget, path, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { typesetText } from "../glossary";
 import { goal, labState, live, Run } from "../run";
-import { MODE_WORDS, modeColour, modeTextColour, modeWords, type ModeKey } from "../../modes";
+import { MODE_WORDS, modeColour, modeTextColour, modeWords, type ModeKey } from "../../ui/modes";
 
 export { modeColour };
 

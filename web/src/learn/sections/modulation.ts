@@ -5,10 +5,10 @@
 // to the path with the paper's literal bound (or the default, when the
 // literal bound is the one chosen).
 
-import { select, slider } from "../../controls";
+import { select, slider } from "../../ui/controls";
 import { BOUND_CHOICES, funnelConfig } from "../../lab/funnelsettings";
 import { defaultState, type BoundKey, type FunnelSettings } from "../../lab/state";
-import type { Ghost, Internals, Lab } from "../../wasm";
+import type { Ghost, Internals, Lab } from "../../core/wasm";
 import { angleArc, backdrop, COLOURS, deg, drawGhost, drawTarget, line, path, ray, tipLabel, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run, type Outcome } from "../run";

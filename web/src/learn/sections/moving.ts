@@ -5,7 +5,7 @@
 // is a scenario file written here and parsed by the core.
 
 import { defaultState } from "../../lab/state";
-import { StateField, type Lab } from "../../wasm";
+import { StateField, type Lab } from "../../core/wasm";
 import { backdrop, COLOURS, drawTarget, label, path, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { live, Run, type Outcome } from "../run";

@@ -6,7 +6,7 @@
 // the standard controller's path to the same disk.
 
 import { defaultState } from "../../lab/state";
-import { StateField, type Internals, type Lab } from "../../wasm";
+import { StateField, type Internals, type Lab } from "../../core/wasm";
 import { backdrop, COLOURS, deg, drawTarget, line, path, vehicle, wedge } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run, type Outcome } from "../run";

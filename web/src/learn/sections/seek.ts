@@ -2,11 +2,11 @@
 // paper 001 Fig. 1a): three vehicles seek the same target; their predicted
 // seek paths arrive with three different headings. Play runs them.
 
-import type { Lab } from "../../wasm";
+import type { Lab } from "../../core/wasm";
 import { backdrop, COLOURS, deg, drawGhost, label, path, positionTarget, ray, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";
-import type { Ghost } from "../../wasm";
+import type { Ghost } from "../../core/wasm";
 import type { Pose } from "../../lab/state";
 
 const STARTS: Pose[] = [

@@ -4,8 +4,8 @@
 // v_d; where the seek orbits instead of arriving (darker arrows), and the
 // stored proactive speed v_dt that makes the target reachable.
 
-import { slider } from "../../controls";
-import { FIELD_STRIDE, type Ghost, type Internals, type Lab } from "../../wasm";
+import { slider } from "../../ui/controls";
+import { FIELD_STRIDE, type Ghost, type Internals, type Lab } from "../../core/wasm";
 import { backdrop, COLOURS, deg, drawField, drawGhost, ray, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";

@@ -1,5 +1,5 @@
 // Continuing jobs over shared memory: one protocol for the
-// crowd's strips (../crowd/stepper.ts) and the lab's slices (stepping.ts).
+// crowd's strips (../crowd/stepper.ts) and the lab's slices (../lab/stepping.ts).
 //
 // - A job steps for as long as the page asks: each frame raises a shared
 //   target step (at most a frame's worth and DEPTH steps beyond the drawn

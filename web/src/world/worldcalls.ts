@@ -5,8 +5,11 @@
 // each call once and says what it refused (`EditAnswer`). No DOM here: the
 // worker bundle imports this module.
 
-import { errorText, type AgentConfig, type FunnelConfig, type GoalConfig, type Lab, type Reading, type RelaxedConfig, type VehicleParams } from "../wasm";
-import { AVOID_KEYS, type AvoidKey } from "./state";
+import { errorText, type AgentConfig, type FunnelConfig, type GoalConfig, type Lab, type Reading, type RelaxedConfig, type VehicleParams } from "../core/wasm";
+
+/** The avoidance methods, as the core and the URL name them. */
+export const AVOID_KEYS = ["off", "separation", "orca"] as const;
+export type AvoidKey = (typeof AVOID_KEYS)[number];
 
 /** Where the η table in force comes from: its bytes (a table built for
  *  other limits) or the committed table's URL. */
@@ -144,7 +147,7 @@ export function buildWorld(lab: Lab, recipe: Recipe): BuildInfo {
       };
       // The core's warning is a table built for other limits: the page
       // builds the matching one and the HUD labels the old one approximate
-      // meanwhile (sim.ts, syncTable).
+      // meanwhile (../lab/sim.ts, syncTable).
     } catch (e) {
       warn(`Preset ${b.name} could not be loaded: ${errorText(e)}`, "error");
     }

@@ -6,12 +6,12 @@
 // and writes them into the next buffer at their indices (shared memory: as
 // long as the page asks for steps, `runShared`), or hands them back with
 // their indices (no cross-origin isolation: one step per task). Driven by
-// CrowdStepper (stepper.ts) through WorkerPool.each.
+// CrowdStepper (../crowd/stepper.ts) through WorkerPool.each.
 
-import { CrowdLab, errorText, loadCore } from "../wasm";
-import type { ResultMessage, TaskMessage } from "../workers/pool";
-import { runContinuing, SLOT_RING } from "../workers/continuing";
-import { BALANCE, rebalance, SAB, SLOT, stripCuts, type CrowdReply, type CrowdTask } from "./stepper";
+import { CrowdLab, errorText, loadCore } from "../core/wasm";
+import type { ResultMessage, TaskMessage } from "../threads/pool";
+import { runContinuing, SLOT_RING } from "../threads/continuing";
+import { BALANCE, rebalance, SAB, SLOT, stripCuts, type CrowdReply, type CrowdTask } from "../world/crowdstrips";
 
 let lab: CrowdLab | null = null;
 let shared: SharedArrayBuffer[] | null = null;
@@ -42,7 +42,7 @@ function stepInto(l: CrowdLab, front: Float32Array, back: Float32Array, time: nu
 }
 
 /** Shared memory: steps from buffer `task.front` while the page asks for
- *  more (../workers/continuing.ts): worker 0 notes the traced boid, the
+ *  more (../threads/continuing.ts): worker 0 notes the traced boid, the
  *  step's wall ms and buffer in the step's slot, and rebalances the strips
  *  between steps. */
 function runShared(l: CrowdLab, shared: SharedArrayBuffer[], task: CrowdTask, t0: number): CrowdReply {

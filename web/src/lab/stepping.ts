@@ -1,10 +1,11 @@
-// The lab's world stepped across cores: N stepping workers (step.worker.ts)
-// on the one worker layer (pool.ts, `each`: task i to worker i), each
-// owning a contiguous slice of agents. The page holds no copy of the world:
-// this is its `LabWorld` (../lab/world.ts) while the workers step.
+// The lab's world stepped across cores: N stepping workers
+// (../workers/step.worker.ts) on the one worker layer (../threads/pool.ts,
+// `each`: task i to worker i), each owning a contiguous slice of agents.
+// The page holds no copy of the world: this is its `LabWorld`
+// (../world/world.ts) while the workers step.
 //
 // - Start: every worker builds the whole world from the page's recipe
-//   (../lab/worldcalls.ts, `buildWorld`: the calls the page's own core
+//   (../world/worldcalls.ts, `buildWorld`: the calls the page's own core
 //   would make, so the same bits), splits it the same way
 //   (`Lab.splitRanges`: about equal ranges whose cuts never separate an
 //   agent from the agent its goal faces, paper 000 Fig. 6) and keeps its
@@ -21,15 +22,16 @@
 // - The page never waits for a worker: a frame with no new complete state
 //   draws the last one again.
 // - Shared memory where the page is cross-origin isolated (COOP/COEP, see
-//   vite.config.ts): STATES SharedArrayBuffers (continuing.ts) each worker
-//   writes its slice into, and steps run as continuing jobs (continuing.ts,
-//   as the crowd's): the workers step on while the page asks, each at its
-//   own pace, without the crowd's barrier (`runIndependent`: slices never
-//   read each other), the last to finish a step publishing it; the worker
-//   owning the shown agent leaves its internals in the step's note
-//   (slicebuffers.ts), and the page draws every state in order, up to
-//   DEPTH states behind the newest: a job handed over and back per step
-//   would leave the workers idle while the page draws. A host that cannot
+//   vite.config.ts): STATES SharedArrayBuffers (../threads/continuing.ts)
+//   each worker writes its slice into, and steps run as continuing jobs
+//   (continuing.ts, as the crowd's): the workers step on while the page
+//   asks, each at its own pace, without the crowd's barrier
+//   (`runIndependent`: slices never read each other), the last to finish a
+//   step publishing it; the worker owning the shown agent leaves its
+//   internals in the step's note (../world/slicebuffers.ts), and the page
+//   draws every state in order, up to DEPTH states behind the newest: a
+//   job handed over and back per step would leave the workers idle while
+//   the page draws. A host that cannot
 //   keep up runs the world slower than real time instead of stepping states
 //   it never draws. Edits and a newly shown agent end the job in flight;
 //   the next one carries them.
@@ -37,50 +39,15 @@
 //   job of the steps owed per frame (at most MAX_STEPS_PER_JOB, the world
 //   in real time), into the back buffer; then the two swap.
 
-import type { Ghost, Internals } from "../wasm";
-import type { LabWorld, Took } from "../lab/world";
-import type { BuildInfo, Edit, EditAnswer, Recipe } from "../lab/worldcalls";
-import { stateBuffers } from "./buffers";
-import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "./continuing";
-import { NOTE_BYTES, readNote, SAB, SLOT } from "./slicebuffers";
-import { SteppingJobs } from "./jobs";
-import { WorkerPool } from "./pool";
-
-/** An edit on its way, numbered for its answer. */
-export interface SentEdit {
-  id: number;
-  edit: Edit;
-}
-
-/** One task. `build`: build the whole world from the recipe and keep
- *  slice `worker` of `workers`. Else: take `shared` (the state buffers,
- *  when given), apply `edits`, step `steps` times, write the states into
- *  buffer `buffer`; `shown`: the agent whose internals the HUD shows. */
-export interface StepTask {
-  build: Recipe | null;
-  shared?: SharedArrayBuffer[] | null;
-  edits: SentEdit[];
-  steps: number;
-  /** The buffer written (a continuing job: the drawn one, stepped from). */
-  buffer: number;
-  shown: number;
-  /** Shared memory, steps > 0: a continuing job (continuing.ts). */
-  continuing: boolean;
-  worker: number;
-  workers: number;
-}
-
-export interface StepReply {
-  internals: Internals | null;
-  /** The slice's states when there is no shared memory. */
-  state: Float32Array | null;
-  /** Wall ms of the worker's `step` calls. */
-  stepMs: number;
-  answers: Array<EditAnswer & { id: number }>;
-  /** A build's: what it made, the slices (flat start, end pairs) and
-   *  whether avoidance couples the agents (no slices kept). */
-  built?: { info: BuildInfo; ranges: number[]; coupled: boolean };
-}
+import type { Ghost, Internals } from "../core/wasm";
+import type { LabWorld, Took } from "../world/world";
+import type { BuildInfo, Edit, EditAnswer, Recipe } from "../world/worldcalls";
+import type { SentEdit, StepReply, StepTask } from "../world/steptask";
+import { stateBuffers } from "../threads/buffers";
+import { ContinuingJobs, CTRL_BYTES, SLOT_RING, STATES } from "../threads/continuing";
+import { NOTE_BYTES, readNote, SAB, SLOT } from "../world/slicebuffers";
+import { SteppingJobs } from "../threads/jobs";
+import { WorkerPool } from "../threads/pool";
 
 /** Steps one job runs at most (a frame's worth when the workers keep up). */
 const MAX_STEPS_PER_JOB = 4;
@@ -155,7 +122,7 @@ export class WorkerWorld extends SteppingJobs<StepTask, StepReply> implements La
     readonly workers: number,
     private readonly stride: number,
   ) {
-    super(new WorkerPool<StepTask, StepReply>(() => new Worker(new URL("./step.worker.ts", import.meta.url), { type: "module" }), workers));
+    super(new WorkerPool<StepTask, StepReply>(() => new Worker(new URL("../workers/step.worker.ts", import.meta.url), { type: "module" }), workers));
   }
 
   /** Every worker builds `recipe`'s world and keeps its slice; then the

@@ -1,5 +1,5 @@
 // The state buffers of a stepper that runs a world in workers (the
-// lab's stepping.ts and the crowd's stepper.ts): a front array the page
+// lab's ../lab/stepping.ts and the crowd's ../crowd/stepper.ts): a front array the page
 // draws and a back one the workers fill. With cross-origin isolation they
 // view SharedArrayBuffers (the workers write into the back one); without,
 // they are plain arrays and states come by message.

@@ -1,5 +1,5 @@
-// What the two world steppers share (the lab's stepping.ts and the
-// crowd's stepper.ts): a queue of jobs on a worker pool, one job in
+// What the two world steppers share (the lab's ../lab/stepping.ts and
+// the crowd's ../crowd/stepper.ts): a queue of jobs on a worker pool, one job in
 // flight at a time, each a task per worker; a generation number so that a
 // restart or a stop drops the answers of jobs from before it; a failing
 // worker stops the stepping with its message (the page's thread takes

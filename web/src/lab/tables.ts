@@ -1,16 +1,16 @@
 // The η table of the vehicle in use, built off the main thread:
 // from the browser's cache if it holds the table for these limits
-// (tablecache.ts), else split across Web Workers (pool.ts, one slice of
+// (tablecache.ts), else split across Web Workers (../threads/pool.ts, one slice of
 // entries per task, several tasks per worker so the far, slow rows spread
 // out), assembled and checked by the core (`assembleTable`, byte-identical
 // to `eta-table --vehicle`), then cached. The caller's `install` loads the
 // bytes into its lab once, checking them against the key (a corrupt or
 // foreign cache record is refused there and rebuilt).
 
-import { assembleTable, tableJob, type VehicleParams } from "../wasm";
-import { Cancelled, WorkerPool } from "./pool";
+import { assembleTable, tableJob, type VehicleParams } from "../core/wasm";
+import { Cancelled, WorkerPool } from "../threads/pool";
 import { cacheGet, cachePut } from "./tablecache";
-import type { SliceTask } from "./table.worker";
+import type { SliceTask } from "../workers/table.worker";
 
 /** Tasks per worker: small enough to balance, large enough to be cheap. */
 const TASKS_PER_WORKER = 12;
@@ -34,7 +34,7 @@ let pool: WorkerPool<SliceTask, Float32Array> | null = null;
 
 function workers(): WorkerPool<SliceTask, Float32Array> {
   pool ??= new WorkerPool<SliceTask, Float32Array>(
-    () => new Worker(new URL("./table.worker.ts", import.meta.url), { type: "module" }),
+    () => new Worker(new URL("../workers/table.worker.ts", import.meta.url), { type: "module" }),
   );
   return pool;
 }

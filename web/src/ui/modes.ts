@@ -3,7 +3,7 @@
 // the core's own mode names (the bindings' `Mode`), so a mode added to the
 // core fails to compile here until it has words and a colour.
 
-import { Mode } from "./wasm";
+import { Mode } from "../core/wasm";
 
 export type ModeKey = keyof typeof Mode;
 

@@ -1,7 +1,7 @@
 // The ONLY seam to the generated bindings (../pkg, built by `make wasm`).
 // Everything else imports the core through this module's names and types.
 
-import init, { Lab, version } from "../pkg/steering.js";
+import init, { Lab, version } from "../../pkg/steering.js";
 import { fromPlanes } from "./tableplanes";
 
 export {
@@ -17,7 +17,7 @@ export {
   tableJob,
   tableKeyOf,
   tableSlice,
-} from "../pkg/steering.js";
+} from "../../pkg/steering.js";
 export type {
   AgentConfig,
   CrowdConfig,
@@ -42,7 +42,7 @@ export type {
   WanderPreset,
   WanderSource,
   WanderVariant,
-} from "../pkg/steering.js";
+} from "../../pkg/steering.js";
 
 /** Floats per sample in `Lab.etaField()` / `Lab.etaRing()`: D, α, α+η, reachable. */
 export const FIELD_STRIDE = 4;
@@ -69,7 +69,7 @@ export function loadCore(): Promise<string> {
     // Both builds share the glue (pkg/steering.js; `make wasm` checks it is
     // byte-identical); the baseline module is init()'s default.
     if (!simd) return init().then(() => version());
-    const url = new URL("../pkg/steering_simd_bg.wasm", import.meta.url);
+    const url = new URL("../../pkg/steering_simd_bg.wasm", import.meta.url);
     // The lab page starts compiling the SIMD build from its HTML,
     // while the scripts load (index.html); taken here, else fetched now
     // (globalThis: workers load the core too).

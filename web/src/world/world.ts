@@ -1,14 +1,14 @@
 // The lab's one world, wherever it steps. `LabWorld` is what the page's
-// simulation (sim.ts) talks to: it builds the world from a recipe, sends it
+// simulation (../lab/sim.ts) talks to: it builds the world from a recipe, sends it
 // edits, asks it for steps once per animation frame and draws `state`, a
 // view of the buffer the stepping world writes. Two implementations:
 // `HereWorld` (this file: the page's own core steps) and `WorkerWorld`
-// (../workers/stepping.ts: Web Workers step slices of it). The page keeps
+// (../lab/stepping.ts: Web Workers step slices of it). The page keeps
 // no other copy of the world: an edit is checked once, by the core that
 // steps, and its answer comes back (at once here, with the workers' next
 // reply there).
 
-import { Lab, type Ghost, type Internals } from "../wasm";
+import { Lab, type Ghost, type Internals } from "../core/wasm";
 import { applyEdit, buildWorld, type BuildInfo, type Edit, type EditAnswer, type Recipe } from "./worldcalls";
 
 /** What a frame (or `run`) took from the world: steps whose state is now

@@ -1,11 +1,11 @@
-// The lab's shared memory beside its state buffers (stepping.ts and
-// step.worker.ts; no import of the worker layer, so the stepping
+// The lab's shared memory beside its state buffers (../lab/stepping.ts and
+// ../workers/step.worker.ts; no import of the pool, so the stepping
 // worker's bundle stays small): where the control words, the step slots
 // and the shown agent's internals per step lie, and how the internals are
 // written and read.
 
-import type { Internals } from "../wasm";
-import { SLOT_RING, STATES } from "./continuing";
+import type { Internals } from "../core/wasm";
+import { SLOT_RING, STATES } from "../threads/continuing";
 
 /** The state buffers (`sab[0..STATES)`), then the control words, the step
  *  slots (`[ms, buffer]` per step, a ring of SLOT_RING) and the shown
