@@ -4,7 +4,7 @@
 // is); no comment in web/src, web/test or the pages that names an issue or
 // a stop (history goes in git log; a comment gives today's reason); and
 // web/src's folder order. The folders of web/src, bottom to top (LAYERS;
-// docs/web-layers.md says why):
+// docs/DESIGN.md §3 says why):
 //
 //   core/     the one seam to the core's wasm package (wasm.ts) and the
 //             η table's byte planes
