@@ -9,8 +9,10 @@
 //   web/test/e2e-peers.mjs::peers_web_swap      (deterministic)
 //   web/test/e2e-peers.mjs::peers_web_cost      (timed: --full only)
 // Figure ids: peers_web.<scenario>.<metric>.<side>, side one of ours,
-// yuka-arrive, yuka-seek, detour (and <peer>-over-ours for the timed
-// ratios). Then the lab's compare view (index.html#cmp=1): both arrival
+// yuka-arrive, yuka-seek, detour; the timed rows' sides ours, yuka, detour
+// (same page, alternating rounds), <peer>-over-ours (their ratios) and
+// ours-workers (the lab page stepped by its Web Workers: another page
+// and run, said apart). Then the lab's compare view (index.html#cmp=1): both arrival
 // headings read through window.__lab, ours within ε_tol of β, Yuka's
 // reported; the switch works from the keyboard; screenshots at 1440×900
 // and 390×844 in artifacts/. A node:test suite (harness.mjs `check`).
@@ -29,6 +31,9 @@ const { values } = options(
     sizes: { type: "string", default: "1000,10000,100000", arg: "N,N,...", help: "agent counts of the timed rows" },
     rounds: { type: "string", default: "3", arg: "R", help: "alternating rounds per size (timed rows)" },
     "round-ms": { type: "string", default: "400", arg: "MS", help: "wall ms per side per round (timed rows)" },
+    // Building 100,000 DetourCrowd agents took 25 s and its first update
+    // had not ended after 4 minutes (Node, this machine): not a row.
+    "detour-max": { type: "string", default: "30000", arg: "N", help: "DetourCrowd's timed rows up to N agents" },
   },
 );
 const seed = whole(values, "seed");
@@ -74,6 +79,27 @@ const table = (title, rows, cols) => {
   console.log(`# ${"metric".padEnd(22)}${cols.map((c) => c.padStart(13)).join("")}`);
   for (const [name, vals] of rows) console.log(`# ${name.padEnd(22)}${vals.map((v) => (Number.isFinite(v) ? (Math.abs(v) >= 100 ? v.toFixed(0) : v.toFixed(2)) : "—").padStart(13)).join("")}`);
 };
+
+/** Ours stepped by the lab's Web Workers at `n` agents (as web/test/perf.mjs
+ *  measures its workers' rows): the slowest worker's µs per agent update
+ *  and the agents stepped per 16.7 ms frame over 3 s. */
+async function labWorkers(n) {
+  const { page, context } = await openPage(browser, { width: 1280, height: 800 });
+  try {
+    await page.goto(`${base}?workers=${await page.evaluate(() => navigator.hardwareConcurrency) || 2}#n=${n}&ov=`);
+    const err = await waitReady(page, 120_000);
+    if (err) throw new Error(err);
+    await page.waitForFunction(() => !(window.__lab.workers()?.starting), null, { timeout: 120_000 });
+    await page.waitForTimeout(700);
+    await page.evaluate(() => window.__lab.perfReset());
+    await page.waitForTimeout(3000);
+    const s = await page.evaluate(() => window.__lab.perfStats());
+    const info = await page.evaluate(() => window.__lab.workers());
+    return { workers: info?.workers ?? 0, mode: info?.mode ?? "main", usPerUpdate: info?.usPerUpdate ?? s.usPerUpdate, perFrame: s.updates / (s.spanMs / (1000 / 60)) };
+  } finally {
+    await context.close();
+  }
+}
 
 const { server, url } = await serve();
 const browser = await launch();
@@ -123,14 +149,26 @@ try {
       const roundMs = whole(values, "round-ms", 1);
       const figures = [];
       for (const n of wholeList(values, "sizes")) {
-        const c = await page.evaluate(([n, r, ms, s]) => window.__peers.costs(n, r, ms, s), [n, rounds, roundMs, seed]);
+        const c = await page.evaluate(([n, r, ms, s, dm]) => window.__peers.costs(n, r, ms, s, dm), [n, rounds, roundMs, seed, whole(values, "detour-max", 0)]);
         table(`${n} agents: µs per agent update and agents stepped per 16.7 ms frame (median of ${rounds} alternating rounds)`, [["us_per_update", ["ours", "yuka", "detour"].map((s) => c[s].usPerUpdate)], ["per_frame", ["ours", "yuka", "detour"].map((s) => c[s].perFrame)]], ["ours", "yuka", "detour"]);
         for (const [s, name] of [["ours", "ours (funnelling, Lab.spawnRandom, one thread)"], ["yuka", `${settings.yuka} arrive`], ["detour", `${settings.detour}, default flags`]]) {
-          if (c[s].error) console.log(`# ${s} at ${n}: ${c[s].error}`);
+          if (c[s].error) {
+            console.log(`# ${s} at ${n}: ${c[s].error}`);
+            continue;
+          }
           figures.push(figure(`peers_web.cost.n${n}.us_per_update.${s}`, `µs per agent update, ${n} agents to random targets, ${name}`, c[s].usPerUpdate, "µs", 3));
           figures.push(figure(`peers_web.cost.n${n}.per_frame.${s}`, `agents stepped per 16.7 ms frame, ${n} agents, ${name}`, c[s].perFrame, "agents", 0));
           if (s !== "ours") figures.push(figure(`peers_web.cost.n${n}.${s}-over-ours`, `${name}'s cost per agent update over ours, same run, ${n} agents`, c[s].usPerUpdate / c.ours.usPerUpdate, "×", 2));
         }
+      }
+      // Ours with the lab's workers, said apart: the lab page itself
+      // (`?workers=N`, N = the browser's cores; its real-time loop, at
+      // most 4 steps a frame), not this page's same-run rounds.
+      for (const n of wholeList(values, "sizes")) {
+        const w = await labWorkers(n);
+        console.log(`# ours in the lab with ${w.workers} workers (${w.mode}), ${n} agents: slowest worker ${w.usPerUpdate.toFixed(3)} µs per agent update of the world; ${Math.round(w.perFrame)} agents stepped per 16.7 ms frame (the loop's real time)`);
+        figures.push(figure(`peers_web.cost.n${n}.us_per_update.ours-workers`, `µs per agent update, ${n} agents, ours in the lab page with ${w.workers} Web Workers (${w.mode}; the slowest worker's stepping time over the world's updates); another page and run than the rows beside it`, w.usPerUpdate, "µs", 3));
+        figures.push(figure(`peers_web.cost.n${n}.per_frame.ours-workers`, `agents stepped per 16.7 ms frame, ${n} agents, ours in the lab page with ${w.workers} Web Workers (its real-time loop: at most 4 steps a frame); another page and run than the rows beside it`, w.perFrame, "agents", 0));
       }
       console.log(`# record: ${writeRecord({ source: `${SOURCE}::peers_web_cost`, command: `${COMMAND.replace(/"$/, "")} --full"`, kind: "timed", figures })}`);
     });

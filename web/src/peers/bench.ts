@@ -35,15 +35,17 @@ function timed(run: (steps: number) => void, perStep: number, ms: number): numbe
 
 const FRAME_MS = 1000 / 60;
 
-/** The three sides at `n` agents, `rounds` rounds of about `roundMs` each. */
-export function costs(lab: Lab, mesh: NavMesh, n: number, rounds: number, roundMs: number, seed: number): Record<"ours" | "yuka" | "detour", Cost> {
+/** The three sides at `n` agents, `rounds` rounds of about `roundMs` each;
+ *  DetourCrowd only up to `detourMax` agents (`mesh` null above). */
+export function costs(lab: Lab, mesh: NavMesh | null, n: number, rounds: number, roundMs: number, seed: number, detourMax: number): Record<"ours" | "yuka" | "detour", Cost> {
   const extent = extentFor(n);
   const sides: Array<[string, () => { run: (k: number) => void; destroy: () => void }]> = [
     ["ours", () => ({ run: ourWorld(lab, n, seed, extent), destroy: () => lab.clear() })],
     ["yuka", () => ({ run: yukaWorld(n, mulberry32(seed), extent), destroy: () => undefined })],
-    ["detour", () => detourWorld(mesh, n, mulberry32(seed), extent)],
   ];
   const out: Record<string, Cost> = {};
+  if (mesh && n <= detourMax) sides.push(["detour", () => detourWorld(mesh, n, mulberry32(seed), extent)]);
+  else out.detour = { msPerStep: NaN, usPerUpdate: NaN, perFrame: NaN, rounds: 0, error: `not run above ${detourMax} agents (--detour-max)` };
   const worlds: Array<{ name: string; run: (k: number) => void; destroy: () => void; per: number; ms: number[] }> = [];
   for (const [name, make] of sides) {
     try {

@@ -43,12 +43,12 @@ async function start(): Promise<void> {
       return { ours: swapOurs(lab, sc, text), detour: swapDetour(mesh, sc) };
     },
     /** Cost per agent update at `n` agents, the three sides in alternating rounds. */
-    costs: (n: number, rounds: number, roundMs: number, seed: number) => {
-      const big = planeNavMesh(extentFor(n) + 2, extentFor(n) > 50 ? 1 : 0.25);
+    costs: (n: number, rounds: number, roundMs: number, seed: number, detourMax: number) => {
+      const big = n <= detourMax ? planeNavMesh(extentFor(n) + 2, extentFor(n) > 50 ? 1 : 0.25) : null;
       try {
-        return costs(lab, big, n, rounds, roundMs, seed);
+        return costs(lab, big, n, rounds, roundMs, seed, detourMax);
       } finally {
-        big.destroy();
+        big?.destroy();
       }
     },
   };
