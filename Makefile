@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-protocol bench-budget \
+	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-peers test-protocol bench-budget \
 	npm test-npm test-library-user figures figures-full screenshots stages-start
 
 # `make test` says how long each stage took (its own builds included: a
@@ -129,7 +129,7 @@ wasm: setup-rust setup-wasm-strip
 
 # web/dist, the shipped build: no test hook in it (checked: HOOK_NAMES, the
 # test hooks' globals and their own method names).
-HOOK_NAMES := __lab|agentRecord|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt
+HOOK_NAMES := __lab|agentRecord|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt|peerGhosts|__peers
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 	if grep -rnoE --include='*.js' --include='*.html' '\b($(HOOK_NAMES))\b' web/dist; then echo "web/dist holds test hooks (above)"; exit 1; fi
@@ -236,6 +236,19 @@ test-e2e-avoid: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-avoid.mjs
 	$(stage-done)
 
+# Side by side with the peers in headless Chromium, one page run (the test
+# build's peers.html): our core, Yuka 0.7.8 (arrive, seek) and DetourCrowd
+# (@recast-navigation/core 0.43.1), web/'s devDependencies, on the same
+# seeded oriented targets and circle swaps; prints the rows and writes them
+# as figures records (web/test/e2e-peers.mjs::peers_web_*) into
+# FIGURES_DIR (default target/figures); then the lab's compare view (both
+# arrival headings; screenshots in artifacts/). PEERS_ARGS="--full": also
+# the timed rows (cost per agent update at 1,000 / 10,000 / 100,000).
+PEERS_ARGS ?=
+test-e2e-peers: setup-browser web-build-test
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-peers.mjs $(PEERS_ARGS)
+	$(stage-done)
+
 # Performance paths in the browser: the SIMD core where the engine has SIMD, the
 # baseline where it has not; WebGL2 instanced agents above 2,000 (forced with
 # ?draw=gl: headless WebGL is software, where the pages keep 2D sprites);
@@ -310,7 +323,7 @@ test-library-user:
 stages-start:
 	@mkdir -p target && echo "$$(date +%s) start" > $(STAGES_LOG)
 
-test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-npm test-library-user
+test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-e2e-peers test-npm test-library-user
 	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
 	@echo "make test: all suites passed"
 

@@ -197,6 +197,7 @@ function pageFrame(): Plugin {
       order: "pre",
       handler(html, ctx) {
         const file = basename(ctx.filename);
+        if (TEST_PAGES.includes(file)) return html;
         const page = PAGES.find((p) => p.file === file);
         if (!page) throw new Error(`${file} is not one of the lab's pages (vite.config.ts, PAGES)`);
         const head = [
@@ -218,6 +219,10 @@ function pageFrame(): Plugin {
   };
 }
 
+/** Pages of the test build only (`--mode test`), outside the lab's
+ *  navigation: the peers harness (src/peers/main.ts, web/test/e2e-peers.mjs). */
+const TEST_PAGES: readonly string[] = ["peers.html"];
+
 // Cross-origin isolation gives performance.now() 5 µs resolution (instead
 // of 100 µs), which the HUD's µs-per-update figure needs.
 const ISOLATION = { "Cross-Origin-Opener-Policy": "same-origin", "Cross-Origin-Embedder-Policy": "require-corp" };
@@ -238,17 +243,23 @@ export default defineConfig(({ mode }) => ({
     outDir: mode === TEST_MODE ? "dist-test" : "dist",
     target: "es2022",
     sourcemap: false,
+    // The test build's peers harness carries Recast/Detour with its wasm
+    // inlined (@recast-navigation/wasm's default build, 0.7 MB): expected there.
+    ...(mode === TEST_MODE ? { chunkSizeWarningLimit: 800 } : {}),
     // The gallery pages (crowd path following, random steering) and the
     // learn page beside the funnelling lab.
     rolldownOptions: {
       // The code the pages share in one chunk (not one copy beside each
-      // page's own): fewer requests before the lab's core takes over.
-      output: { codeSplitting: { groups: [{ name: "shared", test: /[\\/](src|pkg)[\\/]|preload-helper|modulepreload-polyfill/, minShareCount: 2 }] } },
+      // page's own): fewer requests before the lab's core takes over. The
+      // peers' code (src/peers/: Yuka, which the lab loads only for its
+      // compare view, and the test build's harness) stays out of it.
+      output: { codeSplitting: { groups: [{ name: "shared", test: /[\\/](src[\\/](?!peers[\\/])|pkg[\\/])|preload-helper|modulepreload-polyfill/, minShareCount: 2 }] } },
       input: {
         index: resolve(import.meta.dirname, "index.html"),
         crowd: resolve(import.meta.dirname, "crowd.html"),
         wander: resolve(import.meta.dirname, "wander.html"),
         learn: resolve(import.meta.dirname, "learn.html"),
+        ...(mode === TEST_MODE ? { peers: resolve(import.meta.dirname, "peers.html") } : {}),
       },
     },
   },

@@ -38,7 +38,7 @@ import { webDir } from "./harness.mjs";
 const MAX_LINES = 150;
 
 /** web/src's folders by layer, bottom to top (the comment above). */
-const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["ui"], ["lab", "crowd", "learn", "wander"]];
+const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["ui"], ["lab", "crowd", "learn", "wander", "peers"]];
 
 /** Files under `dir` whose name matches `re`, recursively. */
 function files(dir, re) {

@@ -73,7 +73,7 @@ const rand = () => {
 };
 const pick = (xs) => xs[Math.floor(rand() * xs.length)];
 
-const OTHER_KEYS = ["halting", "relaxed", "slow", "bound", "aim", "raim", "lp", "ov", "preset", "zx", "zy", "zs", "avoid", "obs"];
+const OTHER_KEYS = ["halting", "relaxed", "slow", "bound", "aim", "raim", "lp", "ov", "preset", "zx", "zy", "zs", "avoid", "obs", "cmp"];
 const NUM_KEYS = page.FIELDS.map((f) => f.url);
 const WEIRD = ["NaN", "Infinity", "-Infinity", "1e999", "-1e999", "0x10", "0b11", "0o7", "", " ", "  3 ", "1e308", "-1e308", "5e-324",
   "-0", "+7", ".5", "5.", "1,5", "1_000", "١٢", "１２", "٣.٥", "½", "∞", "1e", "e3", "--1", "%ZZ", "%", "%E2%82", "null", "undefined",

@@ -3,6 +3,7 @@
 // itself reads none of it back; the test build's hook (hook.ts) does.
 
 import type { View } from "../ui/view";
+import type { PeerCompare } from "./compareview";
 import type { Handles } from "./handles";
 import type { LabSim } from "./sim";
 import type { Transport } from "./transport";
@@ -36,6 +37,8 @@ export interface LabParts {
   sim: LabSim;
   view: View;
   transport: Transport;
+  /** The compare view (Yuka's ghosts beside ours). */
+  compare: PeerCompare;
   /** CSS-pixel canvas positions of the focus target's handles and of the vehicle. */
   handles(): Handles | null;
 }

@@ -12,6 +12,7 @@ import type { Vec } from "../ui/view";
 import type { FrameProbe, LabPage, LabParts } from "./app";
 import type { TableStatus } from "./sim";
 import { pick, type Handles } from "./handles";
+import type { PeerGhost } from "./compare";
 import { obstacleKnobs } from "./obstacles";
 import { presetNames } from "./presets";
 import { defaultState, type LabState } from "./state";
@@ -98,6 +99,8 @@ export interface LabHook {
   viewScale(): number;
   /** Agent i's pose, speed, angular speed and mode as drawn (null: no such agent). */
   agentRecord(i: number): { x: number; y: number; theta: number; v: number; omega: number; mode: number } | null;
+  /** The compare view's ghosts as last drawn (ours, Yuka arrive, Yuka seek) and its note. */
+  peerGhosts(): { ghosts: PeerGhost[]; note: string } | null;
 }
 
 declare global {
@@ -223,6 +226,7 @@ export function installHook(page: LabPage): void {
     }, 0),
     simTime: on((p) => p.sim.time, 0),
     viewScale: on((p) => p.view.scale, 1),
+    peerGhosts: on((p) => ({ ghosts: p.compare.ghosts, note: p.compare.note }), null),
     agentRecord: (i) => {
       const sim = page.parts?.sim;
       if (!sim || i < 0 || i >= sim.count) return null;

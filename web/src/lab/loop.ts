@@ -11,8 +11,9 @@ import { COLOURS, drawScene } from "./render";
 import type { SceneBuilder } from "./scene";
 import type { LabSim } from "./sim";
 
-/** Starts the loop; `since` is when the page's clock started (the first frame's interval). */
-export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, view: View, hudEl: HTMLElement, stats: LoopStats, probe: FrameProbe | null, since: number): void {
+/** Starts the loop; `since` is when the page's clock started (the first
+ *  frame's interval); `over` draws over each drawn scene (the compare view). */
+export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, view: View, hudEl: HTMLElement, stats: LoopStats, probe: FrameProbe | null, since: number, over: (s: Surface, v: View) => void = () => {}): void {
   let lastFrame = since;
   let frameMsEma = 0;
   const hud = new Hud(hudEl);
@@ -31,6 +32,7 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
       const scene = scenes.scene(inter);
       const d0 = performance.now();
       drawScene(surface, view, scene);
+      over(surface, view);
       drawMs = performance.now() - d0;
       hud.show(scenes.hud(inter, frameMsEma), now);
       sim.dirty = false;

@@ -23,6 +23,7 @@ import { decodeState } from "./urlstate";
 import { openTableCache } from "./tablecache";
 import { tableBadge } from "./loading";
 import { buildLegend } from "./legend";
+import { PeerCompare } from "./compareview";
 
 const page: LabPage = {
   status: { ready: false, error: null, problems: [], version: "", tableAt: NaN },
@@ -74,6 +75,8 @@ async function start(): Promise<void> {
     sim.url.save();
   };
   avoidanceSection($("panel"), sim.avoid, () => ({ x: view.cx, y: view.cy }), changed);
+  const compare = new PeerCompare(sim, lab);
+  compare.section($("panel"));
 
   const handles = (): Handles | null =>
     sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
@@ -88,7 +91,7 @@ async function start(): Promise<void> {
     redraw: () => { sim.dirty = true; sim.url.save(); },
   }, obstacleDrags(view, sim.avoid, obstacleLimits(table), changed));
 
-  page.parts = { sim, view, transport, handles };
+  page.parts = { sim, view, transport, handles, compare };
   const since = performance.now();
   await sim.rebuild(true);
   performance.mark("lab:scene");
@@ -106,7 +109,7 @@ async function start(): Promise<void> {
   }
   transport.setPaused(false);
   const badge = tableBadge(canvas.parentElement ?? document.body);
-  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since);
+  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since, (s, v) => compare.draw(s, v));
 
   // The table: the agents are planned with it and the clock starts.
   const t0 = performance.now();

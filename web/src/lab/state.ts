@@ -109,6 +109,8 @@ export interface LabState {
   /** Desired speed (m/s). */
   speed: number;
   halting: boolean;
+  /** The compare view: Yuka's arrive and seek ghosts beside ours (compareview.ts). */
+  compare: boolean;
   relaxed: boolean;
   limits: Limits;
   /** Controller settings, shared by every agent (presets included). */
@@ -144,6 +146,7 @@ export function defaultState(): LabState {
     epsTol: (10 * Math.PI) / 180,
     speed: 1.3,
     halting: true,
+    compare: false,
     relaxed: false,
     limits: {},
     // The core's FunnelConfig::default() (e2e checks they agree).

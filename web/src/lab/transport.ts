@@ -74,7 +74,8 @@ export function buildTransport(sim: LabSim): Transport {
 
   window.addEventListener("keydown", (e) => {
     const t = e.target;
-    if (t instanceof HTMLSelectElement || t instanceof HTMLButtonElement || (t instanceof HTMLInputElement && t.type === "text")) return;
+    // A focused control keeps its own keys (space ticks a checkbox).
+    if (t instanceof HTMLSelectElement || t instanceof HTMLButtonElement || (t instanceof HTMLInputElement && (t.type === "text" || t.type === "checkbox"))) return;
     if (e.ctrlKey || e.metaKey || e.altKey) return;
     if (e.key === " ") {
       e.preventDefault();

@@ -41,6 +41,7 @@ export function encodeState(s: LabState, ranges: RangeTable, d: LimitDefaults): 
   if (s.avoidance !== null) p.set("avoid", s.avoidance);
   if (s.replanEvery !== null) p.set("plan", String(s.replanEvery));
   if (s.obstacles !== null) p.set("obs", encodeObstacles(s.obstacles));
+  if (s.compare) p.set("cmp", "1");
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
     p.set("zx", fmt(s.view.cx));
@@ -70,7 +71,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["rd", "ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
+  const known = new Set<string>(["cmp", "rd", "ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
   const seen = new Set<string>();
   for (const key of p.keys()) {
     if (seen.has(key)) problems.push(`field "${clip(key)}" given twice; the first kept`);
@@ -122,6 +123,11 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   if (raim !== null) {
     if ((RELAXED_AIM_KEYS as readonly string[]).includes(raim)) s.funnel.relaxedAim = raim as RelaxedAimKey;
     else problems.push(`raim="${clip(raim)}" is not one of ${RELAXED_AIM_KEYS.join(", ")}; default kept`);
+  }
+  const cmp = p.get("cmp");
+  if (cmp !== null) {
+    if (cmp === "1" || cmp === "0") s.compare = cmp === "1";
+    else problems.push(`cmp="${clip(cmp)}" must be 0 or 1; default kept`);
   }
   const lp = p.get("lp");
   if (lp !== null) {
