@@ -140,10 +140,13 @@ fn verdict(ours: f64, peer: f64, lower_is_better: bool, why_peer: &str) -> Strin
     }
 }
 
-const WHY_HOLONOMIC: &str = "its discs take the avoiding velocity at once, in any direction (no acceleration or turn-rate limit); ours turns and brakes within the vehicle's limits";
+const WHY_HOLONOMIC: &str =
+    "another model: a holonomic disc takes the avoiding velocity at once, in any direction";
 const WHY_POSITION_ONLY: &str =
-    "its arrival is a position only; ours must also arrive facing the target (ε_tol 10°)";
-const WHY_STRAIGHT: &str = "a holonomic disc goes straight at full speed from the first step and needs no heading at arrival; ours accelerates at 1.5 m/s², turns within ω_max and funnels into the target's heading (another model, more work)";
+    "less work: it arrives at a position only; ours must also face the target (ε_tol 10°)";
+const WHY_STRAIGHT: &str = "another model, less work: a holonomic disc goes straight at full speed from the first step and arrives with no heading; ours accelerates within 1.5 m/s², turns within ω_max and funnels into the target's heading";
+const WHY_CLEARANCE: &str =
+    "with our margin it avoids at 0.9 m between centres and holds it exactly (holonomic)";
 
 fn median(mut v: Vec<f32>) -> Option<f64> {
     if v.is_empty() {
@@ -338,7 +341,7 @@ fn bench_figures(
             unit: "m",
             digits: 3,
             lower_is_better: false,
-            why_peer: WHY_HOLONOMIC,
+            why_peer: WHY_CLEARANCE,
             peer_margin: Some(smallest(&mut margin.iter().map(|r| r.min_distance))),
         },
     );
@@ -425,4 +428,49 @@ fn our_avoidance_beside_dodgy_2d_on_the_benchmarks() {
         },
         &figs,
     );
+}
+
+/// A record whose figure ids all start with `peers.` renders in the Peers
+/// section: a deterministic one inside the checked part, a timed one after
+/// it; neither in the generic sections.
+#[cfg(feature = "cli")]
+#[test]
+fn peers_records_render_in_the_peers_section() {
+    use std::collections::BTreeMap;
+    use steering::cli::records::{self, Kind as K, Seeds as S};
+    use steering::cli::report::{self, Captions, CHECKED_END};
+    let rec = |source: &str, kind: K, id: &str| {
+        records::make(
+            source.into(),
+            "cargo test".into(),
+            kind,
+            S::default(),
+            vec![records::Figure::new(id, "a count", 3.0, "runs", 0)],
+        )
+    };
+    let keyed = |r: records::Record| (records::file_name(&r.source), r);
+    let fast = BTreeMap::from([
+        keyed(rec("tests/a.rs::ours", K::Deterministic, "a.count")),
+        keyed(rec("tests/b.rs::peer", K::Deterministic, "peers.b.count")),
+        keyed(rec("benches/c.rs::fast_timed", K::Timed, "peers.c.ratio")),
+    ]);
+    let full = BTreeMap::from([keyed(rec("benches/d.rs::peer", K::Timed, "peers.d.ratio"))]);
+    let caps = Captions {
+        about: String::new(),
+        captions: Vec::new(),
+    };
+    let text = report::render(&fast, &full, &[], &caps).unwrap();
+    let at = |s: &str| {
+        text.find(s)
+            .unwrap_or_else(|| panic!("{s} not in:\n{text}"))
+    };
+    let (peers, end) = (at("## Peers\n"), at(CHECKED_END));
+    let measured = at("## Peers: costs measured in one run");
+    assert!(at("### `tests/a.rs::ours`") < peers);
+    assert!((peers..end).contains(&at("### `tests/b.rs::peer`")));
+    assert!(end < measured);
+    assert!(measured < at("### `benches/c.rs::fast_timed`"));
+    assert!(measured < at("### `benches/d.rs::peer`"));
+    assert!(at("### `benches/d.rs::peer`") < at("## Studies at report size"));
+    assert_eq!(text.matches("### `benches/d.rs::peer`").count(), 1);
 }
