@@ -284,12 +284,12 @@ fn ratios(table: &EtaTable) {
             ),
             f(
                 "peers.cost.avoid.ours_every_step_over_peer",
-                &format!("the same, ours planning its avoidance every step as dodgy_2d does / dodgy_2d; above 1: the peer is ahead (less work)"),
+                "the same, ours planning its avoidance every step as dodgy_2d does / dodgy_2d; above 1: the peer is ahead (less work)",
                 a[1] / a[3],
             ),
             f(
                 "peers.cost.avoid.ours_off_over_peer",
-                &format!("ours without avoidance (funnelling and the vehicle only) / dodgy_2d with it: what the oriented, limited vehicle costs before any avoidance"),
+                "ours without avoidance (funnelling and the vehicle only) / dodgy_2d with it: what the oriented, limited vehicle costs before any avoidance",
                 a[2] / a[3],
             ),
         ],

@@ -313,10 +313,10 @@ pub fn run(sc: &Scenario, margin: f32) -> PeerRun {
         w.step();
         out.agent_steps += n as u64;
         let mut min2 = out.min_distance * out.min_distance;
-        for i in 0..n {
+        for (i, &(p0, v0)) in before.iter().enumerate() {
             let (pi, vi) = (v34(w.agents[i].position), v34(w.agents[i].velocity));
-            out.path_length += (pi - before[i].0).length();
-            if (vi - before[i].1).length() > max_dv {
+            out.path_length += (pi - p0).length();
+            if (vi - v0).length() > max_dv {
                 out.beyond_limits += 1;
             }
             for o in &sc.obstacles {
