@@ -239,23 +239,26 @@ fn bench_figures(
             peer_margin: Some(runs_with(margin, |r| r.overlap_pair_steps > 0)),
         },
     );
-    push_row(
-        &mut figs,
-        name,
-        Row {
-            measure: "wall-contact-runs",
-            what: format!(
-                "runs (of {runs}) with a body closer than its radius to a wall at some step"
-            ),
-            ours: runs_with(ours, |r| r.obstacle_contacts > 0),
-            peer: runs_with(peer, |r| r.obstacle_contacts > 0),
-            unit: "runs",
-            digits: 0,
-            lower_is_better: true,
-            why_peer: WHY_HOLONOMIC,
-            peer_margin: Some(runs_with(margin, |r| r.obstacle_contacts > 0)),
-        },
-    );
+    // Walls only in the corridor and the doorway.
+    if matches!(name, "corridor" | "doorway") {
+        push_row(
+            &mut figs,
+            name,
+            Row {
+                measure: "wall-contact-runs",
+                what: format!(
+                    "runs (of {runs}) with a body closer than its radius to a wall at some step"
+                ),
+                ours: runs_with(ours, |r| r.obstacle_contacts > 0),
+                peer: runs_with(peer, |r| r.obstacle_contacts > 0),
+                unit: "runs",
+                digits: 0,
+                lower_is_better: true,
+                why_peer: WHY_HOLONOMIC,
+                peer_margin: Some(runs_with(margin, |r| r.obstacle_contacts > 0)),
+            },
+        );
+    }
     let agents: usize = ours.iter().map(|r| r.agents).sum();
     let share = |n: usize| 100.0 * n as f64 / agents as f64;
     push_row(
