@@ -13,10 +13,12 @@
 //!   away (about 11 neighbours in reach, paths crossing everywhere).
 //!
 //! `cargo bench --bench peers -- --warm-up-time 1 --measurement-time 2`.
-//! Criterion times each piece; then a plain loop times every piece in
-//! turn (thread CPU time), interleaved rounds, the best round of each
-//! kept, and prints the same-run ratios; with `FIGURES_DIR` set they are
-//! written as timed records (`tests/common/figures.rs`).
+//! Everything runs on one thread (a rayon pool of one: our world would
+//! spread a step's agents over the cores). Criterion times each piece;
+//! then a plain loop times every piece in turn (thread CPU time),
+//! interleaved rounds, the best round of each kept, and prints the
+//! same-run ratios; with `FIGURES_DIR` set they are written as timed
+//! records (`tests/common/figures.rs`).
 
 use std::hint::black_box;
 use std::time::Instant;
@@ -245,7 +247,7 @@ fn ratios(table: &EtaTable) {
         d[0], d[1], d[2]
     );
     let f = |id: &str, what: &str, v: f64| Figure::new(id, what, v, "×", 2);
-    let why = "ours computes in f64 with libm's portable trig (the same bits natively and in wasm) and keeps the path's knots; dubins_paths calls the host's trig";
+    let why = "more work: ours takes the sines and cosines of the frame again for each of the six words, where dubins_paths takes them once per query, and uses libm's portable trig (the same bits natively and in wasm) where dubins_paths calls the host's";
     record_timed(
         "peers",
         "dubins_cost",
@@ -257,7 +259,7 @@ fn ratios(table: &EtaTable) {
             ),
             f(
                 "peers.cost.dubins.path.over_peer",
-                &format!("time per path solve, ours (`DubinsPath::shortest`, the path a car-like agent follows) / dubins_paths {dv}; above 1: the peer is ahead ({why})"),
+                &format!("time per path solve, ours (`DubinsPath::shortest`, the path a car-like agent follows, its segments' start poses placed too) / dubins_paths {dv}; above 1: the peer is ahead ({why})"),
                 d[1] / d[2],
             ),
         ],
@@ -272,7 +274,7 @@ fn ratios(table: &EtaTable) {
         a[2],
         a[3]
     );
-    let lattice_what = "1,024 agents on a 1.6 m lattice to seeded targets 20–30 m away, 300-step cycles from rest, best of 5 interleaved rounds";
+    let lattice_what = "1,024 agents on a 1.6 m lattice to seeded targets 20–30 m away, 300-step cycles from rest, best of 5 interleaved rounds, one thread";
     record_timed(
         "peers",
         "avoidance_cost",
@@ -297,6 +299,13 @@ fn ratios(table: &EtaTable) {
 }
 
 fn main() {
+    // One thread for both sides: natively our world spreads a step's
+    // agents over the cores (rayon), dodgy_2d's loop here runs on one; and
+    // the timing loop reads this thread's CPU clock.
+    rayon::ThreadPoolBuilder::new()
+        .num_threads(1)
+        .build_global()
+        .expect("the global pool, before any parallel work");
     let table = EtaTable::from_bytes(include_bytes!("../tables/eta.bin")).unwrap();
     let mut c = Criterion::default().configure_from_args();
     bench(&mut c, &table);
