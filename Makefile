@@ -75,19 +75,22 @@ test-native:
 # `steer report` rewrites docs/FIGURES.md and the committed records in
 # docs/figures/, the presets' captions are rendered from them, and the
 # presets are checked against the report. (`steer` is the binary the
-# tests built: the same features, so nothing is compiled twice.)
+# tests built: the same features, so nothing is compiled twice.) The
+# browser's peers rows (web/test/e2e-peers.mjs, Chromium) join them.
 FIGURE_TESTS = $(patsubst tests/%.rs,--test %,$(shell grep -l 'common::figures' tests/*.rs))
 REPORT_ARGS ?=
-figures:
+figures: setup-browser web-build-test
 	rm -rf target/figures
 	cargo test --release --features cli,counters $(FIGURE_TESTS) -- --skip presets_show_the_captions
+	node web/test/suite.mjs web/test/e2e-peers.mjs --record
 	./target/release/steer report --prune $(REPORT_ARGS)
 	python3 scenarios/make_presets.py
 	cargo test --release --features cli,counters --test figures presets_show_the_captions
 
 # Full mode: the studies at their report sizes and the benchmarks that
 # write timed records (benches/*.rs using the figures records), into
-# target/figures-full, then the fast mode with them (docs/figures/full/).
+# target/figures-full, and the browser's timed peers rows, then the fast
+# mode with them (docs/figures/full/).
 # The benches' criterion runs are short (1 s warm-up, 2 s per piece): the
 # records are their own interleaved same-run ratios, not criterion's times.
 FULL_STUDIES := "reach" "relaxed" "relaxed --aim paper-arc" "envelope --n 10000 --seed 2 --brief" "avoid --seeds 100 --seed 0"
@@ -100,6 +103,8 @@ figures-full:
 	for b in $(FIGURE_BENCHES); do \
 	  FIGURES_DIR=$(CURDIR)/target/figures-full cargo bench --features cli,counters --bench $$b \
 	    -- --warm-up-time 1 --measurement-time 2; done
+	$(MAKE) web-build-test
+	node web/test/suite.mjs web/test/e2e-peers.mjs --record --full
 	$(MAKE) figures REPORT_ARGS="--full-records target/figures-full"
 
 # The release wasm package the page and the smoke test load (wasm-opt is
@@ -241,7 +246,8 @@ test-e2e-avoid: setup-browser web-build-test
 # (@recast-navigation/core 0.43.1), web/'s devDependencies, on the same
 # seeded oriented targets and circle swaps; prints the rows and writes them
 # as figures records (web/test/e2e-peers.mjs::peers_web_*) into
-# FIGURES_DIR (default target/figures); then the lab's compare view (both
+# target/figures, which must equal the committed ones (`make figures`
+# measures them anew); then the lab's compare view (both
 # arrival headings; screenshots in artifacts/). PEERS_ARGS="--full": also
 # the timed rows (cost per agent update at 1,000 / 10,000 / 100,000).
 PEERS_ARGS ?=

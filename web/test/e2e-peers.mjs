@@ -8,7 +8,7 @@
 //   web/test/e2e-peers.mjs::peers_web_oriented  (deterministic)
 //   web/test/e2e-peers.mjs::peers_web_swap      (deterministic)
 //   web/test/e2e-peers.mjs::peers_web_cost      (timed: --full only)
-// Figure ids: peers_web.<scenario>.<metric>.<side>, side one of ours,
+// Figure ids: peers.web.<scenario>.<metric>.<side>, side one of ours,
 // yuka-arrive, yuka-seek, detour; the timed rows' sides ours, yuka, detour
 // (same page, alternating rounds), <peer>-over-ours (their ratios) and
 // ours-workers (the lab page stepped by its Web Workers: another page
@@ -16,16 +16,21 @@
 // headings read through window.__lab, ours within ε_tol of β, Yuka's
 // reported; the switch works from the keyboard; screenshots at 1440×900
 // and 390×844 in artifacts/. A node:test suite (harness.mjs `check`).
+// The deterministic records must equal the committed ones (docs/figures/,
+// which the report's Peers section renders) figure for figure, unless
+// `--record` (`make figures`: measuring them anew). The timed record goes
+// to target/figures-full (`make figures-full`).
 // Run: `make test-e2e-peers` (PEERS_ARGS="--full" for the timed rows).
 import assert from "node:assert/strict";
 import { serve, launch, openPage, check, waitReady, settle, shot } from "./harness.mjs";
 import { options, whole, wholeList } from "./options.mjs";
-import { figure, writeRecord } from "./records.mjs";
+import { figure, writeRecord, committedFigures } from "./records.mjs";
 
 const { values } = options(
   "Usage: node web/test/suite.mjs web/test/e2e-peers.mjs [options]\nOur core, Yuka and DetourCrowd on the same cases in Chromium; figures records into $FIGURES_DIR (default target/figures).",
   {
     full: { type: "boolean", default: false, help: "also the timed rows: cost per agent update at --sizes" },
+    record: { type: "boolean", default: false, help: "write the deterministic records without comparing them with the committed ones (make figures)" },
     seed: { type: "string", default: "2", arg: "S", help: "seed of the oriented targets (report seed; nothing here is tuned)" },
     cases: { type: "string", default: "100", arg: "N", help: "oriented targets" },
     sizes: { type: "string", default: "1000,10000,100000", arg: "N,N,...", help: "agent counts of the timed rows" },
@@ -40,6 +45,15 @@ const seed = whole(values, "seed");
 const nCases = whole(values, "cases", 1);
 const SOURCE = "web/test/e2e-peers.mjs";
 const COMMAND = `make test-e2e-peers PEERS_ARGS="--seed ${seed} --cases ${nCases}"`;
+/** The rows just measured equal the committed record's (the report's
+ *  Peers section), at the digits the report prints, unless `--record`. */
+function asCommitted(source, figures) {
+  if (values.record) return;
+  const shown = (f) => [f.id, Number(f.value).toFixed(f.digits)];
+  const committed = committedFigures(source);
+  assert.ok(committed, `${source}: no committed record in docs/figures/ (make figures writes it)`);
+  assert.deepEqual(figures.filter((f) => Number.isFinite(f.value)).map(shown), committed.map(shown), `${source}: the rows differ from the committed record (make figures measures them anew)`);
+}
 const SIDES = { ours: "ours", yukaArrive: "yuka-arrive", yukaSeek: "yuka-seek", detour: "detour" };
 
 /** The oriented rows: [metric id, what, summary key, unit, digits]. */
@@ -121,8 +135,9 @@ try {
     const keys = Object.keys(SIDES);
     table(`oriented targets: ${nCases} seeded cases (seed ${seed}), pedestrian, D_tol ${settings.goal.dTol} m, ε_tol ${(settings.goal.epsTol * 180 / Math.PI).toFixed(0)}°`, ORIENTED.map(([id, , k]) => [id, keys.map((s) => r[s][k])]), keys.map((k) => SIDES[k]));
     const figures = ORIENTED.flatMap(([id, what, k, unit, digits]) =>
-      keys.map((s) => figure(`peers_web.oriented.${id}.${SIDES[s]}`, `${what}; ${nCases} seeded oriented targets 3–10 m away (seed ${seed}), pedestrian limits; ${sideWords(s, settings)}`, r[s][k], unit, digits)));
+      keys.map((s) => figure(`peers.web.oriented.${id}.${SIDES[s]}`, `${what}; ${nCases} seeded oriented targets 3–10 m away (seed ${seed}), pedestrian limits; ${sideWords(s, settings)}`, r[s][k], unit, digits)));
     console.log(`# record: ${writeRecord({ source: `${SOURCE}::peers_web_oriented`, command: COMMAND, kind: "deterministic", seeds: { tuning: [], report: [seed] }, figures })}`);
+    asCommitted(`${SOURCE}::peers_web_oriented`, figures);
     assert.ok(r.ours.orientedPct >= 90, `ours arrives oriented in ${r.ours.orientedPct}% of the runs`);
     assert.equal(r.ours.speedViolationRuns, 0, "ours never exceeds v_max");
     assert.equal(r.ours.turnViolationRuns, 0, "ours never turns faster than ω_max");
@@ -135,12 +150,13 @@ try {
       table(`${name}: ours (ORCA, the scenario's settings) and DetourCrowd`, SWAP.map(([id, , k]) => [id, [r.ours[k], r.detour[k]]]), ["ours", "detour"]);
       for (const s of ["ours", "detour"]) for (const u of r[s].unsettled) console.log(`# ${name} ${s}: agent ${u.i} not at rest at the end: ${u.d.toFixed(3)} m from its goal at ${u.v.toFixed(4)} m/s`);
       for (const [id, what, k, unit, digits] of SWAP) {
-        figures.push(figure(`peers_web.${name}.${id}.ours`, `${what}; ${name} (scenarios/${name}.json), ${r.ours.agents} agents; ours: funnelling + ORCA, the scenario's settings`, r.ours[k], unit, digits));
-        figures.push(figure(`peers_web.${name}.${id}.detour`, `${what}; ${name}, ${r.detour.agents} agents; ${settings.detour}, the scenario's radius, maxSpeed = the goal's speed, maxAcceleration ${settings.vehicle.accelMax}, other parameters Detour's defaults`, r.detour[k], unit, digits));
+        figures.push(figure(`peers.web.${name}.${id}.ours`, `${what}; ${name} (scenarios/${name}.json), ${r.ours.agents} agents; ours: funnelling + ORCA, the scenario's settings`, r.ours[k], unit, digits));
+        figures.push(figure(`peers.web.${name}.${id}.detour`, `${what}; ${name}, ${r.detour.agents} agents; ${settings.detour}, the scenario's radius, maxSpeed = the goal's speed, maxAcceleration ${settings.vehicle.accelMax}, other parameters Detour's defaults`, r.detour[k], unit, digits));
       }
       assert.equal(r.ours.worstOverlaps, 0, `${name}: ours overlapped`);
     }
     console.log(`# record: ${writeRecord({ source: `${SOURCE}::peers_web_swap`, command: COMMAND, kind: "deterministic", figures })}`);
+    asCommitted(`${SOURCE}::peers_web_swap`, figures);
   });
 
   if (values.full) {
@@ -156,9 +172,9 @@ try {
             console.log(`# ${s} at ${n}: ${c[s].error}`);
             continue;
           }
-          figures.push(figure(`peers_web.cost.n${n}.us_per_update.${s}`, `µs per agent update, ${n} agents to random targets, ${name}`, c[s].usPerUpdate, "µs", 3));
-          figures.push(figure(`peers_web.cost.n${n}.per_frame.${s}`, `agents stepped per 16.7 ms frame, ${n} agents, ${name}`, c[s].perFrame, "agents", 0));
-          if (s !== "ours") figures.push(figure(`peers_web.cost.n${n}.${s}-over-ours`, `${name}'s cost per agent update over ours, same run, ${n} agents`, c[s].usPerUpdate / c.ours.usPerUpdate, "×", 2));
+          figures.push(figure(`peers.web.cost.n${n}.us_per_update.${s}`, `µs per agent update, ${n} agents to random targets, ${name}`, c[s].usPerUpdate, "µs", 3));
+          figures.push(figure(`peers.web.cost.n${n}.per_frame.${s}`, `agents stepped per 16.7 ms frame, ${n} agents, ${name}`, c[s].perFrame, "agents", 0));
+          if (s !== "ours") figures.push(figure(`peers.web.cost.n${n}.${s}-over-ours`, `${name}'s cost per agent update over ours, same run, ${n} agents`, c[s].usPerUpdate / c.ours.usPerUpdate, "×", 2));
         }
       }
       // Ours with the lab's workers, said apart: the lab page itself
@@ -167,8 +183,8 @@ try {
       for (const n of wholeList(values, "sizes")) {
         const w = await labWorkers(n);
         console.log(`# ours in the lab with ${w.workers} workers (${w.mode}), ${n} agents: slowest worker ${w.usPerUpdate.toFixed(3)} µs per agent update of the world; ${Math.round(w.perFrame)} agents stepped per 16.7 ms frame (the loop's real time)`);
-        figures.push(figure(`peers_web.cost.n${n}.us_per_update.ours-workers`, `µs per agent update, ${n} agents, ours in the lab page with ${w.workers} Web Workers (${w.mode}; the slowest worker's stepping time over the world's updates); another page and run than the rows beside it`, w.usPerUpdate, "µs", 3));
-        figures.push(figure(`peers_web.cost.n${n}.per_frame.ours-workers`, `agents stepped per 16.7 ms frame, ${n} agents, ours in the lab page with ${w.workers} Web Workers (its real-time loop: at most 4 steps a frame); another page and run than the rows beside it`, w.perFrame, "agents", 0));
+        figures.push(figure(`peers.web.cost.n${n}.us_per_update.ours-workers`, `µs per agent update, ${n} agents, ours in the lab page with ${w.workers} Web Workers (${w.mode}; the slowest worker's stepping time over the world's updates); another page and run than the rows beside it`, w.usPerUpdate, "µs", 3));
+        figures.push(figure(`peers.web.cost.n${n}.per_frame.ours-workers`, `agents stepped per 16.7 ms frame, ${n} agents, ours in the lab page with ${w.workers} Web Workers (its real-time loop: at most 4 steps a frame); another page and run than the rows beside it`, w.perFrame, "agents", 0));
       }
       console.log(`# record: ${writeRecord({ source: `${SOURCE}::peers_web_cost`, command: `${COMMAND.replace(/"$/, "")} --full"`, kind: "timed", figures })}`);
     });

@@ -6,15 +6,24 @@
 // the repository's target/figures. A figure whose value is not finite is
 // left out (the report refuses null) and said on stderr.
 import { execFileSync } from "node:child_process";
-import { mkdirSync, renameSync, writeFileSync } from "node:fs";
+import { existsSync, mkdirSync, readFileSync, renameSync, writeFileSync } from "node:fs";
 import { availableParallelism } from "node:os";
 import { resolve } from "node:path";
 import { webDir } from "./harness.mjs";
 
 export const repoDir = resolve(webDir, "..");
 
-/** Where records go: $FIGURES_DIR (relative to the repository), else target/figures. */
-export const figuresDir = () => resolve(repoDir, process.env.FIGURES_DIR ?? "target/figures");
+/** Where deterministic records go: $FIGURES_DIR (relative to the
+ *  repository), else target/figures; timed ones belong to the report's
+ *  full mode: target/figures-full (`make figures-full` reads it). */
+export const figuresDir = (kind = "deterministic") =>
+  resolve(repoDir, kind === "timed" ? "target/figures-full" : (process.env.FIGURES_DIR ?? "target/figures"));
+
+/** The figures of `source`'s committed record (docs/figures/), or null. */
+export function committedFigures(source) {
+  const path = resolve(repoDir, "docs", "figures", fileName(source));
+  return existsSync(path) ? JSON.parse(readFileSync(path, "utf8")).figures : null;
+}
 
 /** `records::file_name`: every character but ASCII letters, digits, `.`, `-`, `_` becomes `_`. */
 export const fileName = (source) => `${source.replace(/[^A-Za-z0-9._-]/g, "_")}.json`;
@@ -38,7 +47,7 @@ export function writeRecord({ source, command, kind, seeds = { tuning: [], repor
     return false;
   });
   const record = { source, command, kind, seeds, commit: commit(), date: new Date().toISOString().slice(0, 10), cores: availableParallelism(), figures: kept };
-  const dir = figuresDir();
+  const dir = figuresDir(kind);
   mkdirSync(dir, { recursive: true });
   const path = resolve(dir, fileName(source));
   const tmp = `${path}.tmp-${process.pid}`;
