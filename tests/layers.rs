@@ -897,3 +897,136 @@ fn the_code_says_why_not_when() {
         hits.join("\n")
     );
 }
+
+/// Most lines a file of `crate/` may have before its tests (the
+/// `#[cfg(test)]` module that closes it): a file longer than that holds
+/// more than one concern, and is split by concern.
+const MAX_FILE_LINES: usize = 700;
+
+/// The file's lines before its test module (a `#[cfg(test)]` at the start
+/// of a line closes the file by convention), when more than
+/// [`MAX_FILE_LINES`]: a message naming the first line over.
+fn long_file(file: &str, src: &str) -> Option<String> {
+    let n = src
+        .lines()
+        .position(|l| l.starts_with("#[cfg(test)]"))
+        .unwrap_or_else(|| src.lines().count());
+    (n > MAX_FILE_LINES).then(|| {
+        format!(
+            "crate/{file}:{}: {n} lines before its tests (at most {MAX_FILE_LINES}): split it by concern",
+            MAX_FILE_LINES + 1
+        )
+    })
+}
+
+#[test]
+fn no_file_is_longer_than_700_lines_before_its_tests() {
+    let dir = crate_dir();
+    let mut list = Vec::new();
+    rust_files(&dir, &dir, &mut list);
+    let long: Vec<String> = list
+        .iter()
+        .filter_map(|f| long_file(f, &fs::read_to_string(dir.join(f)).unwrap()))
+        .collect();
+    assert!(
+        long.is_empty(),
+        "files holding too much:\n{}",
+        long.join("\n")
+    );
+}
+
+/// Most lines of code (comments and blank lines not counted) in a `mod.rs`.
+const MAX_FACE_LINES: usize = 40;
+
+/// What a `mod.rs` may hold besides comments (rapier's model: a short face,
+/// the folder's table in its doc comment): `mod name;` declarations, `use`
+/// and `pub use` statements and attributes, at most [`MAX_FACE_LINES`]
+/// lines of them. A type, function, constant, impl or inline module lives
+/// in a file of its own. One message per offending line.
+fn face_violations(file: &str, src: &str) -> Vec<String> {
+    let code = code_only(src);
+    let mut out = Vec::new();
+    let mut in_use = false;
+    let mut lines = 0;
+    for (k, line) in code.lines().enumerate() {
+        let l = line.trim();
+        if l.is_empty() {
+            continue;
+        }
+        lines += 1;
+        if lines == MAX_FACE_LINES + 1 {
+            out.push(format!(
+                "crate/{file}:{}: more than {MAX_FACE_LINES} lines of code in a mod.rs",
+                k + 1
+            ));
+        }
+        if in_use {
+            in_use = !l.ends_with(';');
+            continue;
+        }
+        let item = l
+            .strip_prefix("pub(crate) ")
+            .or_else(|| l.strip_prefix("pub(super) "))
+            .or_else(|| l.strip_prefix("pub "))
+            .unwrap_or(l);
+        let face = if item.starts_with("use ") {
+            in_use = !l.ends_with(';');
+            true
+        } else if item.starts_with("mod ") {
+            l.ends_with(';')
+        } else {
+            (l.starts_with("#[") || l.starts_with("#![")) && l.ends_with(']')
+        };
+        if !face {
+            out.push(format!(
+                "crate/{file}:{}: `{l}`: a mod.rs holds only `mod name;`, `use` / `pub use` and attributes (the rest goes in a file named for it)",
+                k + 1
+            ));
+        }
+    }
+    out
+}
+
+#[test]
+fn every_mod_rs_is_a_short_face() {
+    let dir = crate_dir();
+    let mut list = Vec::new();
+    rust_files(&dir, &dir, &mut list);
+    let v: Vec<String> = list
+        .iter()
+        .filter(|f| f.ends_with("mod.rs"))
+        .flat_map(|f| face_violations(f, &fs::read_to_string(dir.join(f)).unwrap()))
+        .collect();
+    assert!(
+        v.is_empty(),
+        "mod.rs files that are more than a face:\n{}",
+        v.join("\n")
+    );
+}
+
+#[test]
+fn the_checker_sees_a_long_file_and_a_mod_rs_with_a_body() {
+    let src = format!("{}#[cfg(test)]\nmod tests {{}}\n", "//\n".repeat(700));
+    assert_eq!(long_file("a.rs", &src), None);
+    let msg = long_file("a.rs", &format!("fn f() {{}}\n{src}"));
+    assert!(msg.is_some_and(|m| m.starts_with("crate/a.rs:701: 701 lines")));
+    let face = "//! | table |\n#[allow(clippy::module_inception)]\nmod a;\npub mod b;\npub use a::{\n    A,\n    B,\n};\n";
+    assert!(face_violations("x/mod.rs", face).is_empty());
+    let body = format!("{face}pub struct S;\n\nfn f() {{}}\nmod tests {{}}\n");
+    let v = face_violations("x/mod.rs", &body);
+    assert_eq!(v.len(), 3, "{v:?}");
+    assert!(
+        v[0].starts_with("crate/x/mod.rs:9: `pub struct S;`"),
+        "{v:?}"
+    );
+    assert!(
+        v[2].starts_with("crate/x/mod.rs:12: `mod tests {}`"),
+        "{v:?}"
+    );
+    let long = "use a::b;\n".repeat(41);
+    let v = face_violations("x/mod.rs", &long);
+    assert!(
+        v.len() == 1 && v[0].starts_with("crate/x/mod.rs:41: more than 40"),
+        "{v:?}"
+    );
+}

@@ -5,6 +5,12 @@
 //! | module | page | what |
 //! |---|---|---|
 //! | [`lab`] | `index.html` | `Lab`: a funnelling [`World`](crate::world::World) and its η table |
+//! | `lab_table` | `index.html` | `Lab`'s η table: its axes, a new one in force, its cache key |
+//! | `lab_settings` | `index.html` | `Lab`'s settings: vehicle parameters, funnelling and relaxed settings, readings, the controller's label |
+//! | `lab_probes` | `index.html`, `learn.html` | `Lab`'s η probes: the η field and rings (paper 001 Figs. 3, 4), seek simulations against table lookups |
+//! | `lab_world` | `index.html` | `Lab`'s world: agents added, posed and given goals, random crowds, stepping, the state records |
+//! | `lab_ghost` | `index.html` | `Lab`'s look inside an agent: internals, the ghost path, the η ring at its distance |
+//! | `lab_scenario` | `index.html` | `Lab`'s scenarios: a scenario file's world in force |
 //! | `lab_types` | `index.html` | what crosses for `Lab`: the TypeScript interfaces and their serde shapes (goal, agent, internals, table and scenario info) |
 //! | [`tables`] | `index.html` workers | η tables built in the browser: `tableJob` (key, entries), `tableSlice` (a worker's share), `assembleTable` (the file's bytes), `tableKeyOf`, `referenceVehicles` |
 //! | [`crowd`] | `crowd.html` | `CrowdLab`: crowded path following (paper 003) |
@@ -18,7 +24,13 @@ pub mod avoid;
 mod boundary;
 pub mod crowd;
 pub mod lab;
+mod lab_ghost;
+mod lab_probes;
+mod lab_scenario;
+mod lab_settings;
+mod lab_table;
 mod lab_types;
+mod lab_world;
 pub mod layout;
 mod split;
 pub mod tables;

@@ -96,7 +96,7 @@ impl World {
             }
             if !a.done() {
                 let spec = a.goals[a.current];
-                crate::world::advance_queue(a, &spec, t);
+                crate::world::planner::advance_queue(a, &spec, t);
             } else {
                 a.internals.gamma = a.state.theta;
             }

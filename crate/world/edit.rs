@@ -15,8 +15,8 @@ use crate::funnelling::goal::{FunnelMemory, Goal};
 use crate::funnelling::relaxed::RelaxedInternals;
 use crate::funnelling::update::{Internals, Mode};
 use crate::world::precision;
-use crate::world::{faces, provisional_plan};
 use crate::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Agent, World};
+use crate::world::{provisional_plan, world::faces};
 
 /// Fastest a goal may move by itself, m/s: each component of a linear
 /// velocity ([`crate::base::ranges::MOTION_VX`]), and the tangential
@@ -257,8 +257,8 @@ impl World {
             g.validate(&self.params)?;
         }
         precision::check_agent(&self.params, self.agents[i].state.pos, &goals, None)?;
-        self.facing -= usize::from(super::faces(&self.agents[i].goals));
-        self.facing += usize::from(super::faces(&goals));
+        self.facing -= usize::from(faces(&self.agents[i].goals));
+        self.facing += usize::from(faces(&goals));
         self.agents[i].goals = goals;
         self.restart(i);
         Ok(())
