@@ -94,7 +94,7 @@
 //! does the same work (the ranking's keys and its copy for all `RANKED`
 //! slots, the gathered neighbours shown to the keep-right rule in a fixed
 //! number of fours): a loop's exit is mispredicted when its length changes.
-//! `examples/avoid_icount.rs` counts instructions and simulated
+//! `diagnostics/avoid_icount.rs` counts instructions and simulated
 //! mispredictions per agent update under callgrind.
 //!
 //! The look-ahead scan ([`passing::LOOK_AHEAD`](crate::avoidance::passing::LOOK_AHEAD)) reads only the cells of

@@ -3,7 +3,7 @@
 // (../world/worldcalls.ts, the calls the page's own core would make, so the
 // same bits), splits it as every other worker does (`splitRanges`) and
 // keeps its range (`retainRange`: facing links never cut,
-// crate/funnelling/world_split.rs). Each later task applies the page's
+// crate/world/split.rs). Each later task applies the page's
 // edits (checked here, answered in the reply), steps k times and writes its
 // states at its offset of the shared buffer, or hands them back (no
 // cross-origin isolation). Driven by `WorkerWorld` (../lab/stepping.ts) through
