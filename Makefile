@@ -10,7 +10,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 .PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-peers test-protocol bench-budget \
-	npm test-npm test-library-user figures figures-full screenshots stages-start
+	npm test-npm test-library-user figures figures-full screenshots stages-start icount
 
 # `make test` says how long each stage took (its own builds included: a
 # stage's time runs from the end of the one before to its own end), from
@@ -94,7 +94,7 @@ figures: setup-browser web-build-test
 # The benches' criterion runs are short (1 s warm-up, 2 s per piece): the
 # records are their own interleaved same-run ratios, not criterion's times.
 FULL_STUDIES := "reach" "relaxed" "relaxed --aim paper-arc" "envelope --n 10000 --seed 2 --brief" "avoid --seeds 100 --seed 0"
-FIGURE_BENCHES = $(patsubst benches/%.rs,%,$(shell grep -l 'figures' benches/*.rs))
+FIGURE_BENCHES = $(filter-out icount,$(patsubst benches/%.rs,%,$(shell grep -l 'figures' benches/*.rs)))
 figures-full:
 	rm -rf target/figures-full
 	cargo test --release --features cli,counters --no-run --test figures
@@ -105,7 +105,18 @@ figures-full:
 	    -- --warm-up-time 1 --measurement-time 2; done
 	$(MAKE) web-build-test
 	node web/test/suite.mjs web/test/e2e-peers.mjs --record --full
+	$(MAKE) icount
 	$(MAKE) figures REPORT_ARGS="--full-records target/figures-full"
+
+# The world's instructions under callgrind (valgrind; benches/icount.rs):
+# `world_bench 10000 20 1` whole, and per agent update, on one thread.
+# Deterministic for one toolchain and build only: a full-mode record of
+# kind `counted` naming the toolchain (into target/figures-full; `make
+# figures-full` runs it and reports it). world_bench is built without the
+# `counters` feature, as the page's wasm is.
+icount:
+	cargo build --release --example world_bench
+	FIGURES_DIR=$(CURDIR)/target/figures-full cargo bench --bench icount
 
 # The release wasm package the page and the smoke test load (wasm-opt is
 # disabled in Cargo.toml: Debian's binaryen corrupts wasm-bindgen output).

@@ -431,6 +431,30 @@ fn the_report_is_the_same_text_for_the_same_records() {
     );
 }
 
+#[test]
+fn instruction_counts_are_reported_after_the_checked_part_under_their_own_heading() {
+    let caps = Captions {
+        about: String::new(),
+        captions: vec![],
+    };
+    let mut counted = sample("benches/icount.rs");
+    counted.kind = records::Kind::Counted;
+    let full = BTreeMap::from([(records::file_name(&counted.source), counted)]);
+    let text = report::render(&BTreeMap::new(), &full, &[], &caps).unwrap();
+    let (checked, rest) = text.split_once(report::CHECKED_END).unwrap();
+    assert!(!checked.contains("benches/icount.rs"), "{text}");
+    let heading = rest
+        .find("## Counted: instructions under callgrind")
+        .expect("the counted heading");
+    assert!(
+        rest.find("## Timed").unwrap() < heading
+            && rest[heading..].contains("### `benches/icount.rs`"),
+        "{text}"
+    );
+    let none = report::render(&BTreeMap::new(), &BTreeMap::new(), &[], &caps).unwrap();
+    assert!(!none.contains("## Counted"), "{none}");
+}
+
 /// Where test `name` starts in `text`: the `fn name(` line right after a
 /// `#[test]` line, inside `mod m {` when the source names module `m`.
 fn test_fn(text: &str, path: &str) -> Result<usize, String> {

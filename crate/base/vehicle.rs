@@ -179,12 +179,19 @@ impl VehicleParams {
     #[inline]
     #[must_use]
     pub fn omega_limit(&self, v: f32) -> f32 {
+        self.omega_limit_as(self.car_like(), v)
+    }
+
+    /// [`VehicleParams::omega_limit`] with [`VehicleParams::car_like`]
+    /// given, a constant where the caller knows it for many steps.
+    #[inline(always)]
+    fn omega_limit_as(&self, car_like: bool, v: f32) -> f32 {
         let w = if v * self.omega_max > self.normal_accel_max {
             self.normal_accel_max / v
         } else {
             self.omega_max
         };
-        if self.car_like() {
+        if car_like {
             w.at_most(v.at_least(0.0) / self.r_min)
         } else {
             w
@@ -237,14 +244,27 @@ impl VehicleParams {
     #[inline(always)]
     #[must_use]
     pub fn new_speeds(&self, v0: f32, w0: f32, ang_acc: f32, v_des: f32) -> (f32, f32) {
+        self.new_speeds_as(self.car_like(), v0, w0, ang_acc, v_des)
+    }
+
+    /// [`VehicleParams::new_speeds`] with [`VehicleParams::car_like`] given.
+    #[inline(always)]
+    fn new_speeds_as(
+        &self,
+        car_like: bool,
+        v0: f32,
+        w0: f32,
+        ang_acc: f32,
+        v_des: f32,
+    ) -> (f32, f32) {
         let dt = self.dt;
         let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
-        let wl = self.omega_limit(v0);
+        let wl = self.omega_limit_as(car_like, v0);
         let w1 = (w0 + a * dt).clamp(-wl, wl);
         let dv = self.accel_max * dt;
         let vcap = self.speed_limit(w1);
         let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
-        if self.car_like() {
+        if car_like {
             self.curvature_bound(w0, w1, v1)
         } else {
             (w1, v1)
@@ -262,9 +282,25 @@ impl VehicleParams {
     /// so every limit holds exactly after every step.
     #[inline]
     pub fn integrate(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
+        self.integrate_as(self.car_like(), s, ang_acc, v_des);
+    }
+
+    /// [`VehicleParams::integrate`] for a unicycle (`R_min` 0, which the
+    /// caller has checked once for many steps): the same operations,
+    /// without the two tests for the curvature bound (a world's default
+    /// step, [`crate::funnelling::seek::seek_step_committed_unicycle`]).
+    #[inline]
+    pub fn integrate_unicycle(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
+        debug_assert!(!self.car_like());
+        self.integrate_as(false, s, ang_acc, v_des);
+    }
+
+    /// [`VehicleParams::integrate`] with [`VehicleParams::car_like`] given.
+    #[inline(always)]
+    fn integrate_as(&self, car_like: bool, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
         let dt = self.dt;
         let (v0, w0) = (s.v, s.omega);
-        let (w1, v1) = self.new_speeds(v0, w0, ang_acc, v_des);
+        let (w1, v1) = self.new_speeds_as(car_like, v0, w0, ang_acc, v_des);
         match self.integrator {
             Integrator::Euler => {
                 s.pos += crate::base::trig::unit(s.theta) * (v0 * dt);

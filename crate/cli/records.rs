@@ -19,8 +19,9 @@
 //!
 //! A fidelity test adds `"claim": { "paper", "place", "claim", "reading":
 //! "paper"|"ours", "verdict": "reproduced"|"partly"|"refuted" }`. `kind` is
-//! `deterministic` (the same bits on every machine) or `timed` (a ratio of
-//! times measured in one run). `commit`, `date` and `cores` say where the
+//! `deterministic` (the same bits on every machine), `timed` (a ratio of
+//! times measured in one run) or `counted` (instructions under callgrind,
+//! the same for one toolchain and build). `commit`, `date` and `cores` say where the
 //! record was made; the report keeps them out of the deterministic rows so
 //! that those rows are byte-stable.
 
@@ -150,6 +151,10 @@ pub enum Kind {
     Deterministic,
     /// A ratio of times measured in one run.
     Timed,
+    /// Instructions counted under callgrind: the same on every run of one
+    /// toolchain and build, not across them (the figures name the
+    /// toolchain).
+    Counted,
 }
 
 /// One source's record.

@@ -418,6 +418,7 @@ pub fn render(
     {
         source_table(&mut out, r, true);
     }
+    counted(&mut out, full);
     Ok(out.trim_end().to_string() + "\n")
 }
 
@@ -485,6 +486,28 @@ fn peers_measured(
     // The next section opens with its own blank line.
     while out.ends_with('\n') {
         out.pop();
+    }
+}
+
+/// The cost part's instruction counts ([`Kind::Counted`]), after the
+/// timed ratios.
+fn counted(out: &mut String, full: &BTreeMap<String, Record>) {
+    let mut counted = full.values().filter(|r| r.kind == Kind::Counted).peekable();
+    if counted.peek().is_none() {
+        return;
+    }
+    out.push_str(
+        "## Counted: instructions under callgrind
+
+",
+    );
+    out.push_str(
+        "Instructions counted by valgrind's callgrind, not timed: the same on every run of one \
+         toolchain and build, and not across them, so each figure names its toolchain, and the \
+         commit and date of the run are given (`make icount`).\n\n",
+    );
+    for r in counted {
+        source_table(out, r, true);
     }
 }
 

@@ -247,12 +247,19 @@ pub fn lap_speed(p: &VehicleParams, g: &Goal, v_d: f32, laps: u8) -> f32 {
 /// is about as fast as the vehicle or faster, τ = D / v. The path is a
 /// curve, not a line, so τ is an underestimate that shrinks to zero on
 /// arrival. Constant cost: one square root; nothing for static goals.
-#[inline]
+#[inline(always)]
 #[must_use]
 pub fn lead(g: &Goal, s: &VehicleState, v: f32) -> Goal {
+    // A static goal (most of them) costs the test alone, inlined.
     if g.vel == Vec2::ZERO {
         return *g;
     }
+    lead_moving(g, s, v)
+}
+
+/// [`lead`] for a goal in motion.
+#[must_use]
+fn lead_moving(g: &Goal, s: &VehicleState, v: f32) -> Goal {
     let r = g.pos - s.pos;
     let v = v.at_least(0.1);
     let a = v * v - g.vel.length_squared();

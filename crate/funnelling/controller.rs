@@ -6,7 +6,8 @@
 
 use serde::{Deserialize, Serialize};
 
-use crate::funnelling::config::FunnelConfig;
+use crate::base::vehicle::VehicleParams;
+use crate::funnelling::config::{Deviations, FunnelConfig};
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
 use crate::funnelling::update::{Internals, Update};
 
@@ -76,6 +77,19 @@ impl ControllerKind {
                 .plan(&mut u.towards(&u.goal.unoriented())),
             Self::Relaxed => relaxed.plan(funnel, u, ri),
         }
+    }
+
+    /// True for our standard controller on a unicycle: [`ControllerKind::plan`]
+    /// is then [`FunnelConfig::plan_ours`] and the seek step
+    /// [`crate::funnelling::seek::seek_step_committed_unicycle`], which a
+    /// world's step calls directly, the choice made once per step.
+    #[inline]
+    #[must_use]
+    pub fn is_ours_unicycle(self, funnel: &FunnelConfig, p: &VehicleParams) -> bool {
+        self == Self::Standard
+            && !p.car_like()
+            && funnel.deviations() == Deviations::OURS
+            && funnel.commit_turn
     }
 
     /// One update with this controller: [`ControllerKind::plan`] and the

@@ -60,6 +60,16 @@ impl FunnelConfig {
         }
     }
 
+    /// [`FunnelConfig::plan`] for settings whose switches are ours
+    /// ([`Deviations::OURS`], which the caller has checked once for many
+    /// updates): the same update without its test of the switches.
+    #[must_use]
+    #[inline(always)]
+    pub fn plan_ours(&self, u: &mut Update<'_>) -> Internals {
+        debug_assert_eq!(self.deviations(), Deviations::OURS);
+        self.plan_with(u, Deviations::OURS)
+    }
+
     /// [`FunnelConfig::plan`] with the switches `dev`.
     #[inline(always)]
     fn plan_with(&self, u: &mut Update<'_>, dev: Deviations) -> Internals {

@@ -78,6 +78,19 @@ pub fn seek_step_committed(
     p.integrate(s, pd(p, s, e), desired_speed);
 }
 
+/// [`seek_step_committed`] for a unicycle ([`VehicleParams::integrate_unicycle`]:
+/// `R_min` 0, checked by the caller once for many steps); the same bits.
+#[inline]
+pub fn seek_step_committed_unicycle(
+    p: &VehicleParams,
+    s: &mut VehicleState,
+    heading: f32,
+    desired_speed: f32,
+) {
+    let e = committed_error(diff(heading, s.theta), s.omega);
+    p.integrate_unicycle(s, pd(p, s, e), desired_speed);
+}
+
 /// One plain seek step towards the point `target`: the heading is the
 /// instantaneous radial direction.
 #[inline]

@@ -6,7 +6,7 @@ use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
 use crate::funnelling::goal::{FunnelMemory, Goal};
-use crate::funnelling::relaxed::RelaxedConfig;
+use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::update::{Internals, Mode, Update};
 use crate::world::agent::Agent;
@@ -34,6 +34,29 @@ impl Planner<'_> {
     /// [`advance_queue`].
     #[inline]
     pub(crate) fn plan(&self, a: &mut Agent, advance: bool) -> GoalSpec {
+        let (kind, f, r) = (self.kind, self.funnel, self.relaxed);
+        self.plan_by(a, advance, |u, ri| kind.plan(f, r, u, ri))
+    }
+
+    /// True when the world's controller is our standard one on a unicycle
+    /// ([`ControllerKind::is_ours_unicycle`]): a step then plans every
+    /// agent with [`FunnelConfig::plan_ours`] and moves it with
+    /// [`seek_step_committed_unicycle`](crate::funnelling::seek::seek_step_committed_unicycle).
+    #[inline]
+    pub(crate) fn ours_unicycle(&self) -> bool {
+        self.kind.is_ours_unicycle(self.funnel, self.p)
+    }
+
+    /// [`Planner::plan`] with the controller's plan given (`plan`: the
+    /// world's controller, or the same one with its choices made once
+    /// per step).
+    #[inline(always)]
+    pub(crate) fn plan_by(
+        &self,
+        a: &mut Agent,
+        advance: bool,
+        plan: impl FnOnce(&mut Update<'_>, &mut RelaxedInternals) -> Internals,
+    ) -> GoalSpec {
         debug_assert_eq!(Some(&a.spec), a.goals.get(a.current), "a stale goal spec");
         let spec = a.spec;
         debug_assert!(
@@ -51,9 +74,7 @@ impl Planner<'_> {
             goal: &goal,
             memory: mem,
         };
-        a.internals = self
-            .kind
-            .plan(self.funnel, self.relaxed, &mut u, &mut a.relaxed);
+        a.internals = plan(&mut u, &mut a.relaxed);
         spec
     }
 }

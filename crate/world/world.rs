@@ -9,9 +9,10 @@ use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
-use crate::funnelling::seek::seek_step;
+use crate::funnelling::seek::{seek_step, seek_step_committed_unicycle};
 use crate::funnelling::table::format::TableError;
 use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::update::{Internals, Update};
 use crate::world::agent::Agent;
 use crate::world::goals::{GoalMotion, GoalSpec};
 use crate::world::planner::{advance_queue, Planner};
@@ -246,26 +247,26 @@ impl World {
         let parallel = self.parallel_chunk() < self.agents.len();
         let (planner, agents) = self.planning(table);
         let dt = planner.p.dt;
-        let step = |a: &mut Agent| step_agent(&planner, metrics_on, a);
-        match (parallel, out) {
-            (false, None) => agents.iter_mut().for_each(step),
-            (false, Some(out)) => {
-                for (a, o) in agents.iter_mut().zip(out.chunks_exact_mut(STATE_STRIDE)) {
-                    step(a);
-                    write_record(a, o);
-                }
-            }
-            (true, None) => crate::base::parallel::for_each_mut(agents, PARALLEL_CHUNK, step),
-            (true, Some(out)) => crate::base::parallel::for_each_mut_with(
-                agents,
-                out,
-                STATE_STRIDE,
-                PARALLEL_CHUNK,
-                |a, o| {
-                    step(a);
-                    write_record(a, o);
-                },
-            ),
+        // The default (our standard controller, a unicycle) is compiled on
+        // its own, every choice of controller, reading and vehicle made
+        // here once instead of per agent; the same operations, so the same
+        // bits.
+        if planner.ours_unicycle() {
+            let f = planner.funnel;
+            let step = |a: &mut Agent| {
+                let plan = |u: &mut Update<'_>, _: &mut RelaxedInternals| f.plan_ours(u);
+                step_agent(&planner, metrics_on, a, plan, seek_step_committed_unicycle);
+            };
+            step_agents(agents, parallel, out, &step);
+        } else {
+            let (kind, f, r) = (planner.kind, planner.funnel, planner.relaxed);
+            let step = |a: &mut Agent| {
+                let plan = |u: &mut Update<'_>, ri: &mut RelaxedInternals| kind.plan(f, r, u, ri);
+                step_agent(&planner, metrics_on, a, plan, |p, s, h, v| {
+                    f.seek_step(p, s, h, v);
+                });
+            };
+            step_agents(agents, parallel, out, &step);
         }
         self.time += dt;
     }
@@ -328,12 +329,51 @@ impl World {
     }
 }
 
-/// One agent's share of a plain step (no avoidance): plan towards the
-/// current goal and step, or, all goals done, rest if the last goal halts,
-/// else cruise on; then the path metrics. Reads nothing of another agent
-/// but the planner's snapshot, so agents step in any order, on any thread.
+/// Every agent's `step`, on the calling thread or (`parallel`) the
+/// current rayon pool, each agent's record written to `out` (when given)
+/// once it has stepped.
 #[inline(always)]
-fn step_agent(planner: &Planner<'_>, metrics_on: bool, a: &mut Agent) {
+fn step_agents(
+    agents: &mut [Agent],
+    parallel: bool,
+    out: Option<&mut [f32]>,
+    step: &(impl Fn(&mut Agent) + Sync),
+) {
+    match (parallel, out) {
+        (false, None) => agents.iter_mut().for_each(step),
+        (false, Some(out)) => {
+            for (a, o) in agents.iter_mut().zip(out.chunks_exact_mut(STATE_STRIDE)) {
+                step(a);
+                write_record(a, o);
+            }
+        }
+        (true, None) => crate::base::parallel::for_each_mut(agents, PARALLEL_CHUNK, step),
+        (true, Some(out)) => crate::base::parallel::for_each_mut_with(
+            agents,
+            out,
+            STATE_STRIDE,
+            PARALLEL_CHUNK,
+            |a, o| {
+                step(a);
+                write_record(a, o);
+            },
+        ),
+    }
+}
+
+/// One agent's share of a plain step (no avoidance): plan towards the
+/// current goal (`plan`, the world's controller) and step (`seek`, its
+/// seek step), or, all goals done, rest if the last goal halts, else
+/// cruise on; then the path metrics. Reads nothing of another agent but
+/// the planner's snapshot, so agents step in any order, on any thread.
+#[inline(always)]
+fn step_agent(
+    planner: &Planner<'_>,
+    metrics_on: bool,
+    a: &mut Agent,
+    plan: impl FnOnce(&mut Update<'_>, &mut RelaxedInternals) -> Internals,
+    seek: impl FnOnce(&VehicleParams, &mut VehicleState, f32, f32),
+) {
     let p = planner.p;
     let prev = a.state;
     if a.done() {
@@ -342,10 +382,8 @@ fn step_agent(planner: &Planner<'_>, metrics_on: bool, a: &mut Agent) {
         seek_step(p, &mut a.state, hold, speed);
         a.hold(speed);
     } else {
-        let spec = planner.plan(a, true);
-        planner
-            .funnel
-            .seek_step(p, &mut a.state, a.internals.gamma, a.internals.v_dt);
+        let spec = planner.plan_by(a, true, plan);
+        seek(p, &mut a.state, a.internals.gamma, a.internals.v_dt);
         advance_queue(a, &spec, planner.t);
     }
     if metrics_on {

@@ -100,7 +100,7 @@ pub struct Claim {
     pub verdict: Verdict,
 }
 
-/// Deterministic or a same-run timing ratio.
+/// Deterministic, a same-run timing ratio, or an instruction count.
 #[derive(Clone, Copy, Debug, Serialize, PartialEq, Eq)]
 #[serde(rename_all = "camelCase")]
 pub enum Kind {
@@ -108,6 +108,9 @@ pub enum Kind {
     Deterministic,
     /// A ratio of times measured in one run.
     Timed,
+    /// Instructions counted under callgrind: the same for one toolchain
+    /// and build (`benches/icount.rs`).
+    Counted,
 }
 
 #[derive(Serialize)]
