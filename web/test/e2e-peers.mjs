@@ -77,6 +77,25 @@ const SWAP = [
   ["rest_heading_p50", "heading error standing at rest at the end, median", "restHeadingP50", "°", 1],
 ];
 
+/** Which way a metric is better ("higher" / "lower"), and why a peer
+ *  ahead of ours on it is: the report says so on the peer's row. */
+const AHEAD = {
+  rest: ["higher", "a holonomic point (Yuka) or disc (Detour) stops anywhere in the disk, with no heading to reach"],
+  length_ratio_p50: ["lower", "another model: it turns on the spot and ignores the start and end headings, so its straight path is shorter than any oriented one"],
+  arrive_time_p50: ["lower", "less work: no heading to reach, so it drives straight in and stops"],
+  arrived: ["higher", "another model: discs with no heading to reach stop wherever they are let through; two of ours stand just outside D_tol, held off by their neighbours"],
+  all_arrived_time: ["lower", "less work: discs with no heading to reach drive straight through"],
+};
+
+/** `what` with, on a peer's row that is ahead of ours, the report's note why. */
+function aheadNote(metric, what, value, ours, side) {
+  const a = AHEAD[metric];
+  if (side === "ours" || !a || !Number.isFinite(value)) return what;
+  // Ours without a value (not every agent arrived): the peer's is ahead.
+  const ahead = !Number.isFinite(ours) || (a[0] === "higher" ? value > ours : value < ours);
+  return ahead ? `${what}; the peer is ahead of ours here: ${a[1]}` : what;
+}
+
 /** One side's settings in words, for a figure's `what`. */
 function sideWords(side, s) {
   const v = s.vehicle;
@@ -135,7 +154,7 @@ try {
     const keys = Object.keys(SIDES);
     table(`oriented targets: ${nCases} seeded cases (seed ${seed}), pedestrian, D_tol ${settings.goal.dTol} m, ε_tol ${(settings.goal.epsTol * 180 / Math.PI).toFixed(0)}°`, ORIENTED.map(([id, , k]) => [id, keys.map((s) => r[s][k])]), keys.map((k) => SIDES[k]));
     const figures = ORIENTED.flatMap(([id, what, k, unit, digits]) =>
-      keys.map((s) => figure(`peers.web.oriented.${id}.${SIDES[s]}`, `${what}; ${nCases} seeded oriented targets 3–10 m away (seed ${seed}), pedestrian limits; ${sideWords(s, settings)}`, r[s][k], unit, digits)));
+      keys.map((s) => figure(`peers.web.oriented.${id}.${SIDES[s]}`, aheadNote(id, `${what}; ${nCases} seeded oriented targets 3–10 m away (seed ${seed}), pedestrian limits; ${sideWords(s, settings)}`, r[s][k], r.ours[k], s), r[s][k], unit, digits)));
     console.log(`# record: ${writeRecord({ source: `${SOURCE}::peers_web_oriented`, command: COMMAND, kind: "deterministic", seeds: { tuning: [], report: [seed] }, figures })}`);
     asCommitted(`${SOURCE}::peers_web_oriented`, figures);
     assert.ok(r.ours.orientedPct >= 90, `ours arrives oriented in ${r.ours.orientedPct}% of the runs`);
@@ -151,7 +170,7 @@ try {
       for (const s of ["ours", "detour"]) for (const u of r[s].unsettled) console.log(`# ${name} ${s}: agent ${u.i} not at rest at the end: ${u.d.toFixed(3)} m from its goal at ${u.v.toFixed(4)} m/s`);
       for (const [id, what, k, unit, digits] of SWAP) {
         figures.push(figure(`peers.web.${name}.${id}.ours`, `${what}; ${name} (scenarios/${name}.json), ${r.ours.agents} agents; ours: funnelling + ORCA, the scenario's settings`, r.ours[k], unit, digits));
-        figures.push(figure(`peers.web.${name}.${id}.detour`, `${what}; ${name}, ${r.detour.agents} agents; ${settings.detour}, the scenario's radius, maxSpeed = the goal's speed, maxAcceleration ${settings.vehicle.accelMax}, other parameters Detour's defaults`, r.detour[k], unit, digits));
+        figures.push(figure(`peers.web.${name}.${id}.detour`, aheadNote(id, `${what}; ${name}, ${r.detour.agents} agents; ${settings.detour}, the scenario's radius, maxSpeed = the goal's speed, maxAcceleration ${settings.vehicle.accelMax}, other parameters Detour's defaults`, r.detour[k], r.ours[k], "detour"), r.detour[k], unit, digits));
       }
       assert.equal(r.ours.worstOverlaps, 0, `${name}: ours overlapped`);
     }
