@@ -61,12 +61,13 @@ lint:
 
 # The tests write the figures records into target/figures (cleared first,
 # so a renamed test leaves no stale record); then the report's checked
-# part (docs/FIGURES.md) must equal what they measured, byte for byte.
+# part (docs/FIGURES.md) must equal what they measured, byte for byte
+# (`steer` in the test profile: the tests' own build, nothing compiled again).
 test-native:
 	rm -rf target/figures
 	cargo test --all-targets --features cli,counters
 	cargo test --doc --features cli,counters
-	cargo run --features cli,counters --bin steer -- report --check
+	cargo run --profile test --features cli,counters --bin steer -- report --check
 	$(stage-done)
 
 # The figures report, fast mode (a few minutes): every test that writes a
