@@ -14,6 +14,7 @@
 //! | [`study_records`] | what `steer reach / relaxed / envelope / avoid --record` write: each summary row as figures, tuning and report seeds |
 //! | [`report`] | `steer report`: `docs/FIGURES.md` from the records, the presets' `measured` templates, `--check` |
 //! | [`report_sections`] | the report's Peers section and its instruction counts |
+//! | [`report_table`] | one record as the report shows it: source, command, seeds, its figures |
 //! | [`table_cache`] | the η tables built for other vehicles, cached by parameter key (`steer run`) |
 //! | [`trajectory`] | `steer run`'s output streamed (CSV, time-ordered JSON, JSON Lines) to a temporary file renamed onto `--out` when complete, the `--out` checks before simulating |
 
@@ -23,6 +24,7 @@ pub mod pool;
 pub mod records;
 pub mod report;
 pub mod report_sections;
+pub mod report_table;
 pub mod steer;
 pub mod study_records;
 pub mod table_cache;

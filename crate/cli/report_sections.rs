@@ -7,7 +7,7 @@
 use std::collections::BTreeMap;
 
 use super::records::{Kind, Record};
-use super::report::source_table;
+use super::report_table::source_table;
 
 /// Whether a record belongs to the Peers section: every figure id starts
 /// with `peers.` (a test, study, benchmark or browser run that measures a
