@@ -10,7 +10,7 @@ import type { Surface } from "../ui/canvas";
 import type { View } from "../ui/view";
 import { errorText, type Lab } from "../core/wasm";
 import { oursGhost, PEER_COLOURS, PEER_NAMES, yukaGhost, type PeerGhost } from "./compare";
-import { arrow } from "./render";
+import { arrow, strokePolyline } from "./render";
 import type { LabSim } from "./sim";
 
 const DEG = 180 / Math.PI;
@@ -120,13 +120,7 @@ function drawPeerGhost(ctx: CanvasRenderingContext2D, v: View, g: PeerGhost): vo
   ctx.globalAlpha = 0.85;
   ctx.lineWidth = 2.5;
   ctx.setLineDash(g.side === "ours" ? [] : g.side === "arrive" ? [9, 5] : [3, 4]);
-  ctx.beginPath();
-  for (let k = 0; k < n; k++) {
-    const p = v.toScreen(g.points[2 * k]!, g.points[2 * k + 1]!);
-    if (k === 0) ctx.moveTo(p.x, p.y);
-    else ctx.lineTo(p.x, p.y);
-  }
-  ctx.stroke();
+  strokePolyline(ctx, v, g.points, n);
   ctx.setLineDash([]);
   if (g.mark) {
     const p = v.toScreen(g.mark.x, g.mark.y);

@@ -91,13 +91,7 @@ export function drawGhost(ctx: CanvasRenderingContext2D, v: View, g: GhostDraw, 
   ctx.globalAlpha = 0.7;
   ctx.lineWidth = width;
   ctx.setLineDash(g.slowed ? [2, 4] : [7, 5]);
-  ctx.beginPath();
-  for (let k = 0; k < n; k++) {
-    const p = v.toScreen(g.points[2 * k]!, g.points[2 * k + 1]!);
-    if (k === 0) ctx.moveTo(p.x, p.y);
-    else ctx.lineTo(p.x, p.y);
-  }
-  ctx.stroke();
+  strokePolyline(ctx, v, g.points, n);
   ctx.setLineDash([]);
   const e = v.toScreen(g.points[2 * n - 2]!, g.points[2 * n - 1]!);
   if (g.reached && Number.isFinite(g.finalDir)) {
@@ -488,4 +482,16 @@ export function drawScene(s: Surface, v: View, sc: Scene): void {
     ctx.fill();
     ctx.stroke();
   }
+}
+
+/** Strokes the first `n` points of `points` (x, y pairs in world metres)
+ *  as one path in the current style: the ghosts' and the peers' paths. */
+export function strokePolyline(ctx: CanvasRenderingContext2D, v: View, points: ArrayLike<number>, n: number): void {
+  ctx.beginPath();
+  for (let k = 0; k < n; k++) {
+    const p = v.toScreen(points[2 * k]!, points[2 * k + 1]!);
+    if (k === 0) ctx.moveTo(p.x, p.y);
+    else ctx.lineTo(p.x, p.y);
+  }
+  ctx.stroke();
 }
