@@ -242,8 +242,13 @@ test-e2e-axe: setup-browser web-build-test
 
 # Playwright for other vehicles: vehicle limits build their η table in Web
 # Workers (HUD, URL, IndexedDB cache on reload), presets use the link's limits.
+# Then the lab for every hand and eye (web/test/e2e-keys.mjs): every handle by
+# keyboard, the crowd section and the measured speed lines (the lab's HUD,
+# the crowd page at 200,000 boids), the car-like vehicle's glyph and HUD
+# line, touch hit areas, the phone's panel; screenshots in artifacts/keys-*.
 test-e2e-vehicle: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-vehicle.mjs
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-keys.mjs
 	$(stage-done)
 
 # Avoidance in the lab: the page plays the circle swap and reads the core's

@@ -16,10 +16,14 @@ export interface CrowdStats {
   /** Workers: wall ms of their jobs, and of the slowest worker's stepping in them. */
   jobMs: number;
   workerStepMs: number;
-  /** Over the last second: ms per step (workers: the slowest worker's), ms per draw, frames per second. */
+  /** Over the last second: ms per completed step (workers: the slowest
+   *  worker's), ms per drawn frame (NaN: none), frames drawn per second. */
   stepMs: number;
   drawMs: number;
   fps: number;
+  /** Over the last second: steps completed, and steps asked for (playing), per second. */
+  stepsPerSecond: number;
+  askedPerSecond: number;
 }
 
 export interface CrowdPage {

@@ -75,6 +75,10 @@ export interface CrowdHook {
   stepMs: number;
   drawMs: number;
   fps: number;
+  /** Steps completed per second over the last second. */
+  stepsPerSecond: number;
+  /** Steps completed since the page started (this thread or the workers). */
+  stepsDone: number;
   preset: string;
   count(): number;
   time(): number;
@@ -167,6 +171,8 @@ export function installHook(page: CrowdPage): void {
     get stepMs() { return stats.stepMs; },
     get drawMs() { return stats.drawMs; },
     get fps() { return stats.fps; },
+    get stepsPerSecond() { return stats.stepsPerSecond; },
+    get stepsDone() { return stats.steps; },
     get preset() { return s.preset; },
     count: () => s.lab?.count() ?? 0,
     time: () => s.lab?.time() ?? 0,

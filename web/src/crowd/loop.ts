@@ -1,10 +1,26 @@
 // The crowd page's animation loop: steps the crowd (playing, or one pending
 // single step), draws when something changed, and every 250 ms updates the
-// metrics panel and the one-line HUD; step/draw/fps figures per second.
+// metrics panel and the one-line HUD. The HUD's rates are measured from
+// what completed over the last second (ui/speedmeter.ts): steps finished
+// (on this thread or in the workers), frames that drew a new state, and
+// the ms of the steps and draws that happened; never the display's rate.
 
 import type { Surface } from "../ui/canvas";
 import type { CrowdPage } from "./app";
 import { drawCrowd } from "./render";
+import type { CrowdStats } from "./app";
+import { SpeedMeter } from "../ui/speedmeter";
+
+/** A measured time, or "—" when nothing was measured. */
+const msText = (ms: number): string => (Number.isFinite(ms) ? `${ms.toFixed(ms < 10 ? 2 : ms < 100 ? 1 : 0)} ms` : "—");
+
+/** Steps completed per second, and plainly when fewer than were asked. */
+function rateText(s: CrowdStats): string {
+  const r = s.stepsPerSecond;
+  const rate = `${r.toFixed(r < 10 ? 1 : 0)} steps/s`;
+  if (s.askedPerSecond <= 0) return rate;
+  return r < 0.95 * s.askedPerSecond ? `${rate} (slower than the ${s.askedPerSecond.toFixed(0)} asked)` : rate;
+}
 
 export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): void {
   const { session: s, stats } = page;
@@ -13,7 +29,12 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
   let wSteps = 0;
   let wMs = 0;
   let drawAcc = 0;
-  let frameAcc = 0;
+  let drawnAcc = 0;
+  /** Steps asked for in the window (the rate the page aims at). */
+  let askedAcc = 0;
+  /** Steps completed in the window. */
+  let doneAcc = 0;
+  const meter = new SpeedMeter();
   let windowStart = performance.now();
   let lastMetrics = 0;
   const frame = (now: number): void => {
@@ -22,7 +43,9 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
     if (!lab) return;
     const t0 = performance.now();
     const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
+    if (s.playing) askedAcc += n;
     const st = s.stepper?.active ? s.stepper : null;
+    const stepsBefore = stats.steps;
     if (st) {
       // Workers step: this frame takes the newest complete state (before
       // asking for more: the workers then leave its buffer alone), asks
@@ -46,6 +69,7 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
       s.dirty = true;
     }
     const t1 = performance.now();
+    const drawing = s.dirty;
     if (s.dirty) {
       const half = st ? st.state.length >> 1 : 0;
       drawCrowd(surface, s.view, {
@@ -67,17 +91,28 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
     }
     const t2 = performance.now();
     page.probe?.(t2 - t0);
-    stepAcc += t1 - t0;
-    drawAcc += t2 - t1;
-    frameAcc++;
+    if (!st && n > 0) stepAcc += t1 - t0;
+    if (drawing) {
+      drawAcc += t2 - t1;
+      drawnAcc++;
+    }
     stats.frames++;
+    doneAcc += stats.steps - stepsBefore;
+    meter.tick(now, drawing, lab.time(), stats.steps - stepsBefore);
     if (now - windowStart >= 1000) {
-      // With workers: the slowest worker's ms per step (the page's share is in draw).
-      stats.stepMs = s.stepper?.active ? (wSteps > 0 ? wMs / wSteps : 0) : stepAcc / frameAcc;
+      const span = now - windowStart;
+      const done = meter.read(3);
+      stats.stepsPerSecond = done.stepsPerSecond;
+      // Steps asked for per second: while playing, the steps per frame at the display's rate.
+      stats.askedPerSecond = (1000 * askedAcc) / span;
+      // ms per step of the steps that completed (with workers the slowest
+      // worker's: the page's share is in draw); NaN when none did.
+      const steps = st ? wSteps : doneAcc;
+      stats.stepMs = steps > 0 ? (st ? wMs : stepAcc) / steps : NaN;
       wSteps = wMs = 0;
-      stats.drawMs = drawAcc / frameAcc;
-      stats.fps = (1000 * frameAcc) / (now - windowStart);
-      stepAcc = drawAcc = frameAcc = 0;
+      stats.drawMs = drawnAcc > 0 ? drawAcc / drawnAcc : NaN;
+      stats.fps = done.fps;
+      stepAcc = drawAcc = drawnAcc = askedAcc = doneAcc = 0;
       windowStart = now;
     }
     if (now - lastMetrics > 250) {
@@ -87,13 +122,15 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
       const c = lab.config();
       const seek = c.seek;
       hud.textContent = [
-        `step ${lab.time().toFixed(0)}`,
+        // The workers' clock while they step (the page's crowd holds the state it last took).
+        `step ${(st ? st.time : lab.time()).toFixed(0)}`,
         `${lab.count().toLocaleString("en")} boids`,
         seek.kind === "reynolds" ? "Reynolds" : `Parker ${+(seek.fraction * 100).toPrecision(3)} %`,
         c.separation ? `separation ${+c.separation_weight.toPrecision(3)}` : "no separation",
-        `${stats.fps.toFixed(0)} fps`,
-        st ? `step ${stats.stepMs.toFixed(1)} ms in ${st.workers} worker${st.workers === 1 ? "" : "s"}` : `step ${stats.stepMs.toFixed(2)} ms`,
-        `draw ${stats.drawMs.toFixed(2)} ms`,
+        rateText(stats),
+        `${stats.fps.toFixed(stats.fps < 10 ? 1 : 0)} fps drawn`,
+        `step ${msText(stats.stepMs)}${st ? ` in ${st.workers} worker${st.workers === 1 ? "" : "s"}` : ""}`,
+        `draw ${msText(stats.drawMs)}`,
       ].join("  ·  ");
     }
   };

@@ -77,11 +77,12 @@ export class LabAvoidance {
 }
 
 /** Drags of the obstacles' parts (lab/obstacles.ts), for handles.ts's
- *  pointer handler: null where no obstacle is under the press; `done`
+ *  pointer handler: null where no obstacle is under the press (`hit`: the
+ *  handles' hit radius, CSS px); `done`
  *  after every move (redraw, URL). */
-export function obstacleDrags(view: View, avoid: LabAvoidance, lim: ObstacleLimits, done: () => void): (p: Vec) => Drag | null {
-  return (p) => {
-    const g = pickObstacle(view, avoid.obstacles, p);
+export function obstacleDrags(view: View, avoid: LabAvoidance, lim: ObstacleLimits, done: () => void): (p: Vec, hit: number) => Drag | null {
+  return (p, hit) => {
+    const g = pickObstacle(view, avoid.obstacles, p, hit);
     if (!g) return null;
     const start = [...avoid.obstacles];
     const from = view.toWorld(p.x, p.y);

@@ -41,6 +41,11 @@ const RELAXED_AIM_CHOICES: ReadonlyArray<{ value: RelaxedAimKey; label: string }
   { value: "paperArc", label: "relaxed point (paper)" },
 ];
 
+/** The panel's name of a relaxed aim ("relaxed aims at"), as its menu shows it. */
+export function relaxedAimLabel(k: RelaxedAimKey): string {
+  return RELAXED_AIM_CHOICES.find((c) => c.value === k)?.label ?? k;
+}
+
 /** The core's relaxed settings for the page's (the rest at the core's defaults). */
 export function relaxedConfig(f: FunnelSettings): RelaxedConfig {
   return { aim: f.relaxedAim };

@@ -13,9 +13,14 @@ const DEG = Math.PI / 180;
 /** Half the side of every handle's hit area, CSS px: at least 24 px
  *  across (WCAG 2.5.8's target size). */
 export const HIT_PX = 12;
-/** The tolerance circle's knob sits at least this far from the target's
- *  centre, CSS px: on a small stage the circle itself may be a few pixels
- *  wide, and its knob would otherwise share the centre's hit area. */
+/** The same for a finger, CSS px: 44 px across, the touch target size
+ *  platform guidelines ask for (a fingertip covers about 10 mm). */
+export const TOUCH_HIT_PX = 22;
+/** The tolerance circle's knob sits on the rim, and at least this far from
+ *  the target's centre, CSS px: on a small stage the circle itself may be a
+ *  few pixels wide, and its knob would otherwise share the centre's hit
+ *  area (a stalk from the rim then carries it, render.ts). Below this
+ *  radius the rim itself is not grabbed either. */
 export const RIM_MIN_PX = 2 * HIT_PX + 2;
 
 /** CSS-pixel canvas positions of every handle. */
@@ -68,24 +73,25 @@ const KINDS: readonly Kind[] = ["beta", "opening", "heading", "vehicle", "target
 /** The handle under `p`: the nearest whose hit area (radius {@link HIT_PX},
  *  the vehicle's body a little more) holds it; else the tolerance circle
  *  itself, when it is drawn larger than its knob's place. */
-export function pick(p: Vec, h: Handles, ring = 0): Kind | null {
+export function pick(p: Vec, h: Handles, ring = 0, hit = HIT_PX): Kind | null {
   let best: Kind | null = null;
   let bestD = Infinity;
   for (const k of KINDS) {
     const d = Math.hypot(p.x - h[k].x, p.y - h[k].y);
-    if (d <= (k === "vehicle" ? HIT_PX + 2 : HIT_PX) && d < bestD) {
+    if (d <= (k === "vehicle" ? hit + 2 : hit) && d < bestD) {
       best = k;
       bestD = d;
     }
   }
   if (best) return best;
-  if (ring >= RIM_MIN_PX && Math.abs(Math.hypot(p.x - h.target.x, p.y - h.target.y) - ring) <= 7) return "rim";
+  if (ring >= RIM_MIN_PX && Math.abs(Math.hypot(p.x - h.target.x, p.y - h.target.y) - ring) <= (hit * 7) / HIT_PX) return "rim";
   return null;
 }
 
 /** `extra`: other draggable things (the obstacles), tried after the
- *  playground's handles and before panning. */
-export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () => Handles | null, sink: DragSink, extra?: (p: Vec) => Drag | null): void {
+ *  playground's handles and before panning, with the hit radius. A touch
+ *  gets the larger hit areas ({@link TOUCH_HIT_PX}). */
+export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () => Handles | null, sink: DragSink, extra?: (p: Vec, hit: number) => Drag | null): void {
   /** The tolerance circle's radius on screen, CSS px. */
   const ring = (): number => sink.dTolNow() * view.scale;
   const grab = (p: Vec, h: Handles, kind: Kind): Drag => {
@@ -146,17 +152,18 @@ export function attachDrags(canvas: HTMLCanvasElement, view: View, handles: () =
   };
   attachPointer(
     canvas,
-    (p): Drag => {
+    (p, e): Drag => {
+      const hit = e.pointerType === "touch" ? TOUCH_HIT_PX : HIT_PX;
       const h = handles();
-      const kind = h ? pick(p, h, ring()) : null;
+      const kind = h ? pick(p, h, ring(), hit) : null;
       if (h && kind) return grab(p, h, kind);
-      const other = extra?.(p);
+      const other = extra?.(p, hit);
       if (other) return other;
       return panDrag(canvas, view, p, () => sink.redraw());
     },
     (p) => {
       const h = handles();
-      const over = p !== null && ((h !== null && pick(p, h, ring()) !== null) || (extra !== undefined && extra(p) !== null));
+      const over = p !== null && ((h !== null && pick(p, h, ring()) !== null) || (extra !== undefined && extra(p, HIT_PX) !== null));
       canvas.style.cursor = over ? "grab" : "";
     },
   );

@@ -97,6 +97,10 @@ export interface LabHook {
   simTime(): number;
   /** The view's CSS pixels per metre. */
   viewScale(): number;
+  /** The CSS-pixel canvas point of world point (x, y) in the view now. */
+  screenOf(x: number, y: number): Vec | null;
+  /** Agent i's goal position as drawn (null: no such agent). */
+  goal(i: number): Vec | null;
   /** Agent i's pose, speed, angular speed and mode as drawn (null: no such agent). */
   agentRecord(i: number): { x: number; y: number; theta: number; v: number; omega: number; mode: number } | null;
   /** The compare view's ghosts as last drawn (ours, Yuka arrive, Yuka seek) and its note. */
@@ -226,6 +230,12 @@ export function installHook(page: LabPage): void {
     }, 0),
     simTime: on((p) => p.sim.time, 0),
     viewScale: on((p) => p.view.scale, 1),
+    screenOf: (x, y) => page.parts?.view.toScreen(x, y) ?? null,
+    goal: (i) => {
+      const sim = page.parts?.sim;
+      if (!sim || i < 0 || i >= sim.count) return null;
+      return { x: sim.field(i, StateField.GoalX) ?? NaN, y: sim.field(i, StateField.GoalY) ?? NaN };
+    },
     peerGhosts: on((p) => ({ ghosts: p.compare.ghosts, note: p.compare.note }), null),
     agentRecord: (i) => {
       const sim = page.parts?.sim;

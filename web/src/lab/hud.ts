@@ -5,6 +5,7 @@
 
 import { Mode, type Internals } from "../core/wasm";
 import { modeWords } from "../ui/modes";
+import { realTime } from "../ui/speedmeter";
 
 /** A phone's width or a short window (a phone on its side): the HUD
  *  starts folded there, its numbers a tap away. style.css's compact rules
@@ -29,6 +30,13 @@ export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" 
   table: string;
   /** Where the world is stepped ("this thread", "2 workers, shared memory"). */
   stepping?: string | undefined;
+  /** Measured over the last second: frames drawn and simulation time per
+   *  second of wall time (ui/speedmeter.ts); absent before any reading. */
+  rate?: { fps: number; ratio: number } | undefined;
+  /** The clock runs (the η table is in). */
+  live?: boolean;
+  /** The vehicle's minimum turning radius, m (0: it turns on the spot). */
+  minTurnRadius?: number;
 };
 
 const DEG = 180 / Math.PI;
@@ -42,10 +50,15 @@ interface HudText {
   /** The mode in words (the chip), and its number for its colour. */
   chip: string;
   mode: number | null;
+  /** The vehicle's minimum turning radius (its mode's colour depends on it). */
+  radius: number;
   /** What the agent is doing, and which agent it is. */
   say: string;
-  /** Why it slows down (unreachable at the desired speed), or "". */
+  /** Why it slows down (unreachable at the desired speed), or why a
+   *  car-like vehicle drives round, or "". */
   warn: string;
+  /** Frames drawn and simulation speed, measured. */
+  speed: string;
   numbers: string;
   diagnostics: string;
 }
@@ -53,13 +66,18 @@ interface HudText {
 /** The HUD's text, and its settled part: everything but the numbers that
  *  change while the world runs (mode, table, stepping, agents, pause). */
 function hudText(h: HudData): { parts: HudText; key: string } {
-  const words = h.mode === null ? undefined : modeWords(h.mode);
+  const radius = h.minTurnRadius ?? 0;
+  const words = h.mode === null ? undefined : modeWords(h.mode, radius > 0);
   const chip = h.mode === null ? "—" : (words?.word ?? `mode ${h.mode}`);
   const who = h.agents > 1 ? `agent ${h.shown + 1} of ${h.agents} (ringed): ` : "";
   const say = `${who}${words?.meaning ?? ""}`;
-  const warn = h.reachable
-    ? ""
-    : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β (the table says unreachable; v_dt)`;
+  const manoeuvre = radius > 0 && h.mode === Mode.OrientationOnly;
+  const warn = manoeuvre
+    ? `Why the loop: a car-like vehicle cannot turn on the spot (its turning circle has a radius of at least ${radius.toFixed(1)} m), and the target is closer than a few turning circles, too close to turn in and face β directly; so it drives round and comes back in along β.`
+    : h.reachable
+      ? ""
+      : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β (the table says unreachable; v_dt)`;
+  const speed = speedLine(h);
   const flags = `${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`;
   const numbers = [
     `D      ${Number.isFinite(h.d) ? h.d.toFixed(3).padStart(7) : "      —"} m`,
@@ -77,8 +95,24 @@ function hudText(h: HudData): { parts: HudText; key: string } {
     `table  ${h.table}`,
     ...(h.stepping ? [`step   ${h.stepping}`] : []),
   ].join("\n");
-  const parts = { chip, mode: h.mode, say, warn, numbers, diagnostics };
-  return { parts, key: [chip, say, warn, h.table, h.stepping ?? "", h.agents, flags].join("\u0000") };
+  const parts = { chip, mode: h.mode, radius, say, warn, speed, numbers, diagnostics };
+  const slower = / slower /.test(speed);
+  return { parts, key: [chip, say, warn, h.table, h.stepping ?? "", h.agents, flags, slower].join("\u0000") };
+}
+
+/** The measured speed in words: frames drawn per second and simulation
+ *  time per second of wall time, saying plainly when the simulation runs
+ *  slower than real time (slower than ¼ in slow motion). */
+function speedLine(h: HudData): string {
+  if (h.live === false) return "clock held at t = 0 until the η table is in";
+  if (h.paused) return "paused";
+  const s = h.rate;
+  if (!s) return "measuring speed…";
+  const aim = h.slow ? 0.25 : 1;
+  const rt = realTime(s.ratio, aim);
+  const fps = `${s.fps.toFixed(0)} fps`;
+  if (h.slow) return `${fps} · ${rt.text}${rt.slower ? ", slower than the slow motion asked (¼)" : " (slow motion ×¼)"}`;
+  return `${fps} · ${rt.text}${rt.slower ? ": slower than real time, this computer cannot keep up" : ""}`;
 }
 
 /** The HUD's elements, made once inside #hud. */
@@ -86,6 +120,7 @@ class HudView {
   private readonly chip: HTMLAnchorElement;
   private readonly say: HTMLElement;
   private readonly warn: HTMLElement;
+  private readonly speed: HTMLElement;
   private readonly numbers: HTMLElement;
   private readonly diagnostics: HTMLElement;
 
@@ -117,6 +152,8 @@ class HudView {
       const warn = document.createElement("p");
       warn.className = "hud-warn";
       warn.hidden = true;
+      const speed = document.createElement("p");
+      speed.className = "hud-speed";
       const numbers = document.createElement("pre");
       numbers.className = "hud-num";
       const details = document.createElement("details");
@@ -125,11 +162,12 @@ class HudView {
       summary.textContent = "diagnostics";
       const diag = document.createElement("pre");
       details.append(summary, diag);
-      el.append(head, say, warn, numbers, details);
+      el.append(head, say, warn, speed, numbers, details);
     }
     this.chip = el.querySelector<HTMLAnchorElement>(".hud-chip")!;
     this.say = el.querySelector<HTMLElement>(".hud-say")!;
     this.warn = el.querySelector<HTMLElement>(".hud-warn")!;
+    this.speed = el.querySelector<HTMLElement>(".hud-speed")!;
     this.numbers = el.querySelector<HTMLElement>(".hud-num")!;
     this.diagnostics = el.querySelector<HTMLElement>(".hud-diag pre")!;
   }
@@ -137,7 +175,7 @@ class HudView {
   write(p: HudText): void {
     if (this.chip.textContent !== p.chip) {
       this.chip.textContent = p.chip;
-      const w = p.mode === null ? undefined : modeWords(p.mode);
+      const w = p.mode === null ? undefined : modeWords(p.mode, p.radius > 0);
       this.chip.style.setProperty("--mode", w?.colour ?? "#888888");
       this.chip.dataset["mode"] = p.mode === null ? "" : String(p.mode);
     }
@@ -145,6 +183,10 @@ class HudView {
     if (this.warn.textContent !== p.warn) {
       this.warn.textContent = p.warn;
       this.warn.hidden = p.warn === "";
+    }
+    if (this.speed.textContent !== p.speed) {
+      this.speed.textContent = p.speed;
+      this.speed.classList.toggle("slower", / slower /.test(p.speed));
     }
     if (this.numbers.textContent !== p.numbers) this.numbers.textContent = p.numbers;
     if (this.diagnostics.textContent !== p.diagnostics) this.diagnostics.textContent = p.diagnostics;

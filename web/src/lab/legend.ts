@@ -4,7 +4,7 @@
 // core has and no other.
 
 import { Mode } from "../core/wasm";
-import { MODE_ORDER, MODE_WORDS, type ModeKey } from "../ui/modes";
+import { MANOEUVRE_WORDS, MODE_ORDER, MODE_WORDS, type ModeKey } from "../ui/modes";
 
 /** The shapes paper 000 §6 gives a target per mode (circle: a position to
  *  reach, triangle: a heading to reach). */
@@ -35,6 +35,17 @@ export function buildLegend(el: HTMLElement): void {
     item.append(w.word);
     el.append(item);
   }
+  // A car-like vehicle's manoeuvre (ui/modes.ts), shown while one is in force.
+  const car = document.createElement("span");
+  car.className = "mode";
+  car.dataset["carLike"] = "manoeuvre";
+  car.title = `${MANOEUVRE_WORDS.word}: a car-like vehicle ${MANOEUVRE_WORDS.meaning}`;
+  const sw = document.createElement("i");
+  sw.className = "sw tri";
+  sw.style.color = MANOEUVRE_WORDS.colour;
+  car.append(sw, `${MANOEUVRE_WORDS.word} (car-like)`);
+  car.hidden = true;
+  el.append(car);
   for (const [cls, text] of [["eta", "η: heading a straight seek arrives with"], ["ghost", "predicted seek path"], ["gamma", "γ: heading steered"]] as const) {
     const item = document.createElement("span");
     const i = document.createElement("i");
@@ -46,4 +57,14 @@ export function buildLegend(el: HTMLElement): void {
   more.href = "learn.html#modes";
   more.textContent = "what the modes mean";
   el.append(more);
+}
+
+/** Shows the car-like manoeuvre's entry of `el`'s legend while a vehicle
+ *  that cannot turn on the spot is in force, and hides "turning on the
+ *  spot" meanwhile (such a vehicle never does). */
+export function legendCarLike(el: HTMLElement, carLike: boolean): void {
+  const car = el.querySelector<HTMLElement>('[data-car-like]');
+  const spot = el.querySelector<HTMLElement>('[data-mode="OrientationOnly"]');
+  if (car && car.hidden === carLike) car.hidden = !carLike;
+  if (spot && spot.hidden !== carLike) spot.hidden = carLike;
 }

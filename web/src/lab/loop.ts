@@ -7,6 +7,7 @@ import { beginFrame, type Surface } from "../ui/canvas";
 import type { View } from "../ui/view";
 import type { FrameProbe, LoopStats } from "./app";
 import { Hud } from "./hud";
+import { SpeedMeter } from "../ui/speedmeter";
 import { COLOURS, drawScene } from "./render";
 import type { SceneBuilder } from "./scene";
 import type { LabSim } from "./sim";
@@ -17,12 +18,20 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
   let lastFrame = since;
   let frameMsEma = 0;
   const hud = new Hud(hudEl);
+  // Frames drawn and simulation time over the last second: the HUD's speed line.
+  const meter = new SpeedMeter();
+  let simTime = sim.time;
   const frame = (now: number): void => {
     const interval = now - lastFrame;
     lastFrame = now;
     const t0 = performance.now();
     const stepped = sim.advance(interval);
     if (stepped.updates > 0) probe?.stepped(stepped.updates, stepped.ms);
+    // A rebuild or a reset starts the clock again: so does the reading.
+    if (sim.time < simTime) meter.reset();
+    simTime = sim.time;
+    const drawing = sim.dirty;
+    meter.tick(now, drawing, sim.time, 0);
     let drawMs = 0;
     // A frame draws only a new state, an edit or a new view: redrawing the
     // same picture would take a core from the stepping workers.
@@ -34,7 +43,7 @@ export function runLoop(sim: LabSim, scenes: SceneBuilder, surface: Surface, vie
       drawScene(surface, view, scene);
       over(surface, view);
       drawMs = performance.now() - d0;
-      hud.show(scenes.hud(inter, frameMsEma), now);
+      hud.show(scenes.hud(inter, frameMsEma, meter.read()), now);
       sim.dirty = false;
       stats.frames++;
       if (stats.frames === 1) performance.mark("lab:loop");

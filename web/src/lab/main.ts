@@ -8,7 +8,9 @@ import { errorText, fetchTable, installTable, Lab, loadCore, precision, ranges }
 import { limitDefaults, RangeTable } from "./fields";
 import { obstacleDrags } from "./avoidance";
 import { avoidanceSection } from "./avoidpanel";
-import { attachDrags, handlePositions, type Handles } from "./handles";
+import { crowdSection } from "./crowdpanel";
+import { attachDrags, handlePositions, type DragSink, type Handles } from "./handles";
+import { labKeyboard } from "./keyboard";
 import { obstacleLimits } from "./obstacles";
 import { fnvHex } from "../ui/fnv";
 import type { LabPage } from "./app";
@@ -22,7 +24,7 @@ import { buildTransport } from "./transport";
 import { decodeState } from "./urlstate";
 import { openTableCache } from "./tablecache";
 import { tableBadge } from "./loading";
-import { buildLegend } from "./legend";
+import { buildLegend, legendCarLike } from "./legend";
 import { PeerCompare } from "./compareview";
 
 const page: LabPage = {
@@ -75,12 +77,13 @@ async function start(): Promise<void> {
     sim.url.save();
   };
   avoidanceSection($("panel"), sim.avoid, () => ({ x: view.cx, y: view.cy }), changed);
+  crowdSection($("panel"), sim, transport);
   const compare = new PeerCompare(sim, lab);
   compare.section($("panel"));
 
   const handles = (): Handles | null =>
     sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
-  attachDrags(canvas, view, handles, {
+  const sink: DragSink = {
     target: (x, y) => { st.target.x = x; st.target.y = y; sim.updateGoal(); },
     beta: (b) => { st.target.theta = b; goal.beta.set(b); sim.updateGoal(); },
     epsTol: (e) => { st.epsTol = e; goal.epsTol.set(e); sim.updateGoal(); },
@@ -89,7 +92,13 @@ async function start(): Promise<void> {
     vehiclePose: () => sim.pose(sim.focus),
     dTolNow: () => st.dTol,
     redraw: () => { sim.dirty = true; sim.url.save(); },
-  }, obstacleDrags(view, sim.avoid, obstacleLimits(table), changed));
+  };
+  const limits = obstacleLimits(table);
+  attachDrags(canvas, view, handles, sink, obstacleDrags(view, sim.avoid, limits, changed));
+  const keyboard = labKeyboard(canvas, {
+    view, sink, handles, avoid: sim.avoid, limits, changed,
+    target: () => ({ x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol }),
+  });
 
   page.parts = { sim, view, transport, handles, compare };
   const since = performance.now();
@@ -109,7 +118,11 @@ async function start(): Promise<void> {
   }
   transport.setPaused(false);
   const badge = tableBadge(canvas.parentElement ?? document.body);
-  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since, (s, v) => compare.draw(s, v));
+  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since, (s, v) => {
+    compare.draw(s, v);
+    keyboard.place();
+    if (legendEl) legendCarLike(legendEl, (sim.params().minTurnRadius ?? 0) > 0);
+  });
 
   // The table: the agents are planned with it and the clock starts.
   const t0 = performance.now();

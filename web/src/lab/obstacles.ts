@@ -89,14 +89,16 @@ export function obstacleKnobs(view: View, list: readonly number[], i: number): V
   return [view.toScreen(list[o + 1]!, list[o + 2]!), view.toScreen(list[o + 3]!, list[o + 4]!)];
 }
 
-/** The obstacle part under the screen point `p` (knobs first, last drawn on top). */
-export function pickObstacle(view: View, list: readonly number[], p: Vec): ObstacleGrab | null {
+/** The obstacle part under the screen point `p` (knobs first, last drawn
+ *  on top); `hit`: the playground handles' hit radius (a touch's is larger). */
+export function pickObstacle(view: View, list: readonly number[], p: Vec, hit = 12): ObstacleGrab | null {
+  const knob = hit - 2;
   const n = Math.floor(list.length / OBSTACLE_STRIDE);
   for (let i = n - 1; i >= 0; i--) {
     const [k1, k2] = obstacleKnobs(view, list, i) as [Vec, Vec];
     const disc = list[i * OBSTACLE_STRIDE] === 0;
-    if (Math.hypot(p.x - k2.x, p.y - k2.y) <= 10) return { index: i, part: disc ? "rim" : "end2" };
-    if (Math.hypot(p.x - k1.x, p.y - k1.y) <= 10) return { index: i, part: disc ? "centre" : "end1" };
+    if (Math.hypot(p.x - k2.x, p.y - k2.y) <= knob) return { index: i, part: disc ? "rim" : "end2" };
+    if (Math.hypot(p.x - k1.x, p.y - k1.y) <= knob) return { index: i, part: disc ? "centre" : "end1" };
   }
   for (let i = n - 1; i >= 0; i--) {
     const o = i * OBSTACLE_STRIDE;

@@ -12,7 +12,7 @@ import { bounds, field, parseField } from "./fields";
 import { $ } from "../ui/page";
 import { downloadPng } from "../ui/download";
 import { downloadCsv, downloadJson } from "./export";
-import { funnelSettingsSection } from "./funnelsettings";
+import { funnelSettingsSection, relaxedAimLabel } from "./funnelsettings";
 import type { LabSim } from "./sim";
 import type { Limits, Overlays } from "./state";
 
@@ -71,7 +71,7 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   goalBox.before(presetNote);
   sim.onScene = (text, playground, claim, measured) => {
     caption.textContent = text;
-    for (const [cls, head, body] of [["claim", "Paper: ", claim], ["measured", "Ours: ", measured]] as const) {
+    for (const [cls, head, body] of [["claim", "Paper: ", claim], ["measured", "Ours: ", aimWords(sim, measured)]] as const) {
       if (!body) continue;
       const p = document.createElement("span");
       p.className = `fidelity ${cls}`;
@@ -144,6 +144,21 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   exportSection(panel, sim, canvas);
 
   return { beta, epsTol, dTol };
+}
+
+/** Presets whose measurement (docs/presets.json) was made with the relaxed
+ *  controller aiming at paper 001's relaxed point, not at our default. */
+const MEASURED_WITH_PAPER_AIM = /^p001_fig10_/;
+
+/** A preset's measurement in the panel's words: the aim it was measured
+ *  with named as the "relaxed aims at" menu names it, and, when the menu
+ *  is set otherwise, how to run it as measured. */
+function aimWords(sim: LabSim, measured: string | undefined): string | undefined {
+  if (!measured || !MEASURED_WITH_PAPER_AIM.test(sim.st.preset)) return measured;
+  const paper = relaxedAimLabel("paperArc");
+  const body = measured.replace(/^Paper-arc aim\b(\s*\([^)]*\))?:?\s*/i, "");
+  const now = sim.st.funnel.relaxedAim === "paperArc" ? "" : ` (the Controller section's \u201crelaxed aims at\u201d is now \u201c${relaxedAimLabel(sim.st.funnel.relaxedAim)}\u201d: choose \u201c${paper}\u201d to run it as measured)`;
+  return `Measured with \u201crelaxed aims at: ${paper}\u201d${now}: ${body}`;
 }
 
 /** The vehicle limits a reference vehicle sets, and their URL keys. */

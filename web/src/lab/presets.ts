@@ -83,8 +83,9 @@ export function presetTitle(name: string): string {
   return TITLES[name] ?? name.replace(/^p\d{3}_/, "").replace(/_/g, " ");
 }
 
-/** Menu order within a group: by figure number, then title. */
+/** Menu order within a group: by figure number, then by title as the
+ *  menu shows it (Fig. 10a before 10d, ±5° before ±15°). */
 export function presetOrder(a: string, b: string): number {
   const fig = (n: string): number => Number(/_fig(\d+)/.exec(n)?.[1] ?? 999);
-  return fig(a) - fig(b) || a.localeCompare(b, undefined, { numeric: true });
+  return fig(a) - fig(b) || presetTitle(a).localeCompare(presetTitle(b), "en", { numeric: true }) || a.localeCompare(b);
 }

@@ -4,11 +4,12 @@
 
 import type { Surface } from "../ui/canvas";
 import { FORCE_2D, GL_THRESHOLD, GlSprites, markPath } from "../ui/glsprites";
-import { abgr, headingAt, PixelSprites, triangle } from "../ui/sprites";
+import { abgr, headingAt, PixelSprites } from "../ui/sprites";
+import { vehicleGlyph, type VehicleKind } from "../ui/glyphs";
 import type { View } from "../ui/view";
 import { FIELD_STRIDE, Mode, StateField } from "../core/wasm";
 import { drawObstacles } from "./obstacles";
-import { MODE_WORDS, modeColour } from "../ui/modes";
+import { MANOEUVRE_WORDS, MODE_WORDS, modeColour } from "../ui/modes";
 import { RIM_MIN_PX } from "./handles";
 import type { Trails } from "./trails";
 
@@ -130,6 +131,8 @@ export interface Scene {
   obstacles: readonly number[];
   /** Body radius (m) drawn round each agent when avoidance is on, else null. */
   bodyRadius: number | null;
+  /** The vehicle's kind (its glyph); a car-like one's manoeuvre has its own colour. */
+  kind: VehicleKind;
 }
 
 export function arrow(ctx: CanvasRenderingContext2D, x: number, y: number, ang: number, len: number, head = 6): void {
@@ -175,13 +178,14 @@ export function grid(s: Surface, v: View): void {
   ctx.stroke();
 }
 
-/** Draws a target in its mode's colours (paper 000 §6). */
-export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw, handlePx: number, handles: boolean): void {
+/** Draws a target in its mode's colours (paper 000 §6); `carLike`: the
+ *  vehicle cannot turn on the spot (its manoeuvre's colour, ui/modes.ts). */
+export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw, handlePx: number, handles: boolean, carLike = false): void {
   const c = v.toScreen(t.x, t.y);
   const r = Math.max(2, t.dTol * v.scale);
   const circle = t.mode === Mode.PositionOnly || t.mode === Mode.Funnelling || t.mode === Mode.EndOfSteering;
   const triangle = t.mode === Mode.OrientationOnly || t.mode === Mode.Funnelling || t.mode === Mode.EndOfSteering;
-  const colour = modeColour(t.mode);
+  const colour = modeColour(t.mode, carLike);
   ctx.lineWidth = 2;
   ctx.strokeStyle = colour;
   ctx.fillStyle = colour;
@@ -227,6 +231,16 @@ export function drawTarget(ctx: CanvasRenderingContext2D, v: View, t: TargetDraw
     ctx.fillStyle = "#ffffff";
     ctx.lineWidth = 1.5;
     const rk = Math.max(r, RIM_MIN_PX);
+    // A circle smaller than the knob's distance: a stalk from the rim
+    // carries the knob, so that it reads as the rim's.
+    if (rk > r + 1) {
+      const ux = Math.cos(t.beta + Math.PI / 2);
+      const uy = -Math.sin(t.beta + Math.PI / 2);
+      ctx.beginPath();
+      ctx.moveTo(c.x + ux * r, c.y + uy * r);
+      ctx.lineTo(c.x + ux * (rk - 5), c.y + uy * (rk - 5));
+      ctx.stroke();
+    }
     for (const [hx, hy] of [
       [c.x + Math.cos(t.beta) * (L + 24), c.y - Math.sin(t.beta) * (L + 24)],
       [c.x + Math.cos(a1) * L, c.y - Math.sin(a1) * L],
@@ -288,7 +302,7 @@ function drawCrowd(s: Surface, v: View, sc: Scene): void {
   // Above GL_THRESHOLD one WebGL2 instanced draw straight from the state records.
   if (sc.count > GL_THRESHOLD && !FORCE_2D) {
     const { X, Y, Theta, Mode: M } = StateField;
-    const palette = [COLOURS.end, COLOURS.orientation, COLOURS.vehicle, COLOURS.vehicle];
+    const palette = modePalette(sc.kind);
     if (glSprites.draw(s, v, sc.state, null, sc.count, { stride: sc.stride, x: X, y: Y, theta: Theta, colour: M }, palette, 3.5)) {
       markPath(s.canvas, "webgl2");
       return;
@@ -300,7 +314,7 @@ function drawCrowd(s: Surface, v: View, sc: Scene): void {
   const W = s.canvas.width;
   const H = s.canvas.height;
   const k = s.dpr;
-  const colour = [abgr(COLOURS.end), abgr(COLOURS.orientation), abgr(COLOURS.vehicle), abgr(COLOURS.vehicle)];
+  const colour = modePalette(sc.kind).map(abgr);
   const ox = v.width / 2;
   const oy = v.height / 2;
   const r = Math.max(1, Math.round(k));
@@ -342,9 +356,18 @@ function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
     ctx.stroke();
     ctx.restore();
   }
-  // One path per mode colour: cheap enough for 10⁴ agents.
+  // One path per mode colour: cheap enough for 10⁴ agents. Each glyph is
+  // filled in the colour of the mode in force, outlined dark on the paper.
+  const carLike = sc.kind === "carLike";
+  // A car's glyph is longer than a walker's: a third larger, so that its
+  // wheels and bonnet read at the small scale a car's loops are fitted at.
+  const glyph = sc.kind === "car" || carLike ? Math.max(8, 1.35 * size) : size;
+  ctx.save();
+  ctx.strokeStyle = COLOURS.vehicle;
+  ctx.lineWidth = 1;
+  ctx.lineJoin = "round";
   for (const mode of [Mode.EndOfSteering, Mode.OrientationOnly, Mode.PositionOnly, Mode.Funnelling]) {
-    ctx.fillStyle = mode === Mode.Funnelling || mode === Mode.PositionOnly ? COLOURS.vehicle : modeColour(mode);
+    ctx.fillStyle = modeColour(mode, carLike);
     ctx.beginPath();
     for (let i = 0; i < sc.count; i++) {
       const o = i * sc.stride;
@@ -352,10 +375,18 @@ function drawAgents(ctx: CanvasRenderingContext2D, v: View, sc: Scene): void {
       const p = v.toScreen(sc.state[o + X]!, sc.state[o + Y]!);
       if (p.x < -20 || p.y < -20 || p.x > v.width + 20 || p.y > v.height + 20) continue;
       const th = sc.state[o + Theta]!;
-      triangle(ctx, p.x, p.y, Math.cos(th), -Math.sin(th), size, 0.6);
+      vehicleGlyph(ctx, sc.kind, p.x, p.y, Math.cos(th), -Math.sin(th), glyph);
     }
     ctx.fill();
+    ctx.stroke();
   }
+  ctx.restore();
+}
+
+/** The sprites' colours by the core's mode number (end, orientation,
+ *  seek, funnelling): each mode's own, a car-like vehicle's manoeuvre its own. */
+function modePalette(kind: VehicleKind): string[] {
+  return [COLOURS.end, kind === "carLike" ? MANOEUVRE_WORDS.colour : COLOURS.orientation, COLOURS.seek, COLOURS.funnelling];
 }
 
 /** Faint lines from each vehicle to its own target, and a ring round the
@@ -418,9 +449,9 @@ export function drawScene(s: Surface, v: View, sc: Scene): void {
     const key = `${t.x.toFixed(2)},${t.y.toFixed(2)},${t.beta.toFixed(2)},${t.mode}`;
     if (drawn.has(key)) continue;
     drawn.add(key);
-    drawTarget(ctx, v, t, Math.min(sc.handlePx, 0.9 * sc.handlePx), false);
+    drawTarget(ctx, v, t, Math.min(sc.handlePx, 0.9 * sc.handlePx), false, sc.kind === "carLike");
   }
-  if (sc.focusTarget) drawTarget(ctx, v, sc.focusTarget, sc.handlePx, true);
+  if (sc.focusTarget) drawTarget(ctx, v, sc.focusTarget, sc.handlePx, true, sc.kind === "carLike");
   if (sc.ghost) drawGhost(ctx, v, sc.ghost);
   const o = sc.overlay;
   if (o) {

@@ -3,9 +3,11 @@
 // relaxed arc), the η ring and field, the playground's editable target.
 // The η field is cached while its three inputs stay the same.
 
-import { Mode, StateField, type Internals } from "../core/wasm";
+import { Mode, StateField, type Internals, type VehicleParams } from "../core/wasm";
 import type { LabAvoidance } from "./avoidance";
 import type { HudData } from "./hud";
+import { vehicleKind } from "../ui/glyphs";
+import type { Speed } from "../ui/speedmeter";
 import { COLOURS, CROWD_THRESHOLD, type FieldDraw, type GhostDraw, type Overlay, type Scene, type TargetDraw } from "./render";
 import type { LabSim } from "./sim";
 import type { LabWorld } from "../world/world";
@@ -26,7 +28,13 @@ function seekView(mode: number, live: boolean): number {
 export type SceneSource = Pick<LabSim, "st" | "count" | "state" | "stride" | "focus" | "shown" | "live" | "pose" | "field" | "trails" | "usPerUpdate" | "time" | "paused" | "tableLine" | "steppingLine" | "etaField"> & {
   world: Pick<LabWorld, "ghost" | "ring">;
   avoid: Pick<LabAvoidance, "method" | "radius" | "obstacles">;
+  /** The vehicle limits in force (its kind and turning radius); absent:
+   *  the core's default vehicle, a pedestrian that turns on the spot. */
+  params?: () => Pick<VehicleParams, "vMax" | "omegaMax" | "minTurnRadius">;
 };
+
+/** The core's default vehicle as far as the scene needs it (scenarios/vehicles/pedestrian.json). */
+const PEDESTRIAN = { vMax: 2, omegaMax: 2 } as const;
 
 export class SceneBuilder {
   private fieldCache: { key: string; samples: Float32Array } | null = null;
@@ -82,7 +90,7 @@ export class SceneBuilder {
       if (this.fieldCache) field = { samples: this.fieldCache.samples, originX: pose.x, originY: pose.y, theta: pose.theta, light: COLOURS.field, dark: COLOURS.fieldDark };
     }
     const focusTarget: TargetDraw | null = sim.focus >= 0
-      ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: seekView(inter?.mode ?? Mode.Funnelling, sim.live) }
+      ? { x: st.target.x, y: st.target.y, beta: st.target.theta, dTol: st.dTol, epsTol: st.epsTol, mode: seekView(this.modeInForce(inter) ?? Mode.Funnelling, sim.live) }
       : null;
     let ghost: GhostDraw | null = null;
     const g = st.overlays.ghost && inter && count > 0 && count <= CROWD_THRESHOLD ? sim.world.ghost(who) : null;
@@ -96,20 +104,34 @@ export class SceneBuilder {
       ring, field, handlePx: HANDLE_PX,
       obstacles: sim.avoid.obstacles,
       bodyRadius: sim.avoid.method === "off" ? null : sim.avoid.radius,
+      kind: vehicleKind(sim.params?.() ?? PEDESTRIAN),
     };
   }
 
+  /** The described agent's mode in force: its internals' (evaluated
+   *  afresh, so a drag while paused shows the new mode at once), but for a
+   *  vehicle that cannot turn on the spot the mode its last step ran: the
+   *  internals are a plan without the manoeuvre the car has begun (its
+   *  goal's memory), and said "funnelling" while it drove its loop. */
+  private modeInForce(inter: Internals | null): number | null {
+    const { sim } = this;
+    if (!inter) return null;
+    if ((sim.params?.().minTurnRadius ?? 0) > 0 && sim.count > 0) return sim.field(sim.shown, StateField.Mode) ?? inter.mode;
+    return inter.mode;
+  }
+
   /** The HUD's figures for `inter` (as for scene). */
-  hud(inter: Internals | null, frameMs: number): HudData {
+  hud(inter: Internals | null, frameMs: number, rate?: Speed): HudData {
     const { sim } = this;
     // A finished agent's internals carry no measurement (D 0, "unreachable"):
     // the HUD shows its distance to the last goal and no reachability.
-    const done = inter?.mode === Mode.EndOfSteering;
+    const mode = this.modeInForce(inter);
+    const done = mode === Mode.EndOfSteering;
     const i = sim.shown;
     const dx = (sim.field(i, StateField.GoalX) ?? NaN) - (sim.field(i, StateField.X) ?? NaN);
     const dy = (sim.field(i, StateField.GoalY) ?? NaN) - (sim.field(i, StateField.Y) ?? NaN);
     return {
-      mode: inter ? seekView(inter.mode, sim.live) : null,
+      mode: inter && mode !== null ? seekView(mode, sim.live) : null,
       d: done ? Math.hypot(dx, dy) : (inter?.d ?? NaN),
       alpha: done ? NaN : (inter?.alpha ?? NaN), eta: done ? NaN : (inter?.eta ?? NaN),
       deltaEta: done ? NaN : (inter?.deltaEta ?? NaN), mu: done ? NaN : (inter?.mu ?? NaN), muMax: inter?.muMax ?? NaN,
@@ -119,6 +141,9 @@ export class SceneBuilder {
       usPerUpdate: sim.usPerUpdate, frameMs, agents: sim.count, time: sim.time, paused: sim.paused, slow: sim.st.slow,
       table: sim.tableLine(),
       stepping: sim.steppingLine(),
+      rate: rate && rate.spanMs > 0 ? rate : undefined,
+      live: sim.live,
+      minTurnRadius: sim.params?.().minTurnRadius ?? 0,
     };
   }
 }

@@ -12,7 +12,7 @@ import { clampToLimits, FIELDS, limitDefaults, type LabField, type LimitDefaults
 import { funnelConfig, readingOf, relaxedConfig } from "./funnelsettings";
 import { findPreset } from "./presets";
 import { recipeFor } from "./recipe";
-import { fitPlayground, goalConfig, loopReach, stageInsets, type LabState, type Pose } from "./state";
+import { crowdInsets, fitPlayground, goalConfig, loopReach, type LabState, type Pose } from "./state";
 import { Trails } from "./trails";
 import { UrlSync } from "./urlstate";
 import { HereWorld, type LabWorld, type Took } from "../world/world";
@@ -54,6 +54,11 @@ export const TABLE_URL = "tables/eta.planes";
 const PLAYGROUND_HELP =
   "Playground: drag the vehicle (body: position, white knob: heading), the target (centre), its β knob, " +
   "the tolerance circle's rim and the triangle's corner. The target shows the controller's mode live.";
+
+/** Room kept round a preset's starts and goals for the swing of an
+ *  oriented arrival, m: about a walker's turning radius at the presets'
+ *  speeds (2.7 m at its full 2 m/s, scenarios/vehicles/pedestrian.json). */
+const SWING_M = 2;
 
 /** The most steps one animation frame runs (a slow frame drops the rest). */
 const MAX_STEPS_PER_FRAME = 4;
@@ -492,15 +497,18 @@ export class LabSim {
       this.onScene(sc?.caption ?? "", false, sc?.claim, sc?.measured);
       if (fit && sc) {
         const [x0, y0, x1, y1] = sc.box;
-        const r = loopReach(info.params.minTurnRadius);
-        this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, (v) => stageInsets(v, 40));
+        // The box holds the starts and the goals; a vehicle arriving
+        // oriented swings out beyond a goal (Fig. 3's first agent comes
+        // round above its own), so the room of a loop is kept round it.
+        const r = Math.max(loopReach(info.params.minTurnRadius), SWING_M);
+        this.view.fit(x0 - r, y0 - r, x1 + r, y1 + r, (v) => crowdInsets(v, 40));
       }
     } else {
       this.focus = info.count > 0 ? 0 : -1;
       this.onScene(PLAYGROUND_HELP, true);
       if (fit && b.spawn) {
         const r = b.spawn.extent + 3;
-        this.view.fit(-r, -r, r, r, (v) => stageInsets(v, 40));
+        this.view.fit(-r, -r, r, r, (v) => crowdInsets(v, 40));
       } else if (fit) fitPlayground(this.view, this.st);
     }
     this.trails.record(0, this.state, this.stride, this.count);

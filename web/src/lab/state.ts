@@ -208,9 +208,25 @@ export const PHONE_PX = 560;
  *  its side): its HUD is folded, its margins are a phone's. */
 export const SHORT_PX = 360;
 
+/** The room the unfolded HUD takes at the stage's top left on a wide
+ *  stage, CSS px (style.css: 21em of 12 px, padding, border, 8 px off the
+ *  edge), and its usual height with its numbers. */
+export const HUD_BOX = { right: 290, bottom: 250 } as const;
+
+/** The margins of a fit of many agents (presets, a crowd): as
+ *  {@link stageInsets}, and on a wide stage clear of the unfolded HUD too:
+ *  beside it on a landscape stage, below it on a portrait one. */
+export function crowdInsets(view: View, margin: number): number | Insets {
+  const base = stageInsets(view, margin);
+  if (typeof base !== "number") return base;
+  return view.width >= view.height
+    ? { left: HUD_BOX.right + 12, right: margin, top: margin, bottom: margin }
+    : { left: margin, right: margin, top: HUD_BOX.bottom + 12, bottom: margin };
+}
+
 /** The margins a fit keeps on the lab's stage: `margin` on a wide one; on
- *  a phone or a short stage, room for the folded HUD above and the legend
- *  below. */
+ *  a phone or a short stage, room for the folded HUD above (its mode, what
+ *  the agent does, the speed line) and the legend below. */
 export function stageInsets(view: View, margin: number): number | Insets {
-  return view.width < PHONE_PX || view.height < SHORT_PX ? { left: 28, right: 28, top: 76, bottom: 64 } : margin;
+  return view.width < PHONE_PX || view.height < SHORT_PX ? { left: 28, right: 28, top: 92, bottom: 64 } : margin;
 }

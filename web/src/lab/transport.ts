@@ -74,8 +74,10 @@ export function buildTransport(sim: LabSim): Transport {
 
   window.addEventListener("keydown", (e) => {
     const t = e.target;
-    // A focused control keeps its own keys (space ticks a checkbox).
-    if (t instanceof HTMLSelectElement || t instanceof HTMLButtonElement || (t instanceof HTMLInputElement && (t.type === "text" || t.type === "checkbox"))) return;
+    // A focused control keeps its own keys (space ticks a checkbox); a
+    // canvas handle's focus target (keyboard.ts) has only its arrows.
+    const handle = t instanceof HTMLElement && t.classList.contains("keyhandle");
+    if (!handle && (t instanceof HTMLSelectElement || t instanceof HTMLButtonElement || (t instanceof HTMLInputElement && (t.type === "text" || t.type === "checkbox")))) return;
     if (e.ctrlKey || e.metaKey || e.altKey) return;
     if (e.key === " ") {
       e.preventDefault();

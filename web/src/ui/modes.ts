@@ -54,15 +54,30 @@ export const MODE_WORDS: Readonly<Record<ModeKey, ModeWords>> = {
 /** The core's modes in the order a vehicle usually meets them. */
 export const MODE_ORDER: readonly ModeKey[] = ["PositionOnly", "Funnelling", "OrientationOnly", "EndOfSteering"];
 
-/** The words of the core's mode number `m`, or undefined. */
-export function modeWords(m: number): ModeWords | undefined {
+/** A car-like vehicle (a minimum turning radius) never turns on the spot:
+ *  where a unicycle would, the core reports Orientation_only while the car
+ *  drives a forward loop to the goal pose (crate/funnelling/manoeuvre.rs,
+ *  docs/DESIGN.md §14). Its own words and colour, so that the picture does
+ *  not say "turning on the spot" of a car driving at speed. */
+export const MANOEUVRE_WORDS: ModeWords = {
+  word: "driving round",
+  meaning: "cannot turn on the spot: looping round to arrive facing β",
+  colour: "#0f8a7e",
+  text: "#0b6e64",
+  paper: "Orientation_only (car-like manoeuvre)",
+};
+
+/** The words of the core's mode number `m`, or undefined; `carLike`: the
+ *  vehicle has a minimum turning radius ({@link MANOEUVRE_WORDS}). */
+export function modeWords(m: number, carLike = false): ModeWords | undefined {
+  if (carLike && m === Mode.OrientationOnly) return MANOEUVRE_WORDS;
   const key = (Mode as unknown as Record<number, string>)[m];
   return key !== undefined && key in MODE_WORDS ? MODE_WORDS[key as ModeKey] : undefined;
 }
 
-/** The canvas colour of mode number `m`. */
-export function modeColour(m: number): string {
-  return modeWords(m)?.colour ?? MODE_WORDS.PositionOnly.colour;
+/** The canvas colour of mode number `m` (`carLike` as for modeWords). */
+export function modeColour(m: number, carLike = false): string {
+  return modeWords(m, carLike)?.colour ?? MODE_WORDS.PositionOnly.colour;
 }
 
 /** The text colour of mode number `m`. */
