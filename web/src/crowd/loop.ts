@@ -35,12 +35,19 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
   /** Steps completed in the window. */
   let doneAcc = 0;
   const meter = new SpeedMeter();
+  let counted = -1;
   let windowStart = performance.now();
   let lastMetrics = 0;
   const frame = (now: number): void => {
     requestAnimationFrame(frame);
     const lab = s.lab;
     if (!lab) return;
+    // Another count: the rates and times measured were another crowd's.
+    if (lab.count() !== counted) {
+      counted = lab.count();
+      stats.stepMs = stats.drawMs = NaN;
+      meter.reset();
+    }
     const t0 = performance.now();
     const n = s.playing ? s.stepsPerFrame : Math.min(s.singleSteps, 1);
     if (s.playing) askedAcc += n;
@@ -105,12 +112,13 @@ export function runLoop(page: CrowdPage, surface: Surface, hud: HTMLElement): vo
       stats.stepsPerSecond = done.stepsPerSecond;
       // Steps asked for per second: while playing, the steps per frame at the display's rate.
       stats.askedPerSecond = (1000 * askedAcc) / span;
-      // ms per step of the steps that completed (with workers the slowest
-      // worker's: the page's share is in draw); NaN when none did.
+      // ms per step of the steps that completed in the window (with
+      // workers the slowest worker's: the page's share is in draw), and per
+      // drawn frame; a window without any keeps the last (NaN before one).
       const steps = st ? wSteps : doneAcc;
-      stats.stepMs = steps > 0 ? (st ? wMs : stepAcc) / steps : NaN;
+      if (steps > 0) stats.stepMs = (st ? wMs : stepAcc) / steps;
       wSteps = wMs = 0;
-      stats.drawMs = drawnAcc > 0 ? drawAcc / drawnAcc : NaN;
+      if (drawnAcc > 0) stats.drawMs = drawAcc / drawnAcc;
       stats.fps = done.fps;
       stepAcc = drawAcc = drawnAcc = askedAcc = doneAcc = 0;
       windowStart = now;

@@ -24,7 +24,7 @@ const page: CrowdPage = {
   error: null,
   session: s,
   presets: [],
-  stats: { frames: 0, drawnFrames: 0, steps: 0, updates: 0, jobMs: 0, workerStepMs: 0, stepMs: 0, drawMs: 0, fps: 0, stepsPerSecond: 0, askedPerSecond: 0 },
+  stats: { frames: 0, drawnFrames: 0, steps: 0, updates: 0, jobMs: 0, workerStepMs: 0, stepMs: NaN, drawMs: NaN, fps: 0, stepsPerSecond: 0, askedPerSecond: 0 },
   probe: null,
 };
 // The test build's window.__crowd; the shipped build drops this line and hook.ts.

@@ -120,6 +120,15 @@ export class SceneBuilder {
     return inter.mode;
   }
 
+  /** Agent i's controller quantities as its last step recorded them. */
+  private stepped(i: number): Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" | "muMax" | "reachable" | "vDt"> {
+    const f = (k: StateField): number => this.sim.field(i, k) ?? NaN;
+    return {
+      d: f(StateField.D), alpha: f(StateField.Alpha), eta: f(StateField.Eta), deltaEta: f(StateField.DeltaEta),
+      mu: f(StateField.Mu), muMax: NaN, reachable: f(StateField.Reachable) > 0.5, vDt: f(StateField.VDt),
+    };
+  }
+
   /** The HUD's figures for `inter` (as for scene). */
   hud(inter: Internals | null, frameMs: number, rate?: Speed): HudData {
     const { sim } = this;
@@ -128,6 +137,8 @@ export class SceneBuilder {
     const mode = this.modeInForce(inter);
     const done = mode === Mode.EndOfSteering;
     const i = sim.shown;
+    // A car-like vehicle's numbers as its last step computed them (see modeInForce).
+    if (inter && mode !== inter.mode) inter = { ...inter, ...this.stepped(i) };
     const dx = (sim.field(i, StateField.GoalX) ?? NaN) - (sim.field(i, StateField.X) ?? NaN);
     const dy = (sim.field(i, StateField.GoalY) ?? NaN) - (sim.field(i, StateField.Y) ?? NaN);
     return {
