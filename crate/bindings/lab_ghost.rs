@@ -159,9 +159,11 @@ impl Lab {
                 mu_max: f32::NAN,
                 ..provisional_plan(&self.world.params, &a.state, &a.goal_now)
             }
-        } else if self.world.controller == ControllerKind::Relaxed {
-            // Relaxed funnelling plans towards the relaxed point: show what
-            // its last update did.
+        } else if self.world.controller == ControllerKind::Relaxed || self.world.params.car_like() {
+            // Relaxed funnelling plans towards the relaxed point, and a
+            // car-like vehicle's manoeuvre, once begun, lives in its memory
+            // (crate::funnelling::manoeuvre): a fresh plan from here would
+            // forget either. Show what its last update did.
             a.internals
         } else {
             let (mut mem, mut state) = (a.memory, a.state);
