@@ -220,7 +220,8 @@ test-e2e-gallery: setup-browser web-build-test
 
 # Playwright against the learn page (learn.html): every section
 # draws, one handle per section drags and changes its number, the "show in
-# the lab" links, reduced motion, phone width; screenshots in artifacts/.
+# the lab" links, no figure playing before Play, the figures held against
+# the numbers their paragraphs quote, phone width; screenshots in artifacts/.
 test-e2e-learn: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-learn.mjs
 	$(stage-done)
@@ -235,7 +236,9 @@ test-e2e-teach: setup-browser web-build-test
 
 # axe-core (web/'s pinned devDependency) on the four pages at 1440×900 and
 # 390×844: no serious or critical violation; also prints the learn page's
-# bytes fetched and first contentful paint.
+# bytes fetched and first contentful paint. The same pages' visible text
+# (and the presets' captions, the gallery's labels) scanned for code words:
+# identifiers, file paths, flags (web/test/words.mjs; shown to bite first).
 test-e2e-axe: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-axe.mjs
 	$(stage-done)

@@ -173,17 +173,17 @@ def far(beta, dist=25.0):
 
 for beta, letters in [(0, "a/d"), (45, "b/e"), (120, "c/f")]:
     both("p001_fig10_beta%d" % beta, "paper 001 Fig. 10%s" % letters,
-         "Nine entities enter from the left towards a 2 m region goal oriented %d deg (tolerance 10 deg), then a distant goal in that direction." % beta,
+         "Nine entities enter from the left towards a 2 m region goal oriented %d° (tolerance 10°), then a distant goal in that direction." % beta,
          nine_from_left([goal(0, 0, beta, dTol=2.0, epsTolDeg=10), far(beta)]), 50)
 
 for tol in [5, 15, 30, 45]:
     both("p001_fig11_tol%d" % tol, "paper 001 Fig. 11",
-         "Widening orientation tolerance: a 2 m region goal oriented 90 deg with +/- %d deg, then a distant goal." % tol,
+         "Widening orientation tolerance: a 2 m region goal oriented 90° with ±%d°, then a distant goal." % tol,
          nine_from_left([goal(0, 0, 90, dTol=2.0, epsTolDeg=tol), far(90)]), 50)
 
 chain = [(0, 0, 30), (12, 8, -20), (24, 2, -60), (30, -10, -90)]
 both("p001_fig12_successive", "paper 001 Fig. 12",
-     "Successive region goals (2 m disks, 10 deg tolerance); the last one halts.",
+     "Successive region goals (2 m disks, 10° tolerance); the last one halts.",
      nine_from_left([goal(x, y, b, dTol=2.0, epsTolDeg=10, halting=(i == len(chain) - 1))
                      for i, (x, y, b) in enumerate(chain)]), 70)
 # Paper 001 Figs. 6b/c, 8 and 9: one entity heading right towards a 2 m
@@ -210,15 +210,15 @@ write("p001_fig5_gait", "paper 001 Fig. 5",
       "recordings of [ALHB06] that Fig. 5 replicates.",
       gait, duration=20)
 write("p001_fig6b_centre", "paper 001 Fig. 6b",
-      "Standard funnelling towards a 2 m region goal oriented 90 deg, aiming at the disk centre: an artificially curved path.",
+      "Standard funnelling towards a 2 m region goal oriented 90°, aiming at the disk centre: an artificially curved path.",
       region(90), duration=15, funnel={"aim": "centre"})
 write("p001_fig6c_relaxed", "paper 001 Fig. 6c",
       "The same goal, aimed at a better point of the disk (relaxed funnelling, the paper's relaxed point on the arc): a smoother path.",
       region(90), duration=15, controller="relaxed", relaxed={"aim": "paperArc"})
 write("p001_fig8_zero_delta_eta_relaxed", "paper 001 Fig. 8",
-      "Relaxed funnelling, the case of Fig. 6b: some point of the arc gives delta-eta = 0; the one of smallest |alpha_r| is steered to.",
+      "Relaxed funnelling, the case of Fig. 6b: some point of the arc gives Δη = 0; the one of smallest |α_r| is steered to.",
       region(10, 20), duration=15, controller="relaxed", relaxed={"aim": "paperArc"})
 write("p001_fig9_arc_end_relaxed", "paper 001 Fig. 9",
-      "A region goal oriented back towards the entity: no point of the arc gives delta-eta = 0, so the arc end of smallest |delta-eta| is steered to.",
+      "A region goal oriented back towards the entity: no point of the arc gives Δη = 0, so the arc end of smallest |Δη| is steered to.",
       region(180), duration=20, controller="relaxed", relaxed={"aim": "paperArc"})
 print("presets written to", HERE)

@@ -3,8 +3,11 @@
 // every section's canvas draws; one handle per section drags (pointer) and
 // changes a number in the prose; handles move with the keyboard; the
 // "show in the lab" links open the lab in the figure's state (the lab's
-// window.__lab hook); reduced motion means no autoplay, and without it a
-// figure plays once in view; no console errors. Screenshots of every
+// window.__lab hook); no figure plays on its own, reduced motion or not
+// (each waits at the set-up its text describes); the figures agree with
+// their paragraphs (§2's η, §3's probe and ghosts, §5's mode order, read
+// from each figure's data-shows and the text's live numbers); no console
+// errors. Screenshots of every
 // section at 1280x800 and 390x844 go to artifacts/learn-*.png.
 // A node:test suite (harness.mjs `check`).
 import { serve, launch, openPage, check, waitReady, settle, artifacts, countPixels } from "./harness.mjs";
@@ -67,6 +70,78 @@ async function playedChecks(page, w) {
 }
 
 const liveText = (page, name) => page.locator(`[data-live="${name}"]`).first().textContent();
+
+/** What figure `name`'s canvas labels show now (its data-shows). */
+const shows = (page, name) => page.evaluate((n) => JSON.parse(document.querySelector(`[data-figure="${n}"]`).dataset.shows ?? "{}"), name);
+
+/** Degrees in a live text ("12.3°") as a number. */
+const degrees = (t) => parseFloat(t);
+
+/** The figures held against the numbers and words of their paragraphs, at
+ *  the set-up each waits at and after Play (pictures into artifacts/). */
+async function textChecks(page, w) {
+  await check(`${w}: §2's arc shows the η the text quotes for the set-up, and the table's η is the quoted error away`, async () => {
+    await page.locator("#eta").scrollIntoViewIfNeeded();
+    const s = await shows(page, "eta");
+    assert.equal(s.t, 0, "the figure waits at its set-up");
+    const sim = await liveText(page, "eta-sim");
+    assert.equal(s.eta, sim, "the arc's label is the text's simulated η");
+    const err = Math.abs(degrees(sim) - degrees(await liveText(page, "eta-table")));
+    assert.ok(Math.abs(err - degrees(await liveText(page, "eta-err"))) <= 0.11, `|sim − table| ${err}`);
+    assert.equal(await liveText(page, "eta-now"), sim, "the η still to come starts at the set-up's");
+    await page.locator("#eta").screenshot({ path: resolve(artifacts, `learn-text-eta-${w}.png`) });
+  });
+
+  await check(`${w}: §3's probe starts away from the vehicle; next to it, two labelled ghosts and the text agree`, async () => {
+    await page.locator("#table").scrollIntoViewIfNeeded();
+    let s = await shows(page, "table");
+    assert.equal(s.t, 0);
+    assert.equal(s.D, await liveText(page, "table-D"));
+    assert.ok(parseFloat(s.D) > 1, `the probe is ${s.D} from the vehicle at the set-up`);
+    assert.equal(s.reach, await liveText(page, "table-reach"));
+    await page.locator("#table").screenshot({ path: resolve(artifacts, `learn-text-table-setup-${w}.png`) });
+    // Next to the vehicle, inside its turning circle (0.1 m per arrow key).
+    const probe = page.locator('[data-figure="table"] [data-handle="probe"]');
+    await probe.focus();
+    for (let k = 0; k < 9; k++) await page.keyboard.press("ArrowLeft");
+    for (let k = 0; k < 6; k++) await page.keyboard.press("ArrowDown");
+    await settle(page);
+    s = await shows(page, "table");
+    assert.equal(await liveText(page, "table-reach"), "unreachable");
+    assert.equal(s.reach, "unreachable");
+    const ghosts = s.ghosts.split(" | ");
+    assert.equal(ghosts.length, 2, s.ghosts);
+    assert.equal(ghosts[0], "at the desired speed: orbits");
+    assert.equal(ghosts[1], `slowed to ${await liveText(page, "table-vdt")}: arrives`);
+    await page.locator("#table").screenshot({ path: resolve(artifacts, `learn-text-table-near-${w}.png`) });
+    await page.locator('[data-figure="table"] [data-role="reset"]').click();
+  });
+
+  await check(`${w}: §5's lit box climbs the diagram in the order the text says`, async () => {
+    await page.locator("#modes").scrollIntoViewIfNeeded();
+    const boxes = page.locator('[data-figure="modes"] ol.diagram li, #modes ol.diagram li');
+    const lit = () => page.$$eval("#modes ol.diagram li", (ls) => ls.map((l) => ({ on: l.classList.contains("on"), order: l.querySelector(".lit-order").textContent, word: l.querySelector("b").textContent })));
+    let d = await lit();
+    assert.equal(d.length, 4, `${await boxes.count()} boxes`);
+    assert.equal(d.findIndex((b) => b.on), 3, "the set-up lights the last line");
+    assert.equal((await shows(page, "modes")).lit, await liveText(page, "modes-mode"));
+    const seq = await liveText(page, "modes-seq");
+    const words = seq.split(" → ");
+    assert.equal(words[0], d[3].word, "the text's sequence starts on the last line");
+    assert.equal(words[words.length - 1], d[0].word, "and ends on the first");
+    await page.evaluate(() => window.__learn.finish("modes"));
+    await settle(page);
+    assert.equal((await shows(page, "modes")).seq, seq, "the run lit what the text says");
+    d = await lit();
+    assert.equal(d.findIndex((b) => b.on), 0, "the run ends on the first line");
+    assert.ok(d[0].order.endsWith(String(words.length)), `the first line lit last: ${d[0].order}`);
+    assert.ok(d[3].order.startsWith("lit 1"), `the last line lit first: ${d[3].order}`);
+    const spot = words.includes(d[1].word);
+    assert.equal((await liveText(page, "modes-spot")) !== "", spot, "turning on the spot named only when it happens");
+    assert.equal(d[1].order !== "", spot);
+    await page.locator("#modes").screenshot({ path: resolve(artifacts, `learn-text-modes-${w}.png`) });
+  });
+}
 
 async function dragHandle(page, section, handle, by) {
   const h = page.locator(`[data-figure="${section}"] [data-handle="${handle}"]`);
@@ -203,6 +278,7 @@ try {
     const { page, problems, context } = await openPage(browser, { width: 1440, height: 900 }, 1, { reducedMotion: "reduce" });
     await page.goto(`${url}learn.html`);
     assert.equal(await waitLearn(page), null);
+    await textChecks(page, "desktop");
     await playedChecks(page, "desktop");
     await check("desktop, played: no console errors", async () => assert.deepEqual(problems, []));
     allProblems.push(...problems);
@@ -214,11 +290,20 @@ try {
     const { page, problems, context } = await openPage(browser, { width: 1280, height: 800 });
     await page.goto(`${url}learn.html`);
     await waitLearn(page);
-    await check("without reduced motion a figure plays once scrolled into view", async () => {
-      await page.locator('[data-figure="modes"] canvas').scrollIntoViewIfNeeded();
+    await check("without reduced motion no figure plays on its own: each waits at its set-up until Play", async () => {
+      for (const name of Object.keys(DRAGS)) {
+        await page.locator(`[data-figure="${name}"] canvas`).scrollIntoViewIfNeeded();
+        await page.waitForTimeout(150);
+      }
+      await page.waitForTimeout(600);
+      const clocks = await page.locator(".fig-clock").allTextContents();
+      assert.ok(clocks.every((c) => c === "t 0.0 s"), clocks.join(", "));
+      const fig = page.locator('[data-figure="modes"]');
+      await fig.locator('[data-role="play"]').click();
       await page.waitForFunction(() => document.querySelector('[data-figure="modes"] .fig-clock').textContent !== "t 0.0 s", null, { timeout: 5000 });
+      await fig.locator('[data-role="play"]').click();
     });
-    await check("autoplay context: no console errors", async () => assert.deepEqual(problems, []));
+    await check("motion context: no console errors", async () => assert.deepEqual(problems, []));
     await context.close();
   }
 
@@ -266,6 +351,7 @@ try {
       await page.locator("#table h2").tap();
       assert.ok(!(await def.isVisible()), "definition hidden after a tap elsewhere");
     });
+    await textChecks(page, "phone");
     await playedChecks(page, "phone");
     await check("phone: no console errors", async () => assert.deepEqual(problems, []));
     allProblems.push(...problems);

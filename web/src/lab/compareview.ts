@@ -45,7 +45,7 @@ export class PeerCompare {
     out.setAttribute("aria-live", "polite");
     box.append(out);
     this.readout = out;
-    help(box).textContent = "Yuka (a JavaScript game AI library) steers to the target's position: its arrive slows to a stop there, its seek runs through. Neither knows the target's orientation β; funnelling arrives facing it. Same vehicle: Yuka's maxSpeed = v_max, maxTurnRate = ω_max, maxForce = A (its vehicle turns its heading to its velocity at once, so ω_max does not bind it).";
+    help(box).textContent = "Yuka (a JavaScript game AI library) steers to the target's position: its arrive slows to a stop there, its seek runs through. Neither knows the target's orientation β; funnelling arrives facing it. Same vehicle: Yuka's top speed = v_max, top turn rate = ω_max, top force = A (its vehicle turns its heading to its velocity at once, so ω_max does not bind it).";
   }
 
   /** What a frame needs: the ghosts for the state in force (recomputed

@@ -87,7 +87,7 @@ export function funnelSettingsSection(panel: HTMLElement, f: FunnelSettings, onC
       onChange();
     },
   });
-  reading.el.title = "The papers' controllers exactly as written (paper 000's standard funnelling, paper 001's relaxed funnelling), or this lab's reading, the defaults (docs/READINGS.md says what differs and why)";
+  reading.el.title = "The papers' controllers exactly as written (paper 000's standard funnelling, paper 001's relaxed funnelling), or this lab's reading, the defaults (the project's notes on the readings say what differs and why)";
   const inForce = document.createElement("p");
   inForce.className = "help controller-label";
   box.append(inForce);

@@ -76,7 +76,7 @@ function hudText(h: HudData): { parts: HudText; key: string } {
     ? `Why the loop: a car-like vehicle cannot turn on the spot (its turning circle has a radius of at least ${radius.toFixed(1)} m), and the target is closer than a few turning circles, too close to turn in and face β directly; so it drives round and comes back in along β.`
     : h.reachable
       ? ""
-      : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β (the table says unreachable; v_dt)`;
+      : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β`;
   const speed = speedLine(h);
   const flags = `${h.paused ? "  paused" : ""}${h.slow ? "  ×¼" : ""}`;
   const numbers = [

@@ -4,11 +4,12 @@
 // The section supplies the simulation (its own Lab, forked from the page's
 // one η table), the drawing and the live numbers in its prose.
 //
-// Motion: a figure starts playing the first time it scrolls into view,
-// unless the reader asked for reduced motion (then only the buttons run it).
-// A run that ends holds its last picture for a moment, then rewinds to the
-// start state: the prose describes the set-up the reader made, so its
-// numbers must not stay blank ("—") for the state the run ended in.
+// Motion: a figure plays only when the reader presses Play (or Step): it
+// waits at the set-up its prose describes, so the numbers the text quotes
+// are the ones on the canvas when the reader gets there. A run that ends
+// holds its last picture for a moment, then rewinds to the start state:
+// the prose describes the set-up the reader made, so its numbers must not
+// stay blank ("—") for the state the run ended in.
 
 import { beginFrame, setupCanvas, type Surface } from "../ui/canvas";
 import type { LimitDefaults, RangeTable } from "../lab/fields";
@@ -38,6 +39,10 @@ export interface FigureSpec {
   numbers(): void;
   /** The lab's state that shows this figure's set-up. */
   labState(): LabState;
+  /** What the canvas labels show now, by name (mirrored into the figure's
+   *  data-shows as JSON after every frame, so a test can hold the picture
+   *  against the numbers its paragraph quotes). */
+  shows?(): Record<string, string | number | boolean>;
 }
 
 /** What the "show in the lab" links are encoded against: the core's ranges
@@ -50,8 +55,6 @@ export function setLinkContext(ranges: RangeTable, defaults: LimitDefaults): voi
 
 /** How long an ended run's last picture stays before the rewind, ms. */
 export const REWIND_MS = 1500;
-
-const reducedMotion = (): boolean => window.matchMedia("(prefers-reduced-motion: reduce)").matches;
 
 /** The stacked layout of learn.css (phones), where each figure is pinned
  *  above its prose. */
@@ -108,12 +111,11 @@ export class LiveFigure {
   private readonly link: HTMLAnchorElement;
   private acc = 0;
   private over = false;
-  private autoplayed = false;
   private rewindTimer = 0;
   /** Frames drawn (tests wait for one). */
   frames = 0;
 
-  constructor(host: HTMLElement, readonly spec: FigureSpec, private readonly dt: number) {
+  constructor(private readonly host: HTMLElement, readonly spec: FigureSpec, private readonly dt: number) {
     host.classList.add("figure");
     host.dataset["figure"] = spec.name;
     const stage = document.createElement("div");
@@ -147,12 +149,6 @@ export class LiveFigure {
     new ResizeObserver(fit).observe(host);
     window.addEventListener("resize", fit);
     stacked.addEventListener("change", fit);
-    new IntersectionObserver((entries) => {
-      if (entries.some((e) => e.isIntersecting) && !this.autoplayed && !reducedMotion()) {
-        this.autoplayed = true;
-        this.setPlaying(true);
-      }
-    }, { threshold: 0.6 }).observe(stage);
     this.changed();
     this.refit();
   }
@@ -254,6 +250,7 @@ export class LiveFigure {
     scaleBar(s.ctx, this.view);
     for (const h of this.handles ?? []) h.place();
     this.clock.textContent = `t ${this.spec.time().toFixed(1)} s`;
+    if (this.spec.shows) this.host.dataset["shows"] = JSON.stringify(this.spec.shows());
     this.frames++;
   }
 }

@@ -8,7 +8,7 @@ import { button, slider } from "../ui/controls";
 import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../core/wasm";
 import { PAPER_UNITS, View } from "../ui/view";
 import { tooDeep } from "./jsontext";
-import { drawTile, traceSpan } from "./render";
+import { drawTile, markovNote, OWN_SCALE_FROM, shownSide, traceSpan } from "./render";
 import { COMPARE } from "./compare";
 
 /** Frames a re-run takes to draw the traces. */
@@ -57,6 +57,10 @@ interface Tile {
   view: View;
   lab: WanderLab | null;
   error: HTMLElement;
+  /** What the tile's drawing needs said: its own scale, its trace's measures. */
+  note: HTMLElement;
+  /** How many times larger than its row's scale the tile is drawn (1: the row's). */
+  zoom: number;
   json: HTMLTextAreaElement;
   /** Steps still to run in the current re-run. */
   pending: number;
@@ -69,8 +73,9 @@ export interface PanelStatus {
   drawn: number;
   errors: string[];
   running: boolean;
-  /** Each tile's grid row (its top, CSS px) and drawing scale (px per unit). */
-  scales: Array<{ top: number; scale: number }>;
+  /** Each tile's grid row (its top, CSS px), drawing scale (px per unit),
+   *  zoom over its row's scale (1: the row's) and note. */
+  scales: Array<{ top: number; scale: number; zoom: number; note: string }>;
 }
 
 export class GalleryPanel {
@@ -147,6 +152,8 @@ export class GalleryPanel {
     if (variant.figure) cap.title = `the paper's image: ${variant.figure}`;
     const error = document.createElement("div");
     error.className = "err";
+    const note = document.createElement("p");
+    note.className = "note";
     const details = document.createElement("details");
     const summary = document.createElement("summary");
     summary.textContent = "JSON";
@@ -157,9 +164,9 @@ export class GalleryPanel {
     apply.type = "button";
     apply.textContent = "Apply";
     details.append(summary, json, apply);
-    el.append(canvas, cap, error, details);
+    el.append(canvas, cap, note, error, details);
     const tile: Tile = {
-      base: variant.config, variant, canvas, surface: null, view: new View(PAPER_UNITS), lab: null, error, json, pending: 0, drawn: false,
+      base: variant.config, variant, canvas, surface: null, view: new View(PAPER_UNITS), lab: null, error, note, zoom: 1, json, pending: 0, drawn: false,
     };
     apply.addEventListener("click", () => {
       const deep = tooDeep(json.value);
@@ -240,14 +247,17 @@ export class GalleryPanel {
   }
 
   /** Draws every tile, the tiles of one grid row at one scale (the
-   *  row's largest trace), so that a row compares like with like. */
+   *  row's largest trace), so that a row compares like with like; a trace
+   *  that scale would draw OWN_SCALE_FROM or more times smaller than its
+   *  own fit (a walk that stays near its start) is drawn at its own scale
+   *  instead, and the tile says so. */
   private drawAll(): void {
     const traces = this.tiles.map((t) => (t.lab ? { trace: t.lab.trace(), path: t.lab.pathPoints() } : null));
     const rowOf = this.tiles.map((t) => Math.round(t.canvas.getBoundingClientRect().top));
+    const own = traces.map((tr) => (tr ? traceSpan(tr.trace, tr.path) : 0));
     const span = new Map<number, number>();
     this.tiles.forEach((_, i) => {
-      const tr = traces[i];
-      if (tr) span.set(rowOf[i]!, Math.max(span.get(rowOf[i]!) ?? 0, traceSpan(tr.trace, tr.path)));
+      if (traces[i]) span.set(rowOf[i]!, Math.max(span.get(rowOf[i]!) ?? 0, own[i]!));
     });
     this.tiles.forEach((t, i) => {
       const s = t.surface;
@@ -257,7 +267,15 @@ export class GalleryPanel {
         beginFrame(s, "#fbeaea");
         return;
       }
-      drawTile(s, t.view, tr.trace, tr.path, span.get(rowOf[i]!) ?? 0);
+      const row = span.get(rowOf[i]!) ?? 0;
+      const zoom = shownSide(row) / shownSide(own[i]!);
+      t.zoom = zoom >= OWN_SCALE_FROM ? zoom : 1;
+      drawTile(s, t.view, tr.trace, tr.path, t.zoom > 1 ? 0 : row, t.zoom);
+      const notes = [
+        t.zoom > 1 ? `Drawn at its own scale, ${t.zoom.toFixed(0)}× the row's: this walk stays near its start.` : "",
+        this.name === "markov" ? markovNote(tr.trace) : "",
+      ].filter((x) => x !== "").join(" ");
+      if (t.note.textContent !== notes) t.note.textContent = notes;
       t.drawn = t.lab.traceLen() > 1;
     });
   }
@@ -269,7 +287,7 @@ export class GalleryPanel {
       drawn: this.tiles.filter((t) => t.drawn).length,
       errors: this.tiles.map((t) => t.error.textContent ?? "").filter((e) => e !== ""),
       running: this.tiles.some((t) => t.pending > 0),
-      scales: this.tiles.map((t) => ({ top: Math.round(t.canvas.getBoundingClientRect().top), scale: t.view.scale })),
+      scales: this.tiles.map((t) => ({ top: Math.round(t.canvas.getBoundingClientRect().top), scale: t.view.scale, zoom: t.zoom, note: t.note.textContent ?? "" })),
     };
   }
 }

@@ -25,6 +25,38 @@ function niceLength(span: number): number {
   return (m >= 5 ? 5 : m >= 2 ? 2 : 1) * p;
 }
 
+/** A trace that its row's scale would draw this many times smaller than
+ *  its own fit is drawn at its own scale: at the row's it would be a speck
+ *  in the tile's middle. */
+export const OWN_SCALE_FROM = 3;
+
+/** The world length a tile's side shows for a trace box of side `side`
+ *  (the padding drawTile adds). */
+export function shownSide(side: number): number {
+  return side + 2 * Math.max(4, 0.02 * side);
+}
+
+/** The markov tiles' note, measured on the trace: the share of steps
+ *  whose turn falls in each of the tables' angle ranges (0–15°, 15–30°,
+ *  30–45°), and how often the angle changes from one step to the next
+ *  (the two-table variants keep it with a probability per range). */
+export function markovNote(trace: Float32Array): string {
+  const n = Math.floor(trace.length / 3);
+  const bins = [0, 0, 0];
+  let changes = 0;
+  let prev = NaN;
+  for (let i = 1; i < n; i++) {
+    const d = (trace[3 * i + 2] ?? 0) - (trace[3 * i - 1] ?? 0);
+    const turn = (Math.abs(Math.atan2(Math.sin(d), Math.cos(d))) * 180) / Math.PI;
+    bins[Math.min(2, Math.floor(turn / 15))]! += 1;
+    if (Number.isFinite(prev) && Math.abs(turn - prev) > 1e-3) changes++;
+    prev = turn;
+  }
+  const steps = Math.max(1, n - 1);
+  const pc = (k: number): string => `${Math.round((100 * bins[k]!) / steps)} %`;
+  return `This trace: turns of 0–15° on ${pc(0)} of steps, 15–30° on ${pc(1)}, 30–45° on ${pc(2)}; the angle changes on ${Math.round((100 * changes) / Math.max(1, steps - 1))} % of steps.`;
+}
+
 /** The larger side of the box round `trace` and `path` (world units), or 0. */
 export function traceSpan(trace: Float32Array, path: Float32Array): number {
   const b = bounds(trace, path);
@@ -48,19 +80,20 @@ function bounds(trace: Float32Array, path: Float32Array): { x0: number; y0: numb
 /** `trace` is flat [x, y, θ, ...]; `path` flat [x, y, ...] (may be empty).
  *  `span`: the world length the tile's side shows (the largest trace of
  *  its row, so that a row's tiles share one scale), centred on this trace;
- *  0 fits the trace alone. */
-export function drawTile(s: Surface, view: View, trace: Float32Array, path: Float32Array, span = 0): void {
+ *  0 fits the trace alone. `zoom` > 1: the tile is drawn at its own scale,
+ *  that many times its row's, and says so in its corner. */
+export function drawTile(s: Surface, view: View, trace: Float32Array, path: Float32Array, span = 0, zoom = 1): void {
   const ctx = s.ctx;
   beginFrame(s, "#ffffff");
   const n = Math.floor(trace.length / 3);
   const box = bounds(trace, path);
   if (!box) return;
   const { x0, y0, x1, y1 } = box;
-  const side = Math.max(span, x1 - x0, y1 - y0);
-  const pad = Math.max(4, 0.02 * side);
+  const raw = Math.max(span, x1 - x0, y1 - y0);
+  const side = shownSide(raw);
   const cx = (x0 + x1) / 2, cy = (y0 + y1) / 2;
   view.resize(s.width, s.height);
-  view.fit(cx - side / 2 - pad, cy - side / 2 - pad, cx + side / 2 + pad, cy + side / 2 + pad, 8);
+  view.fit(cx - side / 2, cy - side / 2, cx + side / 2, cy + side / 2, 8);
 
   ctx.lineJoin = "round";
   ctx.lineCap = "round";
@@ -109,7 +142,7 @@ export function drawTile(s: Surface, view: View, trace: Float32Array, path: Floa
   }
 
   // Scale bar.
-  const len = niceLength(side);
+  const len = niceLength(raw);
   const px = len * view.scale;
   ctx.strokeStyle = "#555";
   ctx.lineWidth = 1.5;
@@ -120,4 +153,10 @@ export function drawTile(s: Surface, view: View, trace: Float32Array, path: Floa
   ctx.fillStyle = "#555";
   ctx.font = "10px system-ui, sans-serif";
   ctx.fillText(`${len} u`, 10, s.height - 12);
+  // A tile at its own scale says so on the drawing too.
+  if (zoom > 1) {
+    ctx.font = "600 11px system-ui, sans-serif";
+    ctx.fillStyle = "#8a4b00";
+    ctx.fillText(`own scale, ×${zoom.toFixed(0)}`, 8, 14);
+  }
 }

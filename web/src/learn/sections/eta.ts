@@ -72,7 +72,7 @@ export function etaSection(host: HTMLElement, base: Lab): LiveFigure {
         drawGhost(ctx, v, { points: ghost.points, reached: ghost.reached, finalDir: ghost.finalDir, slowed: ghost.slowed });
         if (ghost.reached) {
           ray(ctx, v, target.x, target.y, ghost.finalDir, 96, COLOURS.eta, 2.5);
-          angleArc(ctx, v, target.x, target.y, 74, radial, ghost.finalDir, COLOURS.eta, "η");
+          angleArc(ctx, v, target.x, target.y, 74, radial, ghost.finalDir, COLOURS.eta, `η ${deg(ghost.eta)}`);
         }
         // The heading, from which α is measured.
         ray(ctx, v, x, y, th, 64, COLOURS.vehicle, 1.5);
@@ -81,16 +81,21 @@ export function etaSection(host: HTMLElement, base: Lab): LiveFigure {
       vehicle(ctx, v, x, y, th);
     },
     numbers() {
-      // While the run plays, the vehicle may pass the target's reach
-      // (no η left to predict): the prose keeps the last state it had.
-      if (run.time > 0 && !(inter && ghost?.reached)) return;
-      live("eta-D", inter ? `${inter.d.toFixed(2)} m` : "—");
-      live("eta-alpha", deg(inter?.alpha ?? NaN));
-      live("eta-sim", ghost?.reached ? deg(ghost.eta) : "unreachable");
-      live("eta-table", deg(inter?.eta ?? NaN));
-      const err = inter && ghost?.reached ? Math.abs(Math.atan2(Math.sin(ghost.eta - inter.eta), Math.cos(ghost.eta - inter.eta))) : NaN;
-      live("eta-err", deg(err));
+      // The first paragraph quotes the set-up (the start state, where the
+      // figure waits); the third the η still to come while the run plays.
+      if (run.time === 0) {
+        live("eta-D", inter ? `${inter.d.toFixed(2)} m` : "—");
+        live("eta-alpha", deg(inter?.alpha ?? NaN));
+        live("eta-sim", ghost?.reached ? deg(ghost.eta) : "unreachable");
+        live("eta-table", deg(inter?.eta ?? NaN));
+        const err = inter && ghost?.reached ? Math.abs(Math.atan2(Math.sin(ghost.eta - inter.eta), Math.cos(ghost.eta - inter.eta))) : NaN;
+        live("eta-err", deg(err));
+      }
+      // Past the target's reach there is no η left to predict: the text
+      // keeps the last one.
+      if (inter && ghost?.reached) live("eta-now", deg(ghost.eta));
     },
+    shows: () => ({ t: run.time, eta: inter && ghost?.reached ? deg(ghost.eta) : "" }),
     labState: () => labState(start, goal(target.x, target.y, Math.PI / 2)),
   }, lab.params().dt);
 }

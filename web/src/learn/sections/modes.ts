@@ -11,7 +11,7 @@ import { Mode, StateField, type Internals, type Lab } from "../../core/wasm";
 import { backdrop, COLOURS, deg, drawTarget, path, vehicle } from "../draw";
 import { LiveFigure } from "../figure";
 import { typesetText } from "../glossary";
-import { goal, labState, live, Run } from "../run";
+import { goal, labState, live, Run, type Outcome } from "../run";
 import { MODE_WORDS, modeColour, modeTextColour, modeWords, type ModeKey } from "../../ui/modes";
 
 export { modeColour };
@@ -29,6 +29,23 @@ const DIAGRAM: ReadonlyArray<{ mode: number; test: string }> = [
 /** The lab's word for mode `m` ("—" for none). */
 function word(m: number): string {
   return modeWords(m)?.word ?? "—";
+}
+
+/** A run's modes in the order lit, in words; a long flicker between two
+ *  modes shortened to its ends and the number of changes. */
+export function modeSequence(seq: readonly number[]): string {
+  const w = seq.map(word);
+  if (w.length <= 7) return w.join(" → ");
+  return `${w.slice(0, 3).join(" → ")} → … → ${w.slice(-2).join(" → ")} (${w.length - 1} mode changes)`;
+}
+
+/** Each lighting of the diagram's boxes, numbered in order: box mode → "1, 3". */
+function litOrder(seq: readonly number[]): Map<number, string> {
+  const out = new Map<number, number[]>();
+  seq.forEach((m, k) => out.set(m, [...(out.get(m) ?? []), k + 1]));
+  const text = new Map<number, string>();
+  for (const [m, ks] of out) text.set(m, ks.length <= 4 ? ks.join(", ") : `${ks.slice(0, 2).join(", ")}, … ${ks[ks.length - 1]}`);
+  return text;
 }
 
 /** Writes the lab's word (capitalised) and text colour into each
@@ -52,6 +69,8 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
   const g = (): ReturnType<typeof goal> => goal(target.x, target.y, beta, { dTol: tol.dTol, epsTol: tol.epsTol });
   const run = new Run(lab, (l) => { l.addAgent({ x: start.x, y: start.y, theta: start.theta, goals: [g()] }); }, 30);
   let inter: Internals | null = null;
+  /** The set-up run to its end at once: what the text says Play will show. */
+  let ahead: Outcome | null = null;
   const refresh = (): void => { inter = lab.internals(0); };
   const diagram = document.createElement("ol");
   diagram.className = "diagram";
@@ -59,7 +78,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
   for (const d of DIAGRAM) {
     const li = document.createElement("li");
     li.dataset["mode"] = String(d.mode);
-    li.innerHTML = `<code></code> → <b></b>`;
+    li.innerHTML = `<code></code> → <b></b> <span class="lit-order"></span>`;
     li.querySelector("code")!.innerHTML = typesetText(d.test);
     const b = li.querySelector("b")!;
     b.textContent = word(d.mode);
@@ -74,7 +93,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
       { name: "target", label: "target", colour: COLOURS.seek, get: () => target, set: (p) => { target.x = p.x; target.y = p.y; } },
       { name: "beta", label: "target orientation β", colour: COLOURS.seek, get: () => ({ x: target.x + 1.5 * Math.cos(beta), y: target.y + 1.5 * Math.sin(beta) }), set: (p) => { beta = Math.atan2(p.y - target.y, p.x - target.x); } },
     ],
-    reset: () => { run.reset(); refresh(); },
+    reset: () => { ahead = run.ahead(); run.reset(); refresh(); },
     step: () => { const more = run.step(); refresh(); return more; },
     time: () => run.time,
     draw(ctx, v) {
@@ -92,7 +111,14 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
       live("modes-dtol", `${tol.dTol.toFixed(2)} m`);
       live("modes-etol", deg(tol.epsTol));
       live("modes-deta", `${dEta.toFixed(2)} m`);
+      const planned = ahead?.modes[0] ?? [];
+      live("modes-seq", planned.length > 0 ? modeSequence(planned) : "—");
+      // Turning on the spot is named only when this run does it.
+      live("modes-spot", planned.includes(Mode.OrientationOnly) ? " In position but still off β by more than the orientation tolerance, it then turns on the spot before it arrives." : "");
+      const order = litOrder(run.modes[0] ?? []);
       for (const el of diagram.querySelectorAll<HTMLElement>("[data-mode]")) {
+        const at = order.get(Number(el.dataset["mode"]));
+        el.querySelector(".lit-order")!.textContent = at ? `lit ${at}` : "";
         const on = Number(el.dataset["mode"]) === m;
         el.classList.toggle("on", on);
         el.style.borderColor = on ? modeColour(m) : "";
@@ -100,6 +126,7 @@ export function modesSection(host: HTMLElement, base: Lab): LiveFigure {
       }
     },
     labState: () => labState(start, g()),
+    shows: () => ({ t: run.time, lit: word(inter?.mode ?? Mode.Funnelling), seq: modeSequence(run.modes[0] ?? []) }),
   }, lab.params().dt);
   fig.controls.before(diagram);
   slider(fig.controls, { id: "modes-dtol-slider", label: "position tol. D_tol", unit: "m", min: 0.1, max: 2, step: 0.05, value: tol.dTol, onInput: (x) => { tol.dTol = x; fig.changed(); } });

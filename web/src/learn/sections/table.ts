@@ -6,7 +6,8 @@
 
 import { slider } from "../../ui/controls";
 import { FIELD_STRIDE, type Ghost, type Internals, type Lab } from "../../core/wasm";
-import { backdrop, COLOURS, deg, drawField, drawGhost, ray, vehicle } from "../draw";
+import { backdrop, COLOURS, deg, drawField, label, path, ray, vehicle } from "../draw";
+import type { View } from "../../ui/view";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";
 
@@ -42,6 +43,44 @@ function measureCost(lab: Lab): void {
   live("table-sim-frame", `${((1000 * sim) / 1000).toFixed(0)} ms`);
   live("table-lookup-frame", `${((1000 * look) / 1000).toFixed(2)} ms`);
 }
+
+/** The two ghosts' looks: the seek at v_d that orbits, and the one at v_dt. */
+const ORBIT = { colour: "#3d3d3d", width: 2, dash: [] as number[] };
+const SLOWED = { colour: COLOURS.eta, width: 3, dash: [2, 5] };
+
+/** A ghost drawn over the arrow field: a halo of the background under it
+ *  (so the field's arrows do not hide it), its own colour and dash, a cross
+ *  where it ends unreached or an arrow along its final direction, and a
+ *  label in words at its end. */
+function labelledGhost(ctx: CanvasRenderingContext2D, v: View, g: Ghost, look: typeof ORBIT, text: string, dy: number): void {
+  const pts = g.points;
+  const n = Math.floor(pts.length / 2);
+  if (n < 2) return;
+  path(ctx, v, pts, COLOURS.background, look.width + 5);
+  path(ctx, v, pts, look.colour, look.width, look.dash);
+  const ex = pts[2 * n - 2]!;
+  const ey = pts[2 * n - 1]!;
+  if (g.reached && Number.isFinite(g.finalDir)) {
+    ray(ctx, v, ex, ey, g.finalDir, 26, look.colour, 2);
+  } else {
+    const p = v.toScreen(ex, ey);
+    ctx.save();
+    ctx.strokeStyle = look.colour;
+    ctx.lineWidth = 2.5;
+    ctx.beginPath();
+    ctx.moveTo(p.x - 6, p.y - 6);
+    ctx.lineTo(p.x + 6, p.y + 6);
+    ctx.moveTo(p.x + 6, p.y - 6);
+    ctx.lineTo(p.x - 6, p.y + 6);
+    ctx.stroke();
+    ctx.restore();
+  }
+  label(ctx, v, ex, ey, text, look.colour, 12, dy);
+}
+
+/** The labels of the two ghosts (the figure's data-shows and its canvas). */
+const orbitText = (): string => "at the desired speed: orbits";
+const slowedText = (vDt: number): string => `slowed to ${vDt.toFixed(2)} m/s: arrives`;
 
 export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
   const probe = { x: 1.2, y: 1.4 };
@@ -90,15 +129,15 @@ export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
     draw(ctx, v) {
       backdrop(ctx, v);
       drawField(ctx, v, { samples: field, originX: 0, originY: 0, theta: 0, light: COLOURS.field, dark: COLOURS.fieldDark }, 12, 1.2);
-      if (orbit) drawGhost(ctx, v, { points: orbit.points, reached: false, finalDir: NaN, slowed: false }, 1.5);
-      if (ghost) drawGhost(ctx, v, { points: ghost.points, reached: ghost.reached, finalDir: ghost.finalDir, slowed: ghost.slowed });
       if (inter && Number.isFinite(inter.eta)) ray(ctx, v, probe.x, probe.y, run.field(0, 2) + inter.alpha + inter.eta, 40, COLOURS.eta, 2.5);
+      // Both ghosts over the field, each with its own colour, dash and label.
+      if (orbit) labelledGhost(ctx, v, orbit, ORBIT, orbitText(), 16);
+      if (ghost) labelledGhost(ctx, v, ghost, ghost.slowed ? SLOWED : { ...SLOWED, dash: [8, 5] }, ghost.slowed && inter ? slowedText(inter.vDt) : "seek at the desired speed: arrives", -16);
       vehicle(ctx, v, run.x(0), run.y(0), run.field(0, 2));
     },
     numbers() {
-      // Once the vehicle is at the probe there is nothing to look up: the
-      // prose keeps the last state it had.
-      if (run.time > 0 && !inter) return;
+      // The prose quotes the set-up (where the figure waits until Play).
+      if (run.time > 0) return;
       live("table-vc", `${speeds.vC.toFixed(2)} m/s`);
       live("table-vd", `${speeds.vD.toFixed(2)} m/s`);
       live("table-D", inter ? `${inter.d.toFixed(2)} m` : "—");
@@ -116,6 +155,12 @@ export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
     labState: () => labState({ x: 0, y: 0, theta: 0 }, goal(probe.x, probe.y, 0, { speed: speeds.vD }), {
       field: { vC: speeds.vC, omegaC: omega(), vD: speeds.vD },
       overlays: { ...labState({ x: 0, y: 0, theta: 0 }, goal(0, 0, 0)).overlays, field: true },
+    }),
+    shows: () => ({
+      t: run.time,
+      D: inter ? `${inter.d.toFixed(2)} m` : "",
+      reach: inter ? (inter.reachable ? "reachable" : "unreachable") : "",
+      ghosts: [orbit ? orbitText() : "", ghost ? (ghost.slowed && inter ? slowedText(inter.vDt) : "seek at the desired speed: arrives") : ""].filter((x) => x !== "").join(" | "),
     }),
   }, lab.params().dt);
   const s = (id: string, lbl: string, key: "vC" | "omegaC" | "vD", min: number, max: number): void => {
