@@ -92,54 +92,59 @@ async function textChecks(page, w) {
     await page.locator("#eta").screenshot({ path: resolve(artifacts, `learn-text-eta-${w}.png`) });
   });
 
-  await check(`${w}: §3's probe starts away from the vehicle; next to it, two labelled ghosts and the text agree`, async () => {
+  await check(`${w}: §3's probe starts away from the vehicle; its ghosts are labelled and agree with the text`, async () => {
     await page.locator("#table").scrollIntoViewIfNeeded();
     let s = await shows(page, "table");
-    assert.equal(s.t, 0);
+    assert.equal(s.t, 0, "the figure waits at its set-up");
     assert.equal(s.D, await liveText(page, "table-D"));
     assert.ok(parseFloat(s.D) > 1, `the probe is ${s.D} from the vehicle at the set-up`);
     assert.equal(s.reach, await liveText(page, "table-reach"));
+    // Unreachable: the orbit at v_d and the arrival at the text's v_dt, labelled apart.
+    assert.equal(s.reach, "unreachable", "the text's two ghosts are on show at the set-up");
+    assert.deepEqual(s.ghosts.split(" | "), ["at the desired speed: orbits", `slowed to ${await liveText(page, "table-vdt")}: arrives`]);
     await page.locator("#table").screenshot({ path: resolve(artifacts, `learn-text-table-setup-${w}.png`) });
-    // Next to the vehicle, inside its turning circle (0.1 m per arrow key).
+    // Away from the vehicle, out of its turning circle (Shift + arrow: 1 m).
     const probe = page.locator('[data-figure="table"] [data-handle="probe"]');
     await probe.focus();
-    for (let k = 0; k < 9; k++) await page.keyboard.press("ArrowLeft");
-    for (let k = 0; k < 6; k++) await page.keyboard.press("ArrowDown");
+    for (let k = 0; k < 2; k++) await page.keyboard.press("Shift+ArrowUp");
+    for (let k = 0; k < 2; k++) await page.keyboard.press("Shift+ArrowRight");
     await settle(page);
     s = await shows(page, "table");
-    assert.equal(await liveText(page, "table-reach"), "unreachable");
-    assert.equal(s.reach, "unreachable");
-    const ghosts = s.ghosts.split(" | ");
-    assert.equal(ghosts.length, 2, s.ghosts);
-    assert.equal(ghosts[0], "at the desired speed: orbits");
-    assert.equal(ghosts[1], `slowed to ${await liveText(page, "table-vdt")}: arrives`);
-    await page.locator("#table").screenshot({ path: resolve(artifacts, `learn-text-table-near-${w}.png`) });
-    await page.locator('[data-figure="table"] [data-role="reset"]').click();
+    assert.equal(await liveText(page, "table-reach"), "reachable");
+    assert.equal(s.reach, "reachable");
+    assert.equal(s.ghosts, "seek at the desired speed: arrives");
+    await page.locator("#table").screenshot({ path: resolve(artifacts, `learn-text-table-far-${w}.png`) });
+    for (let k = 0; k < 2; k++) await page.keyboard.press("Shift+ArrowDown");
+    for (let k = 0; k < 2; k++) await page.keyboard.press("Shift+ArrowLeft");
+    await settle(page);
   });
 
   await check(`${w}: §5's lit box climbs the diagram in the order the text says`, async () => {
     await page.locator("#modes").scrollIntoViewIfNeeded();
-    const boxes = page.locator('[data-figure="modes"] ol.diagram li, #modes ol.diagram li');
     const lit = () => page.$$eval("#modes ol.diagram li", (ls) => ls.map((l) => ({ on: l.classList.contains("on"), order: l.querySelector(".lit-order").textContent, word: l.querySelector("b").textContent })));
     let d = await lit();
-    assert.equal(d.length, 4, `${await boxes.count()} boxes`);
+    assert.equal(d.length, 4, "the diagram's four boxes");
     assert.equal(d.findIndex((b) => b.on), 3, "the set-up lights the last line");
     assert.equal((await shows(page, "modes")).lit, await liveText(page, "modes-mode"));
     const seq = await liveText(page, "modes-seq");
     const words = seq.split(" → ");
     assert.equal(words[0], d[3].word, "the text's sequence starts on the last line");
     assert.equal(words[words.length - 1], d[0].word, "and ends on the first");
-    await page.evaluate(() => window.__learn.finish("modes"));
-    await settle(page);
-    assert.equal((await shows(page, "modes")).seq, seq, "the run lit what the text says");
-    d = await lit();
+    await page.locator("#modes").screenshot({ path: resolve(artifacts, `learn-text-modes-${w}.png`) });
+    // Run to the end and read at once (the last picture holds REWIND_MS only).
+    const end = await page.evaluate(() => {
+      window.__learn.finish("modes");
+      const boxes = [...document.querySelectorAll("#modes ol.diagram li")].map((l) => ({ on: l.classList.contains("on"), order: l.querySelector(".lit-order").textContent, word: l.querySelector("b").textContent }));
+      return { shows: JSON.parse(document.querySelector('[data-figure="modes"]').dataset.shows), boxes };
+    });
+    assert.equal(end.shows.seq, seq, "the run lit what the text says");
+    d = end.boxes;
     assert.equal(d.findIndex((b) => b.on), 0, "the run ends on the first line");
     assert.ok(d[0].order.endsWith(String(words.length)), `the first line lit last: ${d[0].order}`);
     assert.ok(d[3].order.startsWith("lit 1"), `the last line lit first: ${d[3].order}`);
     const spot = words.includes(d[1].word);
     assert.equal((await liveText(page, "modes-spot")) !== "", spot, "turning on the spot named only when it happens");
     assert.equal(d[1].order !== "", spot);
-    await page.locator("#modes").screenshot({ path: resolve(artifacts, `learn-text-modes-${w}.png`) });
   });
 }
 

@@ -71,7 +71,7 @@ export function ray(ctx: CanvasRenderingContext2D, v: View, x: number, y: number
 }
 
 /** Canvas font of the figures' labels: large enough to read on a phone. */
-const LABEL_FONT = "700 16px system-ui, sans-serif";
+export const LABEL_FONT = "700 16px system-ui, sans-serif";
 
 /** `text` centred at screen point (x, y), on a halo of the figure's
  *  background so that lines under it do not hide it. */

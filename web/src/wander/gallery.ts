@@ -272,7 +272,7 @@ export class GalleryPanel {
       t.zoom = zoom >= OWN_SCALE_FROM ? zoom : 1;
       drawTile(s, t.view, tr.trace, tr.path, t.zoom > 1 ? 0 : row, t.zoom);
       const notes = [
-        t.zoom > 1 ? `Drawn at its own scale, ${t.zoom.toFixed(0)}× the row's: this walk stays near its start.` : "",
+        t.zoom > 1 ? `Drawn at its own scale, ${t.zoom.toFixed(0)}× the row's: at the row's it would be a speck.` : "",
         this.name === "markov" ? markovNote(tr.trace) : "",
       ].filter((x) => x !== "").join(" ");
       if (t.note.textContent !== notes) t.note.textContent = notes;

@@ -37,24 +37,24 @@ export function shownSide(side: number): number {
 }
 
 /** The markov tiles' note, measured on the trace: the share of steps
- *  whose turn falls in each of the tables' angle ranges (0–15°, 15–30°,
- *  30–45°), and how often the angle changes from one step to the next
- *  (the two-table variants keep it with a probability per range). */
+ *  whose angle (the heading's displacement from the start heading, what
+ *  the tables draw) falls in each of the tables' ranges (0–15°, 15–30°,
+ *  30–45°), and how often the angle changes from one step to the next (the
+ *  two-table variants keep it with a probability per range). */
 export function markovNote(trace: Float32Array): string {
   const n = Math.floor(trace.length / 3);
   const bins = [0, 0, 0];
   let changes = 0;
-  let prev = NaN;
+  const start = trace[2] ?? 0;
   for (let i = 1; i < n; i++) {
-    const d = (trace[3 * i + 2] ?? 0) - (trace[3 * i - 1] ?? 0);
-    const turn = (Math.abs(Math.atan2(Math.sin(d), Math.cos(d))) * 180) / Math.PI;
-    bins[Math.min(2, Math.floor(turn / 15))]! += 1;
-    if (Number.isFinite(prev) && Math.abs(turn - prev) > 1e-3) changes++;
-    prev = turn;
+    const d = (trace[3 * i + 2] ?? 0) - start;
+    const angle = (Math.abs(Math.atan2(Math.sin(d), Math.cos(d))) * 180) / Math.PI;
+    bins[Math.min(2, Math.floor(angle / 15))]! += 1;
+    if (i > 1 && Math.abs((trace[3 * i + 2] ?? 0) - (trace[3 * i - 1] ?? 0)) > 1e-6) changes++;
   }
   const steps = Math.max(1, n - 1);
   const pc = (k: number): string => `${Math.round((100 * bins[k]!) / steps)} %`;
-  return `This trace: turns of 0–15° on ${pc(0)} of steps, 15–30° on ${pc(1)}, 30–45° on ${pc(2)}; the angle changes on ${Math.round((100 * changes) / Math.max(1, steps - 1))} % of steps.`;
+  return `This trace: the angle is 0–15° on ${pc(0)} of steps, 15–30° on ${pc(1)}, 30–45° on ${pc(2)}; it changes on ${Math.round((100 * changes) / Math.max(1, steps - 1))} % of steps.`;
 }
 
 /** The larger side of the box round `trace` and `path` (world units), or 0. */

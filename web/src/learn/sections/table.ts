@@ -6,7 +6,7 @@
 
 import { slider } from "../../ui/controls";
 import { FIELD_STRIDE, type Ghost, type Internals, type Lab } from "../../core/wasm";
-import { backdrop, COLOURS, deg, drawField, label, path, ray, vehicle } from "../draw";
+import { backdrop, COLOURS, deg, drawField, label, LABEL_FONT, path, ray, vehicle } from "../draw";
 import type { View } from "../../ui/view";
 import { LiveFigure } from "../figure";
 import { goal, labState, live, Run } from "../run";
@@ -75,7 +75,23 @@ function labelledGhost(ctx: CanvasRenderingContext2D, v: View, g: Ghost, look: t
     ctx.stroke();
     ctx.restore();
   }
-  label(ctx, v, ex, ey, text, look.colour, 12, dy);
+  // The label: an orbit's above its highest point (clear of the vehicle
+  // it circles), an arrival's beside its end; inside the canvas either way.
+  let [lx, ly] = [ex, ey];
+  if (!g.reached) {
+    for (let k = 1; k < 2 * n; k += 2) if (pts[k]! > ly) [lx, ly] = [pts[k - 1]!, pts[k]!];
+  }
+  ctx.save();
+  ctx.font = LABEL_FONT;
+  const w = ctx.measureText(text).width;
+  ctx.restore();
+  const p = v.toScreen(lx, ly);
+  let dx = g.reached ? 12 : -w / 2;
+  let ldy = g.reached ? dy : -14;
+  // No room on the right (a phone): under the end, clear of the orbit above.
+  if (p.x + dx + w > v.width - 4) [dx, ldy] = g.reached ? [-w / 2, 22] : [v.width - 4 - w - p.x, ldy];
+  dx = Math.max(4 - p.x, Math.min(v.width - 4 - w - p.x, dx));
+  label(ctx, v, lx, ly, text, look.colour, dx, ldy);
 }
 
 /** The labels of the two ghosts (the figure's data-shows and its canvas). */
@@ -131,7 +147,7 @@ export function tableSection(host: HTMLElement, base: Lab): LiveFigure {
       drawField(ctx, v, { samples: field, originX: 0, originY: 0, theta: 0, light: COLOURS.field, dark: COLOURS.fieldDark }, 12, 1.2);
       if (inter && Number.isFinite(inter.eta)) ray(ctx, v, probe.x, probe.y, run.field(0, 2) + inter.alpha + inter.eta, 40, COLOURS.eta, 2.5);
       // Both ghosts over the field, each with its own colour, dash and label.
-      if (orbit) labelledGhost(ctx, v, orbit, ORBIT, orbitText(), 16);
+      if (orbit) labelledGhost(ctx, v, orbit, ORBIT, orbitText(), 0);
       if (ghost) labelledGhost(ctx, v, ghost, ghost.slowed ? SLOWED : { ...SLOWED, dash: [8, 5] }, ghost.slowed && inter ? slowedText(inter.vDt) : "seek at the desired speed: arrives", -16);
       vehicle(ctx, v, run.x(0), run.y(0), run.field(0, 2));
     },
