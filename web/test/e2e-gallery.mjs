@@ -470,6 +470,19 @@ try {
         assert.ok(ink > 0.003, `tile ${i}: ink ${ink}`);
       }
     });
+    await check("wander: a walk its row's scale would draw as a speck is drawn at its own scale and says so; the Markov tiles measure apart", async () => {
+      const tiles = status.panels.flatMap((p) => p.scales.map((t, i) => ({ panel: p.name, i, ...t })));
+      const own = tiles.filter((t) => t.zoom > 1);
+      // At 1280 px: the unlimited random displacement and the discrete distributions at least.
+      assert.ok(own.some((t) => t.panel === "control" && t.i === 0), JSON.stringify(own.map((t) => [t.panel, t.i])));
+      assert.ok(own.filter((t) => t.panel === "distributions").length >= 3);
+      for (const t of own) assert.match(t.note, /^Drawn at its own scale, \d+× the row's/, `${t.panel} ${t.i}`);
+      for (const t of tiles.filter((x) => x.zoom === 1 && x.panel !== "markov")) assert.equal(t.note, "", `${t.panel} ${t.i}`);
+      const markov = tiles.filter((t) => t.panel === "markov").map((t) => t.note);
+      assert.equal(markov.length, 4);
+      assert.equal(new Set(markov).size, 4, markov.join("\n"));
+      for (const n of markov) assert.match(n, /^This trace: the angle is 0–15° on \d+ %/);
+    });
     await shot(page, "wander-top");
     for (const name of ["control", "fields", "time-functions", "paths"]) {
       await page.locator(`#panel-${name}`).screenshot({ path: resolve(artifacts, `wander-${name}.png`) });

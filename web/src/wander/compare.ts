@@ -13,7 +13,7 @@ export const COMPARE: Readonly<Record<string, string>> = {
   timed:
     "A new random value is drawn only at random intervals and held in between. Compare the clamped-velocity tiles from low to very high: the higher the clamp, the tighter the loops.",
   markov:
-    "A transition table picks the next angle range from the current one (a Markov chain). Compare the single table with two tables that change with different probabilities: how often the walk switches between calm and turning stretches. Each tile's note measures its own trace: the share of steps in each angle range, and how often the angle changes.",
+    "A transition table picks the next angle range from the current one (a Markov chain). Compare the single table with two tables that change with different probabilities: how often the walk switches between calm and turning stretches. Each tile's note measures its own trace: the share of steps in each angle range (the bar in its corner, light to dark: 0–15°, 15–30°, 30–45°), and how often the angle changes.",
   paths:
     "A random path is generated first (grey), then followed at constant speed. Compare the fractal paths (jagged, from subdivided midpoints) with the closed curves from sums of sines or saw-tooth waves.",
   composed:

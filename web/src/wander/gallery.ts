@@ -8,7 +8,7 @@ import { button, slider } from "../ui/controls";
 import { errorText, WanderLab, type WanderConfig, type WanderPreset, type WanderVariant } from "../core/wasm";
 import { PAPER_UNITS, View } from "../ui/view";
 import { tooDeep } from "./jsontext";
-import { drawTile, markovNote, OWN_SCALE_FROM, shownSide, traceSpan } from "./render";
+import { drawShares, drawTile, markovNote, OWN_SCALE_FROM, shownSide, traceSpan } from "./render";
 import { COMPARE } from "./compare";
 
 /** Frames a re-run takes to draw the traces. */
@@ -271,6 +271,7 @@ export class GalleryPanel {
       const zoom = shownSide(row) / shownSide(own[i]!);
       t.zoom = zoom >= OWN_SCALE_FROM ? zoom : 1;
       drawTile(s, t.view, tr.trace, tr.path, t.zoom > 1 ? 0 : row, t.zoom);
+      if (this.name === "markov") drawShares(s, tr.trace);
       const notes = [
         t.zoom > 1 ? `Drawn at its own scale, ${t.zoom.toFixed(0)}× the row's: at the row's it would be a speck.` : "",
         this.name === "markov" ? markovNote(tr.trace) : "",

@@ -36,25 +36,56 @@ export function shownSide(side: number): number {
   return side + 2 * Math.max(4, 0.02 * side);
 }
 
-/** The markov tiles' note, measured on the trace: the share of steps
- *  whose angle (the heading's displacement from the start heading, what
- *  the tables draw) falls in each of the tables' ranges (0–15°, 15–30°,
- *  30–45°), and how often the angle changes from one step to the next (the
- *  two-table variants keep it with a probability per range). */
-export function markovNote(trace: Float32Array): string {
+/** A Markov trace measured: the share of steps whose angle (the heading's
+ *  displacement from the start heading, what the tables draw) falls in
+ *  each of the tables' ranges (0–15°, 15–30°, 30–45°), and the share of
+ *  steps on which the angle changes (the two-table variants keep it with a
+ *  probability per range). */
+export function markovShares(trace: Float32Array): { ranges: [number, number, number]; changes: number } {
   const n = Math.floor(trace.length / 3);
-  const bins = [0, 0, 0];
+  const bins: [number, number, number] = [0, 0, 0];
   let changes = 0;
   const start = trace[2] ?? 0;
   for (let i = 1; i < n; i++) {
     const d = (trace[3 * i + 2] ?? 0) - start;
     const angle = (Math.abs(Math.atan2(Math.sin(d), Math.cos(d))) * 180) / Math.PI;
-    bins[Math.min(2, Math.floor(angle / 15))]! += 1;
+    const k = Math.min(2, Math.floor(angle / 15)) as 0 | 1 | 2;
+    bins[k] += 1;
     if (i > 1 && Math.abs((trace[3 * i + 2] ?? 0) - (trace[3 * i - 1] ?? 0)) > 1e-6) changes++;
   }
   const steps = Math.max(1, n - 1);
-  const pc = (k: number): string => `${Math.round((100 * bins[k]!) / steps)} %`;
-  return `This trace: the angle is 0–15° on ${pc(0)} of steps, 15–30° on ${pc(1)}, 30–45° on ${pc(2)}; it changes on ${Math.round((100 * changes) / Math.max(1, steps - 1))} % of steps.`;
+  return { ranges: [bins[0] / steps, bins[1] / steps, bins[2] / steps], changes: changes / Math.max(1, steps - 1) };
+}
+
+/** The markov tiles' note in words. */
+export function markovNote(trace: Float32Array): string {
+  const m = markovShares(trace);
+  const pc = (x: number): string => `${Math.round(100 * x)} %`;
+  return `This trace: the angle is 0–15° on ${pc(m.ranges[0])} of steps, 15–30° on ${pc(m.ranges[1])}, 30–45° on ${pc(m.ranges[2])}; it changes on ${pc(m.changes)} of steps.`;
+}
+
+/** The ranges' colours in a tile's share bar, light to dark (small to large angles). */
+const RANGE_COLOURS = ["#f2c14e", "#e07b39", "#9c2f2f"];
+
+/** A Markov tile's picture of its note: a bar in the top-left corner split
+ *  by the share of steps in each angle range, so the four tables' walks,
+ *  alike at a glance, are told apart by how they spend their steps. */
+export function drawShares(s: Surface, trace: Float32Array): void {
+  const ctx = s.ctx;
+  const m = markovShares(trace);
+  const w = Math.min(120, s.width - 16);
+  let x = 8;
+  m.ranges.forEach((share, k) => {
+    ctx.fillStyle = RANGE_COLOURS[k]!;
+    ctx.fillRect(x, 8, share * w, 10);
+    x += share * w;
+  });
+  ctx.strokeStyle = "#555";
+  ctx.lineWidth = 1;
+  ctx.strokeRect(8, 8, w, 10);
+  ctx.fillStyle = "#333";
+  ctx.font = "10px system-ui, sans-serif";
+  ctx.fillText("angle 0–15° · 15–30° · 30–45°", 8, 30);
 }
 
 /** The larger side of the box round `trace` and `path` (world units), or 0. */
