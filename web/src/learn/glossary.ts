@@ -11,6 +11,7 @@ const SYMBOLS: ReadonlyArray<[string, string]> = [
   ["Δη", "Δη = β − (θ+α+η): the wanted final direction minus the one seek would arrive with."],
   ["μ_max", "μ_max: the bound on |μ|, how far funnelling may steer off the radial direction."],
   ["D_tol", "D_tol: the position tolerance; closer than this, the position counts as reached."],
+  ["R_min", "R_min: the vehicle's minimum turning radius, kept at every speed (a car-like vehicle; 0 for one that turns on the spot)."],
   ["ε_tol", "ε_tol: the orientation tolerance; the largest |β − θ| accepted on arrival."],
   ["D_η", "D_η: the table's first (smallest) distance ring; below it η is not sampled."],
   ["T_η", "T_η: the η table, η sampled over D, α, v_c, ω_c and v_d."],

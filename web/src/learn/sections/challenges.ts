@@ -70,7 +70,7 @@ export function challengesSection(host: HTMLElement, base: Lab): LiveFigure {
       const firsts = seq.filter((m, k) => seq.indexOf(m) === k);
       live("break-modes", o ? `${firsts.map((m) => modeWords(m)?.word ?? "?").join(" → ")} (${seq.length - 1} mode changes)` : "—");
       live("break-D", `${Math.hypot(target.x, target.y).toFixed(2)} m`);
-      live("break-tol", `D_tol ${ch.dTol.toFixed(2)} m, ε_tol ${deg(ch.epsTol)}`);
+      live("break-tol", `position tolerance ${ch.dTol.toFixed(2)} m, orientation tolerance ${deg(ch.epsTol)}`);
       live("break-mode-now", modeWords(run.field(0, StateField.Mode))?.word ?? "—");
       const orbit = o ? o.modes[0]!.filter((m) => m === Mode.OrientationOnly).length : 0;
       live("break-returns", String(orbit));
