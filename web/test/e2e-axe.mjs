@@ -88,7 +88,7 @@ try {
         await check("plain words: the scan finds a planted identifier, path, flag and command, and not a hidden one", async () => {
           await page.evaluate(() => {
             const p = document.createElement("p");
-            p.textContent = "planted: minTurnRadius in scenarios/car_like_parking.json, run steer envelope --vehicle car.json, then cargo test, epsTol";
+            p.textContent = "planted: minTurnRadius in scenarios/car_like_parking.json, run steer envelope --vehicle car.json, then cargo test, epsTol 10 deg +/- 5";
             const hidden = document.createElement("p");
             hidden.hidden = true;
             hidden.textContent = "hiddenIdentifier";
@@ -97,7 +97,7 @@ try {
           const planted = await pageWords(page);
           await page.evaluate(() => { for (const p of [...document.body.children].slice(-2)) p.remove(); });
           const found = planted.join("\n");
-          for (const w of ["camelCase “minTurnRadius”", "file path “scenarios/car_like_parking.json”", "flag “--vehicle”", "file name “car.json”", "command “cargo test”", "camelCase “epsTol”"]) {
+          for (const w of ["camelCase “minTurnRadius”", "file path “scenarios/car_like_parking.json”", "flag “--vehicle”", "file name “car.json”", "command “cargo test”", "camelCase “epsTol”", "unit “10 deg”", "unit “+/-”"]) {
             assert.ok(found.includes(w), `the scan missed ${w}:\n${found}`);
           }
           assert.ok(!found.includes("hiddenIdentifier"), "a hidden element's text counted");

@@ -2,7 +2,7 @@
 // finds, in a page's visible text, the spellings that belong to the source
 // and not to the reader: a snake_case or camelCase identifier (a JSON key,
 // a function), a file path or file name, a command-line flag or command
-// (cargo, npm).
+// (cargo, npm), degrees spelt "deg" (°) and "+/-" (±).
 // The symbols the papers write with a subscript (D_tol, v_dt, …) are
 // allowed by name (ALLOWED), each the spelling of one symbol the pages
 // define; anything else with an underscore or an inner capital is flagged.
@@ -36,6 +36,8 @@ const PATTERNS = [
   ["file name", /(?<![\p{L}\p{N}_/])[\w-]+\.(?:rs|json|ts|mjs|js|toml|py|md|bin|planes|wasm)(?![\p{L}\p{N}_])/gu],
   ["flag", /(?<![\p{L}\p{N}_-])--[a-z][a-z0-9-]*/gu],
   ["command", /(?<![\p{L}\p{N}_])(?:cargo|npm|npx|wasm-pack) [a-z][a-z-]+/gu],
+  // Degrees are written °, a tolerance ±.
+  ["unit", /(?<![\p{L}\p{N}_])\d+(?:\.\d+)? ?(?:deg|degs)(?![\p{L}\p{N}_])|\+\/-/gu],
 ];
 
 /** The code words of `text`: [{ kind, word, context }], each once. */
