@@ -165,11 +165,15 @@ fn lp_rm_s_lm_rp(x: f64, y: f64, phi: f64) -> Option<(f64, f64, f64)> {
 /// Steering of a segment: +1 left, −1 right, 0 straight.
 type Steer = i8;
 
+/// A base formula: (x, y, φ) to its (t, u, v), or `None` without a
+/// solution of the family's signs.
+type Formula = fn(f64, f64, f64) -> Option<(f64, f64, f64)>;
+
 /// One base family: its formula, the steering of its segments (0 for
 /// straight; unused segments are cut by `n`), and how (t, u, v) become the
 /// signed segment lengths.
 struct Family {
-    solve: fn(f64, f64, f64) -> Option<(f64, f64, f64)>,
+    solve: Formula,
     steer: [Steer; 5],
     n: usize,
     lens: fn(f64, f64, f64) -> [f64; 5],
@@ -591,7 +595,7 @@ mod tests {
         for _ in 0..3000 {
             let x = f64::from(r.range(-8.0, 8.0));
             let y = f64::from(r.range(-8.0, 8.0));
-            let phi = f64::from(r.range(-3.14, 3.14));
+            let phi = f64::from(r.range(-3.1, 3.1));
             candidates(x, y, phi, |c| {
                 let (ex, ey, eth) = endpoint(&c);
                 assert!((ex - x).abs() < 1e-6 && (ey - y).abs() < 1e-6, "{c:?}");

@@ -56,7 +56,10 @@ function hudText(h: HudData): { parts: HudText; key: string } {
   const words = h.mode === null ? undefined : modeWords(h.mode);
   const chip = h.mode === null ? "—" : (words?.word ?? `mode ${h.mode}`);
   const who = h.agents > 1 ? `agent ${h.shown + 1} of ${h.agents} (ringed): ` : "";
-  const say = `${who}${words?.meaning ?? ""}`;
+  // A car-like vehicle with a reverse gear backs where that is shorter:
+  // its speed is then negative, and the HUD says so in words.
+  const backing = h.speed < 0;
+  const say = `${who}${backing ? "reverse gear, backing up: " : ""}${words?.meaning ?? ""}`;
   const warn = h.reachable
     ? ""
     : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β (the table says unreachable; v_dt)`;
@@ -68,7 +71,7 @@ function hudText(h: HudData): { parts: HudText; key: string } {
     `Δη     ${deg(h.deltaEta)}`,
     `μ      ${deg(h.mu)}`,
     `μ_max  ${h.mode === Mode.Funnelling ? deg(h.muMax) : "      —"}`,
-    `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
+    `speed  ${h.speed.toFixed(3).padStart(7)} m/s${backing ? "  reverse" : ""}`,
     `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${flags}`,
   ].join("\n");
   const diagnostics = [
