@@ -6,11 +6,12 @@
 //! at every gear change (at rest the curvature bound `|ω| ≤ |v|/R_min`
 //! holds the heading, so the car never turns at rest).
 //!
-//! The path ends on a straight run-in along β, as the forward manoeuvre's
-//! ([`crate::funnelling::manoeuvre::runway`]), driven forwards into the goal or, for a halting goal,
+//! The path ends on a straight run-in along β, as the forward manoeuvre's,
+//! longer for a tight orientation tolerance ([`run_in`]), driven forwards into the goal or, for a halting goal,
 //! backwards (the run-in then starts beyond the goal, along β: the car
 //! backs into a bay). Of the Reeds–Shepp words to either run-in the one of
-//! least cost is chosen: length plus [`VehicleParams::gear_cost`] per gear
+//! least cost is chosen (the shortest forward path, Dubins, is a candidate
+//! too: it has no gear change): length plus [`VehicleParams::gear_cost`] per gear
 //! change, the run-in's included, among the words whose path keeps out of
 //! the position tolerance disk ([`clear_of`]): a path that cuts through
 //! the disk would enter it at the wrong heading. Only when no word keeps
