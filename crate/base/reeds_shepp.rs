@@ -19,7 +19,7 @@
 //! f32. The tests integrate every candidate's segments back to the goal.
 //! [`candidates`] lists every word with a solution, so a caller can
 //! choose by its own cost (length plus a price per gear change,
-//! [`ReedsSheppPath::shortest`]).
+//! [`cheapest`]).
 
 use core::f64::consts::{FRAC_PI_2, PI, TAU};
 
