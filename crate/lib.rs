@@ -29,7 +29,7 @@
 //!
 //! | folder | paper | what |
 //! |---|---|---|
-//! | [`base`] | — | angles, deterministic trig, seeded random numbers, the vehicle and its limits, validation ranges, the neighbour grid, path metrics, Dubins paths, the parallel loops |
+//! | [`base`] | — | angles, deterministic trig, seeded random numbers, the vehicle and its limits, validation ranges, the neighbour grid, path metrics, Dubins and Reeds–Shepp paths, the parallel loops |
 //! | [`funnelling`] | 000, 001 | funnelling and relaxed funnelling of one agent towards an oriented target, the η table |
 //! | [`avoidance`] | 000 §7, 001 §7 | funnelling agents that avoid each other and static obstacles: separation or ORCA, adapted to the unicycle |
 //! | [`crowd`] | 003 | crowded path following: Reynolds vs Parker seek with separation |

@@ -304,3 +304,163 @@ fn car_like_arrives_oriented_without_pivoting() {
     assert!(cells.1 >= 95.0, "{:?}", cells.0);
     assert!(percentile(&mut all, 0.5) <= 1.3);
 }
+
+/// The car-like car with a reverse gear: backing at up to 5 m/s (a third
+/// of its forward top speed), a gear change worth `GEAR_COST` R_min of
+/// path (chosen on seed 1).
+fn car_like_reverse() -> VehicleParams {
+    let p = car_like();
+    VehicleParams {
+        v_reverse: 5.0,
+        gear_cost: GEAR_COST * p.r_min,
+        ..p
+    }
+}
+
+/// What a gear change is worth, in `R_min` of path (tuned on seed 1).
+const GEAR_COST: f32 = 0.5;
+/// Runs per start kind of the reverse study.
+const REVERSE_N: usize = 1500;
+
+#[test]
+fn car_like_with_reverse_backs_up_where_shorter() {
+    use steering::studies::car_like::{run_all_from, text_reverse};
+    let seed: u64 = std::env::var("CAR_SEED")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(REPORT_SEED);
+    let n: usize = std::env::var("CAR_N")
+        .ok()
+        .and_then(|s| s.parse().ok())
+        .unwrap_or(REVERSE_N);
+    let kind = ControllerKind::Standard;
+    let mut figs = Vec::new();
+    let mut checks = Vec::new();
+    for (gear, p) in [("forward", car_like()), ("reverse", car_like_reverse())] {
+        for (start, rest) in [("moving", false), ("rest", true)] {
+            let runs = run_all_from(table(), &p, kind, seed, n, rest);
+            eprintln!("car_like {gear}, starts {start}, seed {seed}, {n} runs:");
+            eprint!("{}", text_reverse(&runs));
+            let bands = summarise(&runs, 0.0);
+            let violations: u32 = runs.iter().map(|r| r.violations).sum();
+            let pivots: u32 = runs.iter().map(|r| r.pivots).sum();
+            checks.push((gear, rest, violations, pivots, bands.clone()));
+            let key = format!("car_like.{gear}.{start}");
+            for (b, (lo, hi)) in bands.iter().zip(BANDS) {
+                let k = format!("{key}.d{lo}-{hi}");
+                let mut rs = b.ratios_rs.clone();
+                let what = format!(
+                    "{gear} gear{}, starts {start}, D {lo}–{hi} R_min",
+                    if gear == "reverse" { " too" } else { " only" }
+                );
+                figs.push(Figure::new(
+                    &format!("{k}.oriented"),
+                    &format!("oriented on entry, {what}"),
+                    pct(b.oriented, b.entries),
+                    "%",
+                    1,
+                ));
+                figs.push(Figure::new(&format!("{k}.unavoidable"), &format!("entries where a wrong heading was unavoidable (both full-lock arcs enter the disk outside β ± ε_tol within the committed distance), {what}"), b.unavoidable as f64, "runs", 0));
+                figs.push(Figure::new(
+                    &format!("{k}.oriented_possible"),
+                    &format!("oriented on entry where possible, {what}"),
+                    pct(b.oriented_possible.1, b.oriented_possible.0),
+                    "%",
+                    1,
+                ));
+                figs.push(Figure::new(
+                    &format!("{k}.rest_ok"),
+                    &format!("halting runs at rest inside both tolerances, {what}"),
+                    pct(b.rest_ok, b.halting),
+                    "%",
+                    1,
+                ));
+                figs.push(Figure::new(
+                    &format!("{k}.length_over_rs.median"),
+                    &format!("path length / Reeds–Shepp shortest (R_min), median, {what}"),
+                    f64::from(percentile(&mut rs, 0.5)),
+                    "×",
+                    2,
+                ));
+            }
+            figs.push(Figure::new(
+                &format!("{key}.violations"),
+                &format!("steps with a violated limit, {gear}, starts {start}"),
+                f64::from(violations),
+                "steps",
+                0,
+            ));
+            figs.push(Figure::new(
+                &format!("{key}.pivots"),
+                &format!("steps turning > 1° slower than 2 % of v_max, {gear}, starts {start}"),
+                f64::from(pivots),
+                "steps",
+                0,
+            ));
+        }
+    }
+    if seed != REPORT_SEED || n != REVERSE_N {
+        return;
+    }
+    record(
+        "tests/car_like.rs::car_like_with_reverse_backs_up_where_shorter",
+        "cargo test --release --features cli,counters --test car_like car_like_with_reverse -- --nocapture",
+        Kind::Deterministic,
+        &Seeds {
+            tuning: vec![1],
+            report: vec![REPORT_SEED],
+        },
+        &figs,
+    );
+    for (gear, rest, violations, pivots, bands) in checks {
+        assert_eq!(violations, 0, "{gear} rest {rest}");
+        assert_eq!(pivots, 0, "{gear} rest {rest}");
+        for (b, (lo, hi)) in bands.iter().zip(BANDS) {
+            assert!(
+                pct(b.rest_ok, b.halting) >= 99.5,
+                "{gear} D {lo}–{hi}: {b:?}"
+            );
+            if gear == "reverse" && rest {
+                // Measured on seed 2: 98–100 % and 1.1–1.3 (the aims, 100 %
+                // and 1.2, are not met yet below 5 R_min).
+                let mut rs = b.ratios_rs.clone();
+                assert!(pct(b.oriented, b.entries) >= 97.0, "D {lo}–{hi}: {b:?}");
+                assert!(percentile(&mut rs, 0.5) <= 1.35, "D {lo}–{hi}");
+            }
+        }
+    }
+}
+
+#[test]
+fn the_reverse_parking_preset_backs_into_the_bay() {
+    let text = include_str!("../scenarios/car_like_reverse_parking.json");
+    let sc = steering::world::scenario::Scenario::from_json(text).unwrap();
+    assert_eq!(sc.vehicle.v_reverse, 5.0);
+    table().check_params(&sc.vehicle).unwrap();
+    let mut w = sc.world().unwrap();
+    let (mut backing, mut forward, mut pivots) = (0u32, 0u32, 0u32);
+    for _ in 0..sc.steps() {
+        let prev = w.agents[0].state;
+        w.step(table());
+        let s = w.agents[0].state;
+        backing += u32::from(s.v < 0.0);
+        forward += u32::from(s.v > 0.0);
+        if steering::base::angle::diff(s.theta, prev.theta).abs() > 1f32.to_radians()
+            && prev.v.abs() < 0.02 * sc.vehicle.v_max
+        {
+            pivots += 1;
+        }
+    }
+    let a = &w.agents[0];
+    eprintln!(
+        "reverse parking: backing {backing} steps, forward {forward}, finished at {:?}, at {:?}",
+        a.finished_at, a.state
+    );
+    assert!(a.done(), "{:?}", a.state);
+    assert_eq!(a.metrics.violations, 0);
+    assert_eq!(pivots, 0);
+    assert!(backing > forward, "backing {backing}, forward {forward}");
+    let g = a.goal_now;
+    assert!((a.state.pos - g.pos).length() < g.d_tol && a.state.v == 0.0);
+    assert!(steering::base::angle::diff(g.beta, a.state.theta).abs() < g.eps_tol);
+}

@@ -86,7 +86,7 @@ fn try_value(r: &FieldRange, v: f64) -> Option<Option<String>> {
     }
     let result = match key {
         "dt" | "vMax" | "accelMax" | "omegaMax" | "omegaAccelMax" | "normalAccelMax" | "kp"
-        | "kd" | "minTurnRadius" => {
+        | "kd" | "minTurnRadius" | "vReverse" | "gearChangeCost" => {
             let p = lab.params().map_err(message).unwrap();
             js_sys::Reflect::set(&p, &key.into(), &v.into()).unwrap();
             lab.set_params(p).map(|_| ())

@@ -7,9 +7,10 @@
 //! | [`angle`] | — | one definition of angle wrapping and differences |
 //! | [`trig`] | — | bit-reproducible `sin_cos` / `atan2`: the same trajectory natively and in wasm |
 //! | [`rng`] | — | seeded PCG32: the same sequence natively and in wasm |
-//! | [`vehicle`] | 000 §3 | forward-only unicycle, every limit enforced exactly; `VehicleParams`, `VehicleState` |
+//! | [`vehicle`] | 000 §3 | unicycle (forward only, or with a reverse gear), every limit enforced exactly; `VehicleParams`, `VehicleState` |
 //! | [`metrics`] | docs/DESIGN.md §17 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
 //! | [`dubins`] | 000 §2 | Dubins shortest paths, the lower bound for an oriented reach |
+//! | [`reeds_shepp`] | — | Reeds–Shepp shortest paths (forwards and backwards), every word for a caller's own cost, the lower bound with a reverse gear |
 //! | [`range`] | — | one error for a number out of range or not finite, one check: every paper's validation speaks it |
 //! | [`ranges`] | — | one table of validation ranges (key, min, max, unit, integer, cross-field bound) that the core's checks and the page use |
 //! | [`minmax`] | — | `f32` max / min as comparisons: no `fmaxf` / `fminf` calls per agent in wasm, the same numbers |
@@ -24,6 +25,7 @@ pub mod minmax;
 pub mod parallel;
 pub mod range;
 pub mod ranges;
+pub mod reeds_shepp;
 pub mod rng;
 pub mod trig;
 pub mod vehicle;

@@ -164,6 +164,25 @@ pub const POS_X: FieldRange = range("pos.x", -WORLD, WORLD, "m", "start x");
 pub const POS_Y: FieldRange = range("pos.y", -WORLD, WORLD, "m", "start y");
 /// Start heading.
 pub const THETA: FieldRange = range("theta", -TURNS, TURNS, "rad", "start heading");
+/// Largest reverse speed (0: forward only; at most `vMax`).
+pub const V_REVERSE: FieldRange = bounded_by(
+    range(
+        "vReverse",
+        0.0,
+        100.0,
+        "m/s",
+        "largest reverse speed (0: forward only)",
+    ),
+    "vMax",
+);
+/// What a gear change is worth in metres of path (0: the shortest path).
+pub const GEAR_CHANGE_COST: FieldRange = range(
+    "gearChangeCost",
+    0.0,
+    1000.0,
+    "m",
+    "cost of one gear change, metres of path",
+);
 /// Start speed (at most `vMax`).
 pub const V: FieldRange = bounded_by(range("v", 0.0, 100.0, "m/s", "start speed"), "vMax");
 /// Start angular speed (magnitude at most `omegaMax`).
@@ -379,7 +398,7 @@ pub const OBSTACLE_RADIUS: FieldRange =
 const _: () = assert!(GOAL_SPEED.min <= V_MAX.min && GOAL_SPEED.max >= V_MAX.max);
 
 /// Every range, in the order above (exported to the page as `ranges()`).
-pub const ALL: [FieldRange; 48] = [
+pub const ALL: [FieldRange; 50] = [
     DT,
     V_MAX,
     ACCEL_MAX,
@@ -389,6 +408,8 @@ pub const ALL: [FieldRange; 48] = [
     KP,
     KD,
     MIN_TURN_RADIUS,
+    V_REVERSE,
+    GEAR_CHANGE_COST,
     POS_X,
     POS_Y,
     THETA,

@@ -1,7 +1,9 @@
 //! The vehicle model of paper 000 §3 (docs/DESIGN.md §6).
 //!
-//! A forward-only unicycle with unit mass and unit yaw inertia: the state is
-//! a 2D pose plus forward speed `v ≥ 0` and angular speed `ω`. Every limit
+//! A unicycle with unit mass and unit yaw inertia: the state is a 2D pose
+//! plus speed `v` and angular speed `ω`; `v ≥ 0` (forward only, the
+//! paper's) unless the vehicle has a reverse gear
+//! ([`VehicleParams::v_reverse`], then `v ≥ −v_reverse`). Every limit
 //! the paper names is enforced *exactly* at every step, never just
 //! approached: forward speed and acceleration, angular speed and
 //! acceleration, and the normal acceleration `|v·ω| ≤ A`. Controllers only
@@ -83,6 +85,18 @@ pub struct VehicleParams {
     /// (and whose serialised form, table key and bytes omit the field).
     #[serde(rename = "minTurnRadius", skip_serializing_if = "is_zero")]
     pub r_min: f32,
+    /// Largest reverse speed, m/s: the speed may go down to `−v_reverse`.
+    /// 0, the default, drives forwards only (the paper's vehicle, whose
+    /// serialised form omits the field). Only a car-like vehicle's
+    /// manoeuvre ([`crate::funnelling::reverse`]) commands a negative
+    /// speed; the η table is built forwards and ignores it.
+    #[serde(rename = "vReverse", skip_serializing_if = "is_zero")]
+    pub v_reverse: f32,
+    /// What one gear change is worth in metres of path when a car-like
+    /// vehicle with a reverse gear chooses among Reeds–Shepp paths (it
+    /// stops at every change): 0, the default, chooses the shortest.
+    #[serde(rename = "gearChangeCost", skip_serializing_if = "is_zero")]
+    pub gear_cost: f32,
 }
 
 #[allow(clippy::trivially_copy_pass_by_ref)]
@@ -103,6 +117,8 @@ impl Default for VehicleParams {
             kd: 6.0,
             integrator: Integrator::Euler,
             r_min: 0.0,
+            v_reverse: 0.0,
+            gear_cost: 0.0,
         }
     }
 }
@@ -162,6 +178,8 @@ impl VehicleParams {
         r::KP.check(self.kp)?;
         r::KD.check(self.kd)?;
         r::MIN_TURN_RADIUS.check(self.r_min)?;
+        r::V_REVERSE.check_at_most(self.v_reverse, self.v_max)?;
+        r::GEAR_CHANGE_COST.check(self.gear_cost)?;
         Ok(())
     }
 
@@ -173,9 +191,9 @@ impl VehicleParams {
         self.r_min > 0.0
     }
 
-    /// Largest admissible angular speed at forward speed `v`:
-    /// `min(ω_max, A / v)`, and `v / R_min` for a car-like vehicle (the one
-    /// place the curvature bound enters the limits).
+    /// Largest admissible angular speed at speed `v` (either sign):
+    /// `min(ω_max, A / |v|)`, and `|v| / R_min` for a car-like vehicle (the
+    /// one place the curvature bound enters the limits).
     #[inline]
     #[must_use]
     pub fn omega_limit(&self, v: f32) -> f32 {
@@ -186,6 +204,9 @@ impl VehicleParams {
     /// given, a constant where the caller knows it for many steps.
     #[inline(always)]
     fn omega_limit_as(&self, car_like: bool, v: f32) -> f32 {
+        // Forwards only, v ≥ 0 is used as it is (the same bits as ever,
+        // −0 included); backing, its magnitude.
+        let v = if self.v_reverse > 0.0 { v.abs() } else { v };
         let w = if v * self.omega_max > self.normal_accel_max {
             self.normal_accel_max / v
         } else {
@@ -228,9 +249,19 @@ impl VehicleParams {
     /// reachable `|ω|`. Both stay inside every other window: that `|ω|` is
     /// at most `|ω₀| ≤ v₀ / R_min` and `(|ω₀| − ω̇·dt)(|ω₀| + ω̇·dt)·R_min
     /// ≤ |ω₀|²·R_min ≤ A`, so `A / |ω₁|` is not crossed.
+    ///
+    /// Backing (`v₀ < 0`, or from rest `v₀ = 0` to `v₁ < 0`) the same
+    /// holds for `|v₁|`: the speed stays at most `−|ω|·R_min`. A step
+    /// never crosses 0 (either branch stops at it), so a gear change
+    /// takes a step at rest, where `ω` is 0.
     #[inline]
-    fn curvature_bound(&self, w0: f32, w1: f32, v1: f32) -> (f32, f32) {
+    fn curvature_bound(&self, v0: f32, w0: f32, w1: f32, v1: f32) -> (f32, f32) {
         let need = (w0.abs() - self.omega_accel_max * self.dt).at_least(0.0);
+        if v0 < 0.0 || (v0 == 0.0 && v1 < 0.0) {
+            let v1 = v1.at_most(-need * self.r_min);
+            let wl = -v1 / self.r_min;
+            return (w1.clamp(-wl, wl), v1);
+        }
         let v1 = v1.at_least(need * self.r_min);
         let wl = v1 / self.r_min;
         (w1.clamp(-wl, wl), v1)
@@ -263,9 +294,16 @@ impl VehicleParams {
         let w1 = (w0 + a * dt).clamp(-wl, wl);
         let dv = self.accel_max * dt;
         let vcap = self.speed_limit(w1);
-        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(0.0);
+        // Forwards only, the floor is 0 (the same bits as ever); with a
+        // reverse gear, −min(v_reverse, A/|ω₁|).
+        let floor = if self.v_reverse > 0.0 {
+            -self.v_reverse.at_most(vcap)
+        } else {
+            0.0
+        };
+        let v1 = v_des.clamp(v0 - dv, v0 + dv).at_most(vcap).at_least(floor);
         if car_like {
-            self.curvature_bound(w0, w1, v1)
+            self.curvature_bound(v0, w0, w1, v1)
         } else {
             (w1, v1)
         }
@@ -324,7 +362,7 @@ pub struct VehicleState {
     pub pos: Vec2,
     /// Heading θ, rad, wrapped to (−π, π].
     pub theta: f32,
-    /// Forward speed, m/s (≥ 0).
+    /// Speed along the heading, m/s (≥ 0, or ≥ −`v_reverse` backing).
     pub v: f32,
     /// Angular speed, rad/s (counter-clockwise positive).
     pub omega: f32,
@@ -358,11 +396,11 @@ impl VehicleState {
             && self.theta.is_finite()
             && self.v.is_finite()
             && self.omega.is_finite()
-            && self.v >= 0.0
+            && self.v >= -p.v_reverse
             && self.v <= p.v_max + eps
             && self.omega.abs() <= p.omega_max + eps
             && (self.v * self.omega).abs() <= p.normal_accel_max * (1.0 + eps) + eps
-            && (!p.car_like() || self.omega.abs() * p.r_min <= self.v * (1.0 + eps) + eps)
+            && (!p.car_like() || self.omega.abs() * p.r_min <= self.v.abs() * (1.0 + eps) + eps)
     }
 
     /// Rejects non-finite or out-of-limit states (negative speed, speed or
@@ -375,10 +413,14 @@ impl VehicleState {
         r::POS_X.check(self.pos.x)?;
         r::POS_Y.check(self.pos.y)?;
         r::THETA.check(self.theta)?;
-        r::V.check_at_most(self.v, p.v_max)?;
+        if self.v < 0.0 && p.v_reverse > 0.0 {
+            check_range("v (backing: -vReverse ≤ v)", self.v, -p.v_reverse, 0.0)?;
+        } else {
+            r::V.check_at_most(self.v, p.v_max)?;
+        }
         r::OMEGA.check_at_most(self.omega, p.omega_max)?;
         if p.car_like() {
-            let lim = self.v / p.r_min;
+            let lim = self.v.abs() / p.r_min;
             check_range(
                 "omega (curvature |ω| ≤ v / minTurnRadius)",
                 self.omega,

@@ -49,6 +49,10 @@ export interface VehicleParams {
   integrator: "euler" | "semiImplicitEuler";
   /** Minimum turning radius at every speed, m (car-like); absent or 0: turns on the spot. */
   minTurnRadius?: number;
+  /** Largest reverse speed, m/s (a car-like vehicle backs where shorter); absent or 0: forward only. */
+  vReverse?: number;
+  /** What one gear change is worth, m of path; absent or 0: the shortest path. */
+  gearChangeCost?: number;
 }
 /** How the modulation μ is bounded (crate::funnelling::config::MuBound). `literal`: the
  *  paper's |η(D, Δη, 0, v_c, v_dt)|; `scaledLiteral`: `gain` × that, capped at

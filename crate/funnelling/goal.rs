@@ -9,6 +9,7 @@ use serde::{Deserialize, Serialize};
 
 use crate::base::angle::diff;
 use crate::base::dubins::DubinsPath;
+use crate::base::reeds_shepp::ReedsSheppPath;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 
 /// A goal: an oriented target with tolerances (paper 000 §5).
@@ -153,6 +154,10 @@ pub struct Manoeuvre {
     pub beta: f32,
     /// Paths solved for this goal.
     pub solves: u32,
+    /// The Reeds–Shepp path followed instead of [`Manoeuvre::path`] by a
+    /// vehicle with a reverse gear ([`crate::funnelling::reverse`]).
+    #[serde(skip_serializing_if = "ReedsSheppPath::is_unused")]
+    pub rs: ReedsSheppPath,
 }
 
 impl Manoeuvre {

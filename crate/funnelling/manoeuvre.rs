@@ -16,6 +16,10 @@
 //! before the goal ([`runway`]) and goes on straight past it, so the
 //! vehicle enters the position tolerance facing β.
 //!
+//! A car with a reverse gear ([`VehicleParams::v_reverse`]) follows a
+//! Reeds–Shepp path instead, forwards and backwards
+//! ([`crate::funnelling::reverse`]).
+//!
 //! Goals in motion are left to funnelling (led to where they will be,
 //! never finished by turning on the spot).
 //!
@@ -47,6 +51,7 @@ use crate::base::trig;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::approach::{braking_distance, halting_speed, rest_rotation, seen_from};
 use crate::funnelling::goal::{Goal, Manoeuvre};
+use crate::funnelling::reverse::Pursuit;
 use crate::funnelling::update::{Internals, Mode, Update};
 
 /// The path radius over `R_min`: tracking a change of curvature takes the
@@ -133,7 +138,7 @@ fn progress(m: &mut Manoeuvre, s: &VehicleState, rho: f32, dt: f32) -> Vec2 {
 fn arrived(p: &VehicleParams, s: &VehicleState, g: &Goal, d: f32) -> bool {
     let err = diff(g.beta, s.theta);
     if g.halting {
-        d + braking_distance(p, s.v) < g.d_tol
+        d + braking_distance(p, s.v.abs()) < g.d_tol
             && err.abs() < g.eps_tol
             && wrap(err - rest_rotation(p, s.omega)).abs() < g.eps_tol
     } else {
@@ -186,6 +191,17 @@ pub fn plan(u: &mut Update<'_>, far: impl FnOnce(&mut Update<'_>) -> Internals) 
             ..g
         };
         return far(&mut u.towards(&capped));
+    }
+    if p.v_reverse > 0.0 {
+        // With a reverse gear: Reeds–Shepp paths, backing where shorter.
+        let k = Pursuit {
+            rho,
+            speed: manoeuvre_speed(&p, &g),
+            run_in: crate::funnelling::reverse::run_in(&g, rho),
+            lookahead: LOOKAHEAD,
+            replan: REPLAN_ERR,
+        };
+        return crate::funnelling::reverse::follow(&p, &s, &g, m, &k, out);
     }
     follow(&p, &s, &g, m, rho, out)
 }

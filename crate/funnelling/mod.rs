@@ -18,6 +18,7 @@
 //! | [`funnel`] | 000 §4–5, Figs. 4–5 | the funnelling update, the four modes, μ bounds, halting |
 //! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r |
 //! | [`manoeuvre`] | — | car-like vehicles: near the goal, a Dubins path to the goal pose tracked by pure pursuit instead of turning on the spot |
+//! | [`reverse`] | — | car-like vehicles with a reverse gear: a Reeds–Shepp path near the goal, forwards and backwards, gear changes at rest |
 //! | [`controller`] | 000 vs 001 §4 | the choice of controller (the name scenario files and the page use) and a controller with its settings |
 //! | [`vehicle_file`] | — | vehicle JSON files (`--vehicle`, the reference pedestrian, car and robot): parsed, fields named, ranges and the generator's ratios checked |
 
@@ -29,6 +30,7 @@ pub mod ghost;
 pub mod goal;
 pub mod manoeuvre;
 pub mod relaxed;
+pub mod reverse;
 pub mod seek;
 pub mod table;
 pub mod update;

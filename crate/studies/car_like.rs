@@ -20,14 +20,21 @@
 //! (radius `R_min`, and the radius at the desired speed), limit violations
 //! (the metrics check `|ω| ≤ v/R_min` with the other limits), and the
 //! manoeuvre's Dubins solves against the updates.
+//!
+//! With a reverse gear ([`VehicleParams::v_reverse`]) the same scenarios
+//! are run, and also from rest ([`run_from`]: the sampled start's pose,
+//! speeds 0); a run records its path over the shortest Reeds–Shepp path
+//! too, and whether a wrong-heading entry was unavoidable
+//! ([`entry_unavoidable`], the deciding test).
 
 use core::f32::consts::PI;
 
 use glam::Vec2;
 use serde::Serialize;
 
-use crate::base::angle::diff;
+use crate::base::angle::{diff, wrap};
 use crate::base::dubins;
+use crate::base::reeds_shepp;
 use crate::base::rng::Rng;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
@@ -113,6 +120,61 @@ pub struct CarRun {
     /// Turning by more than 1° in a step slower than 2 % of `v_max`
     /// (pivoting), steps.
     pub pivots: u32,
+    /// Reeds–Shepp shortest length from the start pose to the goal pose
+    /// with radius `R_min`, m.
+    pub reeds_shepp: f32,
+    /// A wrong-heading entry was unavoidable ([`entry_unavoidable`]).
+    pub unavoidable: bool,
+    /// Steps driven backwards.
+    pub backing: u32,
+}
+
+/// The deciding test of an unavoidable wrong-heading entry: from `s`, the
+/// vehicle's two extreme paths, full lock left and full lock right at the
+/// radius of its speed (`max(R_min, v²/A)`), both enter the position
+/// tolerance disk within the distance the vehicle is committed to (a
+/// full turn forwards only; with a reverse gear only its braking
+/// distance, after which it can back away), and β ± ε_tol lies outside the
+/// headings between the two entries (what any path between the extremes
+/// can face on entering). Traced in steps of at most a quarter of D_tol
+/// and 2 % of the radius. A start inside the disk is never counted.
+#[must_use]
+pub fn entry_unavoidable(p: &VehicleParams, s: &VehicleState, g: &Goal) -> bool {
+    let v = s.v.abs();
+    if (s.pos - g.pos).length() < g.d_tol || !p.car_like() {
+        return false;
+    }
+    let r = p.r_min.max(v * v / p.normal_accel_max);
+    let reach = if p.v_reverse > 0.0 {
+        crate::funnelling::approach::braking_distance(p, v)
+    } else {
+        2.0 * PI * r
+    };
+    let h = (0.25 * g.d_tol).min(0.02 * r).max(1e-4);
+    let steps = (reach / h).ceil() as u32;
+    // Heading turned on entry for each side, or None (escapes).
+    let mut turned = [0.0f32; 2];
+    for (k, side) in [1.0f32, -1.0].into_iter().enumerate() {
+        let centre = s.pos + crate::base::trig::unit(s.theta + side * PI / 2.0) * r;
+        let mut hit = None;
+        for i in 1..=steps {
+            let phi = (i as f32 * h / r).min(reach / r);
+            let at = centre + crate::base::trig::unit(s.theta - side * PI / 2.0 + side * phi) * r;
+            if (at - g.pos).length() < g.d_tol {
+                hit = Some(side * phi);
+                break;
+            }
+        }
+        match hit {
+            Some(t) => turned[k] = t,
+            None => return false,
+        }
+    }
+    // β relative to the start heading, unwrapped about the middle of the
+    // interval [right turn, left turn].
+    let mid = 0.5 * (turned[0] + turned[1]);
+    let b = mid + wrap(diff(g.beta, s.theta) - mid);
+    b + g.eps_tol < turned[1] || b - g.eps_tol > turned[0]
 }
 
 /// Runs scenario `i` of `seed` with controller `kind` (standard or
@@ -125,7 +187,24 @@ pub fn run(
     seed: u64,
     i: usize,
 ) -> CarRun {
-    let (start, g) = scenario(p, seed, i);
+    run_from(table, p, kind, seed, i, false)
+}
+
+/// [`run`], from rest when `rest` (the sampled start's pose, speeds 0).
+#[must_use]
+pub fn run_from(
+    table: &EtaTable,
+    p: &VehicleParams,
+    kind: ControllerKind,
+    seed: u64,
+    i: usize,
+    rest: bool,
+) -> CarRun {
+    let (mut start, g) = scenario(p, seed, i);
+    if rest {
+        start.v = 0.0;
+        start.omega = 0.0;
+    }
     let d0 = (g.pos - start.pos).length();
     let mut rec = CarRun {
         index: i,
@@ -145,6 +224,12 @@ pub fn run(
             (g.pos.x, g.pos.y, g.beta),
             p.min_turn_radius(g.speed),
         ),
+        reeds_shepp: reeds_shepp::shortest_length(
+            (0.0, 0.0, start.theta),
+            (g.pos.x, g.pos.y, g.beta),
+            p.r_min,
+        ),
+        unavoidable: entry_unavoidable(p, &start, &g),
         ..CarRun::default()
     };
     let Ok(mut w) = World::new(*p, FunnelConfig::default()) else {
@@ -170,7 +255,10 @@ pub fn run(
         }
         w.step(table);
         let a = &w.agents[0];
-        if diff(a.state.theta, prev.theta).abs() > 1f32.to_radians() && prev.v < 0.02 * p.v_max {
+        rec.backing += u32::from(a.state.v < 0.0);
+        if diff(a.state.theta, prev.theta).abs() > 1f32.to_radians()
+            && prev.v.abs() < 0.02 * p.v_max
+        {
             rec.pivots += 1;
         }
         if done {
@@ -222,6 +310,19 @@ pub fn run_all(
     crate::base::parallel::map_indices(n, |i| run(table, p, kind, seed, i))
 }
 
+/// [`run_all`], every start at rest when `rest`.
+#[must_use]
+pub fn run_all_from(
+    table: &EtaTable,
+    p: &VehicleParams,
+    kind: ControllerKind,
+    seed: u64,
+    n: usize,
+    rest: bool,
+) -> Vec<CarRun> {
+    crate::base::parallel::map_indices(n, |i| run_from(table, p, kind, seed, i, rest))
+}
+
 /// One distance band's summary of a seed's runs.
 #[derive(Clone, Debug, Default, PartialEq)]
 pub struct Band {
@@ -245,6 +346,13 @@ pub struct Band {
     pub ratios_speed: Vec<f32>,
     /// [`Band::ratios`] of the runs starting at most `v_slow`.
     pub ratios_slow: Vec<f32>,
+    /// Runs entering from outside where a wrong-heading entry was
+    /// unavoidable ([`entry_unavoidable`]).
+    pub unavoidable: usize,
+    /// Entries where an oriented one was possible, and the oriented ones.
+    pub oriented_possible: (usize, usize),
+    /// Path length / Reeds–Shepp shortest (`R_min`) of the finished runs.
+    pub ratios_rs: Vec<f32>,
 }
 
 /// The runs summarised per band of [`BANDS`]; `v_slow` selects
@@ -271,6 +379,15 @@ pub fn summarise(runs: &[CarRun], v_slow: f32) -> Vec<Band> {
                 b.oriented_eps5.0 += 1;
                 b.oriented_eps5.1 += usize::from(r.oriented_on_entry);
             }
+            if r.unavoidable {
+                b.unavoidable += 1;
+            } else {
+                b.oriented_possible.0 += 1;
+                b.oriented_possible.1 += usize::from(r.oriented_on_entry);
+            }
+        }
+        if r.finished && r.reeds_shepp > 0.0 {
+            b.ratios_rs.push(r.length / r.reeds_shepp);
         }
         if r.finished && r.dubins > 0.0 {
             b.ratios.push(r.length / r.dubins);
@@ -385,5 +502,43 @@ pub fn text(p: &VehicleParams, runs: &[CarRun]) -> String {
     for line in cells(runs).0 {
         let _ = writeln!(out, "{line}");
     }
+    out
+}
+
+/// The lines of a run set with and without a reverse gear: per band,
+/// oriented on entry, the entries where a wrong-heading one was
+/// unavoidable, oriented among the others, and the path over the
+/// shortest Reeds–Shepp path.
+#[must_use]
+pub fn text_reverse(runs: &[CarRun]) -> String {
+    use crate::base::metrics::percentile;
+    use core::fmt::Write;
+    let bands = summarise(runs, 0.0);
+    let mut out = String::new();
+    for (b, (lo, hi)) in bands.iter().zip(BANDS) {
+        let mut rs = b.ratios_rs.clone();
+        let _ = writeln!(
+            out,
+            "D {lo}–{hi} R_min: {} runs, oriented on entry {:.1} % of {}, unavoidable {}, oriented where possible {:.1} % of {}, rest ok {:.2} % of {}, length/Reeds–Shepp(R_min) median {:.2} p90 {:.2} of {}",
+            b.runs,
+            pct(b.oriented, b.entries),
+            b.entries,
+            b.unavoidable,
+            pct(b.oriented_possible.1, b.oriented_possible.0),
+            b.oriented_possible.0,
+            pct(b.rest_ok, b.halting),
+            b.halting,
+            percentile(&mut rs, 0.5),
+            percentile(&mut rs, 0.9),
+            rs.len(),
+        );
+    }
+    let _ = writeln!(
+        out,
+        "limit violations {}, pivot steps {}, steps backing {}",
+        runs.iter().map(|r| r.violations).sum::<u32>(),
+        runs.iter().map(|r| r.pivots).sum::<u32>(),
+        runs.iter().map(|r| r.backing).sum::<u32>(),
+    );
     out
 }

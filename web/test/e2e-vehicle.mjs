@@ -19,6 +19,9 @@
 //   faster than v/R_min and arrives; the car-like parking preset ends at
 //   rest inside both tolerances, without console errors, and its car goes
 //   with it when another preset is chosen;
+// - the reverse gear: the backing-in preset carries `vrev` in the link,
+//   the HUD says "reverse" while the car backs, and the car ends at rest
+//   in its bay facing out, |ω| ≤ |v|/R_min all the way;
 // - no console errors. Prints the build and cache timings; a node:test
 //   suite (harness.mjs `check`). Screenshots in artifacts/.
 import { serve, launch, openPage, check, shot, waitReady, settle } from "./harness.mjs";
@@ -245,6 +248,46 @@ try {
     assert.deepEqual(opened.problems, []);
     await opened.context.close();
     await context.close();
+  });
+  await check("the reverse gear: the backing-in preset shows vrev in the link and reverse in the HUD, and parks facing out", async () => {
+    const opened = await openPage(browser, { width: 1440, height: 900 });
+    const page = opened.page;
+    await page.goto(`${url}index.html#preset=car_like_reverse_parking`);
+    assert.equal(await waitReady(page), null);
+    await waitExact(page);
+    assert.equal(Number(await page.inputValue("#vrev-num")), 5);
+    await page.waitForFunction(() => /[#&]vrev=5(&|$)/.test(location.hash), null, { timeout: 5000 });
+    const r = await page.evaluate(async () => {
+      const l = window.__lab;
+      l.setPaused(true);
+      await l.restart();
+      const R = l.params().minTurnRadius;
+      let excess = -Infinity;
+      let backing = 0;
+      let a = l.agentRecord(0);
+      for (let steps = 0; steps < 60 * 40 && !(a.mode === 0 && a.v === 0); steps++) {
+        await l.stepN(1);
+        a = l.agentRecord(0);
+        excess = Math.max(excess, Math.abs(a.omega) - Math.abs(a.v) / R);
+        if (a.v < 0) backing++;
+      }
+      return { R, excess, backing, last: a };
+    });
+    assert.ok(r.excess <= 1e-4, `|ω| − |v|/R_min reached ${r.excess} rad/s`);
+    assert.ok(r.backing > 60, `backed ${r.backing} steps`);
+    const { x, y, theta, v } = r.last;
+    // At rest after backing: −0 (the speed braked up to 0 from below).
+    assert.ok(v === 0, JSON.stringify(r));
+    assert.ok(Math.hypot(x + 6, y + 9) <= 0.5, `at (${x}, ${y}), the bay at (-6, -9) ± 0.5 m`);
+    const off = Math.abs(Math.atan2(Math.sin(theta - Math.PI / 2), Math.cos(theta - Math.PI / 2)));
+    assert.ok(off <= (5 * Math.PI) / 180, `heading off by ${(off * 180) / Math.PI}°`);
+    // While it backs, the HUD says so in words.
+    await page.evaluate(async () => { await window.__lab.restart(); await window.__lab.stepN(120); });
+    await page.waitForFunction(() => /reverse/.test(document.querySelector("#hud")?.textContent ?? ""), null, { timeout: 5000 });
+    await settle(page);
+    await shot(page, "preset-car-like-reverse-parking");
+    assert.deepEqual(opened.problems, []);
+    await opened.context.close();
   });
 } finally {
   console.log(`e2e-vehicle timings: ${JSON.stringify(timings)}`);

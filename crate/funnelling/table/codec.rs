@@ -310,6 +310,7 @@ impl EtaTable {
             kd: pf[7],
             integrator,
             r_min,
+            ..VehicleParams::default()
         };
         let params = BuildParams {
             vehicle,

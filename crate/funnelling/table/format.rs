@@ -92,6 +92,8 @@ impl BuildParams {
             kd: a[7],
             integrator,
             r_min: 0.0,
+            v_reverse: 0.0,
+            gear_cost: 0.0,
         };
         Self {
             vehicle,

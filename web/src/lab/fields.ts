@@ -19,7 +19,7 @@ export type LimitDefaults = Required<Limits> & { dt: number };
  *  leaves a zero turning radius out of what it hands over, the page needs
  *  every limit. */
 export function limitDefaults(p: VehicleParams): VehicleParams & LimitDefaults {
-  return { ...p, minTurnRadius: p.minTurnRadius ?? 0 };
+  return { ...p, minTurnRadius: p.minTurnRadius ?? 0, vReverse: p.vReverse ?? 0 };
 }
 
 /** One number of the lab state, tied to the core's range `core`. */
@@ -60,6 +60,7 @@ export const FIELDS: readonly LabField[] = [
   lim("kp", "kp", "seek gain kp", "1/s²"),
   lim("kd", "kd", "seek gain kd", "1/s"),
   lim("rmin", "minTurnRadius", "min. turning radius", "m"),
+  lim("vrev", "vReverse", "max reverse speed", "m/s"),
   num("vx", "pos.x", "vehicle x", "m", (s) => s.vehicle.x, (s, v) => { s.vehicle.x = v; }),
   num("vy", "pos.y", "vehicle y", "m", (s) => s.vehicle.y, (s, v) => { s.vehicle.y = v; }),
   num("vth", "theta", "vehicle heading", "°", (s) => s.vehicle.theta, (s, v) => { s.vehicle.theta = v; }, 1 / DEG),

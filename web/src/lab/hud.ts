@@ -37,6 +37,8 @@ export type HudData = Pick<Internals, "d" | "alpha" | "eta" | "deltaEta" | "mu" 
   live?: boolean;
   /** The vehicle's minimum turning radius, m (0: it turns on the spot). */
   minTurnRadius?: number;
+  /** The largest reverse speed (m/s; 0 or absent: forward only). */
+  vReverse?: number;
 };
 
 const DEG = 180 / Math.PI;
@@ -70,10 +72,15 @@ function hudText(h: HudData): { parts: HudText; key: string } {
   const words = h.mode === null ? undefined : modeWords(h.mode, radius > 0);
   const chip = h.mode === null ? "—" : (words?.word ?? `mode ${h.mode}`);
   const who = h.agents > 1 ? `agent ${h.shown + 1} of ${h.agents} (ringed): ` : "";
-  const say = `${who}${words?.meaning ?? ""}`;
+  // A car-like vehicle with a reverse gear backs where that is shorter:
+  // its speed is then negative, and the HUD says so in words.
+  const backing = h.speed < 0;
+  const say = `${who}${backing ? "reverse gear, backing up: " : ""}${words?.meaning ?? ""}`;
   const manoeuvre = radius > 0 && h.mode === Mode.OrientationOnly;
   const warn = manoeuvre
-    ? `Why the loop: a car-like vehicle cannot turn on the spot (its turning circle has a radius of at least ${radius.toFixed(1)} m), and the target is closer than a few turning circles, too close to turn in and face β directly; so it drives round and comes back in along β.`
+    ? (h.vReverse ?? 0) > 0
+      ? `Why this path: a car-like vehicle cannot turn on the spot (its turning circle has a radius of at least ${radius.toFixed(1)} m); with a reverse gear it takes the shortest path of arcs and straights, forwards and backwards, that ends facing β, changing gear only at rest.`
+      : `Why the loop: a car-like vehicle cannot turn on the spot (its turning circle has a radius of at least ${radius.toFixed(1)} m), and the target is closer than a few turning circles, too close to turn in and face β directly; so it drives round and comes back in along β.`
     : h.reachable
       ? ""
       : `slowing down to ${Number.isFinite(h.vDt) ? h.vDt.toFixed(2) : "—"} m/s: at the desired speed the turn is too tight to arrive facing β`;
@@ -86,7 +93,7 @@ function hudText(h: HudData): { parts: HudText; key: string } {
     `Δη     ${deg(h.deltaEta)}`,
     `μ      ${deg(h.mu)}`,
     `μ_max  ${h.mode === Mode.Funnelling ? deg(h.muMax) : "      —"}`,
-    `speed  ${h.speed.toFixed(3).padStart(7)} m/s`,
+    `speed  ${h.speed.toFixed(3).padStart(7)} m/s${backing ? "  reverse" : ""}`,
     `agents ${String(h.agents).padStart(7)}   t ${h.time.toFixed(2)} s${flags}`,
   ].join("\n");
   const diagnostics = [

@@ -124,7 +124,8 @@ export function buildPanel(sim: LabSim, canvas: HTMLCanvasElement): GoalControls
   lim("kp", "kp", 0.05, 400);
   lim("kd", "kd", 0.05, 60);
   lim("rmin", "minTurnRadius", 0, 20, 0.1);
-  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit. Min. turning radius 0: turns on the spot; above 0 the vehicle is car-like (|ω| ≤ v/R_min): it arrives oriented by driving round.";
+  lim("vrev", "vReverse", 0, 20, 0.1);
+  help(limBox).textContent = "Changing a limit builds the η table for it in Web Workers (the HUD's table line; the old table is approximate until then), cached in the browser for the next visit. Min. turning radius 0: turns on the spot; above 0 the vehicle is car-like (|ω| ≤ v/R_min): it arrives oriented by driving round. Max reverse speed above 0 gives a car-like vehicle a reverse gear: near its target it backs up where that is shorter, stopping at each change of gear.";
   // A limit edited by hand shows "custom" (or the vehicle it matches); the
   // select's own events are its own business.
   const syncVehicle = (ev: Event): void => {
@@ -162,7 +163,7 @@ function aimWords(sim: LabSim, measured: string | undefined): string | undefined
 }
 
 /** The vehicle limits a reference vehicle sets, and their URL keys. */
-const LIMIT_URL = { vMax: "vmax", accelMax: "amax", omegaMax: "wmax", omegaAccelMax: "awmax", normalAccelMax: "anmax", kp: "kp", kd: "kd", minTurnRadius: "rmin" } as const;
+const LIMIT_URL = { vMax: "vmax", accelMax: "amax", omegaMax: "wmax", omegaAccelMax: "awmax", normalAccelMax: "anmax", kp: "kp", kd: "kd", minTurnRadius: "rmin", vReverse: "vrev" } as const;
 const LIMIT_KEYS = Object.keys(LIMIT_URL) as Array<keyof typeof LIMIT_URL>;
 
 /** The reference vehicles' menu (every one, car-like included): choosing

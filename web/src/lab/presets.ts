@@ -76,6 +76,7 @@ const TITLES: Readonly<Record<string, string>> = {
   avoid_fig6: "Paper 000 Fig. 6 with avoidance",
   avoid_fig8: "Paper 000 Fig. 8 with avoidance",
   car_like_parking: "Parking a car that cannot turn on the spot",
+  car_like_reverse_parking: "Backing into a bay: a car with a reverse gear",
 };
 
 /** The title the menu shows for a preset. */

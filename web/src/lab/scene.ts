@@ -30,7 +30,7 @@ export type SceneSource = Pick<LabSim, "st" | "count" | "state" | "stride" | "fo
   avoid: Pick<LabAvoidance, "method" | "radius" | "obstacles">;
   /** The vehicle limits in force (its kind and turning radius); absent:
    *  the core's default vehicle, a pedestrian that turns on the spot. */
-  params?: () => Pick<VehicleParams, "vMax" | "omegaMax" | "minTurnRadius">;
+  params?: () => Pick<VehicleParams, "vMax" | "omegaMax" | "minTurnRadius" | "vReverse">;
 };
 
 /** The core's default vehicle as far as the scene needs it (scenarios/vehicles/pedestrian.json). */
@@ -155,6 +155,7 @@ export class SceneBuilder {
       rate: rate && rate.spanMs > 0 ? rate : undefined,
       live: sim.live,
       minTurnRadius: sim.params?.().minTurnRadius ?? 0,
+      vReverse: sim.params?.().vReverse ?? 0,
     };
   }
 }

@@ -35,6 +35,9 @@ export interface Limits {
   /** Minimum turning radius at every speed, m (car-like: |ω| ≤ v/R_min;
    *  0, the core's default, turns on the spot). */
   minTurnRadius?: number;
+  /** Largest reverse speed, m/s (0, the core's default: forward only; a
+   *  car-like vehicle with one backs where that is shorter). */
+  vReverse?: number;
 }
 
 /** The μ-bound choices of the controller section, as the URL writes them:
