@@ -24,6 +24,8 @@ import { openTableCache } from "./tablecache";
 import { tableBadge } from "./loading";
 import { buildLegend } from "./legend";
 import { PeerCompare } from "./compareview";
+import { LabGpu } from "./gpucrowd";
+import { gpuSection } from "./gpupanel";
 
 const page: LabPage = {
   status: { ready: false, error: null, problems: [], version: "", tableAt: NaN },
@@ -77,6 +79,10 @@ async function start(): Promise<void> {
   avoidanceSection($("panel"), sim.avoid, () => ({ x: view.cx, y: view.cy }), changed);
   const compare = new PeerCompare(sim, lab);
   compare.section($("panel"));
+  const gpu = new LabGpu(canvas.parentElement ?? document.body);
+  sim.gpu = gpu;
+  const engine = gpuSection($("panel"), sim);
+  sim.onGpuNote = (t) => engine.note(t);
 
   const handles = (): Handles | null =>
     sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
@@ -109,7 +115,10 @@ async function start(): Promise<void> {
   }
   transport.setPaused(false);
   const badge = tableBadge(canvas.parentElement ?? document.body);
-  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since, (s, v) => compare.draw(s, v));
+  runLoop(sim, new SceneBuilder(sim), surface, view, $("hud"), page.loop, page.probe, since, (s, v) => {
+    compare.draw(s, v);
+    gpu.draw(v);
+  });
 
   // The table: the agents are planned with it and the clock starts.
   const t0 = performance.now();
