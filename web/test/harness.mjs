@@ -51,6 +51,10 @@ export const GPU_ARGS = [
   "--enable-features=Vulkan",
   "--use-webgpu-adapter=swiftshader",
   "--use-vulkan=swiftshader",
+  // A WebGPU canvas needs the compositor on SwiftShader too (without these
+  // two, configuring one fails: "A valid external Instance reference no longer exists").
+  "--use-angle=swiftshader",
+  "--enable-unsafe-swiftshader",
 ];
 
 /** Serves web/dist-test, or `outDir` (another build's, e.g. a baseline). */

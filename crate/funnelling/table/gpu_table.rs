@@ -87,11 +87,13 @@ mod tests {
         let spec = TableSpec::with_counts(VehicleParams::default(), [3, 8, 3, 3, 3]);
         let t = spec.generate().unwrap();
         let g = GpuTable::of(&t);
-        assert_eq!(g.meta[..AXES], [3, 8, 3, 3, 3]);
-        assert_eq!(g.meta[AXES..2 * AXES], [216, 27, 9, 3, 1]);
-        // α is periodic: one more interval than samples minus one.
-        assert_eq!(g.meta[4 * AXES + 1], 8);
-        assert_eq!(g.meta[4 * AXES], 2);
+        let n: Vec<u32> = (0..AXES).map(|k| t.axis(k).len() as u32).collect();
+        assert_eq!(g.meta[..AXES], n[..]);
+        assert_eq!(g.meta[2 * AXES - 1], 1, "the last axis is contiguous");
+        assert_eq!(g.meta[AXES], n[1] * n[2] * n[3] * n[4]);
+        // α is periodic: as many intervals as samples; the others one fewer.
+        assert_eq!(g.meta[4 * AXES + 1], n[1]);
+        assert_eq!(g.meta[4 * AXES], n[0] - 1);
         assert_eq!(g.meta[5 * AXES] as usize, t.len());
         assert_eq!(g.cells.len(), 4 * t.len());
         let x0 = g.meta[2 * AXES] as usize;

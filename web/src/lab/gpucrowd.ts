@@ -69,6 +69,15 @@ export class LabGpu {
   /** Puts `spawn`'s crowd on the GPU for `core`'s vehicle, settings and table;
    *  resolves to null, or why it cannot (the workers then step it). */
   async start(core: Lab, spawn: CrowdSpawn): Promise<string | null> {
+    try {
+      return await this.open(core, spawn);
+    } catch (e) {
+      this.stop();
+      return (this.note = `the GPU could not take the crowd (${e instanceof Error ? e.message : String(e)}): it steps in the workers`);
+    }
+  }
+
+  private async open(core: Lab, spawn: CrowdSpawn): Promise<string | null> {
     this.stop();
     const g = await openGpu();
     if ("absent" in g) return (this.note = `WebGPU is absent here (${g.absent}): the crowd steps in the workers`);
@@ -100,12 +109,30 @@ export class LabGpu {
     const ctx = c.getContext("webgpu") as GPUCanvasContext | null;
     if (!ctx) return;
     this.canvas = c;
-    this.drawer = new AgentDrawer(g.device, ctx);
+    try {
+      this.drawer = new AgentDrawer(g.device, ctx);
+    } catch (e) {
+      // Stepping goes on; the note says why nothing is drawn.
+      this.note = `the GPU crowd steps but cannot be drawn here (${e instanceof Error ? e.message : String(e)})`;
+    }
   }
 
-  /** `k` steps, one compute pass each (none while paused). */
+  /** Work submitted and not yet done: new steps and draws wait for it, so
+   *  a device slower than the clock (a CPU emulation, a million agents)
+   *  runs the crowd slower instead of queueing frames without end. */
+  private busy = false;
+
+  /** `k` steps, one compute pass each (none while paused, or while the last are running). */
   step(k: number): void {
-    if (k > 0) this.kernel?.step(k);
+    const { kernel, gpu } = this;
+    if (k <= 0 || !kernel || !gpu || this.busy) return;
+    kernel.step(Math.min(k, 4));
+    this.settle(gpu);
+  }
+
+  private settle(gpu: GpuOpened): void {
+    this.busy = true;
+    void gpu.device.queue.onSubmittedWorkDone().then(() => { this.busy = false; });
   }
 
   /** Draws the crowd as `view` shows the world (CSS px per m about the centre). */
@@ -123,9 +150,10 @@ export class LabGpu {
     const sy = (2 * view.scale) / view.height;
     const colors = [MODE_WORDS.EndOfSteering, MODE_WORDS.OrientationOnly, MODE_WORDS.PositionOnly, MODE_WORDS.Funnelling].map((m) => rgba(m.colour));
     const enc = gpu.device.createCommandEncoder();
-    // An arrow 0.5 m long, never under 3 px.
-    drawer.encode(enc, kernel, { scale: [sx, sy], offset: [-view.cx * sx, -view.cy * sy], size: Math.max(0.5, 3 / view.scale), colors });
+    // An arrow about 0.4 m long (the lab's vehicles are 0.5 m), never under 3 px.
+    drawer.encode(enc, kernel, { scale: [sx, sy], offset: [-view.cx * sx, -view.cy * sy], size: Math.max(0.22, 2 / view.scale), colors });
     gpu.device.queue.submit([enc.finish()]);
+    this.settle(gpu);
   }
 
   /** The HUD's stepping line while the crowd is on the GPU. */

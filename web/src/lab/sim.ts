@@ -181,6 +181,8 @@ export class LabSim {
     // The workers fetched the committed table themselves; the page's core holds the world here.
     this.here.tableChanged();
     this.dirty = true;
+    // The GPU crowd waited for the table (gpucrowd.ts packs it with it).
+    if (this.st.engine === "gpu") void this.rebuild(false);
     return true;
   }
 
@@ -452,7 +454,7 @@ export class LabSim {
     }
     info ??= await this.here.start(recipe, 0);
     this.built(recipe, info, fit);
-    if (split.spawn && this.gpu) {
+    if (split.spawn && this.gpu && this.core.hasTable()) {
       const why = await this.gpu.start(this.core, split.spawn);
       if (gen !== this.generation) return;
       this.onGpuNote(why);
