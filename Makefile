@@ -9,7 +9,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 
 .PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
-	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-peers test-protocol bench-budget \
+	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-gpu test-e2e-peers test-protocol bench-budget \
 	npm test-npm test-library-user figures figures-full screenshots stages-start icount
 
 # `make test` says how long each stage took (its own builds included: a
@@ -152,7 +152,7 @@ wasm: setup-rust setup-wasm-strip
 
 # web/dist, the shipped build: no test hook in it (checked: HOOK_NAMES, the
 # test hooks' globals and their own method names).
-HOOK_NAMES := __lab|agentRecord|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt|peerGhosts|__peers
+HOOK_NAMES := __lab|agentRecord|__crowd|__learn|__wander|perfReset|perfStats|stateHash|stepN|obstacleKnobs|cachedTables|viewScale|simTime|firstFrameMs|tableMs|loadScaled|runSteps|skippedSteps|snapshot|boidsPerFrame|jobMsPerStep|workerMsPerStep|msPerStep|meanWorkMs|p95WorkMs|steppedFrames|coreModes|handleKindAt|peerGhosts|__peers|__gpu
 web-build: setup-web wasm
 	cd web && npx vite build --logLevel warn
 	if grep -rnoE --include='*.js' --include='*.html' '\b($(HOOK_NAMES))\b' web/dist; then echo "web/dist holds test hooks (above)"; exit 1; fi
@@ -267,6 +267,15 @@ test-e2e-avoid: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-avoid.mjs
 	$(stage-done)
 
+# The WebGPU kernel against the core, in Chromium over SwiftShader (a CPU
+# emulation: correctness, not speed): one step from states sampled along
+# seeded runs (pedestrian, car, robot), a free run's verdicts, table reads
+# at random probes; a planted change to the kernel's μ bound or integrator
+# must fail it. Also prints the timing page's rows, labelled an emulation.
+test-e2e-gpu: setup-browser web-build-test
+	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-gpu.mjs
+	$(stage-done)
+
 # Side by side with the peers in headless Chromium, one page run (the test
 # build's peers.html): our core, Yuka 0.7.8 (arrive, seek) and DetourCrowd
 # (@recast-navigation/core 0.43.1), web/'s devDependencies, on the same
@@ -355,7 +364,7 @@ test-library-user:
 stages-start:
 	@mkdir -p target && echo "$$(date +%s) start" > $(STAGES_LOG)
 
-test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-e2e-peers test-npm test-library-user
+test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-e2e-gpu test-e2e-peers test-npm test-library-user
 	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
 	@echo "make test: all suites passed"
 

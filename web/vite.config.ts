@@ -185,6 +185,8 @@ const PAGES = [
   { file: "crowd.html", title: "crowded path following", nav: "Crowd path following", css: ["./src/gallery.css"] },
   { file: "wander.html", title: "random steering gallery", nav: "Random steering gallery", css: ["./src/gallery.css"] },
   { file: "learn.html", title: "learn funnelling", nav: "Learn", css: ["./src/learn/learn.css"] },
+  // The GPU timing page: linked from the lab's panel, not from every page's navigation.
+  { file: "gpu.html", title: "the funnelling kernel on this GPU", nav: null, css: ["./src/gallery.css"] },
 ] as const;
 
 /** Every page's head and navigation, from PAGES: `<!-- lab:head -->` and
@@ -207,7 +209,7 @@ function pageFrame(): Plugin {
           `<title>The steering lab — ${page.title}</title>`,
           ...["./src/style.css", ...page.css].map((href) => `<link rel="stylesheet" href="${href}" />`),
         ];
-        const links = PAGES.map((p) => `<a href="./${p.file}"${p === page ? ` aria-current="page"` : ""}>${p.nav}</a>`);
+        const links = PAGES.filter((p) => p.nav !== null).map((p) => `<a href="./${p.file}"${p === page ? ` aria-current="page"` : ""}>${p.nav}</a>`);
         const nav = [`<h1>The steering lab</h1>`, `<nav class="labnav" aria-label="lab pages">`, ...links.map((a) => `  ${a}`), `</nav>`];
         const fill = (marker: string, lines: string[]) => (text: string) =>
           text.replace(new RegExp(`^( *)<!-- ${marker} -->$`, "m"), (_, indent: string) => lines.map((l) => indent + l).join("\n"));
@@ -259,6 +261,7 @@ export default defineConfig(({ mode }) => ({
         crowd: resolve(import.meta.dirname, "crowd.html"),
         wander: resolve(import.meta.dirname, "wander.html"),
         learn: resolve(import.meta.dirname, "learn.html"),
+        gpu: resolve(import.meta.dirname, "gpu.html"),
         ...(mode === TEST_MODE ? { peers: resolve(import.meta.dirname, "peers.html") } : {}),
       },
     },

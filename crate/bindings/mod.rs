@@ -10,6 +10,7 @@
 //! | `lab_probes` | `index.html`, `learn.html` | `Lab`'s η probes: the η field and rings (paper 001 Figs. 3, 4), seek simulations against table lookups |
 //! | `lab_world` | `index.html` | `Lab`'s world: agents added, posed and given goals, random crowds, stepping, the state records |
 //! | `lab_ghost` | `index.html` | `Lab`'s look inside an agent: internals, the ghost path, the η ring at its distance |
+//! | `lab_gpu` | `index.html`, `gpu.html` | `Lab` for the GPU kernel: the η table's and the world's arrays as it reads them (or why it cannot step the world), the core's lookups at probes and a run's arrival counts for the parity checks |
 //! | `lab_scenario` | `index.html` | `Lab`'s scenarios: a scenario file's world in force |
 //! | `lab_types` | `index.html` | what crosses for `Lab`: the TypeScript interfaces and their serde shapes (goal, agent, internals, table and scenario info) |
 //! | [`tables`] | `index.html` workers | η tables built in the browser: `tableJob` (key, entries), `tableSlice` (a worker's share), `assembleTable` (the file's bytes), `tableKeyOf`, `referenceVehicles` |
@@ -25,6 +26,7 @@ mod boundary;
 pub mod crowd;
 pub mod lab;
 mod lab_ghost;
+mod lab_gpu;
 mod lab_probes;
 mod lab_scenario;
 mod lab_settings;

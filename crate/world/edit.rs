@@ -298,15 +298,40 @@ impl World {
         speed: f32,
         keep: core::ops::Range<usize>,
     ) -> Result<(), EditError> {
+        self.check_room(n)?;
+        let mut added = Ok(0);
+        let p = self.params;
+        Self::random_crowd(&p, n, seed, extent, speed, |k, state, goals| {
+            if keep.contains(&k) && added.is_ok() {
+                added = self.add_agent(state, goals);
+            }
+        })?;
+        added.map(|_| ())
+    }
+
+    /// The seeded random crowd of [`World::spawn_random`], agent by agent:
+    /// `each(k, start, goals)` for k in `0..n`, drawn in this order from one
+    /// stream (so a caller that keeps only some agents, or only their first
+    /// goals, gets those of `spawn_random` bit for bit). No room is checked.
+    ///
+    /// # Errors
+    /// `extent` outside [0.001, 1e5] or not finite, `speed` not finite.
+    pub fn random_crowd(
+        p: &VehicleParams,
+        n: usize,
+        seed: u64,
+        extent: f32,
+        speed: f32,
+        mut each: impl FnMut(usize, VehicleState, Vec<GoalSpec>),
+    ) -> Result<(), EditError> {
         use core::f32::consts::PI;
         crate::base::ranges::EXTENT
             .check(extent)
             .map_err(ParamError::Range)?;
         crate::base::vehicle::check_range("speed", speed, f32::MIN, f32::MAX)?;
-        self.check_room(n)?;
         // At least 0.1 m/s, unless the vehicle is slower: `clamp` panics
         // when its lower end is above the upper (v_max 0.05 did, in wasm).
-        let speed = speed.clamp(0.1f32.min(self.params.v_max), self.params.v_max);
+        let speed = speed.clamp(0.1f32.min(p.v_max), p.v_max);
         let mut rng = crate::base::rng::Rng::new(seed);
         let point = |rng: &mut crate::base::rng::Rng| {
             Vec2::new(rng.range(-extent, extent), rng.range(-extent, extent))
@@ -329,9 +354,7 @@ impl World {
                     switch: SwitchRule::Tolerance,
                 })
                 .collect();
-            if keep.contains(&k) {
-                self.add_agent(state, goals)?;
-            }
+            each(k, state, goals);
         }
         Ok(())
     }

@@ -18,11 +18,15 @@
 //! | [`scenario`] | — | the scenario JSON schema (degrees in files) and its validation: positional arrays refused, agents × steps bounded |
 //! | [`precision`] | — | the coordinate range where f32 resolves a quarter of one step (slowest goal speed × dt), measured; checked on every agent and goal |
 //! | [`proximity`] | — | avoidance metrics: minimum pairwise distance, overlapping pairs, obstacle contacts, deadlocks, oriented entries |
+//! | [`gpu_world`] | 000 §6 | a world as the GPU kernel steps it (agents, goal queues, settings as flat arrays), or why it cannot |
+//! | [`entry_judge`] | — | goals left and entered oriented per agent: the verdict a GPU free run is compared on |
 
 mod agent;
 pub mod avoid_step;
 pub mod edit;
+pub mod entry_judge;
 pub mod goals;
+pub mod gpu_world;
 mod planner;
 pub mod precision;
 pub mod proximity;

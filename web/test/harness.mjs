@@ -42,6 +42,21 @@ export const CHROMIUM_ARGS = [
   "--no-first-run",
 ];
 
+/** Chromium's flags for WebGPU on a machine without a GPU: Dawn over
+ *  SwiftShader's Vulkan (a CPU emulation), the page on http://127.0.0.1
+ *  (a secure context). CHROMIUM_ARGS less --disable-gpu. */
+export const GPU_ARGS = [
+  ...CHROMIUM_ARGS.filter((a) => a !== "--disable-gpu"),
+  "--enable-unsafe-webgpu",
+  "--enable-features=Vulkan",
+  "--use-webgpu-adapter=swiftshader",
+  "--use-vulkan=swiftshader",
+  // A WebGPU canvas needs the compositor on SwiftShader too (without these
+  // two, configuring one fails: "A valid external Instance reference no longer exists").
+  "--use-angle=swiftshader",
+  "--enable-unsafe-swiftshader",
+];
+
 /** Serves web/dist-test, or `outDir` (another build's, e.g. a baseline). */
 export async function serve(outDir = testDist) {
   const server = await preview({
@@ -109,12 +124,13 @@ export const BROWSER_CRASHED = 75;
  *  that is said at once, with where Chromium left its crash dump, and the
  *  script then exits with BROWSER_CRASHED whatever its checks said (the
  *  checks that were running were cut short by the crash, not failed by
- *  the page). */
-export async function launch() {
+ *  the page). `args`: Chromium's flags (the GPU suite's own: WebGPU over
+ *  SwiftShader, GPU_ARGS). */
+export async function launch(args = CHROMIUM_ARGS) {
   const browser = await chromium.launch({
     executablePath: process.env.CHROMIUM ?? "/usr/bin/chromium",
     headless: true,
-    args: CHROMIUM_ARGS,
+    args,
   });
   let closing = false;
   const close = browser.close.bind(browser);

@@ -15,10 +15,12 @@
 //             tasks and shared memory; the crowd's strip tasks
 //   workers/  the worker entries (*.worker.ts, and only those): what each
 //             computes, from core/, threads/ and world/
+//   gpu/      the funnelling kernel on WebGPU (its WGSL, the device, the
+//             draw from its buffers, its parity with the core), for pages
 //   ui/       what the pages draw and handle with (canvas, view, sprites,
 //             controls, pointer, …)
-//   lab/ crowd/ learn/ wander/   the pages; one may use another in one
-//             direction only (learn → lab)
+//   lab/ crowd/ learn/ wander/ gpubench/   the pages; one may use another
+//             in one direction only (learn → lab)
 //
 // A file imports from its own folder or one below; every reference counts
 // (import, export … from, import(), a type's import("…"), new
@@ -38,7 +40,7 @@ import { webDir } from "./harness.mjs";
 const MAX_LINES = 150;
 
 /** web/src's folders by layer, bottom to top (the comment above). */
-const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["ui"], ["lab", "crowd", "learn", "wander", "peers"]];
+const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["gpu"], ["ui"], ["lab", "crowd", "learn", "wander", "peers", "gpubench"]];
 
 /** Files under `dir` whose name matches `re`, recursively. */
 function files(dir, re) {

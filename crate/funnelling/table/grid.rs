@@ -235,6 +235,18 @@ impl Axis {
         self.segments[i]
     }
 
+    /// The axis as a GPU kernel reads it (`crate::funnelling::table::gpu_table`):
+    /// its samples, the periodic seam's closing sample included, and each
+    /// interval's reciprocal width, the very numbers [`Axis::locate_linear`]
+    /// interpolates with, so a search over the samples finds the same
+    /// interval and the same weight.
+    #[must_use]
+    pub fn intervals(&self) -> (Vec<f32>, Vec<f32>) {
+        let mut x: Vec<f32> = self.segments.iter().map(|s| s.x0).collect();
+        x.push(self.hi);
+        (x, self.segments.iter().map(|s| s.inv_dx).collect())
+    }
+
     /// The nearest sample to `v` (clamped to the axis).
     #[inline]
     #[must_use]

@@ -131,7 +131,7 @@ pub struct EtaTable {
     full: Grid<AXES>,
     plane: Grid<4>,
     /// Constant-time interval search on each axis (built on load).
-    grid: [Axis; AXES],
+    pub(super) grid: [Axis; AXES],
 }
 
 /// Result of one lookup.

@@ -9,6 +9,7 @@
 //! | [`codec`] | 000 §3 | the bytes: CRC-32, validation of every field, to/from bytes |
 //! | [`lookup`] | 000 §3, 001 Fig. 3 | [`EtaTable`](lookup::EtaTable) in memory: cells, the multilinear blend, [`Lookup`](lookup::Lookup) |
 //! | [`grid`] | — | where a query falls on a sampled axis, in constant time |
+//! | [`gpu_table`] | — | the table's arrays as a GPU kernel reads them (the same cells, samples and reciprocal widths) |
 //! | [`key`] | — | the parameter key (hash of build parameters and axes) that table caches are keyed by |
 //! | [`spec`] | 000 §3 | what the table samples: anisotropic axes scaled with the vehicle, one entry's reach simulation (the same seek code), mirror symmetry |
 //! | [`batch`] | 000 §3 | the entries' reach simulations interleaved several at a time, the same bits |
@@ -20,6 +21,7 @@ pub mod codec;
 pub mod embedded;
 pub mod format;
 pub mod generate;
+pub mod gpu_table;
 pub mod grid;
 pub mod key;
 pub mod lookup;

@@ -26,6 +26,8 @@ import { openTableCache } from "./tablecache";
 import { tableBadge } from "./loading";
 import { buildLegend, legendCarLike } from "./legend";
 import { PeerCompare } from "./compareview";
+import { LabGpu } from "./gpucrowd";
+import { gpuSection } from "./gpupanel";
 
 const page: LabPage = {
   status: { ready: false, error: null, problems: [], version: "", tableAt: NaN },
@@ -80,6 +82,10 @@ async function start(): Promise<void> {
   crowdSection($("panel"), sim, transport);
   const compare = new PeerCompare(sim, lab);
   compare.section($("panel"));
+  const gpu = new LabGpu(canvas.parentElement ?? document.body);
+  sim.gpu = gpu;
+  const engine = gpuSection($("panel"), sim);
+  sim.onGpuNote = (t) => engine.note(t);
 
   const handles = (): Handles | null =>
     sim.focus >= 0 && sim.focus < sim.count ? handlePositions(view, st, sim.pose(sim.focus), HANDLE_PX) : null;
@@ -122,6 +128,7 @@ async function start(): Promise<void> {
     compare.draw(s, v);
     keyboard.place();
     if (legendEl) legendCarLike(legendEl, (sim.params().minTurnRadius ?? 0) > 0);
+    gpu.draw(v);
   });
 
   // The table: the agents are planned with it and the clock starts.

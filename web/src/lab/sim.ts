@@ -20,6 +20,7 @@ import type { BuildInfo, Edit, EditAnswer, Recipe } from "../world/worldcalls";
 import { Cancelled } from "../threads/pool";
 import { buildTable, cancelBuild, tableKeyFor } from "./tables";
 import { workersWanted, WorkerWorld } from "./stepping";
+import { splitCrowd, type LabGpu } from "./gpucrowd";
 
 /** The η table in force against the limits in force. */
 export interface TableStatus {
@@ -102,6 +103,11 @@ export class LabSim {
   stepper: WorkerWorld | null = null;
   /** Workers asked for by `?workers=N` or the default for the agent count. */
   workersWanted = 0;
+  /** The random crowd on the GPU (gpucrowd.ts; the engine "gpu"), and why it is not when it cannot be. */
+  gpu: LabGpu | null = null;
+  onGpuNote: (note: string | null) => void = () => {};
+  /** The GPU could not take the crowd: the next build gives it to the workers. */
+  private gpuFallback = false;
   private readonly defaultTableKey: string;
   /** The bytes of a table built for other limits (workers load them too). */
   private tableBytes: { key: string; bytes: Uint8Array } | null = null;
@@ -180,6 +186,8 @@ export class LabSim {
     // The workers fetched the committed table themselves; the page's core holds the world here.
     this.here.tableChanged();
     this.dirty = true;
+    // The GPU crowd waited for the table (gpucrowd.ts packs it with it).
+    if (this.st.engine === "gpu") void this.rebuild(false);
     return true;
   }
 
@@ -270,6 +278,8 @@ export class LabSim {
 
   /** The HUD's stepping line; undefined when no workers were asked for. */
   steppingLine(): string | undefined {
+    const g = this.gpu?.line();
+    if (g) return g;
     const s = this.stepper;
     if (!s || this.workersWanted === 0) return undefined;
     const i = s.info(this.workersWanted);
@@ -426,13 +436,17 @@ export class LabSim {
     // The limits as the world will take them (desired speed ≤ max speed), and their table.
     clampToLimits(this.ranges, st, this.defaults);
     this.syncTable();
-    const recipe = await this.recipe();
+    const whole = await this.recipe();
     if (gen !== this.generation) return;
-    if (typeof recipe === "string") {
-      showMessage(recipe, "error");
+    if (typeof whole === "string") {
+      showMessage(whole, "error");
       this.waiting = null;
       return;
     }
+    this.gpu?.stop();
+    const split = splitCrowd(st, whole, !this.gpuFallback);
+    this.gpuFallback = false;
+    const recipe = split.recipe;
     let info: BuildInfo | null = null;
     const workers = this.workersFor(recipe);
     if (workers) {
@@ -445,6 +459,18 @@ export class LabSim {
     }
     info ??= await this.here.start(recipe, 0);
     this.built(recipe, info, fit);
+    if (split.spawn && this.gpu && this.core.hasTable()) {
+      const why = await this.gpu.start(this.core, split.spawn);
+      if (gen !== this.generation) return;
+      this.onGpuNote(why);
+      if (why !== null) {
+        showMessage(why, "warn");
+        this.gpuFallback = true;
+        void this.rebuild(false);
+        return;
+      }
+      if (fit) this.view.fit(-split.spawn.extent - 3, -split.spawn.extent - 3, split.spawn.extent + 3, split.spawn.extent + 3, (v) => stageInsets(v, 40));
+    } else if (st.engine !== "gpu") this.onGpuNote(null);
     const waiting = this.waiting;
     this.waiting = null;
     for (const [e, answer] of waiting) this.world.edit(e, answer);
@@ -542,6 +568,10 @@ export class LabSim {
         this.acc = 0;
       } else this.acc -= k * this.dt;
     }
+    if (k > 0 && this.gpu?.agents) {
+      this.gpu.step(k);
+      this.dirty = true;
+    }
     return this.took(this.world.frame(k, this.shown));
   }
 
@@ -563,6 +593,7 @@ export class LabSim {
   /** Runs `k` steps now (paused single steps, tests); resolves once the
    *  state drawn is theirs. */
   async stepNow(k: number): Promise<void> {
+    this.gpu?.step(k);
     this.took(await this.world.run(k, this.shown));
   }
 }

@@ -136,6 +136,10 @@ export interface LabState {
   /** Extra funnelling agents spawned at random (performance runs). */
   agents: number;
   seed: number;
+  /** What steps the random crowd: the workers, or the GPU kernel (gpukeys.ts, docs/DESIGN.md §20). */
+  engine: "workers" | "gpu";
+  /** The GPU crowd's agents (with engine "gpu"). */
+  gpuAgents: number;
   slow: boolean;
   /** The view (world point at the canvas centre, px per m); null = fit. */
   view: { cx: number; cy: number; scale: number } | null;
@@ -162,6 +166,8 @@ export function defaultState(): LabState {
     preset: "",
     agents: 0,
     seed: 1,
+    engine: "workers",
+    gpuAgents: 1_000_000,
     slow: false,
     view: null,
   };

@@ -9,6 +9,7 @@ import { clampToLimits, clip, FIELDS, parseField, type LimitDefaults, type Range
 import { decodeObstacles, encodeObstacles } from "./obstacles";
 import { AIM_KEYS, BOUND_KEYS, READING_KEYS, RELAXED_AIM_KEYS, defaultState, settleReading, type AimKey, type ReadingKey, type BoundKey, type RelaxedAimKey, type LabState, type Overlays } from "./state";
 import { AVOID_KEYS, type AvoidKey } from "../world/worldcalls";
+import { GPU_KEYS, decodeGpu, encodeGpu } from "./gpukeys";
 
 const OVERLAY_KEYS: ReadonlyArray<keyof Overlays> = ["radial", "eta", "gamma", "ring", "field", "trails", "arc", "ghost"];
 const FLAGS: ReadonlyArray<"halting" | "relaxed" | "slow"> = ["halting", "relaxed", "slow"];
@@ -42,6 +43,7 @@ export function encodeState(s: LabState, ranges: RangeTable, d: LimitDefaults): 
   if (s.replanEvery !== null) p.set("plan", String(s.replanEvery));
   if (s.obstacles !== null) p.set("obs", encodeObstacles(s.obstacles));
   if (s.compare) p.set("cmp", "1");
+  encodeGpu(s, p);
   if (s.preset) p.set("preset", s.preset);
   if (s.view) {
     p.set("zx", fmt(s.view.cx));
@@ -71,7 +73,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
   } catch {
     return { state: s, problems: ["the link's state is not valid URL encoding; using defaults"] };
   }
-  const known = new Set<string>(["cmp", "rd", "ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...FLAGS, ...FIELDS.map((f) => f.url)]);
+  const known = new Set<string>(["cmp", "rd", "ov", "bound", "preset", "avoid", "plan", "obs", "aim", "raim", "lp", "zx", "zy", "zs", ...GPU_KEYS, ...FLAGS, ...FIELDS.map((f) => f.url)]);
   const seen = new Set<string>();
   for (const key of p.keys()) {
     if (seen.has(key)) problems.push(`field "${clip(key)}" given twice; the first kept`);
@@ -124,6 +126,7 @@ export function decodeState(fragment: string, presets: readonly string[], ranges
     if ((RELAXED_AIM_KEYS as readonly string[]).includes(raim)) s.funnel.relaxedAim = raim as RelaxedAimKey;
     else problems.push(`raim="${clip(raim)}" is not one of ${RELAXED_AIM_KEYS.join(", ")}; default kept`);
   }
+  decodeGpu(p, s, problems);
   const cmp = p.get("cmp");
   if (cmp !== null) {
     if (cmp === "1" || cmp === "0") s.compare = cmp === "1";

@@ -1,0 +1,224 @@
+//! A world as the GPU kernel steps it (docs/DESIGN.md §20): the agents, their
+//! goal queues and the settings as flat arrays for storage buffers, or the
+//! reason the kernel cannot step this world.
+//!
+//! The kernel (`web/src/gpu/`) mirrors the world's default step
+//! ([`crate::funnelling::controller::ControllerKind::is_ours_unicycle`]: our standard controller on
+//! a unicycle, avoidance off) towards static goals; anything else is
+//! refused here, with the reason, so a page falls back to the workers.
+//!
+//! Layout, 32-bit words (`f32` unless said):
+//! - agents, [`GpuWorld::AGENT_WORDS`] each: `x, y, θ, v, ω`, flags (`u32`,
+//!   bit 0: the position met, [`crate::funnelling::goal::FunnelMemory::position_met`]),
+//!   current goal (`u32`), first goal's index in `goals` (`u32`), goals in
+//!   the queue (`u32`), goals entered oriented (`u32`, counted by the
+//!   kernel), the last mode (`u32`), padding;
+//! - goals, [`GpuWorld::GOAL_WORDS`] each: `x, y, β, D_tol, ε_tol, speed`,
+//!   flags (`u32`: bit 0 halting, bit 1 the End_of_Steering switch rule),
+//!   padding;
+//! - settings, [`GpuWorld::SETTINGS`] floats, in [`GpuWorld::settings`]'s order.
+
+use crate::avoidance::config::AvoidanceMethod;
+use crate::base::vehicle::Integrator;
+use crate::funnelling::config::{Aim, Deviations, MuBound};
+use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::goal::FunnelMemory;
+use crate::funnelling::table::lookup::EtaTable;
+use crate::funnelling::table::spec::VehicleScale;
+use crate::world::goals::{GoalMotion, SwitchRule};
+use crate::world::World;
+
+/// A world's arrays for the GPU kernel (the module's doc gives the layout).
+#[derive(Clone, Debug, PartialEq)]
+pub struct GpuWorld {
+    /// [`GpuWorld::AGENT_WORDS`] words per agent.
+    pub agents: Vec<u32>,
+    /// [`GpuWorld::GOAL_WORDS`] words per goal.
+    pub goals: Vec<u32>,
+    /// The vehicle, controller and table numbers the kernel reads.
+    pub settings: Vec<f32>,
+}
+
+/// Why the GPU kernel cannot step a world (shown to the user, who then
+/// gets the workers).
+pub const CAR_LIKE: &str = "the GPU path steers unicycles only: a car-like vehicle (minimum \
+     turning radius above 0) arrives by Dubins manoeuvres, which run in the workers";
+
+impl GpuWorld {
+    /// Words per agent.
+    pub const AGENT_WORDS: usize = 12;
+    /// Words per goal.
+    pub const GOAL_WORDS: usize = 8;
+    /// Floats of settings.
+    pub const SETTINGS: usize = 24;
+
+    /// Why the kernel cannot step `w`, if it cannot: a car-like vehicle,
+    /// another controller or reading, a μ bound other than the turning
+    /// radius one, avoidance, or a goal that moves.
+    #[must_use]
+    pub fn refusal(w: &World) -> Option<String> {
+        let why = if w.params.car_like() {
+            CAR_LIKE
+        } else if w.controller != ControllerKind::Standard {
+            "the GPU path runs the standard controller only: relaxed funnelling and plain seek run in the workers"
+        } else if w.config.deviations() != Deviations::OURS || !w.config.commit_turn {
+            "the GPU path runs our reading of the standard controller only: the paper's reading and its switches run in the workers"
+        } else if !matches!(w.config.bound, MuBound::TurningRadius { .. }) {
+            "the GPU path bounds μ by turning radii only: the literal and constant bounds run in the workers"
+        } else if w.avoidance.method != AvoidanceMethod::Off {
+            "the GPU path has no avoidance between agents: separation and ORCA run in the workers"
+        } else if w
+            .agents
+            .iter()
+            .any(|a| a.goals.iter().any(|g| g.motion != GoalMotion::Static))
+        {
+            "the GPU path steers towards static goals only: moving goals run in the workers"
+        } else {
+            return None;
+        };
+        Some(why.to_owned())
+    }
+
+    /// The arrays of `w` stepped with `table`.
+    ///
+    /// # Errors
+    /// [`GpuWorld::refusal`]'s reason.
+    pub fn of(w: &World, table: &EtaTable) -> Result<Self, String> {
+        if let Some(why) = Self::refusal(w) {
+            return Err(why);
+        }
+        let mut agents = Vec::with_capacity(w.agents.len() * Self::AGENT_WORDS);
+        let mut goals = Vec::new();
+        for a in &w.agents {
+            let s = &a.state;
+            let first = (goals.len() / Self::GOAL_WORDS) as u32;
+            for g in &a.goals {
+                let flags = u32::from(g.goal.halting)
+                    | (u32::from(g.switch == SwitchRule::EndOfSteering) << 1);
+                let q = &g.goal;
+                goals.extend(
+                    [q.pos.x, q.pos.y, q.beta, q.d_tol, q.eps_tol, q.speed].map(f32::to_bits),
+                );
+                goals.extend([flags, 0]);
+            }
+            agents.extend([s.pos.x, s.pos.y, s.theta, s.v, s.omega].map(f32::to_bits));
+            agents.extend([
+                u32::from(a.memory.position_met),
+                a.current as u32,
+                first,
+                a.goals.len() as u32,
+                0,
+                a.internals.mode as u32,
+                0,
+            ]);
+        }
+        Ok(Self {
+            agents,
+            goals,
+            settings: Self::settings(w, table),
+        })
+    }
+
+    /// The seeded random crowd of [`World::spawn_random`] for the kernel,
+    /// without building it in `w` (a million agents fit on a GPU, not in
+    /// the lab's world): the same agents bit for bit, each with the first
+    /// `goals` goals of its queue (1 to [`crate::world::edit::RANDOM_GOALS`]); `w` gives
+    /// the vehicle and settings.
+    ///
+    /// # Errors
+    /// [`GpuWorld::refusal`]'s reason, or the crowd's out-of-range input.
+    pub fn random_crowd(
+        w: &World,
+        table: &EtaTable,
+        n: usize,
+        seed: u64,
+        extent: f32,
+        speed: f32,
+        goals: usize,
+    ) -> Result<Self, String> {
+        if let Some(why) = Self::refusal(w) {
+            return Err(why);
+        }
+        let keep = goals.clamp(1, crate::world::edit::RANDOM_GOALS);
+        let mut out = Self {
+            agents: Vec::with_capacity(n * Self::AGENT_WORDS),
+            goals: Vec::with_capacity(n * keep * Self::GOAL_WORDS),
+            settings: Self::settings(w, table),
+        };
+        World::random_crowd(&w.params, n, seed, extent, speed, |_, s, queue| {
+            let first = (out.goals.len() / Self::GOAL_WORDS) as u32;
+            for g in &queue[..keep] {
+                let q = &g.goal;
+                out.goals.extend(
+                    [q.pos.x, q.pos.y, q.beta, q.d_tol, q.eps_tol, q.speed].map(f32::to_bits),
+                );
+                out.goals.extend([0, 0]);
+            }
+            out.agents
+                .extend([s.pos.x, s.pos.y, s.theta, s.v, s.omega].map(f32::to_bits));
+            out.agents.extend([0, 0, first, keep as u32, 0, 3, 0]);
+        })
+        .map_err(|e| e.to_string())?;
+        Ok(out)
+    }
+
+    /// The settings: the vehicle (`dt, v_max, accel_max, ω_max, ω̇_max, A,
+    /// kp, kd`, the integrator 0 explicit / 1 semi-implicit Euler), the
+    /// funnel (gain, seek threshold, the bound's factor and smallest radius,
+    /// the terminal pursuit's lookahead, heading (−1: off) and range, 1 for
+    /// the entry aim), the vehicle's scale (length, speed, time), the
+    /// table's reach radius, `D_η` and lowest desired speed, and the
+    /// speed term of [`FunnelMemory::release_radius`].
+    #[must_use]
+    pub fn settings(w: &World, table: &EtaTable) -> Vec<f32> {
+        let p = &w.params;
+        let c = &w.config;
+        let sc = VehicleScale::of(p);
+        let factor = match c.bound {
+            MuBound::TurningRadius { factor } => factor,
+            _ => 0.0,
+        };
+        let (look, heading, range) = c
+            .terminal
+            .map_or((0.0, -1.0, 0.0), |t| (t.lookahead, t.heading, t.range));
+        let semi = if p.integrator == Integrator::SemiImplicitEuler {
+            1.0
+        } else {
+            0.0
+        };
+        vec![
+            p.dt,
+            p.v_max,
+            p.accel_max,
+            p.omega_max,
+            p.omega_accel_max,
+            p.normal_accel_max,
+            p.kp,
+            p.kd,
+            semi,
+            c.gain,
+            c.seek_threshold,
+            factor,
+            c.min_bound_radius,
+            look,
+            heading,
+            range,
+            if c.aim == Aim::Entry { 1.0 } else { 0.0 },
+            sc.length,
+            sc.speed,
+            sc.time(),
+            table.params().reach_radius,
+            table.d_eta(),
+            table.axis(4)[0],
+            // The release radius's speed term (FunnelMemory::release_radius
+            // less its 2·D_tol): the same for every goal of the world.
+            FunnelMemory::release_radius(
+                p,
+                &crate::funnelling::goal::Goal {
+                    d_tol: 0.0,
+                    ..Default::default()
+                },
+            ),
+        ]
+    }
+}

@@ -1,0 +1,238 @@
+// The funnelling step on the GPU (funnel.wgsl; docs/DESIGN.md §20): the η
+// table, the agents and their goals in storage buffers, one compute pass
+// per step. The core packs the arrays (Lab.gpuTableMeta/Axes/Cells,
+// Lab.gpuWorld: crate/funnelling/table/gpu_table.rs, crate/world/gpu_world.rs)
+// and says why a world cannot run here (Lab.gpuRefusal); this module only
+// moves them onto the device and dispatches.
+//
+// The kernel's contract (checked by web/test/e2e-gpu.mjs against the wasm
+// core): from the same states one step gives the same mode for >= 99.9 %
+// of agents, positions within 1e-4 m and headings within 1e-4 rad (and
+// speeds within 1e-4); over a free run every agent's arrival verdict is
+// the core's; a table read is within 1e-5 rad of the core's lookup. Not
+// the bits: a GPU may fuse multiply-adds, sums the blend's 32 corners in
+// its own order, and the kernel's sin/cos are f32 where the core's are f64.
+
+import source from "./funnel.wgsl?raw";
+
+/** The kernel's WGSL (a parity check may plant a change in a copy). */
+export const FUNNEL_WGSL: string = source;
+
+/** Floats per agent record (crate/world/state_field.rs STATE_STRIDE). */
+export const RECORD_STRIDE = 19;
+/** Words per agent (crate/world/gpu_world.rs GpuWorld::AGENT_WORDS). */
+export const AGENT_WORDS = 12;
+/** Agent word offsets: the current goal, goals in the queue, goals entered oriented, the mode. */
+export const AGENT_CURRENT = 6;
+export const AGENT_COUNT = 8;
+export const AGENT_ORIENTED = 9;
+export const AGENT_MODE = 10;
+/** The agent's count of table reads (funnel.wgsl `counted`): blends in the low 16 bits, axes located above. */
+export const AGENT_COUNTED = 11;
+/** Words per goal (GpuWorld::GOAL_WORDS). */
+export const GOAL_WORDS = 8;
+const WORKGROUP = 64;
+
+/** WebGPU's buffer usage and map mode flags (the spec's numbers; TypeScript's DOM library types them but declares no values). */
+export const USAGE = { MAP_READ: 0x1, COPY_SRC: 0x4, COPY_DST: 0x8, VERTEX: 0x20, UNIFORM: 0x40, STORAGE: 0x80, QUERY_RESOLVE: 0x200 } as const;
+const MAP_READ_MODE = 0x1;
+
+/** The η table as the kernel reads it (Lab.gpuTableMeta, gpuTableAxes, gpuTableCells). */
+export interface GpuTableArrays {
+  meta: Uint32Array;
+  axes: Float32Array;
+  cells: Float32Array;
+}
+
+/** A world as the kernel steps it. */
+export interface GpuWorldArrays {
+  agents: Uint32Array;
+  goals: Uint32Array;
+  settings: Float32Array;
+}
+
+/** What the core's Lab gives for the kernel (core/wasm.ts's Lab has these). */
+export interface GpuSource {
+  gpuTableMeta(): Uint32Array;
+  gpuTableAxes(): Float32Array;
+  gpuTableCells(): Float32Array;
+  gpuWorld(): Uint32Array;
+}
+
+/** Lab.gpuWorld's one array split: agents' and goals' word counts first, then both, then the settings. */
+export function splitWorld(words: Uint32Array): GpuWorldArrays {
+  const na = words[0] ?? 0;
+  const ng = words[1] ?? 0;
+  const agents = words.subarray(2, 2 + na);
+  const goals = words.subarray(2 + na, 2 + na + ng);
+  const rest = words.slice(2 + na + ng);
+  return { agents, goals, settings: new Float32Array(rest.buffer, rest.byteOffset, rest.length) };
+}
+
+export function tableArrays(lab: GpuSource): GpuTableArrays {
+  return { meta: lab.gpuTableMeta(), axes: lab.gpuTableAxes(), cells: lab.gpuTableCells() };
+}
+
+function storage(device: GPUDevice, data: ArrayBufferView, extra: number = 0, label = "funnel"): GPUBuffer {
+  // A binding needs a non-empty buffer; sizes are multiples of 4 anyway.
+  const size = Math.max(16, Math.ceil(data.byteLength / 16) * 16);
+  const b = device.createBuffer({ label, size, usage: USAGE.STORAGE | USAGE.COPY_DST | USAGE.COPY_SRC | extra, mappedAtCreation: true });
+  new Uint8Array(b.getMappedRange()).set(new Uint8Array(data.buffer, data.byteOffset, data.byteLength));
+  b.unmap();
+  return b;
+}
+
+/** Reads `size` bytes of `buffer` back (tests, the ringed agent's HUD numbers). */
+export async function readBack(device: GPUDevice, buffer: GPUBuffer, size: number, offset = 0): Promise<ArrayBuffer> {
+  const staging = device.createBuffer({ size, usage: USAGE.MAP_READ | USAGE.COPY_DST });
+  const enc = device.createCommandEncoder();
+  enc.copyBufferToBuffer(buffer, offset, staging, 0, size);
+  device.queue.submit([enc.finish()]);
+  await staging.mapAsync(MAP_READ_MODE);
+  const out = staging.getMappedRange().slice(0);
+  staging.destroy();
+  return out;
+}
+
+/** The η table on the device, shared by the step and the probes. */
+export class GpuTable {
+  readonly meta: GPUBuffer;
+  readonly axes: GPUBuffer;
+  readonly cells: GPUBuffer;
+  constructor(device: GPUDevice, t: GpuTableArrays) {
+    this.meta = storage(device, t.meta, 0, "η table meta");
+    this.axes = storage(device, t.axes, 0, "η table axes");
+    this.cells = storage(device, t.cells, 0, "η table cells");
+  }
+  destroy(): void {
+    this.meta.destroy();
+    this.axes.destroy();
+    this.cells.destroy();
+  }
+}
+
+export interface KernelOptions {
+  /** WGSL to compile instead of FUNNEL_WGSL (a parity check's planted change). */
+  source?: string;
+  /** Write every agent's record each step (the parity checks); else only the ringed agent's. */
+  records?: boolean;
+}
+
+/** Compiles the kernel's module, refusing one with errors (their messages joined). */
+async function compile(device: GPUDevice, code: string): Promise<GPUShaderModule> {
+  const module = device.createShaderModule({ label: "funnel.wgsl", code });
+  const info = await module.getCompilationInfo();
+  const errors = info.messages.filter((m) => m.type === "error");
+  if (errors.length > 0) throw new Error(`funnel.wgsl: ${errors.map((m) => `${m.lineNum}:${m.linePos} ${m.message}`).join("; ")}`);
+  return module;
+}
+
+/** The agents of one world on the device, stepped by the kernel. */
+export class FunnelKernel {
+  readonly n: number;
+  readonly agents: GPUBuffer;
+  readonly records: GPUBuffer;
+  private readonly goals: GPUBuffer;
+  private readonly settings: GPUBuffer;
+  private readonly frame: GPUBuffer;
+  private readonly bind: GPUBindGroup;
+  private readonly frameWords = new Uint32Array(4);
+
+  private constructor(
+    private readonly device: GPUDevice,
+    private readonly pipeline: GPUComputePipeline,
+    table: GpuTable,
+    world: GpuWorldArrays,
+    private readonly allRecords: boolean,
+  ) {
+    this.n = world.agents.length / AGENT_WORDS;
+    this.agents = storage(device, world.agents, USAGE.VERTEX, "agents");
+    this.goals = storage(device, world.goals, 0, "goals");
+    this.settings = storage(device, world.settings, 0, "settings");
+    const recordFloats = allRecords ? this.n * RECORD_STRIDE : RECORD_STRIDE;
+    this.records = storage(device, new Float32Array(recordFloats), 0, "records");
+    this.frame = device.createBuffer({ size: 16, usage: USAGE.UNIFORM | USAGE.COPY_DST });
+    this.frameWords.set([this.n, allRecords ? 1 : 0, 0xffffffff, 0]);
+    device.queue.writeBuffer(this.frame, 0, this.frameWords);
+    const buffers = [this.settings, table.meta, table.axes, table.cells, this.agents, this.goals, this.records, this.frame];
+    this.bind = device.createBindGroup({
+      layout: pipeline.getBindGroupLayout(0),
+      entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
+    });
+  }
+
+  static async create(device: GPUDevice, table: GpuTable, world: GpuWorldArrays, opts: KernelOptions = {}): Promise<FunnelKernel> {
+    const module = await compile(device, opts.source ?? FUNNEL_WGSL);
+    const pipeline = await device.createComputePipelineAsync({ layout: "auto", compute: { module, entryPoint: "step_agents" } });
+    return new FunnelKernel(device, pipeline, table, world, opts.records ?? false);
+  }
+
+  /** The agent whose record is written each step when not all are (the HUD's ringed agent). */
+  setRing(i: number): void {
+    this.frameWords[2] = i >= 0 && i < this.n ? i : 0xffffffff;
+    this.device.queue.writeBuffer(this.frame, 0, this.frameWords);
+  }
+
+  /** Encodes `steps` steps, one compute pass each, into `enc`; with
+   *  `timestamps`, its query 0 at the first pass's start and 1 at the last's end. */
+  encode(enc: GPUCommandEncoder, steps = 1, timestamps?: GPUQuerySet): void {
+    for (let s = 0; s < steps; s++) {
+      const tw: GPUComputePassTimestampWrites | undefined = timestamps && {
+        querySet: timestamps,
+        ...(s === 0 ? { beginningOfPassWriteIndex: 0 } : {}),
+        ...(s === steps - 1 ? { endOfPassWriteIndex: 1 } : {}),
+      };
+      const pass = enc.beginComputePass(tw && (s === 0 || s === steps - 1) ? { timestampWrites: tw } : {});
+      pass.setPipeline(this.pipeline);
+      pass.setBindGroup(0, this.bind);
+      pass.dispatchWorkgroups(Math.ceil(this.n / WORKGROUP));
+      pass.end();
+    }
+  }
+
+  step(steps = 1): void {
+    const enc = this.device.createCommandEncoder();
+    this.encode(enc, steps);
+    this.device.queue.submit([enc.finish()]);
+  }
+
+  async readAgents(): Promise<Uint32Array> {
+    return new Uint32Array(await readBack(this.device, this.agents, this.n * AGENT_WORDS * 4));
+  }
+
+  /** Every agent's record (with `records`), else the ringed agent's. */
+  async readRecords(): Promise<Float32Array> {
+    const floats = this.allRecords ? this.n * RECORD_STRIDE : RECORD_STRIDE;
+    return new Float32Array(await readBack(this.device, this.records, floats * 4));
+  }
+
+  destroy(): void {
+    for (const b of [this.agents, this.goals, this.settings, this.records, this.frame]) b.destroy();
+  }
+}
+
+/** The kernel's table read alone at each probe (five floats: D, α, ω, v_c,
+ *  v_d): four floats each, η, reachable, v_dt, η valid (Lab.lookupProbes'
+ *  layout). */
+export async function probeTable(device: GPUDevice, table: GpuTable, settings: Float32Array, probes: Float32Array, source?: string): Promise<Float32Array> {
+  const n = probes.length / 5;
+  const module = await compile(device, source ?? FUNNEL_WGSL);
+  const pipeline = await device.createComputePipelineAsync({ layout: "auto", compute: { module, entryPoint: "probe_table" } });
+  const frame = device.createBuffer({ size: 16, usage: USAGE.UNIFORM | USAGE.COPY_DST });
+  device.queue.writeBuffer(frame, 0, new Uint32Array([n, 0, 0, 0]));
+  const s = storage(device, settings);
+  const q = storage(device, probes);
+  const answers = storage(device, new Float32Array(4 * n));
+  const entries: [number, GPUBuffer][] = [[0, s], [1, table.meta], [2, table.axes], [3, table.cells], [7, frame], [8, q], [9, answers]];
+  const bind = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries: entries.map(([binding, buffer]) => ({ binding, resource: { buffer } })) });
+  const enc = device.createCommandEncoder();
+  const pass = enc.beginComputePass();
+  pass.setPipeline(pipeline);
+  pass.setBindGroup(0, bind);
+  pass.dispatchWorkgroups(Math.ceil(n / WORKGROUP));
+  pass.end();
+  device.queue.submit([enc.finish()]);
+  const out = new Float32Array(await readBack(device, answers, 16 * n));
+  for (const b of [frame, s, q, answers]) b.destroy();
+  return out;
+}

@@ -1,0 +1,110 @@
+// The WebGPU kernel (web/src/gpu/funnel.wgsl) against the wasm core, in
+// Chromium over SwiftShader (GPU_ARGS: a CPU emulation of a GPU, which
+// proves correctness, not speed), on the test build's gpu.html
+// (window.__gpu, src/gpubench/hook.ts). The kernel's contract
+// (src/gpu/kernel.ts):
+// - one step from the same states, sampled along seeded runs of the core
+//   (pedestrian, car, robot; a few thousand agents, two goals each, the
+//   second halting): the same mode for >= 99.9 % of agents, positions
+//   within 1e-4 m, headings within 1e-4 rad, speeds within 1e-4;
+// - a free run of 600 steps from the same start: every agent's verdict
+//   (goals left, entered oriented, at rest inside both tolerances) the
+//   core's;
+// - the table read at >= 10,000 random probes within 1e-5 rad of the
+//   core's lookup;
+// - and the suite bites: a planted change to the kernel's μ bound or to
+//   its integrator (made in memory, in a copy of the WGSL) fails the checks.
+// Also: the worlds the kernel cannot step are refused with a reason (a
+// car-like vehicle, the paper's reading, avoidance), and the timing rows
+// are printed, labelled a CPU emulation.
+// Usage: node test/e2e-gpu.mjs   (make test-e2e-gpu; about a minute)
+import assert from "node:assert/strict";
+import { GPU_ARGS, check, launch, openPage, serve } from "./harness.mjs";
+
+const { server, url } = await serve();
+const browser = await launch(GPU_ARGS);
+const { page, problems } = await openPage(browser);
+try {
+  await page.goto(`${url}gpu.html`);
+  await page.waitForFunction(() => window.__gpu && (window.__gpu.page.ready || window.__gpu.page.error), null, { timeout: 60000 });
+  const status = await page.evaluate(() => ({ error: window.__gpu.page.error, adapter: window.__gpu.page.adapter, emulated: window.__gpu.page.emulated, has: window.__gpu.page.gpu !== null }));
+  console.log(`adapter: ${status.adapter} (emulated: ${status.emulated})`);
+
+  await check("the page opens a WebGPU device over SwiftShader", () => {
+    assert.equal(status.error, null);
+    assert.ok(status.has, "no WebGPU device: is Chromium's SwiftShader Vulkan there?");
+  });
+
+  const probes = (source) => page.evaluate(({ source }) => window.__gpu.probes(12000, 11, source), { source });
+  await check("table reads: 12,000 random probes within 1e-5 rad of the core's lookup", async () => {
+    const p = await probes(undefined);
+    console.log(`probes: ${JSON.stringify(p)}`);
+    assert.ok(p.probes >= 10000);
+    assert.ok(p.maxEta <= 1e-5, `η differs by ${p.maxEta} rad`);
+    assert.ok(p.reachDiffer + p.validDiffer <= p.probes * 1e-3, `${p.reachDiffer} reachability and ${p.validDiffer} validity differences`);
+    assert.ok(p.maxVdt <= 1e-4, `v_dt differs by ${p.maxVdt}`);
+  });
+
+  /** The contract on one world's numbers; returns what broke it (empty when kept). */
+  const broken = ({ samples, run }) => {
+    const out = [];
+    for (const s of samples) {
+      if (s.modesAgree < 0.999 * s.agents) out.push(`step ${s.step}: modes agree for ${s.modesAgree}/${s.agents}`);
+      if (!(s.maxPos <= 1e-4)) out.push(`step ${s.step}: position off by ${s.maxPos} m`);
+      if (!(s.maxHeading <= 1e-4)) out.push(`step ${s.step}: heading off by ${s.maxHeading} rad`);
+      if (!(s.maxSpeed <= 1e-4)) out.push(`step ${s.step}: speed off by ${s.maxSpeed}`);
+      if (!(s.maxOmega <= 1e-4)) out.push(`step ${s.step}: ω off by ${s.maxOmega}`);
+    }
+    if (run.differ > 0) out.push(`${run.differ}/${run.agents} verdicts differ after ${run.steps} steps (${run.examples.join("; ")})`);
+    return out;
+  };
+  const parity = (vehicle, n, source, steps = 600, samples = [0, 200, 400]) =>
+    page.evaluate(({ vehicle, n, source, steps, samples }) => window.__gpu.parity(vehicle, n, 5, steps, samples, source), { vehicle, n, source, steps, samples });
+
+  for (const [vehicle, n] of [["pedestrian", 2000], ["car", 1500], ["robot", 1500]]) {
+    await check(`${vehicle}, ${n} agents: one step from sampled states, and a free run of 600 steps, as the core`, async () => {
+      const r = await parity(vehicle, n);
+      for (const s of r.samples) console.log(`${vehicle} step ${s.step}: modes ${s.modesAgree}/${s.agents}, |Δpos| ${s.maxPos.toExponential(2)} m, |Δθ| ${s.maxHeading.toExponential(2)}, |Δv| ${s.maxSpeed.toExponential(2)}, |Δω| ${s.maxOmega.toExponential(2)}, |Δγ| ${s.maxGamma.toExponential(2)}`);
+      console.log(`${vehicle} free run: ${r.run.differ}/${r.run.agents} verdicts differ; goals left ${r.run.left}, oriented ${r.run.oriented}, at rest inside ${r.run.restInside} (core, kernel); ${Math.round(r.ms)} ms`);
+      assert.deepEqual(broken(r), []);
+      assert.ok(r.run.left[0] > 0 && r.run.restInside[0] > 0, "the run reaches goals and rests in some: the verdicts say something");
+    });
+  }
+
+  await check("the checks bite: a planted change to the μ bound or the integrator fails them", async () => {
+    const source = await page.evaluate(() => window.__gpu.source);
+    const plants = {
+      "μ bound": ["let r = S(BOUND_FACTOR) *", "let r = 1.2 * S(BOUND_FACTOR) *"],
+      integrator: ["(*a).x = (*a).x + u.y * (v0 * dt);", "(*a).x = (*a).x + u.y * (v1 * dt);"],
+    };
+    for (const [name, [from, to]] of Object.entries(plants)) {
+      assert.ok(source.includes(from), `the kernel still has ${from}`);
+      const planted = source.replace(from, to);
+      const r = await parity("pedestrian", 500, planted, 120, [0, 60]);
+      const why = broken(r);
+      console.log(`planted ${name}: ${why.length} broken (${why[0] ?? "none"})`);
+      assert.ok(why.length > 0, `the planted ${name} passed the checks`);
+    }
+  });
+
+  await check("worlds the kernel cannot step are refused with the reason; a plain one is not", async () => {
+    const why = await page.evaluate(() => ["none", "carLike", "paper", "separation"].map((c) => window.__gpu.refusal(c)));
+    assert.equal(why[0], undefined);
+    assert.match(why[1], /car-like vehicle .*Dubins/);
+    assert.match(why[2], /reading/);
+    assert.match(why[3], /avoidance/);
+  });
+
+  await check("timing rows: the kernel and the core in the same run (SwiftShader: a CPU emulation)", async () => {
+    const { rows, cost } = await page.evaluate(() => window.__gpu.measure([5000]));
+    for (const r of rows) console.log(`${r.backend}${r.backend.startsWith("GPU") && status.emulated ? " (CPU emulation)" : ""}: ${r.agents} agents, ${r.msPerStep.toFixed(2)} ms/step, ${Math.round(r.perFrame)} per 16.7 ms (${r.clock})`);
+    console.log(`counted cost per update: ${cost.blends.toFixed(2)} blends, ${cost.locates.toFixed(2)} axes located, ${Math.round(cost.bytes)} bytes (table ${Math.round(cost.tableBytes)}), ${cost.passes} pass per step`);
+    assert.equal(rows.length, 2);
+    assert.ok(rows.every((r) => r.msPerStep > 0 && Number.isFinite(r.perFrame)));
+    assert.ok(cost.blends >= 0.5 && cost.blends <= 3, `${cost.blends} blends per update`);
+    assert.deepEqual(problems, []);
+  });
+} finally {
+  await browser.close();
+  await server.close();
+}
