@@ -17,8 +17,9 @@
 //             computes, from core/, threads/ and world/
 //   ui/       what the pages draw and handle with (canvas, view, sprites,
 //             controls, pointer, …)
-//   lab/ crowd/ learn/ wander/   the pages; one may use another in one
-//             direction only (learn → lab)
+//   lab/ crowd/ learn/ wander/ element/   the pages (element/: the npm
+//             package's <funnel-figure>); one may use another in one
+//             direction only (learn → lab, element → lab and learn)
 //
 // A file imports from its own folder or one below; every reference counts
 // (import, export … from, import(), a type's import("…"), new
@@ -38,7 +39,7 @@ import { webDir } from "./harness.mjs";
 const MAX_LINES = 150;
 
 /** web/src's folders by layer, bottom to top (the comment above). */
-const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["ui"], ["lab", "crowd", "learn", "wander", "peers"]];
+const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["ui"], ["lab", "crowd", "learn", "wander", "peers", "element"]];
 
 /** Files under `dir` whose name matches `re`, recursively. */
 function files(dir, re) {
