@@ -345,7 +345,7 @@ npm: setup-web wasm
 # the cost of single and batched adds; the typings under `tsc --strict`
 # with `lib: ["es2022", "dom"]`.
 test-npm: setup-web setup-browser npm
-	node --test npm/test/
+	node --test npm/test/*.test.mjs
 	$(stage-done)
 
 # A crate that depends on the library as a user's would (examples/library-user:
