@@ -279,7 +279,7 @@ impl AgentConfig {
 
     /// The core's start state and goal queue (validated by the world that
     /// receives them).
-    pub(super) fn to_core(self) -> (VehicleState, Vec<GoalSpec>) {
+    pub(super) fn into_core(self) -> (VehicleState, Vec<GoalSpec>) {
         let goals = self.goals.iter().map(GoalConfig::to_spec).collect();
         let state = VehicleState::new(Vec2::new(self.x, self.y), self.theta, self.v, self.omega);
         (state, goals)

@@ -57,7 +57,7 @@ impl Lab {
     ) -> Result<u32, JsError> {
         let a: AgentConfig = from_js("agent", agent)?;
         let relaxed = a.relaxed();
-        let (state, goals) = a.to_core();
+        let (state, goals) = a.into_core();
         self.world.check_room(1).map_err(|e| js_err("agent", e))?;
         let i = self
             .world
@@ -95,7 +95,7 @@ impl Lab {
             check_known_keys(&format!("agents[{k}]"), &items.get(k as u32), a)?;
         }
         let relaxed = list.iter().any(AgentConfig::relaxed);
-        let core = list.into_iter().map(AgentConfig::to_core).collect();
+        let core = list.into_iter().map(AgentConfig::into_core).collect();
         let new = self
             .world
             .add_agents(core)
