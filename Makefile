@@ -340,19 +340,35 @@ bench-wasm-native: setup-web wasm
 # The wasm core as an npm package (npm/): the pages' baseline module (built
 # once by `make wasm`: no default features, so no studies and no embedded
 # table: the package ships eta.bin beside it; stripped of its custom
-# sections), then `npm pack` into target/npm.
-npm: wasm
-	rm -rf npm/pkg && mkdir -p npm/pkg
+# sections here too, whatever built it), its typings without the classes'
+# `[Symbol.dispose]` (ESNext.Disposable's: a user's `lib: ["es2022",
+# "dom"]` has no `Symbol.dispose`), the scenarios (the element's presets),
+# the element module <funnel-figure> (web/vite.element.config.ts, from
+# web/src/element/), then `npm pack` into target/npm, and the sizes.
+npm: setup-web wasm
+	rm -rf npm/pkg npm/scenarios && mkdir -p npm/pkg npm/scenarios
 	cp web/pkg/steering.js web/pkg/steering.d.ts web/pkg/steering_bg.wasm web/pkg/steering_bg.wasm.d.ts npm/pkg/
+	wasm-strip npm/pkg/steering_bg.wasm
+	sed -i '/^ *\[Symbol\.dispose\]()/d' npm/pkg/steering.d.ts
+	if grep -n 'Symbol.dispose' npm/pkg/steering.d.ts; then echo "npm/pkg/steering.d.ts still names Symbol.dispose"; exit 1; fi
 	cp tables/eta.bin npm/eta.bin
+	cp scenarios/*.json npm/scenarios/
+	cd web && npx vite build --config vite.element.config.ts --logLevel warn
+	cp target/npm-element/funnel-figure.js npm/funnel-figure.js
 	mkdir -p target/npm
 	cd npm && npm pack --pack-destination ../target/npm
 	@ls -l target/npm/steering-core-*.tgz | awk '{print "npm tarball: " $$9 ", " $$5 " bytes"}'
+	@ls -l npm/pkg/steering_bg.wasm | awk '{print "npm wasm: " $$5 " bytes"}'
+	@gzip -9 -c npm/pkg/steering_bg.wasm | wc -c | awk '{print "npm wasm gzipped: " $$1 " bytes"}'
+	@ls -l npm/funnel-figure.js | awk '{print "npm element module: " $$5 " bytes"}'
 
-# The tarball installed into a scratch folder, its example page served
-# from there alone, run in Chromium to an oriented arrival (node:test).
+# The tarball installed into a scratch folder under target/ (node:test):
+# the example page and a plain page of two <funnel-figure> elements served
+# from there alone in Chromium; createLab() in Node without a browser, with
+# the cost of single and batched adds; the typings under `tsc --strict`
+# with `lib: ["es2022", "dom"]`.
 test-npm: setup-web setup-browser npm
-	node --test npm/test/
+	node --test npm/test/*.test.mjs
 	$(stage-done)
 
 # A crate that depends on the library as a user's would (examples/library-user:

@@ -701,3 +701,49 @@ fn a_lab_without_its_table_draws_then_runs_the_same_bits() {
         );
     }
 }
+
+/// Many agents in one call, all or none, a refusal naming the agent;
+/// per-agent `done` / `atRest` / `mode`; a missing field named itself.
+#[wasm_bindgen_test]
+fn agents_added_in_one_call_and_asked_whether_they_are_done() {
+    let mut lab = Lab::new(TABLE).map_err(message).unwrap();
+    let list = js_sys::Array::new();
+    for k in 0..3 {
+        list.push(&agent(
+            f64::from(k),
+            0.0,
+            0.0,
+            &[goal(3.0, f64::from(k), 0.0)],
+        ));
+    }
+    let bad = js_sys::Array::from(&JsValue::from(list.clone()));
+    bad.push(&agent(f64::NAN, 0.0, 0.0, &[]));
+    let m = message(lab.add_agents(bad.into()).unwrap_err());
+    assert!(m.starts_with("agents[3]"), "{m}");
+    assert_eq!(lab.count(), 0);
+    assert_eq!(lab.add_agents(list.into()).map_err(message).unwrap(), 0);
+    assert_eq!(lab.count(), 3);
+    assert!(!lab.done(0).map_err(message).unwrap());
+    for _ in 0..1200 {
+        lab.step(1).map_err(message).unwrap();
+    }
+    for i in 0..3 {
+        assert!(lab.at_rest(i).map_err(message).unwrap(), "agent {i}");
+        assert!(lab.done(i).map_err(message).unwrap());
+        assert_eq!(lab.mode(i).map_err(message).unwrap(), bindings_mode());
+    }
+    assert_eq!(lab.modes(), vec![0, 0, 0]);
+    let m = message(lab.done(3).unwrap_err());
+    assert!(m.contains("no agent 3"), "{m}");
+    let a = agent(0.0, 0.0, 0.0, &[goal(4.0, 0.0, 0.0)]);
+    js_sys::Reflect::delete_property(&js_sys::Object::from(a.clone()), &"theta".into()).unwrap();
+    let m = message(lab.add_agent(a).unwrap_err());
+    assert!(
+        m.starts_with("agent, field `theta`: missing field `theta`"),
+        "{m}"
+    );
+}
+
+fn bindings_mode() -> steering::bindings::layout::Mode {
+    steering::bindings::layout::Mode::EndOfSteering
+}

@@ -38,11 +38,16 @@ pub(crate) fn from_js_in<T>(what: &str, prefix: &str, v: JsValue) -> Result<T, J
 where
     T: for<'de> Deserialize<'de> + Serialize,
 {
-    let t: T =
-        serde_wasm_bindgen::from_value(v.clone()).map_err(|e| match field_at_fault::<T>(&v) {
-            Some(k) => js_err(&format!("{what}, field `{prefix}{k}`"), e),
-            None => js_err(what, e),
-        })?;
+    let t: T = serde_wasm_bindgen::from_value(v.clone()).map_err(|e| {
+        // serde-wasm-bindgen's errors are JavaScript `Error`s, shown as
+        // "Error: …": the message alone reads better after the field.
+        let text = e.to_string();
+        let m = text.strip_prefix("Error: ").unwrap_or(&text);
+        match field_at_fault::<T>(&v, m) {
+            Some(k) => js_err(&format!("{what}, field `{prefix}{k}`"), m),
+            None => js_err(what, m),
+        }
+    })?;
     check_known_keys(what, &v, &t)?;
     Ok(t)
 }
@@ -55,11 +60,28 @@ where
 /// so a key is at fault exactly when, with that key removed, decoding
 /// succeeds (the field has a default) or fails only for that key's absence.
 /// Runs on the error path only.
-fn field_at_fault<T: for<'de> Deserialize<'de>>(input: &JsValue) -> Option<String> {
+///
+/// A missing field is named itself when the type reads it at this depth
+/// (with a value put in its place, decoding no longer says it is
+/// missing); removing a present key would only move the complaint to that
+/// key. A field missing deeper is found by the search above (the key whose
+/// value lacks it).
+fn field_at_fault<T: for<'de> Deserialize<'de>>(input: &JsValue, message: &str) -> Option<String> {
     if js_sys::Array::is_array(input) {
         return None;
     }
     let obj = input.dyn_ref::<js_sys::Object>()?;
+    if let Some(k) = missing_field(message) {
+        let with = js_sys::Object::assign(&js_sys::Object::new(), obj);
+        let probe = JsValue::from_str("\u{1}probe");
+        js_sys::Reflect::set(&with, &JsValue::from_str(k), &probe).ok()?;
+        let still = serde_wasm_bindgen::from_value::<T>(with.into())
+            .err()
+            .is_some_and(|e| e.to_string().contains(&format!("missing field `{k}`")));
+        if !still {
+            return Some(k.to_owned());
+        }
+    }
     js_sys::Object::keys(obj).iter().find_map(|key| {
         let k = key.as_string()?;
         let without = js_sys::Object::assign(&js_sys::Object::new(), obj);
@@ -72,6 +94,11 @@ fn field_at_fault<T: for<'de> Deserialize<'de>>(input: &JsValue) -> Option<Strin
                 .then_some(k),
         }
     })
+}
+
+/// The name in serde's "missing field `k`" message, if it is one.
+fn missing_field(message: &str) -> Option<&str> {
+    message.strip_prefix("missing field `")?.split('`').next()
 }
 
 /// A Rust value as a plain JavaScript object (maps as objects, not `Map`s).

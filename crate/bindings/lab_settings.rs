@@ -25,7 +25,7 @@ impl Lab {
     #[wasm_bindgen(js_name = setParams)]
     pub fn set_params(
         &mut self,
-        #[wasm_bindgen(unchecked_param_type = "VehicleParams")] params: JsValue,
+        #[wasm_bindgen(unchecked_param_type = "Partial<VehicleParams>")] params: JsValue,
     ) -> Result<String, JsError> {
         let p: VehicleParams = from_js("vehicle parameters", params)?;
         p.validate().map_err(|e| js_err("vehicle parameters", e))?;

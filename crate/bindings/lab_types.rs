@@ -7,7 +7,7 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 use wasm_bindgen::prelude::*;
 
-use crate::base::vehicle::VehicleParams;
+use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::ghost::Ghost;
 use crate::funnelling::goal::Goal;
 use crate::funnelling::update::Internals;
@@ -125,8 +125,10 @@ export interface GoalConfig {
   dTol: number;
   epsTol: number;
   speed: number;
-  halting: boolean;
-  relaxed: boolean;
+  /** Comes to rest inside the tolerances (default false: passes through at speed). */
+  halting?: boolean;
+  /** Relaxed funnelling towards the region goal, paper 001 (default false; world-wide). */
+  relaxed?: boolean;
 }
 /** One agent: start pose and its goal queue (each reached in turn). */
 export interface AgentConfig {
@@ -139,8 +141,8 @@ export interface AgentConfig {
 }
 /** What one controller update computed (crate::funnelling::update::Internals). Angles in rad. */
 export interface Internals {
-  /** 0 End_of_Steering, 1 Orientation_only, 2 Position_only, 3 Funnelling. */
-  mode: 0 | 1 | 2 | 3;
+  /** The control mode (paper 000 Fig. 5). */
+  mode: Mode;
   d: number;
   alpha: number;
   eta: number;
@@ -271,6 +273,21 @@ pub(super) struct AgentConfig {
     #[serde(default)]
     pub(super) omega: f32,
     pub(super) goals: Vec<GoalConfig>,
+}
+
+impl AgentConfig {
+    /// Whether a goal of its queue asks for relaxed funnelling.
+    pub(super) fn relaxed(&self) -> bool {
+        self.goals.iter().any(|g| g.relaxed)
+    }
+
+    /// The core's start state and goal queue (validated by the world that
+    /// receives them).
+    pub(super) fn into_core(self) -> (VehicleState, Vec<GoalSpec>) {
+        let goals = self.goals.iter().map(GoalConfig::to_spec).collect();
+        let state = VehicleState::new(Vec2::new(self.x, self.y), self.theta, self.v, self.omega);
+        (state, goals)
+    }
 }
 
 /// Internals as the page reads them: the mode as its number.

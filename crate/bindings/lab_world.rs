@@ -6,9 +6,10 @@ use wasm_bindgen::prelude::*;
 
 use super::lab::{lab_world, whole, Lab};
 use super::lab_types::{AgentConfig, GoalConfig};
-use crate::base::vehicle::VehicleState;
-use crate::bindings::boundary::{from_js, js_err};
+use crate::bindings::boundary::{check_known_keys, from_js, js_err};
+use crate::bindings::layout::Mode;
 use crate::funnelling::controller::ControllerKind;
+use crate::world::Agent;
 use crate::world::{World, STATE_STRIDE};
 
 /// What stepping before the η table has arrived says ([`Lab::step`],
@@ -17,6 +18,13 @@ const NO_TABLE_CLOCK: &str = "η table: not loaded yet, the clock holds at t = 0
 
 /// Steps a single call may ask for (a frame needs a handful).
 const MAX_STEPS_PER_CALL: u32 = 10_000;
+
+impl Lab {
+    /// Agent `i`, or the error naming the index and the count.
+    fn agent_at(&self, i: u32) -> Result<&Agent, JsError> {
+        self.world.agent(i as usize).map_err(|e| js_err("agent", e))
+    }
+}
 
 #[wasm_bindgen]
 impl Lab {
@@ -40,29 +48,108 @@ impl Lab {
         self.world.time
     }
 
-    /// Adds an agent with its goal queue; returns its index.
+    /// Adds an agent with its goal queue; returns its index. Amortised
+    /// constant time: only the new agent is planned.
     #[wasm_bindgen(js_name = addAgent)]
     pub fn add_agent(
         &mut self,
         #[wasm_bindgen(unchecked_param_type = "AgentConfig")] agent: JsValue,
     ) -> Result<u32, JsError> {
         let a: AgentConfig = from_js("agent", agent)?;
-        let goals = a.goals.iter().map(GoalConfig::to_spec).collect();
-        let state = VehicleState::new(Vec2::new(a.x, a.y), a.theta, a.v, a.omega);
+        let relaxed = a.relaxed();
+        let (state, goals) = a.into_core();
         self.world.check_room(1).map_err(|e| js_err("agent", e))?;
         let i = self
             .world
             .add_agent(state, goals)
             .map_err(|e| js_err("agent", e))?;
-        if a.goals.iter().any(|g| g.relaxed) {
+        self.plan_new(i..i + 1, relaxed)?;
+        Ok(i as u32)
+    }
+
+    /// Adds many agents in one call, all or none (each checked as
+    /// [`Lab::add_agent`] checks it); returns the first one's index. A
+    /// refusal names the agent (`agents[3], field `theta``).
+    #[wasm_bindgen(js_name = addAgents)]
+    pub fn add_agents(
+        &mut self,
+        #[wasm_bindgen(unchecked_param_type = "AgentConfig[]")] agents: JsValue,
+    ) -> Result<u32, JsError> {
+        if !js_sys::Array::is_array(&agents) {
+            return Err(JsError::new("agents: expected an array of agents"));
+        }
+        // Decoded whole, then each agent's keys checked on its own (one
+        // agent's JSON tree at a time, not the whole array's).
+        let list: Vec<AgentConfig> = match serde_wasm_bindgen::from_value(agents.clone()) {
+            Ok(list) => list,
+            // The first agent that does not decode, named by its index.
+            Err(e) => {
+                for (k, a) in js_sys::Array::from(&agents).iter().enumerate() {
+                    from_js::<AgentConfig>(&format!("agents[{k}]"), a)?;
+                }
+                return Err(js_err("agents", e));
+            }
+        };
+        let items = js_sys::Array::from(&agents);
+        for (k, a) in list.iter().enumerate() {
+            check_known_keys(&format!("agents[{k}]"), &items.get(k as u32), a)?;
+        }
+        let relaxed = list.iter().any(AgentConfig::relaxed);
+        let core = list.into_iter().map(AgentConfig::into_core).collect();
+        let new = self
+            .world
+            .add_agents(core)
+            .map_err(|(k, e)| js_err(&format!("agents[{k}]"), e))?;
+        let first = new.start;
+        self.plan_new(new, relaxed)?;
+        Ok(first as u32)
+    }
+
+    /// After agents were added: the relaxed controller when one of them
+    /// asks for it, and the plan at t = 0 of the new agents (of all of
+    /// them when the controller changed), so the mode shown before the
+    /// first step is the one chosen then (without a table: when it
+    /// arrives, `set_table`).
+    fn plan_new(&mut self, new: core::ops::Range<usize>, relaxed: bool) -> Result<(), JsError> {
+        let before = self.world.controller;
+        if relaxed {
             self.use_controller(true)?;
         }
-        // The mode shown before the first step is the one chosen at t = 0
-        // (without a table: when it arrives, `set_table`).
         if let Some(t) = &self.table {
-            self.world.plan(t);
+            if self.world.controller == before {
+                self.world.plan_agents(t, new);
+            } else {
+                self.world.plan(t);
+            }
         }
-        Ok(i as u32)
+        Ok(())
+    }
+
+    /// Whether agent `i` is done: every goal of its queue reached (its
+    /// last in End_of_Steering; it may still be braking).
+    pub fn done(&self, i: u32) -> Result<bool, JsError> {
+        Ok(self.agent_at(i)?.done())
+    }
+
+    /// Whether agent `i` is done and at rest (speed 0, turning stopped):
+    /// inside both tolerances of a halting last goal, for good.
+    #[wasm_bindgen(js_name = atRest)]
+    pub fn at_rest(&self, i: u32) -> Result<bool, JsError> {
+        Ok(self.agent_at(i)?.at_rest())
+    }
+
+    /// Agent `i`'s control mode now.
+    pub fn mode(&self, i: u32) -> Result<Mode, JsError> {
+        Ok(self.agent_at(i)?.internals.mode.into())
+    }
+
+    /// Every agent's control mode, one byte each (a [`Mode`] number).
+    #[must_use]
+    pub fn modes(&self) -> Vec<u8> {
+        (0..self.count())
+            .filter_map(|i| self.agent_at(i).ok())
+            .map(|a| Mode::from(a.internals.mode) as u8)
+            .collect()
     }
 
     /// Switches the world between standard and relaxed funnelling.

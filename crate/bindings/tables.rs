@@ -45,7 +45,7 @@ struct TableJob {
 /// The job of building `params`' table: its cache key and entry count.
 #[wasm_bindgen(js_name = tableJob, unchecked_return_type = "{ key: string; entries: number }")]
 pub fn table_job(
-    #[wasm_bindgen(unchecked_param_type = "VehicleParams")] params: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Partial<VehicleParams>")] params: JsValue,
     counts: Option<Vec<u32>>,
 ) -> Result<JsValue, JsError> {
     let s = spec(params, counts)?;
@@ -59,7 +59,7 @@ pub fn table_job(
 /// share).
 #[wasm_bindgen(js_name = tableSlice)]
 pub fn table_slice(
-    #[wasm_bindgen(unchecked_param_type = "VehicleParams")] params: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Partial<VehicleParams>")] params: JsValue,
     counts: Option<Vec<u32>>,
     start: u32,
     end: u32,
@@ -78,7 +78,7 @@ pub fn table_slice(
 /// The table file's bytes from every slice, concatenated in order.
 #[wasm_bindgen(js_name = assembleTable)]
 pub fn assemble_table(
-    #[wasm_bindgen(unchecked_param_type = "VehicleParams")] params: JsValue,
+    #[wasm_bindgen(unchecked_param_type = "Partial<VehicleParams>")] params: JsValue,
     counts: Option<Vec<u32>>,
     data: &[f32],
 ) -> Result<Vec<u8>, JsError> {

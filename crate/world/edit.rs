@@ -132,11 +132,49 @@ impl World {
         goals: Vec<GoalSpec>,
     ) -> Result<usize, EditError> {
         self.check_room(1)?;
+        self.check_new_agent(&state, &goals)?;
+        Ok(self.push_agent(state, goals))
+    }
+
+    /// Adds many agents at once, all or none: each is checked as
+    /// [`World::add_agent`] checks it before any is added. Returns the
+    /// new agents' indices. One allocation of the world's lists for the
+    /// lot, where one [`World::add_agent`] per agent may grow them many
+    /// times.
+    ///
+    /// # Errors
+    /// [`EditError::TooManyAgents`] (index 0) when they do not all fit,
+    /// else the first refused agent's index (in `agents`) and why; nothing
+    /// is added then.
+    pub fn add_agents(
+        &mut self,
+        agents: Vec<(VehicleState, Vec<GoalSpec>)>,
+    ) -> Result<core::ops::Range<usize>, (usize, EditError)> {
+        self.check_room(agents.len()).map_err(|e| (0, e))?;
+        for (k, (state, goals)) in agents.iter().enumerate() {
+            self.check_new_agent(state, goals).map_err(|e| (k, e))?;
+        }
+        let first = self.agents.len();
+        self.agents.reserve(agents.len());
+        self.snapshot.reserve(agents.len());
+        for (state, goals) in agents {
+            self.push_agent(state, goals);
+        }
+        Ok(first..self.agents.len())
+    }
+
+    /// What [`World::add_agent`] checks of one agent (room aside).
+    fn check_new_agent(&self, state: &VehicleState, goals: &[GoalSpec]) -> Result<(), EditError> {
         state.validate(&self.params)?;
-        for g in &goals {
+        for g in goals {
             g.validate(&self.params)?;
         }
-        crate::world::precision::check_agent(&self.params, state.pos, &goals, None)?;
+        crate::world::precision::check_agent(&self.params, state.pos, goals, None)?;
+        Ok(())
+    }
+
+    /// Appends a checked agent; returns its index.
+    fn push_agent(&mut self, state: VehicleState, goals: Vec<GoalSpec>) -> usize {
         let goal_now = goals.first().map(|g| g.goal).unwrap_or_default();
         let internals = if goals.is_empty() {
             Internals {
@@ -151,6 +189,7 @@ impl World {
             .first()
             .map_or_else(FunnelMemory::default, GoalSpec::fresh_memory);
         let spec = goals.first().copied().unwrap_or_default();
+        self.facing += usize::from(faces(&goals));
         self.agents.push(Agent {
             spec,
             state,
@@ -164,8 +203,7 @@ impl World {
             finished_at: None,
         });
         self.snapshot.push(state);
-        self.facing += usize::from(faces(&self.agents[self.agents.len() - 1].goals));
-        Ok(self.agents.len() - 1)
+        self.agents.len() - 1
     }
 
     /// Agent `i`.
@@ -375,5 +413,86 @@ mod tests {
         w.spawn_random(3, 7, 10.0, 1.3).unwrap();
         assert_eq!(w.agents.len(), 3);
         assert!(w.agents[0].goals.iter().all(|g| g.goal.speed == 0.05));
+    }
+
+    /// Planning only the agents just added gives every agent the plan a
+    /// whole-world plan gives it (what the bindings' amortised adds rely on).
+    #[test]
+    #[cfg(not(target_arch = "wasm32"))]
+    fn planning_the_new_agents_equals_planning_all() {
+        let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap();
+        let table = crate::funnelling::table::lookup::EtaTable::from_bytes(&bytes).unwrap();
+        let mut one = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+        one.spawn_random(40, 3, 10.0, 1.3).unwrap();
+        let mut all = one.clone();
+        for _ in 0..30 {
+            one.step(&table);
+            all.step(&table);
+        }
+        let starts = [(-3.0, 1.0, 0.5), (2.0, -4.0, 2.0), (0.5, 0.5, -1.0)];
+        for (k, &(x, y, theta)) in starts.iter().enumerate() {
+            let state = VehicleState::new(Vec2::new(x, y), theta, 0.0, 0.0);
+            let goal = GoalSpec {
+                goal: Goal {
+                    pos: Vec2::new(-x, -y),
+                    beta: theta + 1.0,
+                    d_tol: 0.3,
+                    eps_tol: 0.2,
+                    speed: 1.3,
+                    halting: k != 1,
+                    vel: Vec2::ZERO,
+                },
+                motion: GoalMotion::Static,
+                switch: SwitchRule::EndOfSteering,
+            };
+            let i = one.add_agent(state, vec![goal]).unwrap();
+            one.plan_agents(&table, i..i + 1);
+            all.add_agent(state, vec![goal]).unwrap();
+        }
+        all.plan(&table);
+        // The old agents' plans are the ones of their last step in `one`,
+        // the whole-world plan's in `all`: compare the new agents.
+        let n = all.agents.len();
+        for i in n - starts.len()..n {
+            assert_eq!(one.agents[i], all.agents[i], "agent {i}");
+        }
+        for _ in 0..200 {
+            one.step(&table);
+            all.step(&table);
+        }
+        assert_eq!(one.agents, all.agents, "the same run from there on");
+    }
+
+    #[test]
+    fn many_agents_are_added_all_or_none() {
+        let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+        let goal = |x: f32| GoalSpec {
+            goal: Goal {
+                pos: Vec2::new(x, 1.0),
+                beta: 0.5,
+                d_tol: 0.3,
+                eps_tol: 0.2,
+                speed: 1.3,
+                halting: true,
+                vel: Vec2::ZERO,
+            },
+            motion: GoalMotion::Static,
+            switch: SwitchRule::EndOfSteering,
+        };
+        let at = |x: f32| VehicleState::new(Vec2::new(x, 0.0), 0.0, 0.0, 0.0);
+        assert_eq!(
+            w.add_agents(vec![(at(0.0), vec![goal(3.0)]), (at(1.0), vec![goal(4.0)])]),
+            Ok(0..2)
+        );
+        let bad = vec![(at(2.0), vec![goal(5.0)]), (at(f32::NAN), vec![goal(6.0)])];
+        assert!(matches!(w.add_agents(bad), Err((1, EditError::Param(_)))));
+        assert_eq!(w.agents.len(), 2, "nothing added when one is refused");
+        w.set_max_agents(3);
+        let two = vec![(at(2.0), vec![]), (at(3.0), vec![])];
+        assert!(matches!(
+            w.add_agents(two),
+            Err((0, EditError::TooManyAgents { .. }))
+        ));
+        assert_eq!(w.add_agents(vec![(at(2.0), vec![])]), Ok(2..3));
     }
 }

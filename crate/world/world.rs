@@ -167,8 +167,33 @@ impl World {
     /// Call it after adding agents or changing the controller (stepping
     /// does not need it). Constant cost per agent, no allocation.
     pub fn plan(&mut self, table: &EtaTable) {
-        let (planner, agents) = self.planning(table);
-        for a in agents {
+        self.plan_agents(table, 0..self.agents.len());
+    }
+
+    /// [`World::plan`] of the agents in `range` only (clipped to the
+    /// agents there are): the ones just added, whose plan does not change
+    /// any other's. Constant cost per agent planned, whatever the world's
+    /// size: the states are gathered only when one of them has a goal
+    /// that faces an agent (the only plan that reads other agents).
+    pub fn plan_agents(&mut self, table: &EtaTable, range: core::ops::Range<usize>) {
+        let n = self.agents.len();
+        let range = range.start.min(n)..range.end.min(n);
+        let facing = self.agents[range.clone()].iter().any(|a| faces(&a.goals));
+        if facing {
+            for (s, a) in self.snapshot.iter_mut().zip(&self.agents) {
+                *s = a.state;
+            }
+        }
+        let planner = Planner {
+            kind: self.controller,
+            funnel: &self.config,
+            relaxed: &self.relaxed,
+            table,
+            p: &self.params,
+            t: self.time,
+            snapshot: if facing { &self.snapshot } else { &[] },
+        };
+        for a in &mut self.agents[range] {
             if a.done() {
                 a.hold(a.cruise_speed());
             } else {

@@ -1,5 +1,5 @@
 // The npm package as another project uses it: the tarball `make npm` packs
-// is installed into a scratch folder, the example page (npm/example) is
+// is installed into a scratch folder (target/npm-user/example), the example page (npm/example) is
 // served from there by a plain static server, and headless Chromium runs
 // it. The agent must arrive at the oriented target at rest, then again
 // after the target is dragged to a new place and turned by its arrow.
@@ -10,45 +10,12 @@
 // `node --test npm/test/` with STEERING_CORE_TGZ naming a tarball.
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { execFileSync } from "node:child_process";
-import { cpSync, mkdirSync, mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
-import { createServer } from "node:http";
-import { createRequire } from "node:module";
-import { tmpdir } from "node:os";
-import { dirname, extname, join, resolve, sep } from "node:path";
-import { fileURLToPath, pathToFileURL } from "node:url";
+import { cpSync, mkdirSync } from "node:fs";
+import { join } from "node:path";
+import { installed, npmDir, repo } from "./install.mjs";
+import { launch, serve } from "./browser.mjs";
 
-const here = dirname(fileURLToPath(import.meta.url));
-const npmDir = resolve(here, "..");
-const repo = resolve(npmDir, "..");
-const { name, version } = JSON.parse(readFileSync(join(npmDir, "package.json"), "utf8"));
-const tarball = resolve(process.env.STEERING_CORE_TGZ ?? join(repo, "target/npm", `${name}-${version}.tgz`));
 const artifacts = join(repo, "artifacts");
-
-// One pinned playwright-core for the repository: the front end's (web/).
-const requireFromWeb = createRequire(join(repo, "web/package.json"));
-const playwright = await import(pathToFileURL(requireFromWeb.resolve("playwright-core")).href);
-const chromium = playwright.chromium ?? playwright.default.chromium;
-
-const CHROMIUM_ARGS = ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run"];
-const TYPES = { ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".bin": "application/octet-stream", ".json": "application/json" };
-
-/** Serves `root` (files only, nothing outside it) on 127.0.0.1. */
-function serve(root) {
-  const server = createServer((req, res) => {
-    const path = decodeURIComponent(new URL(req.url, "http://x").pathname);
-    const file = resolve(root, "." + (path.endsWith("/") ? path + "index.html" : path));
-    try {
-      if (!file.startsWith(root + sep)) throw new Error("outside the root");
-      const body = readFileSync(file);
-      res.writeHead(200, { "content-type": TYPES[extname(file)] ?? "application/octet-stream" });
-      res.end(body);
-    } catch {
-      res.writeHead(404).end();
-    }
-  });
-  return new Promise((ok) => server.listen(0, "127.0.0.1", () => ok({ server, url: `http://127.0.0.1:${server.address().port}/` })));
-}
 
 /** The page's status line, read into numbers. */
 function parse(text) {
@@ -72,15 +39,12 @@ async function arrival(page, what) {
 }
 
 test("the example page, from the installed tarball alone, steers its agent to the oriented target", async (t) => {
-  const scratch = mkdtempSync(join(tmpdir(), "steering-core-user-"));
-  t.after(() => rmSync(scratch, { recursive: true, force: true }));
-  writeFileSync(join(scratch, "package.json"), JSON.stringify({ name: "steering-core-user", private: true, type: "module" }));
-  execFileSync("npm", ["install", "--no-audit", "--no-fund", "--loglevel=error", tarball], { cwd: scratch, stdio: "inherit" });
+  const scratch = installed("example");
   for (const f of ["index.html", "main.js"]) cpSync(join(npmDir, "example", f), join(scratch, f));
 
   const { server, url } = await serve(scratch);
   t.after(() => server.close());
-  const browser = await chromium.launch({ executablePath: "/usr/bin/chromium", args: CHROMIUM_ARGS });
+  const browser = await launch();
   t.after(() => browser.close());
   const page = await browser.newPage({ viewport: { width: 1000, height: 700 } });
   const errors = [];

@@ -1,29 +1,40 @@
 // The package's typings as a TypeScript user meets them: the tarball
-// installed into a scratch folder, a module that uses it compiled in
-// strict mode (the front end's pinned tsc), and a wrong call refused.
+// installed under target/npm-user/types, a module that uses it compiled
+// with `--strict` and `lib: ["es2022", "dom"]` (the front end's pinned
+// tsc; no ESNext.Disposable, no skipLibCheck), fields the runtime
+// defaults left out, and a wrong call refused.
 import { test } from "node:test";
 import assert from "node:assert/strict";
-import { execFileSync, spawnSync } from "node:child_process";
-import { mkdtempSync, readFileSync, rmSync, writeFileSync } from "node:fs";
-import { tmpdir } from "node:os";
-import { dirname, join, resolve } from "node:path";
-import { fileURLToPath } from "node:url";
+import { spawnSync } from "node:child_process";
+import { writeFileSync } from "node:fs";
+import { join } from "node:path";
+import { installed, repo } from "./install.mjs";
 
-const npmDir = resolve(dirname(fileURLToPath(import.meta.url)), "..");
-const repo = resolve(npmDir, "..");
-const { name, version } = JSON.parse(readFileSync(join(npmDir, "package.json"), "utf8"));
-const tarball = resolve(process.env.STEERING_CORE_TGZ ?? join(repo, "target/npm", `${name}-${version}.tgz`));
 const tsc = join(repo, "web/node_modules/.bin/tsc");
 
 const USE = `
-import { createLab, loadTable, init, Lab, StateField, Mode, TABLE_URL } from "steering-core";
+import { createLab, loadTable, init, Lab, StateField, Mode, MODE_NAMES, TABLE_URL, type AgentConfig, type Internals } from "steering-core";
+import type { FunnelFigure, ArriveDetail } from "steering-core/funnel-figure.js";
 export async function run(): Promise<number> {
   const lab: Lab = await createLab({ table: TABLE_URL });
-  lab.addAgent({ x: 0, y: 0, theta: 0, goals: [{ x: 4, y: 1, beta: 1.57, dTol: 0.25, epsTol: 0.09, speed: 1.3, halting: true, relaxed: false }] });
+  // halting and relaxed default to false; v and omega to 0.
+  lab.addAgent({ x: 0, y: 0, theta: 0, goals: [{ x: 4, y: 1, beta: 1.57, dTol: 0.25, epsTol: 0.09, speed: 1.3 }] });
+  const many: AgentConfig[] = [1, 2, 3].map((k) => ({ x: k, y: 0, theta: 0, goals: [{ x: 4, y: k, beta: 0, dTol: 0.3, epsTol: 0.2, speed: 1, halting: true }] }));
+  const first: number = lab.addAgents(many);
+  // Vehicle limits: any subset, the rest at the core's defaults.
+  lab.setParams({ vMax: 1.5 });
   lab.step(1);
   const s: Float32Array = lab.state();
+  const m: Mode = lab.mode(0);
+  const name: string = MODE_NAMES[m];
+  const done: boolean = lab.done(0) && lab.atRest(first);
+  const inter: Internals = lab.internals(0);
+  const arrived: boolean = inter.mode === Mode.EndOfSteering;
   const bytes: Uint8Array = await loadTable();
-  void init; void bytes;
+  const fig: FunnelFigure | null = document.querySelector("funnel-figure");
+  fig?.addEventListener("arrive", (e) => { const d: ArriveDetail = e.detail; void d; });
+  lab.free();
+  void init; void bytes; void name; void done; void arrived;
   return s[StateField.Mode] === Mode.EndOfSteering ? 1 : 0;
 }
 `;
@@ -36,14 +47,11 @@ export async function run(): Promise<void> {
 `;
 
 function compile(dir, file) {
-  return spawnSync(tsc, ["--noEmit", "--strict", "--module", "nodenext", "--moduleResolution", "nodenext", "--target", "es2022", "--lib", "es2022,dom,ESNext.Disposable", "--skipLibCheck", "false", file], { cwd: dir, encoding: "utf8" });
+  return spawnSync(tsc, ["--noEmit", "--strict", "--module", "nodenext", "--moduleResolution", "nodenext", "--target", "es2022", "--lib", "es2022,dom", "--skipLibCheck", "false", file], { cwd: dir, encoding: "utf8" });
 }
 
-test("the typings compile a user's strict TypeScript and refuse a wrong agent", (t) => {
-  const scratch = mkdtempSync(join(tmpdir(), "steering-core-types-"));
-  t.after(() => rmSync(scratch, { recursive: true, force: true }));
-  writeFileSync(join(scratch, "package.json"), JSON.stringify({ name: "steering-core-types", private: true, type: "module" }));
-  execFileSync("npm", ["install", "--no-audit", "--no-fund", "--loglevel=error", tarball], { cwd: scratch, stdio: "inherit" });
+test("the typings compile a user's strict TypeScript (lib es2022 + dom) and refuse a wrong agent", () => {
+  const scratch = installed("types");
   writeFileSync(join(scratch, "use.ts"), USE);
   writeFileSync(join(scratch, "wrong.ts"), WRONG);
   const ok = compile(scratch, "use.ts");

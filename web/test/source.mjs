@@ -19,8 +19,9 @@
 //             draw from its buffers, its parity with the core), for pages
 //   ui/       what the pages draw and handle with (canvas, view, sprites,
 //             controls, pointer, …)
-//   lab/ crowd/ learn/ wander/ gpubench/   the pages; one may use another
-//             in one direction only (learn → lab)
+//   lab/ crowd/ learn/ wander/ gpubench/ element/   the pages (element/:
+//             the npm package's <funnel-figure>); one may use another in
+//             one direction only (learn → lab, element → lab and learn)
 //
 // A file imports from its own folder or one below; every reference counts
 // (import, export … from, import(), a type's import("…"), new
@@ -40,7 +41,7 @@ import { webDir } from "./harness.mjs";
 const MAX_LINES = 150;
 
 /** web/src's folders by layer, bottom to top (the comment above). */
-const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["gpu"], ["ui"], ["lab", "crowd", "learn", "wander", "peers", "gpubench"]];
+const LAYERS = [["core"], ["threads"], ["world"], ["workers"], ["gpu"], ["ui"], ["lab", "crowd", "learn", "wander", "peers", "gpubench", "element"]];
 
 /** Files under `dir` whose name matches `re`, recursively. */
 function files(dir, re) {

@@ -86,6 +86,14 @@ export function loadCore(): Promise<string> {
   return ready;
 }
 
+/** Instantiates the baseline module from beside its glue (the glue's own
+ *  default: the npm package's element, whose package ships that build
+ *  only); resolves to the core's version. */
+export function loadBaselineCore(): Promise<string> {
+  ready ??= (coreBuild = "baseline", init().then(() => version()));
+  return ready;
+}
+
 /** Fetches the committed η table (`fetchTable`: a `.planes` URL is
  *  rejoined) and hands its bytes to the core (the learn page; the lab
  *  draws before its table, `Lab.withoutTable`). Throws an Error whose

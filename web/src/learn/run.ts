@@ -29,8 +29,8 @@ export function labState(vehicle: Pose, g: GoalConfig, more: Partial<LabState> =
     dTol: g.dTol,
     epsTol: g.epsTol,
     speed: g.speed,
-    halting: g.halting,
-    relaxed: g.relaxed,
+    halting: g.halting ?? false,
+    relaxed: g.relaxed ?? false,
     ...more,
   };
 }
