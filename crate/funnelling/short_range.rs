@@ -93,7 +93,7 @@ struct Trial {
 pub fn decide(cfg: &FunnelConfig, u: &mut Update<'_>) {
     u.memory.short_range = ShortRange::restored();
     let (p, s, g) = (u.params, *u.state, *u.goal);
-    if p.car_like() || u.memory.goal_moves || !(g.eps_tol < core::f32::consts::PI) {
+    if p.car_like() || u.memory.goal_moves || g.eps_tol >= core::f32::consts::PI {
         return;
     }
     let sc = VehicleScale::of(p);
