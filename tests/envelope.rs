@@ -78,9 +78,15 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
     assert!(all.length_ratio.0 <= 1.15, "{all:?}");
     let r = summarise(rel.runs(GoalKind::Static));
     assert!(r.reach >= 0.995 && r.orbits == 0, "{r:?}");
+    // Compared where both funnel: closer than the short-range reach the
+    // standard controller may turn first
+    // (steering::funnelling::short_range), the relaxed one does not.
+    let near = steering::funnelling::short_range::NEAR;
+    let rel_far = summarise(rel.runs(GoalKind::Static).iter().filter(|r| r.d0 >= near));
+    let std_far = summarise(runs.iter().filter(|r| r.d0 >= near));
     assert!(
-        r.oriented >= all.oriented,
-        "relaxed {r:?} vs standard {all:?}"
+        rel_far.oriented >= std_far.oriented,
+        "relaxed {rel_far:?} vs standard {std_far:?}"
     );
     for v in [std, rel] {
         for kind in [GoalKind::Moving, GoalKind::Chain] {

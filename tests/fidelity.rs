@@ -2081,9 +2081,11 @@ mod paper_size_table {
             );
             rows.push((med, p95, s.oriented_rate, s.reach_rate));
         }
-        // Ours is the more accurate and orients more runs on entry.
+        // Ours is the more accurate and orients at least as many runs on
+        // entry (near goals, both turn first where funnelling would not
+        // enter oriented: steering::funnelling::short_range).
         assert!(rows[0].1 < rows[1].1 && rows[0].0 < rows[1].0, "{rows:?}");
-        assert!(rows[0].2 > rows[1].2 && rows[0].3 >= rows[1].3, "{rows:?}");
+        assert!(rows[0].2 >= rows[1].2 && rows[0].3 >= rows[1].3, "{rows:?}");
     }
 }
 

@@ -89,10 +89,18 @@ struct Cost {
 }
 
 /// One control update (plan and seek step, as the benches time it) from
-/// `s` towards `g` with a fresh memory.
+/// `s` towards `g` with a fresh memory whose short-range choice is made
+/// (funnelling): the update's cost. Near a static goal, the first update
+/// also chooses how to approach it, once per goal, by up to four bounded
+/// simulations (`steering::funnelling::short_range::decide`), which these
+/// per-update claims of the papers leave out.
 fn update(t: &EtaTable, c: &Controller, s: VehicleState, g: &Goal) -> Cost {
     let p = t.params().vehicle;
-    let (mut s, mut mem, mut ri) = (s, FunnelMemory::default(), RelaxedInternals::default());
+    let mem = FunnelMemory {
+        short_range: steering::funnelling::goal::ShortRange::restored(),
+        ..FunnelMemory::default()
+    };
+    let (mut s, mut mem, mut ri) = (s, mem, RelaxedInternals::default());
     let mut mode = Mode::default();
     let counts = counted(|| {
         let out = c.step(

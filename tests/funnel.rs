@@ -16,14 +16,25 @@ use steering::world::{goals::GoalMotion, goals::GoalSpec, goals::SwitchRule, Wor
 mod common;
 use common::table;
 
+/// One plan of the funnelling update itself: the memory says the
+/// short-range choice is made and is funnelling
+/// (`steering::funnelling::short_range`), so Fig. 5's modes are what is tested.
 fn plan(t: &EtaTable, s: VehicleState, g: &Goal) -> steering::funnelling::update::Internals {
     FunnelConfig::default().plan(&mut Update {
         table: t,
         params: &VehicleParams::default(),
         state: &mut s.clone(),
         goal: g,
-        memory: &mut FunnelMemory::default(),
+        memory: &mut funnelling_memory(),
     })
+}
+
+/// A fresh memory whose short-range choice is funnelling.
+fn funnelling_memory() -> FunnelMemory {
+    FunnelMemory {
+        short_range: steering::funnelling::goal::ShortRange::restored(),
+        ..FunnelMemory::default()
+    }
 }
 
 #[test]
@@ -228,9 +239,10 @@ fn targets_behind_are_turned_to_not_chattered_at() {
         let (start, g) = study.scenario(&p, i);
         let r = run(&t, &p, &cfg, start, &g, study.max_time);
         assert!(r.reached, "scenario {i} not reached");
-        // The same plan with the plain (uncommitted) seek step.
+        // The same plan with the plain (uncommitted) seek step, funnelling
+        // (not turning first) near the target as well.
         let mut s = start;
-        let mut mem = FunnelMemory::default();
+        let mut mem = funnelling_memory();
         let arrived = (0..(study.max_time / p.dt) as u32).any(|_| {
             let o = cfg.plan(&mut Update {
                 table: &t,

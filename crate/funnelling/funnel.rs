@@ -30,6 +30,7 @@ use crate::funnelling::approach::Approach;
 use crate::funnelling::config::{Aim, Deviations, FunnelConfig};
 use crate::funnelling::goal::Goal;
 use crate::funnelling::seek::{seek_step, seek_step_committed};
+use crate::funnelling::short_range;
 use crate::funnelling::update::{Internals, Mode, Update};
 
 /// Largest speed whose turning circle still passes through a target at
@@ -70,13 +71,41 @@ impl FunnelConfig {
         self.plan_with(u, Deviations::OURS)
     }
 
-    /// [`FunnelConfig::plan`] with the switches `dev`.
+    /// [`FunnelConfig::plan`] with the switches `dev`. With ours, a static
+    /// goal near a unicycle is approached as [`short_range::decide`] chose
+    /// at its first update: funnelling (as the paper's reading always
+    /// does), funnelling slower, or turning first.
     #[inline(always)]
     fn plan_with(&self, u: &mut Update<'_>, dev: Deviations) -> Internals {
+        let mut side = 0;
+        if dev == Deviations::OURS {
+            if !u.memory.short_range.decided {
+                short_range::decide(self, u);
+            }
+            let sr = u.memory.short_range;
+            if sr.speed_cap > 0.0 {
+                let slow = Goal {
+                    speed: u.goal.speed.at_most(sr.speed_cap),
+                    ..*u.goal
+                };
+                return self.plan_begun(&mut u.towards(&slow), dev, 0);
+            }
+            side = sr.side;
+        }
+        self.plan_begun(u, dev, side)
+    }
+
+    /// The tolerance phase, then funnelling, or turning first round side
+    /// `side` of the disk (0: funnelling; [`short_range::turn_first`]).
+    #[inline(always)]
+    fn plan_begun(&self, u: &mut Update<'_>, dev: Deviations, side: i8) -> Internals {
         let (a, out) = match Approach::begin(u, dev) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,
         };
+        if side != 0 {
+            return short_range::turn_first(&a, side, out);
+        }
         self.aim_and_funnel(&a, &a.goal, out)
     }
 

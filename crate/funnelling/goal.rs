@@ -132,6 +132,59 @@ pub struct FunnelMemory {
     /// left out of the serialised memory.
     #[serde(default, skip_serializing_if = "Manoeuvre::is_idle")]
     pub manoeuvre: Manoeuvre,
+    /// How this goal is approached at short range by a unicycle
+    /// ([`crate::funnelling::short_range`]): funnelling, slower, or turning
+    /// first. Left out of the serialised memory when funnelling, and read
+    /// back as decided, so a world restored mid-approach does not choose again.
+    #[serde(
+        default = "ShortRange::restored",
+        skip_serializing_if = "ShortRange::is_plain"
+    )]
+    pub short_range: ShortRange,
+}
+
+/// How a static goal near a unicycle is approached, chosen by
+/// [`crate::funnelling::short_range::decide`]
+/// and kept in the agent's [`FunnelMemory`].
+#[derive(Clone, Copy, Debug, Default, PartialEq, Serialize, Deserialize)]
+#[serde(default, rename_all = "camelCase")]
+pub struct ShortRange {
+    /// The choice has been made for this goal.
+    pub decided: bool,
+    /// Funnelling with the desired speed capped at this, m/s (0: uncapped).
+    pub speed_cap: f32,
+    /// Turning first, round the disk on the left of β (1) or the right
+    /// (−1); 0: funnelling.
+    pub side: i8,
+}
+
+impl ShortRange {
+    /// Funnelling as without this module (whether decided or not).
+    #[must_use]
+    #[allow(clippy::trivially_copy_pass_by_ref)]
+    pub fn is_plain(&self) -> bool {
+        self.side == 0 && self.speed_cap == 0.0
+    }
+
+    /// What a memory read from a file holds when it says nothing: decided,
+    /// funnelling (a world restored mid-approach does not choose again).
+    #[must_use]
+    pub fn restored() -> Self {
+        Self {
+            decided: true,
+            ..Self::default()
+        }
+    }
+
+    /// Decided: `speed_cap` and `side` as the fields say.
+    #[must_use]
+    pub fn chosen(speed_cap: f32, side: i8) -> Self {
+        Self {
+            decided: true,
+            speed_cap,
+            side,
+        }
+    }
 }
 
 /// What a car-like vehicle remembers of its manoeuvre

@@ -17,6 +17,7 @@
 //! | [`approach`] | 000 Figs. 4–5, 001 §4.1 | what both controllers share: the tolerance phase, halting, moving goals led and lapped, the entry aim, the table lookup |
 //! | [`funnel`] | 000 §4–5, Figs. 4–5 | the funnelling update, the four modes, μ bounds, halting |
 //! | [`relaxed`] | 001 §4, Fig. 7 | relaxed funnelling: arc 𝒜, span F, interval T, α_r |
+//! | [`short_range`] | — | unicycles near a static goal: funnelling, slower, or turning first (walking round the disk, turning on the spot, walking in), chosen by simulated time |
 //! | [`manoeuvre`] | — | car-like vehicles: near the goal, a Dubins path to the goal pose tracked by pure pursuit instead of turning on the spot |
 //! | [`reverse`] | — | car-like vehicles with a reverse gear: a Reeds–Shepp path near the goal, forwards and backwards, gear changes at rest |
 //! | [`controller`] | 000 vs 001 §4 | the choice of controller (the name scenario files and the page use) and a controller with its settings |
@@ -32,6 +33,7 @@ pub mod manoeuvre;
 pub mod relaxed;
 pub mod reverse;
 pub mod seek;
+pub mod short_range;
 pub mod table;
 pub mod update;
 pub mod vehicle_file;

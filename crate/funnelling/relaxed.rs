@@ -413,6 +413,10 @@ impl RelaxedConfig {
         ri: &mut RelaxedInternals,
     ) -> Internals {
         *ri = RelaxedInternals::default();
+        // The relaxed controller approaches near goals as paper 001 does;
+        // its fallbacks to the standard update must not choose otherwise
+        // (crate::funnelling::short_range).
+        u.memory.short_range.decided = true;
         let (a, mut out) = match Approach::begin(u, funnel.deviations()) {
             ControlFlow::Break(done) => return done,
             ControlFlow::Continue(begun) => begun,

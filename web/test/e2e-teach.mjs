@@ -161,7 +161,7 @@ try {
 
     await check(`${tag}: presets read as titles grouped by paper; under a preset the playground's controls are gone and the HUD names its agent`, async () => {
       const menu = await page.$$eval("#preset optgroup", (gs) => gs.map((g) => ({ label: g.label, options: [...g.querySelectorAll("option")].map((o) => o.textContent) })));
-      assert.ok(menu.length >= 2 && menu.every((g) => /^Paper 00\d|^Avoidance|^Car-like/.test(g.label)), JSON.stringify(menu.map((g) => g.label)));
+      assert.ok(menu.length >= 2 && menu.every((g) => /^Paper 00\d|^Avoidance|^Car-like|^Short range/.test(g.label)), JSON.stringify(menu.map((g) => g.label)));
       for (const g of menu) for (const o of g.options) assert.doesNotMatch(o, /_|^p\d{3}|^avoid_/, `option "${o}"`);
       await page.selectOption("#preset", "p000_fig7_variety");
       await page.waitForFunction(() => window.__lab.count() === 8 && /agent 1 of 8/.test(document.getElementById("hud").textContent));

@@ -22,20 +22,23 @@ export function findPreset(name: string): Preset | undefined {
 }
 
 /** The menu's groups, in order: each paper's figures, then what goes
- *  beyond the papers: the avoidance scenarios, the car-like vehicles. */
+ *  beyond the papers: the avoidance scenarios, the car-like vehicles,
+ *  arrival at short range. */
 export const PRESET_GROUPS = [
   "Paper 000 · funnelling towards oriented targets",
   "Paper 001 · region goals (relaxed funnelling)",
   "Avoidance between agents (beyond the papers)",
   "Car-like vehicles (beyond the papers)",
+  "Short range (beyond the papers)",
 ] as const;
 
 /** The menu group of a preset, from its name (`p000_…`, `p001_…`,
- *  `car_like_…`, the rest). */
+ *  `car_like_…`, `short_range_…`, the rest). */
 export function presetGroup(name: string): string {
   if (name.startsWith("p000_")) return PRESET_GROUPS[0];
   if (name.startsWith("p001_")) return PRESET_GROUPS[1];
   if (name.startsWith("car_like_")) return PRESET_GROUPS[3];
+  if (name.startsWith("short_range_")) return PRESET_GROUPS[4];
   return PRESET_GROUPS[2];
 }
 
@@ -77,6 +80,7 @@ const TITLES: Readonly<Record<string, string>> = {
   avoid_fig8: "Paper 000 Fig. 8 with avoidance",
   car_like_parking: "Parking a car that cannot turn on the spot",
   car_like_reverse_parking: "Backing into a bay: a car with a reverse gear",
+  short_range_turn_or_loop: "Turning first vs looping: near targets on foot",
 };
 
 /** The title the menu shows for a preset. */

@@ -469,7 +469,7 @@ export class LabSim {
         void this.rebuild(false);
         return;
       }
-      if (fit) this.view.fit(-split.spawn.extent - 3, -split.spawn.extent - 3, split.spawn.extent + 3, split.spawn.extent + 3, (v) => stageInsets(v, 40));
+      if (fit) this.view.fit(-split.spawn.extent - 3, -split.spawn.extent - 3, split.spawn.extent + 3, split.spawn.extent + 3, (v) => crowdInsets(v, 40));
     } else if (st.engine !== "gpu") this.onGpuNote(null);
     const waiting = this.waiting;
     this.waiting = null;
