@@ -23,8 +23,10 @@ pub(crate) fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
 }
 
 /// Decodes a configuration object, refusing keys the type does not know.
-/// A refused object names the top-level field at fault (see
-/// [`field_at_fault`]): `"{what}, field `{key}`: {serde's message}"`.
+/// A refused object names the field at fault by its path
+/// ([`crate::base::field_error`]): `"{what}, field `{path}`: {what is
+/// wrong}"`, e.g. `agent, field `goals[1].x`: expected a number, found a
+/// list` or `agent, field `theta`: missing`.
 pub(crate) fn from_js<T>(what: &str, v: JsValue) -> Result<T, JsError>
 where
     T: for<'de> Deserialize<'de> + Serialize,
@@ -32,46 +34,23 @@ where
     from_js_in(what, "", v)
 }
 
-/// [`from_js`] with the field named as `{prefix}{key}` (the funnel settings
-/// say `funnel.gain`, as their range checks do).
+/// [`from_js`] with the field named as `{prefix}{path}` (the funnel
+/// settings say `funnel.gain`, as their range checks do).
 pub(crate) fn from_js_in<T>(what: &str, prefix: &str, v: JsValue) -> Result<T, JsError>
 where
     T: for<'de> Deserialize<'de> + Serialize,
 {
     let t: T =
-        serde_wasm_bindgen::from_value(v.clone()).map_err(|e| match field_at_fault::<T>(&v) {
-            Some(k) => js_err(&format!("{what}, field `{prefix}{k}`"), e),
-            None => js_err(what, e),
-        })?;
+        crate::base::field_error::deserialize(serde_wasm_bindgen::Deserializer::from(v.clone()))
+            .map_err(|e| {
+                if e.path.is_empty() {
+                    js_err(what, e.message)
+                } else {
+                    js_err(&format!("{what}, field `{prefix}{}`", e.path), e.message)
+                }
+            })?;
     check_known_keys(what, &v, &t)?;
     Ok(t)
-}
-
-/// The key of `input` whose value made decoding fail, when one can be told.
-///
-/// serde's messages carry no path ("invalid type: string "2", expected
-/// f32"). serde-wasm-bindgen reads the declared fields in turn, stops at the
-/// first bad value and reports missing fields only after the present ones;
-/// so a key is at fault exactly when, with that key removed, decoding
-/// succeeds (the field has a default) or fails only for that key's absence.
-/// Runs on the error path only.
-fn field_at_fault<T: for<'de> Deserialize<'de>>(input: &JsValue) -> Option<String> {
-    if js_sys::Array::is_array(input) {
-        return None;
-    }
-    let obj = input.dyn_ref::<js_sys::Object>()?;
-    js_sys::Object::keys(obj).iter().find_map(|key| {
-        let k = key.as_string()?;
-        let without = js_sys::Object::assign(&js_sys::Object::new(), obj);
-        js_sys::Reflect::delete_property(&without, &key).ok()?;
-        match serde_wasm_bindgen::from_value::<T>(without.into()) {
-            Ok(_) => Some(k),
-            Err(e) => e
-                .to_string()
-                .contains(&format!("missing field `{k}`"))
-                .then_some(k),
-        }
-    })
 }
 
 /// A Rust value as a plain JavaScript object (maps as objects, not `Map`s).
