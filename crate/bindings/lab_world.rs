@@ -23,7 +23,8 @@ impl Lab {
     /// Removes every agent and restarts the clock.
     pub fn clear(&mut self) -> Result<(), JsError> {
         self.world = lab_world(
-            World::new(self.world.params, self.world.config).map_err(|e| js_err("world", e))?,
+            World::new(*self.world.params(), *self.world.config())
+                .map_err(|e| js_err("world", e))?,
         );
         Ok(())
     }
@@ -31,13 +32,13 @@ impl Lab {
     /// Number of agents.
     #[must_use]
     pub fn count(&self) -> u32 {
-        self.world.agents.len() as u32
+        self.world.agents().len() as u32
     }
 
     /// Simulated time, s.
     #[must_use]
     pub fn time(&self) -> f32 {
-        self.world.time
+        self.world.time()
     }
 
     /// Adds an agent with its goal queue; returns its index.
@@ -60,7 +61,7 @@ impl Lab {
         // The mode shown before the first step is the one chosen at t = 0
         // (without a table: when it arrives, `set_table`).
         if let Some(t) = &self.table {
-            self.world.plan(t);
+            self.world.plan(t).map_err(|e| js_err("η table", e))?;
         }
         Ok(i as u32)
     }
@@ -72,7 +73,7 @@ impl Lab {
         } else {
             ControllerKind::Standard
         };
-        let cfg = self.world.relaxed;
+        let cfg = *self.world.relaxed();
         self.world
             .set_controller(kind, cfg)
             .map_err(|e| js_err("relaxed settings", e))
@@ -145,7 +146,7 @@ impl Lab {
             };
         };
         for _ in 0..n.min(MAX_STEPS_PER_CALL) {
-            self.world.step(t);
+            self.world.step(t).map_err(|e| js_err("η table", e))?;
         }
         Ok(())
     }
@@ -188,7 +189,9 @@ impl Lab {
         let Some(t) = &self.table else {
             return Err(JsError::new(NO_TABLE_CLOCK));
         };
-        self.world.step_writing(t, &mut self.buf);
+        self.world
+            .step_writing(t, &mut self.buf)
+            .map_err(|e| js_err("η table", e))?;
         out.copy_from(&self.buf);
         Ok(())
     }
