@@ -52,7 +52,7 @@ fn bench(c: &mut Criterion) {
                             k = 0;
                         }
                         let t = Instant::now();
-                        w.step(&table);
+                        w.step(&table).unwrap();
                         total += t.elapsed();
                         k += 1;
                     }
@@ -73,14 +73,14 @@ fn cycle_ns(w0: &steering::world::World, table: &EtaTable) -> f64 {
     let mut w = w0.clone();
     let (t0, w_0) = (cpu_clock::thread_ns(), Instant::now());
     for _ in 0..CYCLE {
-        w.step(table);
+        w.step(table).unwrap();
     }
     let ns = match (t0, cpu_clock::thread_ns()) {
         (Some(a), Some(b)) => (b - a) as f64,
         _ => w_0.elapsed().as_secs_f64() * 1e9,
     };
     std::hint::black_box(&w);
-    ns / (CYCLE * w0.agents.len()) as f64
+    ns / (CYCLE * w0.agents().len()) as f64
 }
 
 /// Same-run ratio ORCA / off: rounds interleaved, the best of each kept.

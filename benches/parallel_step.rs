@@ -39,7 +39,7 @@ fn crowd(table: &EtaTable, n: usize) -> World {
     w.spawn_random(n, SEED, 100.0, 1.3)
         .expect("within the bound");
     for _ in 0..60 {
-        w.step(table);
+        w.step(table).unwrap();
     }
     w
 }
@@ -68,8 +68,8 @@ fn bench(c: &mut Criterion) {
             g.sample_size(10);
             g.bench_function(BenchmarkId::from_parameter(n), |b| {
                 b.iter(|| {
-                    p.install(|| w.step(&table));
-                    black_box(w.agents[0].state.pos);
+                    p.install(|| w.step(&table)).unwrap();
+                    black_box(w.agents()[0].state.pos);
                 });
             });
             g.finish();
@@ -127,7 +127,7 @@ fn bench(c: &mut Criterion) {
 /// between them (one world each, stepped on from `world`).
 fn alternating(world: &World, table: &EtaTable, pools: [&ThreadPool; 2]) -> [Duration; 2] {
     const ROUNDS: usize = 6;
-    let steps = (2_000_000 / world.agents.len()).clamp(2, 100);
+    let steps = (2_000_000 / world.agents().len()).clamp(2, 100);
     let mut worlds = [world.clone(), world.clone()];
     let mut times: [Vec<Duration>; 2] = [Vec::new(), Vec::new()];
     for round in 0..ROUNDS {
@@ -136,7 +136,7 @@ fn alternating(world: &World, table: &EtaTable, pools: [&ThreadPool; 2]) -> [Dur
             let t0 = Instant::now();
             pools[k].install(|| {
                 for _ in 0..steps {
-                    w.step(table);
+                    w.step(table).unwrap();
                 }
             });
             times[k].push(t0.elapsed() / steps as u32);

@@ -92,7 +92,7 @@ const SIDE: usize = 32;
 
 fn ours(sc: &Scenario, table: &EtaTable) -> World {
     let mut w = sc.world().expect("valid lattice");
-    w.plan(table);
+    w.plan(table).unwrap();
     w
 }
 
@@ -133,7 +133,7 @@ fn bench(c: &mut Criterion, table: &EtaTable) {
                 w = w0.clone();
                 k = 0;
             }
-            w.step(table);
+            w.step(table).unwrap();
             k += 1;
         });
     });
@@ -221,7 +221,7 @@ fn avoid_ratio(table: &EtaTable) -> [f64; 4] {
             let mut w = w0.clone();
             let t = timed(|| {
                 for _ in 0..CYCLE {
-                    w.step(table);
+                    w.step(table).unwrap();
                 }
             });
             black_box(&w);

@@ -89,8 +89,10 @@
 //! **An agent in a world, to an oriented target.** A [`World`](world::World)
 //! holds agents with goal queues ([`GoalSpec`](world::goals::GoalSpec): the
 //! [`Goal`](funnelling::goal::Goal), its motion and when the next goal takes
-//! over). [`World::try_step`](world::World::try_step) refuses a table built
-//! for other limits; a halting goal ends with the agent
+//! over). [`World::step`](world::World::step) refuses a table built for
+//! other limits, and the agents are read through
+//! [`World::agents`](world::World::agents) and changed only through the
+//! world's edits, which validate; a halting goal ends with the agent
 //! [at rest](world::Agent::at_rest) inside both tolerances:
 //!
 //! ```
@@ -107,11 +109,11 @@
 //! };
 //! let start = VehicleState::new(Vec2::ZERO, 0.0, 0.0, 0.0);
 //! world.add_agent(start, vec![GoalSpec { goal: target, ..GoalSpec::default() }])?;
-//! while !world.agents[0].at_rest() {
-//!     world.try_step(&table)?;
-//!     assert!(world.time < 60.0, "arrives within a minute");
+//! while !world.agents()[0].at_rest() {
+//!     world.step(&table)?;
+//!     assert!(world.time() < 60.0, "arrives within a minute");
 //! }
-//! let s = world.agents[0].state;
+//! let s = world.agents()[0].state;
 //! assert!((s.pos - target.pos).length() < target.d_tol);
 //! assert!(steering::base::angle::diff(target.beta, s.theta).abs() < target.eps_tol);
 //! # Ok::<(), Box<dyn std::error::Error>>(())
@@ -158,11 +160,10 @@
 //! }"#)?;
 //! let table = EtaTable::for_vehicle(&scenario.vehicle)?;
 //! let mut world = scenario.world()?;
-//! world.check_table(&table)?;
 //! for _ in 0..scenario.steps() {
-//!     world.step(&table);
+//!     world.step(&table)?;
 //! }
-//! assert!(world.agents.iter().all(Agent::done));
+//! assert!(world.agents().iter().all(Agent::done));
 //! # Ok::<(), Box<dyn std::error::Error>>(())
 //! ```
 //!

@@ -36,16 +36,16 @@ fn main() {
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
     let sc = bench.scenario(seed, AvoidanceMethod::Orca);
     let mut w = sc.world().expect("benchmark scenarios are valid");
-    w.plan(&table);
+    w.plan(&table).unwrap();
     for step in 0..sc.steps() {
-        w.step(&table);
-        let t = (step + 1) as f32 * w.params.dt;
-        if !times.iter().any(|&x| (x - t).abs() < 0.5 * w.params.dt) {
+        w.step(&table).unwrap();
+        let t = (step + 1) as f32 * w.params().dt;
+        if !times.iter().any(|&x| (x - t).abs() < 0.5 * w.params().dt) {
             continue;
         }
         println!("t={t:.2}");
-        for (i, a) in w.agents.iter().enumerate() {
-            let c = w.avoider.commands[i];
+        for (i, a) in w.agents().iter().enumerate() {
+            let c = w.avoider().commands[i];
             println!(
                 "  {i:2} ({:6.2},{:6.2}) θ={:4.0}° v={:.2} goal=({:.1},{:.1}) done={} γ={:4.0}° v_dt={:.2} cmd θ={:4.0}° v={:.2}",
                 a.state.pos.x,

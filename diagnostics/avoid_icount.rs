@@ -60,7 +60,7 @@ fn main() {
         w.set_avoidance(cfg, Vec::new()).unwrap();
     }
     for _ in 0..60 + n {
-        w.step(&table);
+        w.step(&table).unwrap();
     }
     black_box(&w);
 }

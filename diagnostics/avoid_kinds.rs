@@ -58,18 +58,18 @@ fn main() {
     for seed in s0..s0 + n {
         let sc = Bench::Corridor.scenario(seed, AvoidanceMethod::Orca);
         let mut w = sc.world().expect("benchmark scenarios are valid");
-        w.plan(&table);
-        let half = w.agents.len() / 2;
-        let mut slow = vec![0.0f32; w.agents.len()];
-        let mut turn = vec![0.0f32; w.agents.len()];
-        let mut kind: Vec<Option<usize>> = vec![None; w.agents.len()];
+        w.plan(&table).unwrap();
+        let half = w.agents().len() / 2;
+        let mut slow = vec![0.0f32; w.agents().len()];
+        let mut turn = vec![0.0f32; w.agents().len()];
+        let mut kind: Vec<Option<usize>> = vec![None; w.agents().len()];
         let mut order = Vec::new();
         for step in 0..sc.steps() {
-            w.step(&table);
-            for (i, a) in w.agents.iter().enumerate() {
+            w.step(&table).unwrap();
+            for (i, a) in w.agents().iter().enumerate() {
                 if !a.done() && a.state.v < 0.05 {
-                    slow[i] += w.params.dt;
-                    turn[i] += a.state.omega.abs() * w.params.dt;
+                    slow[i] += w.params().dt;
+                    turn[i] += a.state.omega.abs() * w.params().dt;
                 } else {
                     slow[i] = 0.0;
                     turn[i] = 0.0;
@@ -79,7 +79,7 @@ fn main() {
                 }
                 let p = a.state.pos;
                 let near_done = w
-                    .agents
+                    .agents()
                     .iter()
                     .enumerate()
                     .any(|(j, b)| j != i && b.done() && (b.state.pos - p).length() < 0.9);
@@ -102,7 +102,7 @@ fn main() {
                 if verbose {
                     println!(
                         "seed {seed} t={:.1} agent {i} at ({:.2}, {:.2}) θ={:.0}° {} turned {:.0}° in 10 s, ω={:.2}",
-                        step as f32 * w.params.dt,
+                        step as f32 * w.params().dt,
                         p.x,
                         p.y,
                         a.state.theta.to_degrees(),
@@ -119,7 +119,7 @@ fn main() {
         }
         for (i, k) in kind.iter().enumerate() {
             if let Some(k) = *k {
-                agents[k][usize::from(w.agents[i].done())] += 1;
+                agents[k][usize::from(w.agents()[i].done())] += 1;
             }
         }
     }

@@ -49,21 +49,21 @@ fn main() {
     };
     let sc = bench.scenario(seed, AvoidanceMethod::Orca);
     let mut w = sc.world().expect("benchmark scenarios are valid");
-    w.plan(&table);
+    w.plan(&table).unwrap();
     let (x0, x1, y0, y1, cell) = (-8.0f32, 8.0f32, -3.0f32, 3.0f32, 0.25f32);
     let cols = ((x1 - x0) / cell) as usize;
     let rows = ((y1 - y0) / cell) as usize;
-    let every_steps = (every / w.params.dt).round() as u32;
+    let every_steps = (every / w.params().dt).round() as u32;
     for step in 0..sc.steps() {
-        w.step(&table);
-        if step % every_steps != 0 || step as f32 * w.params.dt > t_end {
+        w.step(&table).unwrap();
+        if step % every_steps != 0 || step as f32 * w.params().dt > t_end {
             continue;
         }
         let mut g = vec![vec![' '; cols]; rows];
         for (r, row) in g.iter_mut().enumerate() {
             for (c, ch) in row.iter_mut().enumerate() {
                 let p = glam::Vec2::new(x0 + (c as f32 + 0.5) * cell, y1 - (r as f32 + 0.5) * cell);
-                if w.obstacles
+                if w.obstacles()
                     .iter()
                     .any(|o| o.distance_normal(p).0.abs() <= cell * 0.5 + 1e-3)
                 {
@@ -72,7 +72,7 @@ fn main() {
             }
         }
         let mut done = 0;
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             if a.done() {
                 done += 1;
             }
@@ -95,7 +95,7 @@ fn main() {
             let rest = a.state.v < 0.05;
             // First half of the agents (the corridor's group from the left): > ^ v <,
             // at rest @; the others e n s w, at rest upper case.
-            let mark = if i < w.agents.len() / 2 {
+            let mark = if i < w.agents().len() / 2 {
                 if rest {
                     '@'
                 } else {
@@ -108,7 +108,7 @@ fn main() {
             };
             g[r as usize][c as usize] = mark;
         }
-        println!("t = {:.1} s, done {done}", step as f32 * w.params.dt);
+        println!("t = {:.1} s, done {done}", step as f32 * w.params().dt);
         for row in g {
             println!("|{}|", row.into_iter().collect::<String>());
         }

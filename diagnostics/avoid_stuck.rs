@@ -41,14 +41,14 @@ fn main() {
     for seed in s0..s0 + n {
         let sc = bench.scenario(seed, AvoidanceMethod::Orca);
         let mut w = sc.world().expect("benchmark scenarios are valid");
-        w.plan(&table);
-        let mut slow = vec![0.0f32; w.agents.len()];
-        let mut reported = vec![false; w.agents.len()];
+        w.plan(&table).unwrap();
+        let mut slow = vec![0.0f32; w.agents().len()];
+        let mut reported = vec![false; w.agents().len()];
         for step in 0..sc.steps() {
-            w.step(&table);
-            for (i, a) in w.agents.iter().enumerate() {
+            w.step(&table).unwrap();
+            for (i, a) in w.agents().iter().enumerate() {
                 if !a.done() && a.state.v < 0.05 {
-                    slow[i] += w.params.dt;
+                    slow[i] += w.params().dt;
                 } else {
                     slow[i] = 0.0;
                 }
@@ -58,7 +58,7 @@ fn main() {
                 reported[i] = true;
                 let g = a.goal_now;
                 let mut near = String::new();
-                for (j, b) in w.agents.iter().enumerate() {
+                for (j, b) in w.agents().iter().enumerate() {
                     let d = (b.state.pos - a.state.pos).length();
                     if j != i && d < 1.5 {
                         near += &format!(
@@ -71,7 +71,7 @@ fn main() {
                 }
                 println!(
                     "seed {seed} t={:.1} s agent {i} at ({:.2}, {:.2}) θ={:.0}° goal #{} ({:.1}, {:.1}) D={:.2} {:?}{near}",
-                    step as f32 * w.params.dt,
+                    step as f32 * w.params().dt,
                     a.state.pos.x,
                     a.state.pos.y,
                     a.state.theta.to_degrees(),

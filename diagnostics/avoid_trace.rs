@@ -53,13 +53,13 @@ fn main() {
     let table = EtaTable::from_bytes(&bytes).expect("tables/eta.bin loads");
     let sc = bench.scenario(seed, AvoidanceMethod::Orca);
     let mut w = sc.world().expect("benchmark scenarios are valid");
-    w.plan(&table);
-    let every = (every / w.params.dt).round().max(1.0) as u32;
+    w.plan(&table).unwrap();
+    let every = (every / w.params().dt).round().max(1.0) as u32;
     for step in 0..sc.steps() {
-        w.step(&table);
-        let t = (step + 1) as f32 * w.params.dt;
-        for (k, a) in w.agents.iter().enumerate() {
-            for o in &w.obstacles {
+        w.step(&table).unwrap();
+        let t = (step + 1) as f32 * w.params().dt;
+        for (k, a) in w.agents().iter().enumerate() {
+            for o in w.obstacles() {
                 let d = o.distance_normal(a.state.pos).0;
                 if d < sc.avoidance.radius {
                     println!("t={t:.2} agent {k} touches an obstacle: {d:.3} m");
@@ -69,8 +69,8 @@ fn main() {
         if t < t0 || t > t1 || step % every != 0 {
             continue;
         }
-        let a = &w.agents[i];
-        let c = w.avoider.commands[i];
+        let a = &w.agents()[i];
+        let c = w.avoider().commands[i];
         println!(
             "t={t:.2} pos=({:.2},{:.2}) θ={:.0}° v={:.2} ω={:.2} γ={:.0}° v_dt={:.2} {:?} cmd θ={:.0}° v={:.2} active={} walls={}",
             a.state.pos.x,

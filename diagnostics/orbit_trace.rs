@@ -52,8 +52,8 @@ fn main() {
     println!("start {:?}\ngoal {:?}", sc.start, sc.goals[0]);
     let mut dmin = f32::INFINITY;
     for k in 0..(150.0 / p.dt) as u32 {
-        w.step(&table);
-        let ag = &w.agents[0];
+        w.step(&table).unwrap();
+        let ag = &w.agents()[0];
         let g = ag.goal_now;
         let d = (g.pos - ag.state.pos).length();
         dmin = dmin.min(d);

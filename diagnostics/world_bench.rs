@@ -71,12 +71,12 @@ fn main() {
     // (`--metrics` keeps them, for a same-run comparison).
     w.set_metrics(metrics);
     for _ in 0..steps {
-        w.step(&table);
+        w.step(&table).unwrap();
     }
     for _ in 0..rounds {
         let (t0, c0) = (Instant::now(), cpu_ns());
         for _ in 0..steps {
-            w.step(&table);
+            w.step(&table).unwrap();
         }
         let per = (steps * n) as f64;
         let ns = t0.elapsed().as_nanos() as f64 / per;

@@ -193,12 +193,12 @@ fn neighbour_search_cost_per_agent_is_flat_at_constant_density() {
             sc.agents.push(a);
         }
         let mut w = sc.world().unwrap();
-        w.step(&t);
-        w.avoider.reset_checks();
+        w.step(&t).unwrap();
+        w.reset_avoidance_checks();
         for _ in 0..10 {
-            w.step(&t);
+            w.step(&t).unwrap();
         }
-        w.avoider.checks() as f64 / (10.0 * (side * side) as f64)
+        w.avoider().checks() as f64 / (10.0 * (side * side) as f64)
     };
     let (small, large) = (per_agent(20), per_agent(60));
     println!("candidate pairs per agent per step: 400 agents {small:.1}, 3,600 agents {large:.1}");
@@ -225,7 +225,7 @@ fn scenario_errors_name_the_field() {
     );
     assert!(
         err(r#""obstacles": [{"kind": "disc", "x": 1, "y": 1, "r": 1}]"#)
-            .contains("unknown field `r`")
+            .contains("obstacles[0].r: unknown field")
     );
     assert!(err(r#""obstacles": [{"kind": "wall", "x": 1}]"#).contains("unknown variant `wall`"));
     assert!(err(r#""avoidance": {"method": "rvo"}"#).contains("unknown variant `rvo`"));
@@ -279,22 +279,22 @@ fn the_plan_rate_changes_mid_run_and_agents_come_and_go() {
     let t = table();
     let sc = Bench::CircleSwap(8).scenario(1, AvoidanceMethod::Orca);
     let mut w = sc.world().unwrap();
-    let mut cfg = w.avoidance;
-    let obstacles = w.obstacles.clone();
+    let mut cfg = *w.avoidance();
+    let obstacles = w.obstacles().to_vec();
     for (k, every) in [1u32, 3, 2, 4, 1].into_iter().enumerate() {
         cfg.replan_every = every;
         w.set_avoidance(cfg, obstacles.clone()).unwrap();
         if k == 2 {
-            let a = w.agents[0].clone();
+            let a = w.agents()[0].clone();
             w.add_agent(a.state, a.goals.clone()).unwrap();
         }
         for _ in 0..97 {
-            w.step(&t);
+            w.step(&t).unwrap();
         }
     }
-    assert_eq!(w.agents.len(), 9);
-    for a in &w.agents {
-        assert!(a.state.within_limits(&w.params), "{:?}", a.state);
+    assert_eq!(w.agents().len(), 9);
+    for a in w.agents() {
+        assert!(a.state.within_limits(w.params()), "{:?}", a.state);
     }
     cfg.replan_every = 5;
     assert!(w.set_avoidance(cfg, obstacles).is_err());

@@ -67,9 +67,9 @@ fn preset(name: &str) -> Scenario {
 /// Runs `sc` for its duration, calling `visit(world)` after every step.
 fn run(t: &EtaTable, sc: &Scenario, mut visit: impl FnMut(&World)) -> World {
     let mut w = sc.world().expect("preset builds");
-    let steps = (sc.duration / w.params.dt).round() as u32;
+    let steps = (sc.duration / w.params().dt).round() as u32;
     for _ in 0..steps {
-        w.step(t);
+        w.step(t).unwrap();
         visit(&w);
     }
     w
@@ -105,12 +105,12 @@ fn p000_fig1_plain_seek_never_funnels_and_reaches_every_target() {
     let mut funnelled = 0;
     let w = run(&t, &sc, |w| {
         funnelled += w
-            .agents
+            .agents()
             .iter()
             .filter(|a| matches!(a.internals.mode, Mode::Funnelling | Mode::OrientationOnly))
             .count();
     });
-    for (i, a) in w.agents.iter().enumerate() {
+    for (i, a) in w.agents().iter().enumerate() {
         let g = a.goals[0].goal;
         let d = a.state.pos.distance(g.pos);
         println!(
@@ -121,11 +121,11 @@ fn p000_fig1_plain_seek_never_funnels_and_reaches_every_target() {
     }
     assert_eq!(funnelled, 0, "plain seek funnelled");
     let dist: Vec<f32> = w
-        .agents
+        .agents()
         .iter()
         .map(|a| a.state.pos.distance(a.goals[0].goal.pos))
         .collect();
-    let times: Vec<f32> = w.agents.iter().filter_map(|a| a.finished_at).collect();
+    let times: Vec<f32> = w.agents().iter().filter_map(|a| a.finished_at).collect();
     let (t0, t1) = min_max(&times);
     // The old reading (standard controller, ε_tol 180°) funnels the agent
     // whose target lies behind it towards β.
@@ -133,7 +133,7 @@ fn p000_fig1_plain_seek_never_funnels_and_reaches_every_target() {
     old.controller = ControllerKind::Standard;
     let mut old_funnel = 0;
     run(&t, &old, |w| {
-        old_funnel += usize::from(w.agents[2].internals.mode == Mode::Funnelling);
+        old_funnel += usize::from(w.agents()[2].internals.mode == Mode::Funnelling);
     });
     println!(
         "fig1 under the standard controller with ε_tol 180°: agent 2 funnels {old_funnel} steps"
@@ -147,7 +147,7 @@ fn p000_fig1_plain_seek_never_funnels_and_reaches_every_target() {
         "paper",
         Verdict::Reproduced,
         &[
-            Figure::new("p000.fig1.reached", "agents at rest inside their target", w.agents.iter().filter(|a| a.done()).count() as f64, "of 3", 0),
+            Figure::new("p000.fig1.reached", "agents at rest inside their target", w.agents().iter().filter(|a| a.done()).count() as f64, "of 3", 0),
             Figure::new("p000.fig1.distance.max", "final distance to the target's centre, largest", min_max(&dist).1, "m", 2),
             Figure::new("p000.fig1.time.min", "time to rest, earliest", t0, "s", 1),
             Figure::new("p000.fig1.time.max", "time to rest, latest", t1, "s", 1),
@@ -162,7 +162,7 @@ fn p000_fig3_funnelling_reaches_position_and_orientation() {
     let t = table();
     let w = run(&t, &preset("p000_fig3_funnel"), |_| {});
     let (mut dist, mut head) = (Vec::new(), Vec::new());
-    for (i, a) in w.agents.iter().enumerate() {
+    for (i, a) in w.agents().iter().enumerate() {
         let g = a.goals[0].goal;
         let (d, e) = (
             a.state.pos.distance(g.pos),
@@ -218,8 +218,8 @@ fn p000_fig6_pairs_meet_face_to_face() {
     let t = table();
     let w = run(&t, &preset("p000_fig6_face_to_face"), |_| {});
     let (mut gaps, mut facings) = (Vec::new(), Vec::new());
-    for k in 0..w.agents.len() / 2 {
-        let (a, b) = (&w.agents[2 * k], &w.agents[2 * k + 1]);
+    for k in 0..w.agents().len() / 2 {
+        let (a, b) = (&w.agents()[2 * k], &w.agents()[2 * k + 1]);
         let gap = a.state.pos.distance(b.state.pos);
         let facing = diff(a.state.theta + PI, b.state.theta).abs().to_degrees();
         let ab = b.state.pos - a.state.pos;
@@ -280,7 +280,7 @@ fn p000_fig6_pairs_meet_face_to_face() {
 fn fig7_mu_by_distance(t: &EtaTable, sc: &Scenario) -> ([f32; 3], usize) {
     let mut bands: [Vec<f32>; 3] = Default::default();
     let w = run(t, sc, |w| {
-        for a in w.agents.iter().filter(|a| !a.done()) {
+        for a in w.agents().iter().filter(|a| !a.done()) {
             let i = a.internals;
             if matches!(i.mode, Mode::EndOfSteering | Mode::OrientationOnly) {
                 continue;
@@ -299,7 +299,7 @@ fn fig7_mu_by_distance(t: &EtaTable, sc: &Scenario) -> ([f32; 3], usize) {
     });
     (
         [mean(&bands[0]), mean(&bands[1]), mean(&bands[2])],
-        w.agents.iter().filter(|a| a.done()).count(),
+        w.agents().iter().filter(|a| a.done()).count(),
     )
 }
 
@@ -377,10 +377,10 @@ fn p000_fig8_traces_show_three_sections() {
     let mut prev: Vec<_> = Vec::new();
     run(&t, &sc, |w| {
         if prev.is_empty() {
-            prev = w.agents.iter().map(|a| a.state).collect();
+            prev = w.agents().iter().map(|a| a.state).collect();
             return;
         }
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             if a.done() {
                 continue;
             }
@@ -465,7 +465,7 @@ fn curvature_near_the_end(t: &EtaTable, sc: &Scenario, l: f32) -> Vec<f32> {
     let mut paths: Vec<Vec<(Vec2, f32)>> = vec![Vec::new(); n];
     let mut met = vec![false; n];
     run(t, sc, |w| {
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             if !met[i] {
                 paths[i].push((a.state.pos, a.state.theta));
                 met[i] = a.memory.position_met || a.done();
@@ -563,7 +563,7 @@ fn p001_fig5_curvature_near_the_destination_by_distance() {
 /// (length, ∫|κ|) per agent over the whole run.
 fn path_metrics(t: &EtaTable, sc: &Scenario) -> Vec<(f32, f32)> {
     run(t, sc, |_| {})
-        .agents
+        .agents()
         .iter()
         .map(|a| (a.metrics.length, a.metrics.curvature))
         .collect()
@@ -680,7 +680,7 @@ fn entries(t: &EtaTable, sc: &Scenario) -> Vec<Vec<Option<Vec2>>> {
     let k = sc.agents[0].goals.len();
     let mut e = vec![vec![None; k]; n];
     run(t, sc, |w| {
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             if a.current < k && e[i][a.current].is_none() {
                 let g = a.goal_now;
                 if a.state.pos.distance(g.pos) < g.d_tol {
@@ -716,7 +716,7 @@ fn traces(t: &EtaTable, sc: &Scenario) -> Vec<Vec<Vec2>> {
         .map(|a| vec![Vec2::new(a.x, a.y)])
         .collect();
     run(t, sc, |w| {
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             out[i].push(a.state.pos);
         }
     });
@@ -938,12 +938,12 @@ fn p001_fig6_a_better_point_of_the_disk_gives_a_smoother_path() {
     let until_met = |sc: &Scenario| {
         let mut m = None;
         let w = run(&t, sc, |w| {
-            let a = &w.agents[0];
+            let a = &w.agents()[0];
             if m.is_none() && a.memory.position_met {
                 m = Some((a.metrics.length, a.metrics.curvature));
             }
         });
-        (m, w.agents[0].done())
+        (m, w.agents()[0].done())
     };
     let ((mb, db), (mc, dc)) = (until_met(&b), until_met(&c));
     let ((lb, kb), (lc, kc)) = (mb.unwrap(), mc.unwrap());

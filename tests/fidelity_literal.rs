@@ -61,15 +61,15 @@ type Traces = Vec<Vec<Vec2>>;
 /// Every agent's trajectory, every step, and its (length, ∫|κ|, finished).
 fn run(t: &EtaTable, sc: &Scenario) -> (Traces, Vec<(f32, f32, bool)>) {
     let mut w = sc.world().expect("preset builds");
-    let mut tr: Vec<Vec<Vec2>> = w.agents.iter().map(|a| vec![a.state.pos]).collect();
+    let mut tr: Vec<Vec<Vec2>> = w.agents().iter().map(|a| vec![a.state.pos]).collect();
     for _ in 0..sc.steps() {
-        w.step(t);
-        for (i, a) in w.agents.iter().enumerate() {
+        w.step(t).unwrap();
+        for (i, a) in w.agents().iter().enumerate() {
             tr[i].push(a.state.pos);
         }
     }
     let m = w
-        .agents
+        .agents()
         .iter()
         .map(|a| (a.metrics.length, a.metrics.curvature, a.done()))
         .collect();

@@ -104,9 +104,9 @@ fn preset_figures(
 ) -> Vec<Figure> {
     let mut w = sc.world().expect("preset builds");
     for _ in 0..sc.steps() {
-        w.step(table);
+        w.step(table).unwrap();
     }
-    let a = &w.agents;
+    let a = w.agents();
     let n = a.len() as f64;
     let dist: Vec<f32> = a
         .iter()

@@ -294,9 +294,9 @@ fn halting_arrives_at_rest_inside_the_tolerance() {
     )
     .unwrap();
     for _ in 0..(30.0 / p.dt) as usize {
-        w.step(&t);
+        w.step(&t).unwrap();
     }
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     assert!(a.done());
     assert!(a.state.v < 1e-3, "speed {}", a.state.v);
     assert!((a.state.pos - g.pos).length() < g.d_tol + 0.05);
@@ -335,11 +335,11 @@ fn moving_and_successive_targets() {
         .unwrap();
     let mut first_done_at = None;
     for _ in 0..(90.0 / p.dt) as usize {
-        w.step(&t);
-        if first_done_at.is_none() && w.agents[0].current == 1 {
-            first_done_at = Some(w.time);
-            let a = &w.agents[0];
-            let g = moving.at(w.time, &[]);
+        w.step(&t).unwrap();
+        if first_done_at.is_none() && w.agents()[0].current == 1 {
+            first_done_at = Some(w.time());
+            let a = &w.agents()[0];
+            let g = moving.at(w.time(), &[]);
             assert!(
                 (a.state.pos - g.pos).length() < 0.6,
                 "caught the moving target"
@@ -347,8 +347,8 @@ fn moving_and_successive_targets() {
         }
     }
     assert!(first_done_at.is_some(), "moving target never reached");
-    assert!(w.agents[0].done(), "second target never reached");
-    assert_eq!(w.agents[0].metrics.violations, 0);
+    assert!(w.agents()[0].done(), "second target never reached");
+    assert_eq!(w.agents()[0].metrics.violations, 0);
 }
 
 #[test]
@@ -365,7 +365,7 @@ fn world_is_deterministic() {
     let run_it = || {
         let mut w = sc.world().unwrap();
         for _ in 0..1000 {
-            w.step(&t);
+            w.step(&t).unwrap();
         }
         let mut buf = Vec::new();
         w.write_state(&mut buf);
@@ -394,9 +394,9 @@ fn every_preset_loads_runs_and_finishes_without_violations() {
         t.check_params(&sc.vehicle).unwrap();
         let mut w = sc.world().unwrap();
         for _ in 0..sc.steps() {
-            w.step(&t);
+            w.step(&t).unwrap();
         }
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             assert_eq!(a.metrics.violations, 0, "{path:?} agent {i}");
             assert!(a.done(), "{path:?} agent {i} did not finish its goals");
         }

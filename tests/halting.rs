@@ -65,9 +65,9 @@ fn run_to_rest(
     };
     let mut at_eos = None;
     for _ in 0..60 * 120 {
-        let before = w.agents[0].state;
-        w.step(table);
-        let a = &w.agents[0];
+        let before = w.agents()[0].state;
+        w.step(table).unwrap();
+        let a = &w.agents()[0];
         if at_eos.is_none() && a.done() {
             assert_eq!(a.internals.mode, Mode::EndOfSteering);
             at_eos = Some(err(&before));
@@ -77,7 +77,7 @@ fn run_to_rest(
         }
     }
     let (d0, e0) = at_eos.expect("End_of_Steering declared within two minutes");
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     assert_eq!(a.state.v, 0.0, "at rest");
     let (d1, e1) = err(&a.state);
     [d0, e0, d1, e1]
@@ -243,7 +243,7 @@ fn a_goal_that_moves_by_itself_cannot_be_halting() {
             "motion": { "kind": "linear", "velocity": [0.3, 0] } }] } ] }"#;
     let e = Scenario::from_json(json).unwrap_err().to_string();
     assert!(
-        e.contains("agent 1: a moving goal cannot be halting"),
+        e.contains("agents[1].goals[0]: a moving goal cannot be halting"),
         "{e}"
     );
     assert!(Scenario::from_json(&json.replace("true", "false")).is_ok());
@@ -275,14 +275,21 @@ fn first_row_matches_first_step(json: &str, kind: ControllerKind) -> Vec<Mode> {
     let mut sc = Scenario::from_json(json).unwrap();
     sc.controller = kind;
     let mut w = sc.world().unwrap();
-    w.plan(&table);
-    let planned: Vec<_> = w.agents.iter().map(|a| (a.internals, a.relaxed)).collect();
-    let states: Vec<_> = w.agents.iter().map(|a| a.state).collect();
+    w.plan(&table).unwrap();
+    let planned: Vec<_> = w
+        .agents()
+        .iter()
+        .map(|a| (a.internals, a.relaxed))
+        .collect();
+    let states: Vec<_> = w.agents().iter().map(|a| a.state).collect();
     // Planning moves nothing.
-    w.plan(&table);
-    assert_eq!(states, w.agents.iter().map(|a| a.state).collect::<Vec<_>>());
-    w.step(&table);
-    for (a, (i, r)) in w.agents.iter().zip(&planned) {
+    w.plan(&table).unwrap();
+    assert_eq!(
+        states,
+        w.agents().iter().map(|a| a.state).collect::<Vec<_>>()
+    );
+    w.step(&table).unwrap();
+    for (a, (i, r)) in w.agents().iter().zip(&planned) {
         assert_eq!(a.internals, *i);
         assert_eq!(a.relaxed, *r);
     }
@@ -323,7 +330,7 @@ fn first_trajectory_row_reports_the_mode_chosen_at_t0() {
     // Before any plan, the table-free part is already right inside the
     // tolerance and never claims End_of_Steering far from the goal.
     let w = Scenario::from_json(json).unwrap().world().unwrap();
-    let provisional: Vec<Mode> = w.agents.iter().map(|a| a.internals.mode).collect();
+    let provisional: Vec<Mode> = w.agents().iter().map(|a| a.internals.mode).collect();
     assert_eq!(provisional[0], Mode::Funnelling);
     assert_eq!(provisional[2..], modes[2..]);
 }

@@ -346,8 +346,8 @@ fn drive(
     w.add_agent(s, specs).unwrap();
     let mut closest = f32::INFINITY;
     for _ in 0..(seconds / p.dt) as u32 {
-        w.step(&t);
-        let a = &w.agents[0];
+        w.step(&t).unwrap();
+        let a = &w.agents()[0];
         assert!(a.state.within_limits(&p), "{:?}", a.state);
         if a.current == 0 {
             closest = closest.min((a.state.pos - goals[0].pos).length());
@@ -377,7 +377,7 @@ fn issue_13_orbit_example_enters_the_disk_with_both_aims() {
     for rc in [RelaxedConfig::default(), paper()] {
         let (closest, w) = drive(ControllerKind::Relaxed, rc, s, &[g], 150.0);
         assert!(closest < g.d_tol, "{:?}: closest {closest}", rc.aim);
-        let done = w.agents[0].finished_at.expect("finishes");
+        let done = w.agents()[0].finished_at.expect("finishes");
         assert!(done < 30.0, "{:?}: finished at {done} s", rc.aim);
     }
 }
@@ -404,10 +404,10 @@ fn three_goal_chain_that_stalled_finishes() {
     for rc in [RelaxedConfig::default(), paper()] {
         let (_, w) = drive(ControllerKind::Relaxed, rc, s, &goals, 450.0);
         assert!(
-            w.agents[0].done(),
+            w.agents()[0].done(),
             "{:?}: stuck on goal {}",
             rc.aim,
-            w.agents[0].current
+            w.agents()[0].current
         );
     }
 }
@@ -431,14 +431,14 @@ fn p001_presets_run_with_both_controllers() {
         };
         assert_eq!(sc.controller, want, "{name}");
         let mut w = sc.world().unwrap();
-        assert_eq!(w.controller, want);
+        assert_eq!(w.controller(), want);
         let mut saw_relaxed = false;
         for _ in 0..sc.steps() {
-            w.step(&t);
+            w.step(&t).unwrap();
             saw_relaxed |= w.relaxed_internals(0).unwrap().branch != Fig7Branch::None;
         }
         assert_eq!(saw_relaxed, want == ControllerKind::Relaxed, "{name}");
-        for (i, a) in w.agents.iter().enumerate() {
+        for (i, a) in w.agents().iter().enumerate() {
             assert_eq!(a.metrics.violations, 0, "{name} agent {i}");
             assert!(a.done(), "{name} agent {i} did not finish its goals");
         }

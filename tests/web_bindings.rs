@@ -400,7 +400,7 @@ fn mistyped_values_name_their_field() {
     js_sys::Reflect::set(&p, &"vMax".into(), &"fast".into()).unwrap();
     let m = message(lab.set_params(p).unwrap_err());
     assert!(
-        m.starts_with("vehicle parameters, field `vMax`") && m.contains("invalid type"),
+        m.starts_with("vehicle parameters, field `vMax`: expected a number, found the string"),
         "{m}"
     );
     let a = agent(0.0, 0.0, 0.0, &[goal(4.0, 0.0, 0.0)]);
@@ -416,7 +416,31 @@ fn mistyped_values_name_their_field() {
     js_sys::Reflect::set(&a, &"omega".into(), &"spin".into()).unwrap();
     let m = message(lab.add_agent(a).unwrap_err());
     assert!(m.starts_with("agent, field `omega`"), "{m}");
+    // A missing field is named as itself, a nested one by its path.
+    let g = goal(4.0, 0.0, 0.0);
+    js_sys::Reflect::delete_property(&js_sys::Object::from(g.clone()), &"x".into()).unwrap();
+    let m = message(
+        lab.add_agent(agent(0.0, 0.0, 0.0, &[goal(1.0, 1.0, 0.0), g]))
+            .unwrap_err(),
+    );
+    assert!(m.starts_with("agent, field `goals[1].x`: missing"), "{m}");
+    let g = goal(4.0, 0.0, 0.0);
+    js_sys::Reflect::set(&g, &"y".into(), &js_sys::Array::of1(&1.0.into())).unwrap();
+    let m = message(lab.add_agent(agent(0.0, 0.0, 0.0, &[g])).unwrap_err());
+    assert!(
+        m.starts_with("agent, field `goals[0].y`: expected a number, found a list"),
+        "{m}"
+    );
     assert_eq!(lab.count(), 0);
+    // A scenario file (the page's `loadScenario`) names the path too.
+    let m = message(
+        lab.load_scenario(r#"{"name": "s", "agents": [{"x": 0, "y": [1]}]}"#)
+            .unwrap_err(),
+    );
+    assert!(
+        m.contains("agents[0].y: expected a number, found a list"),
+        "{m}"
+    );
 }
 
 /// serde-wasm-bindgen never sees a key a struct does not declare; the

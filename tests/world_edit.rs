@@ -52,14 +52,14 @@ fn a_pose_reset_restarts_the_queue_and_the_memory() {
     let t = table();
     let mut w = two_goal_world();
     let mut steps = 0;
-    while !(w.agents[0].current == 1 && w.agents[0].memory.position_met) {
-        w.step(&t);
+    while !(w.agents()[0].current == 1 && w.agents()[0].memory.position_met) {
+        w.step(&t).unwrap();
         steps += 1;
         assert!(steps < 2_000, "the first goal is passed within 20 s");
     }
-    assert!(w.agents[0].state.v > 0.0);
+    assert!(w.agents()[0].state.v > 0.0);
     w.set_pose(0, Vec2::new(-1.0, 2.0), 7.0).unwrap();
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     assert_eq!(a.current, 0);
     assert_eq!(a.memory, FunnelMemory::default());
     assert_eq!(a.finished_at, None);
@@ -80,13 +80,13 @@ fn a_finished_agent_starts_again_on_a_new_goal() {
     )
     .unwrap();
     for _ in 0..1_000 {
-        w.step(&t);
+        w.step(&t).unwrap();
     }
-    assert!(w.agents[0].done());
-    assert!(w.agents[0].finished_at.is_some());
+    assert!(w.agents()[0].done());
+    assert!(w.agents()[0].finished_at.is_some());
     w.set_goals(0, vec![spec(-4.0, 1.0, SwitchRule::EndOfSteering)])
         .unwrap();
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     assert!(!a.done());
     assert_eq!(a.finished_at, None);
     assert_eq!(a.goal_now.pos, Vec2::new(-4.0, 0.0));
@@ -131,10 +131,10 @@ fn the_random_crowd_is_seeded_and_stays_in_its_square() {
     assert_eq!(a, b);
     let mut c = world();
     c.spawn_random(200, 10, 12.5, 1.3).unwrap();
-    assert_ne!(a.agents[0].state, c.agents[0].state);
-    assert_eq!(a.agents.len(), 200);
+    assert_ne!(a.agents()[0].state, c.agents()[0].state);
+    assert_eq!(a.agents().len(), 200);
     let inside = |p: Vec2| p.x.abs() <= 12.5 && p.y.abs() <= 12.5;
-    for ag in &a.agents {
+    for ag in a.agents() {
         assert!(inside(ag.state.pos), "{:?}", ag.state.pos);
         assert_eq!((ag.state.v, ag.state.omega), (0.0, 0.0));
         assert_eq!(ag.goals.len(), RANDOM_GOALS);
@@ -147,7 +147,7 @@ fn the_random_crowd_is_seeded_and_stays_in_its_square() {
     // Spread over the square, not bunched: each quadrant holds a quarter
     // of the 3,400 poses and goals (binomial σ ≈ 25).
     let points: Vec<Vec2> = a
-        .agents
+        .agents()
         .iter()
         .flat_map(|ag| core::iter::once(ag.state.pos).chain(ag.goals.iter().map(|g| g.goal.pos)))
         .collect();
@@ -165,13 +165,16 @@ fn the_random_crowd_is_seeded_and_stays_in_its_square() {
     // The desired speed is clamped to [0.1, v_max].
     let mut d = world();
     d.spawn_random(1, 9, 12.5, 50.0).unwrap();
-    assert_eq!(d.agents[0].goals[0].goal.speed, d.params.v_max);
+    assert_eq!(d.agents()[0].goals[0].goal.speed, d.params().v_max);
     // A random crowd steps like any other.
     let t = table();
     for _ in 0..50 {
-        a.step(&t);
+        a.step(&t).unwrap();
     }
-    assert!(a.agents.iter().all(|ag| ag.state.within_limits(&a.params)));
+    assert!(a
+        .agents()
+        .iter()
+        .all(|ag| ag.state.within_limits(a.params())));
 }
 
 #[test]
@@ -195,27 +198,27 @@ fn the_random_crowd_refuses_bad_squares_and_too_many_agents() {
     w.spawn_random(1, 1, 10.0, 1.0).unwrap();
     let e = w.spawn_random(MAX_AGENTS, 1, 10.0, 1.0).unwrap_err();
     assert!(e.to_string().contains("would exceed 100001"), "{e}");
-    assert_eq!(w.agents.len(), 1);
+    assert_eq!(w.agents().len(), 1);
     assert!(w.check_room(MAX_AGENTS - 1).is_ok());
 }
 
-/// A queue changed directly (public fields), then `queues_changed`: the
-/// step plans towards the new current goal, here one facing another agent
-/// (the world keeps a copy of each current goal and a count of
-/// facing queues; debug builds, as the tests run, check both at each plan).
+/// A queue replaced through the world (the only way: the agents are not
+/// public) with a goal facing another agent: the step plans towards it (the
+/// world keeps a copy of each current goal and a count of facing queues;
+/// debug builds, as the tests run, check both at each plan).
 #[test]
-fn queues_changed_directly_are_picked_up() {
+fn queues_set_through_the_world_are_picked_up() {
     let t = table();
     let mut w = world();
     w.spawn_random(2, 3, 10.0, 1.3).unwrap();
-    let c = w.agents[1].current;
-    w.agents[1].goals[c].motion = GoalMotion::FaceAgent {
+    let mut g = w.agents()[1].goals[0];
+    g.motion = GoalMotion::FaceAgent {
         agent: 0,
         distance: 2.0,
     };
-    w.queues_changed();
-    let s0 = w.agents[0].state;
-    w.step(&t);
-    assert_eq!(w.agents[1].current, c);
-    assert_eq!(w.agents[1].goal_now.pos, s0.pos + s0.forward() * 2.0);
+    w.set_goals(1, vec![g]).unwrap();
+    let s0 = w.agents()[0].state;
+    w.step(&t).unwrap();
+    assert_eq!(w.agents()[1].current, 0);
+    assert_eq!(w.agents()[1].goal_now.pos, s0.pos + s0.forward() * 2.0);
 }

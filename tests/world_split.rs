@@ -42,9 +42,9 @@ fn whole_equals_slices(
         })
         .collect();
     for step in 0..steps {
-        whole.step(t);
+        whole.step(t).unwrap();
         for s in &mut slices {
-            s.step(t);
+            s.step(t).unwrap();
         }
         let joined: Vec<u32> = slices.iter().flat_map(states).collect();
         assert_eq!(joined, states(&whole), "step {step}, ranges {ranges:?}");
@@ -100,8 +100,8 @@ fn a_slice_of_the_random_crowd_is_spawned_alone_bit_for_bit() {
     retained.retain_range(200..350).unwrap();
     assert_eq!(kept, retained);
     for _ in 0..120 {
-        kept.step(&t);
-        retained.step(&t);
+        kept.step(&t).unwrap();
+        retained.step(&t).unwrap();
     }
     assert_eq!(states(&kept), states(&retained));
 }
@@ -111,7 +111,7 @@ fn facing_agents_stay_in_one_slice_and_step_as_in_one_world() {
     let t = table();
     // Fig. 6: pairs (0,1), (2,3), (4,5) … face each other.
     let w = preset(include_str!("../scenarios/p000_fig6_face_to_face.json"));
-    let n = w.agents.len();
+    let n = w.agents().len();
     let links: Vec<(usize, usize)> = w.face_links().collect();
     assert!(!links.is_empty());
     for parts in [2, 3, n] {
@@ -132,7 +132,7 @@ fn a_long_link_moves_the_cut() {
     // Agent 1 faces agent 7 of ten: no cut between 2 and 7.
     let mut w = crowd(10, 3, 20.0);
     let fig6 = preset(include_str!("../scenarios/p000_fig6_face_to_face.json"));
-    let mut g = fig6.agents[0].goals.clone();
+    let mut g = fig6.agents()[0].goals.clone();
     if let steering::world::goals::GoalMotion::FaceAgent { agent, .. } = &mut g[0].motion {
         *agent = 7;
     }
@@ -186,8 +186,8 @@ fn stepping_and_writing_in_one_pass_equals_a_step_then_the_state() {
         let (mut a, mut b) = (w.clone(), w);
         let mut buf = Vec::new();
         for _ in 0..150 {
-            a.step_writing(&t, &mut buf);
-            b.step(&t);
+            a.step_writing(&t, &mut buf).unwrap();
+            b.step(&t).unwrap();
             assert_eq!(
                 buf.iter().map(|f| f.to_bits()).collect::<Vec<_>>(),
                 states(&b)
@@ -208,11 +208,11 @@ fn a_world_without_metrics_steps_to_the_same_bits() {
         off.set_metrics(false);
         assert!(on.metrics_on() && !off.metrics_on());
         for step in 0..200 {
-            on.step(&t);
-            off.step(&t);
+            on.step(&t).unwrap();
+            off.step(&t).unwrap();
             assert_eq!(states(&on), states(&off), "step {step}");
         }
-        assert!(on.agents.iter().all(|a| a.metrics.steps == 200));
-        assert!(off.agents.iter().all(|a| a.metrics == Default::default()));
+        assert!(on.agents().iter().all(|a| a.metrics.steps == 200));
+        assert!(off.agents().iter().all(|a| a.metrics == Default::default()));
     }
 }

@@ -11,6 +11,7 @@
 //! | [`metrics`] | docs/DESIGN.md §17 | path length, integrated \|curvature\|, per-step limit checks, percentiles |
 //! | [`dubins`] | 000 §2 | Dubins shortest paths, the lower bound for an oriented reach |
 //! | [`reeds_shepp`] | — | Reeds–Shepp shortest paths (forwards and backwards), every word for a caller's own cost, the lower bound with a reverse gear |
+//! | [`field_error`] | — | JSON input read with the path of the field at fault (`agents[0].goals[1].x: expected a number, found a list`), for files and the page's objects alike |
 //! | [`range`] | — | one error for a number out of range or not finite, one check: every paper's validation speaks it |
 //! | [`ranges`] | — | one table of validation ranges (key, min, max, unit, integer, cross-field bound) that the core's checks and the page use |
 //! | [`minmax`] | — | `f32` max / min as comparisons: no `fmaxf` / `fminf` calls per agent in wasm, the same numbers |
@@ -19,6 +20,7 @@
 
 pub mod angle;
 pub mod dubins;
+pub mod field_error;
 pub mod grid;
 pub mod metrics;
 pub mod minmax;

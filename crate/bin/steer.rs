@@ -116,9 +116,9 @@ fn run_table(args: &RunArgs, sc: &Scenario) -> Result<EtaTable, String> {
 fn run(args: &RunArgs) -> Result<(), String> {
     let scenario = args.scenario.display();
     let format = check_out_path(&args.out, &args.scenario)?;
-    let text = std::fs::read_to_string(&args.scenario)
-        .map_err(|e| format!("cannot read {scenario}: {e}"))?;
-    let mut sc = Scenario::from_json(&text).map_err(|e| format!("{scenario}: {e}"))?;
+    let bytes =
+        std::fs::read(&args.scenario).map_err(|e| format!("cannot read {scenario}: {e}"))?;
+    let mut sc = Scenario::from_bytes(&bytes).map_err(|e| format!("{scenario}: {e}"))?;
     if let Some(c) = args.controller {
         sc.controller = c;
     }
@@ -366,9 +366,9 @@ fn reach(args: &ReachArgs) -> Result<(), String> {
 fn simulate(sc: &Scenario, table: &EtaTable) -> Result<Vec<(PathMetrics, bool)>, String> {
     let mut w = sc.world().map_err(|e| e.to_string())?;
     for _ in 0..sc.steps() {
-        w.step(table);
+        w.step(table).map_err(|e| e.to_string())?;
     }
-    Ok(w.agents.iter().map(|a| (a.metrics, a.done())).collect())
+    Ok(w.agents().iter().map(|a| (a.metrics, a.done())).collect())
 }
 
 fn print_row(name: &str, c: &Comparison) {

@@ -15,7 +15,7 @@ impl Lab {
     /// The avoidance method in force: `off`, `separation` or `orca`.
     #[wasm_bindgen(js_name = avoidance)]
     pub fn avoidance_method(&self) -> String {
-        self.world.avoidance.method.name().into()
+        self.world.avoidance().method.name().into()
     }
 
     /// Switches the avoidance method (`off`, `separation`, `orca`), keeping
@@ -29,9 +29,9 @@ impl Lab {
                 format!("`{method}` is not off, separation or orca"),
             )
         })?;
-        let mut cfg = self.world.avoidance;
+        let mut cfg = *self.world.avoidance();
         cfg.method = m;
-        let obstacles = self.world.obstacles.clone();
+        let obstacles = self.world.obstacles().to_vec();
         self.world
             .set_avoidance(cfg, obstacles)
             .map_err(|e| js_err("avoidance", e))
@@ -41,7 +41,7 @@ impl Lab {
     /// ([`crate::avoidance::config::AvoidanceConfig::replan_every`]).
     #[wasm_bindgen(js_name = avoidanceReplanEvery)]
     pub fn avoidance_replan_every(&self) -> u32 {
-        self.world.avoidance.replan_every
+        self.world.avoidance().replan_every
     }
 
     /// Sets the steps between an agent's avoidance plans (the core's range,
@@ -49,9 +49,9 @@ impl Lab {
     /// nothing.
     #[wasm_bindgen(js_name = setAvoidanceReplanEvery)]
     pub fn set_avoidance_replan_every(&mut self, every: u32) -> Result<(), JsError> {
-        let mut cfg = self.world.avoidance;
+        let mut cfg = *self.world.avoidance();
         cfg.replan_every = every;
-        let obstacles = self.world.obstacles.clone();
+        let obstacles = self.world.obstacles().to_vec();
         self.world
             .set_avoidance(cfg, obstacles)
             .map_err(|e| js_err("avoidance", e))
@@ -60,13 +60,14 @@ impl Lab {
     /// The agents' body radius, m (the lab draws the bodies with it).
     #[wasm_bindgen(js_name = avoidanceRadius)]
     pub fn avoidance_radius(&self) -> f32 {
-        self.world.avoidance.radius
+        self.world.avoidance().radius
     }
 
     /// Pairs of agents whose bodies (radius `avoidance.radius`) overlap now.
     pub fn overlaps(&self) -> u32 {
-        let r2 = 4.0 * self.world.avoidance.radius * self.world.avoidance.radius;
-        let a = &self.world.agents;
+        let r = self.world.avoidance().radius;
+        let r2 = 4.0 * r * r;
+        let a = self.world.agents();
         let mut n = 0u32;
         // Lab worlds are small enough for the pairwise count; the metric
         // of the studies goes through the grid (avoidance::proximity).
@@ -83,8 +84,8 @@ impl Lab {
     /// The obstacles, 5 floats each: kind (0 disc, 1 segment), then
     /// `x, y, radius, 0` for a disc or `x1, y1, x2, y2` for a segment.
     pub fn obstacles(&self) -> Vec<f32> {
-        let mut out = Vec::with_capacity(5 * self.world.obstacles.len());
-        for o in &self.world.obstacles {
+        let mut out = Vec::with_capacity(5 * self.world.obstacles().len());
+        for o in self.world.obstacles() {
             match *o {
                 Obstacle::Disc { x, y, radius } => out.extend([0.0, x, y, radius, 0.0]),
                 Obstacle::Segment { x1, y1, x2, y2 } => out.extend([1.0, x1, y1, x2, y2]),
@@ -128,7 +129,7 @@ impl Lab {
                 }
             });
         }
-        let cfg = self.world.avoidance;
+        let cfg = *self.world.avoidance();
         self.world
             .set_avoidance(cfg, list)
             .map_err(|e| js_err("obstacles", e))

@@ -23,8 +23,10 @@ pub(crate) fn js_err(context: &str, e: impl core::fmt::Display) -> JsError {
 }
 
 /// Decodes a configuration object, refusing keys the type does not know.
-/// A refused object names the top-level field at fault (see
-/// [`field_at_fault`]): `"{what}, field `{key}`: {serde's message}"`.
+/// A refused object names the field at fault by its path
+/// ([`crate::base::field_error`]): `"{what}, field `{path}`: {what is
+/// wrong}"`, e.g. `agent, field `goals[1].x`: expected a number, found a
+/// list` or `agent, field `theta`: missing`.
 pub(crate) fn from_js<T>(what: &str, v: JsValue) -> Result<T, JsError>
 where
     T: for<'de> Deserialize<'de> + Serialize,
@@ -32,73 +34,23 @@ where
     from_js_in(what, "", v)
 }
 
-/// [`from_js`] with the field named as `{prefix}{key}` (the funnel settings
-/// say `funnel.gain`, as their range checks do).
+/// [`from_js`] with the field named as `{prefix}{path}` (the funnel
+/// settings say `funnel.gain`, as their range checks do).
 pub(crate) fn from_js_in<T>(what: &str, prefix: &str, v: JsValue) -> Result<T, JsError>
 where
     T: for<'de> Deserialize<'de> + Serialize,
 {
-    let t: T = serde_wasm_bindgen::from_value(v.clone()).map_err(|e| {
-        // serde-wasm-bindgen's errors are JavaScript `Error`s, shown as
-        // "Error: …": the message alone reads better after the field.
-        let text = e.to_string();
-        let m = text.strip_prefix("Error: ").unwrap_or(&text);
-        match field_at_fault::<T>(&v, m) {
-            Some(k) => js_err(&format!("{what}, field `{prefix}{k}`"), m),
-            None => js_err(what, m),
-        }
-    })?;
+    let t: T =
+        crate::base::field_error::deserialize(serde_wasm_bindgen::Deserializer::from(v.clone()))
+            .map_err(|e| {
+                if e.path.is_empty() {
+                    js_err(what, e.message)
+                } else {
+                    js_err(&format!("{what}, field `{prefix}{}`", e.path), e.message)
+                }
+            })?;
     check_known_keys(what, &v, &t)?;
     Ok(t)
-}
-
-/// The key of `input` whose value made decoding fail, when one can be told.
-///
-/// serde's messages carry no path ("invalid type: string "2", expected
-/// f32"). serde-wasm-bindgen reads the declared fields in turn, stops at the
-/// first bad value and reports missing fields only after the present ones;
-/// so a key is at fault exactly when, with that key removed, decoding
-/// succeeds (the field has a default) or fails only for that key's absence.
-/// Runs on the error path only.
-///
-/// A missing field is named itself when the type reads it at this depth
-/// (with a value put in its place, decoding no longer says it is
-/// missing); removing a present key would only move the complaint to that
-/// key. A field missing deeper is found by the search above (the key whose
-/// value lacks it).
-fn field_at_fault<T: for<'de> Deserialize<'de>>(input: &JsValue, message: &str) -> Option<String> {
-    if js_sys::Array::is_array(input) {
-        return None;
-    }
-    let obj = input.dyn_ref::<js_sys::Object>()?;
-    if let Some(k) = missing_field(message) {
-        let with = js_sys::Object::assign(&js_sys::Object::new(), obj);
-        let probe = JsValue::from_str("\u{1}probe");
-        js_sys::Reflect::set(&with, &JsValue::from_str(k), &probe).ok()?;
-        let still = serde_wasm_bindgen::from_value::<T>(with.into())
-            .err()
-            .is_some_and(|e| e.to_string().contains(&format!("missing field `{k}`")));
-        if !still {
-            return Some(k.to_owned());
-        }
-    }
-    js_sys::Object::keys(obj).iter().find_map(|key| {
-        let k = key.as_string()?;
-        let without = js_sys::Object::assign(&js_sys::Object::new(), obj);
-        js_sys::Reflect::delete_property(&without, &key).ok()?;
-        match serde_wasm_bindgen::from_value::<T>(without.into()) {
-            Ok(_) => Some(k),
-            Err(e) => e
-                .to_string()
-                .contains(&format!("missing field `{k}`"))
-                .then_some(k),
-        }
-    })
-}
-
-/// The name in serde's "missing field `k`" message, if it is one.
-fn missing_field(message: &str) -> Option<&str> {
-    message.strip_prefix("missing field `")?.split('`').next()
 }
 
 /// A Rust value as a plain JavaScript object (maps as objects, not `Map`s).

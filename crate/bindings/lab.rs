@@ -117,7 +117,7 @@ impl Lab {
         out: &js_sys::Float32Array,
         call: &str,
     ) -> Result<(), JsError> {
-        let n = self.world.agents.len();
+        let n = self.world.agents().len();
         if out.length() as usize == n * STATE_STRIDE {
             return Ok(());
         }
@@ -234,10 +234,14 @@ impl Lab {
 /// through here: without the agents' path metrics, which no binding reads
 /// (they cost a square root, an angle difference and the limit checks per
 /// agent per step; the states are the same bits, `World::set_metrics`),
-/// and bounded by the page's own agent count (`MAX_AGENTS`: its controls
-/// go to 100,000 random agents beside the playground agent).
+/// bounded by the page's own agent count (`MAX_AGENTS`: its controls
+/// go to 100,000 random agents beside the playground agent), and stepping
+/// on the table in force while the one for newly set vehicle limits is
+/// being built (its η then approximate: `setParams` and `loadScenario`
+/// say so, `World::allow_other_table`).
 pub(super) fn lab_world(mut world: World) -> World {
     world.set_metrics(false);
     world.set_max_agents(crate::world::edit::MAX_AGENTS);
+    world.allow_other_table(true);
     world
 }

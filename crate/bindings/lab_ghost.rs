@@ -29,7 +29,7 @@ impl Lab {
             .agent(i as usize)
             .map_err(|e| js_err("agent", e))?;
         let mut out = InternalsOut::from(self.plan_of(i)?);
-        if self.world.controller == ControllerKind::Relaxed && !a.done() && self.table.is_some() {
+        if self.world.controller() == ControllerKind::Relaxed && !a.done() && self.table.is_some() {
             let r = &a.relaxed;
             out.arc = Some(ArcOut {
                 alpha_min: r.arc_min,
@@ -62,7 +62,7 @@ impl Lab {
             // Before the table: the plain seek towards the goal centre.
             self.ghost.clear();
             let g = seek_ghost(
-                &self.world.params,
+                self.world.params(),
                 a.state,
                 a.goal_now.pos,
                 a.goal_now.speed,
@@ -74,7 +74,7 @@ impl Lab {
         };
         let g = update_ghost(
             table,
-            &self.world.params,
+            self.world.params(),
             &a.state,
             &inter,
             &a.goal_now,
@@ -101,17 +101,17 @@ impl Lab {
         v_d: f32,
     ) -> Result<JsValue, JsError> {
         let s = VehicleState::new(Vec2::new(x, y), theta, v, omega);
-        s.validate(&self.world.params)
+        s.validate(self.world.params())
             .map_err(|e| js_err("ghost state", e))?;
         crate::base::range::check_range("ghost.tx", tx, -1e6, 1e6)
             .map_err(|e| js_err("ghost", e))?;
         crate::base::range::check_range("ghost.ty", ty, -1e6, 1e6)
             .map_err(|e| js_err("ghost", e))?;
-        crate::base::range::check_range("ghost.vD", v_d, 0.0, self.world.params.v_max)
+        crate::base::range::check_range("ghost.vD", v_d, 0.0, self.world.params().v_max)
             .map_err(|e| js_err("ghost", e))?;
         self.ghost.clear();
         let g = seek_ghost(
-            &self.world.params,
+            self.world.params(),
             s,
             Vec2::new(tx, ty),
             v_d,
@@ -157,9 +157,9 @@ impl Lab {
                 delta_eta: f32::NAN,
                 mu: f32::NAN,
                 mu_max: f32::NAN,
-                ..provisional_plan(&self.world.params, &a.state, &a.goal_now)
+                ..provisional_plan(self.world.params(), &a.state, &a.goal_now)
             }
-        } else if self.world.controller == ControllerKind::Relaxed || self.world.params.car_like() {
+        } else if self.world.controller() == ControllerKind::Relaxed || self.world.params().car_like() {
             // Relaxed funnelling plans towards the relaxed point, and a
             // car-like vehicle's manoeuvre, once begun, lives in its memory
             // (crate::funnelling::manoeuvre): a fresh plan from here would
@@ -167,9 +167,9 @@ impl Lab {
             a.internals
         } else {
             let (mut mem, mut state) = (a.memory, a.state);
-            self.world.config.plan(&mut Update {
+            self.world.config().plan(&mut Update {
                 table: self.table()?,
-                params: &self.world.params,
+                params: self.world.params(),
                 state: &mut state,
                 goal: &a.goal_now,
                 memory: &mut mem,

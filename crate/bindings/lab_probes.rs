@@ -30,7 +30,7 @@ impl Lab {
             let start = VehicleState::new(Vec2::ZERO, 0.0, v_c, 0.0);
             let target = Vec2::new(d * alpha.cos(), d * alpha.sin());
             if matches!(
-                simulate_reach(&self.world.params, start, target, v_d, &lim),
+                simulate_reach(self.world.params(), start, target, v_d, &lim),
                 ReachOutcome::Reached { .. }
             ) {
                 reached += 1;
@@ -74,7 +74,7 @@ impl Lab {
             ds.first().copied().unwrap_or(0.5),
             ds.last().copied().unwrap_or(10.0),
         );
-        let v_max = self.world.params.v_max;
+        let v_max = self.world.params().v_max;
         let mut rng = Rng::new(u64::from(seed));
         (0..n).map(move |_| {
             let d = rng.range(d0.max(0.3), d1);

@@ -18,7 +18,7 @@ impl Lab {
         let sc = Scenario::from_json(json).map_err(|e| js_err("scenario", e))?;
         let mut world = lab_world(sc.world().map_err(|e| js_err("scenario", e))?);
         if let Some(t) = &self.table {
-            world.plan(t);
+            world.plan(t).map_err(|e| js_err("η table", e))?;
         }
         let (mut lo, mut hi) = (Vec2::splat(f32::INFINITY), Vec2::splat(f32::NEG_INFINITY));
         for a in &sc.agents {
@@ -32,7 +32,7 @@ impl Lab {
         if !lo.is_finite() || !hi.is_finite() {
             (lo, hi) = (Vec2::splat(-5.0), Vec2::splat(5.0));
         }
-        let warning = match self.table.as_ref().map(|t| t.check_params(&world.params)) {
+        let warning = match self.table.as_ref().map(|t| t.check_params(world.params())) {
             None | Some(Ok(())) => String::new(),
             Some(Err(e)) => e.to_string(),
         };

@@ -16,7 +16,7 @@ impl Lab {
     /// The vehicle parameters in force.
     #[wasm_bindgen(unchecked_return_type = "VehicleParams")]
     pub fn params(&self) -> Result<JsValue, JsError> {
-        to_js(&self.world.params)
+        to_js(self.world.params())
     }
 
     /// Replaces the vehicle parameters (validated). Returns a warning when
@@ -28,8 +28,9 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "Partial<VehicleParams>")] params: JsValue,
     ) -> Result<String, JsError> {
         let p: VehicleParams = from_js("vehicle parameters", params)?;
-        p.validate().map_err(|e| js_err("vehicle parameters", e))?;
-        self.world.params = p;
+        self.world
+            .set_params(p)
+            .map_err(|e| js_err("vehicle parameters", e))?;
         Ok(match self.table.as_ref().map(|t| t.check_params(&p)) {
             None | Some(Ok(())) => String::new(),
             Some(Err(e)) => format!("{e} (η predictions are approximate until then)"),
@@ -40,7 +41,7 @@ impl Lab {
     /// threshold), so the page can show what is in force.
     #[wasm_bindgen(unchecked_return_type = "FunnelConfig")]
     pub fn funnel(&self) -> Result<JsValue, JsError> {
-        to_js(&self.world.config)
+        to_js(self.world.config())
     }
 
     /// Replaces the funnelling settings (validated; a refused config
@@ -53,9 +54,9 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "FunnelConfig")] config: JsValue,
     ) -> Result<(), JsError> {
         let c: FunnelConfig = from_js_in("funnel settings", "funnel.", config)?;
-        c.validate().map_err(|e| js_err("funnel settings", e))?;
-        self.world.config = c;
-        Ok(())
+        self.world
+            .set_config(c)
+            .map_err(|e| js_err("funnel settings", e))
     }
 
     /// Replaces the relaxed controller's settings (paper 001; in force
@@ -67,7 +68,7 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "RelaxedConfig")] config: JsValue,
     ) -> Result<(), JsError> {
         let c: RelaxedConfig = from_js_in("relaxed settings", "relaxed.", config)?;
-        let kind = self.world.controller;
+        let kind = self.world.controller();
         self.world
             .set_controller(kind, c)
             .map_err(|e| js_err("relaxed settings", e))
@@ -83,12 +84,13 @@ impl Lab {
         #[wasm_bindgen(unchecked_param_type = "Reading")] reading: JsValue,
     ) -> Result<(), JsError> {
         let r: Reading = from_js("reading", reading)?;
-        let kind = self.world.controller;
+        let kind = self.world.controller();
         self.world
             .set_controller(kind, r.relaxed())
             .map_err(|e| js_err("reading", e))?;
-        self.world.config = r.funnel();
-        Ok(())
+        self.world
+            .set_config(r.funnel())
+            .map_err(|e| js_err("reading", e))
     }
 
     /// What the page shows for the controller in force: `paper 001
@@ -97,9 +99,9 @@ impl Lab {
     #[must_use]
     pub fn controller_label(&self) -> String {
         Reading::label(
-            self.world.controller,
-            &self.world.config,
-            &self.world.relaxed,
+            self.world.controller(),
+            self.world.config(),
+            self.world.relaxed(),
         )
     }
 }

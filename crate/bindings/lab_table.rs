@@ -56,7 +56,7 @@ impl Lab {
         self.table = Some(Rc::new(t));
         if first {
             if let Some(t) = &self.table {
-                self.world.plan(t);
+                self.world.plan(t).map_err(|e| js_err("η table", e))?;
             }
         }
         Ok(key)

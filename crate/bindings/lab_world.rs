@@ -31,7 +31,8 @@ impl Lab {
     /// Removes every agent and restarts the clock.
     pub fn clear(&mut self) -> Result<(), JsError> {
         self.world = lab_world(
-            World::new(self.world.params, self.world.config).map_err(|e| js_err("world", e))?,
+            World::new(*self.world.params(), *self.world.config())
+                .map_err(|e| js_err("world", e))?,
         );
         Ok(())
     }
@@ -39,13 +40,13 @@ impl Lab {
     /// Number of agents.
     #[must_use]
     pub fn count(&self) -> u32 {
-        self.world.agents.len() as u32
+        self.world.agents().len() as u32
     }
 
     /// Simulated time, s.
     #[must_use]
     pub fn time(&self) -> f32 {
-        self.world.time
+        self.world.time()
     }
 
     /// Adds an agent with its goal queue; returns its index. Amortised
@@ -111,15 +112,17 @@ impl Lab {
     /// first step is the one chosen then (without a table: when it
     /// arrives, `set_table`).
     fn plan_new(&mut self, new: core::ops::Range<usize>, relaxed: bool) -> Result<(), JsError> {
-        let before = self.world.controller;
+        let before = self.world.controller();
         if relaxed {
             self.use_controller(true)?;
         }
         if let Some(t) = &self.table {
-            if self.world.controller == before {
-                self.world.plan_agents(t, new);
+            if self.world.controller() == before {
+                self.world
+                    .plan_agents(t, new)
+                    .map_err(|e| js_err("η table", e))?;
             } else {
-                self.world.plan(t);
+                self.world.plan(t).map_err(|e| js_err("η table", e))?;
             }
         }
         Ok(())
@@ -159,7 +162,7 @@ impl Lab {
         } else {
             ControllerKind::Standard
         };
-        let cfg = self.world.relaxed;
+        let cfg = *self.world.relaxed();
         self.world
             .set_controller(kind, cfg)
             .map_err(|e| js_err("relaxed settings", e))
@@ -232,7 +235,7 @@ impl Lab {
             };
         };
         for _ in 0..n.min(MAX_STEPS_PER_CALL) {
-            self.world.step(t);
+            self.world.step(t).map_err(|e| js_err("η table", e))?;
         }
         Ok(())
     }
@@ -275,7 +278,9 @@ impl Lab {
         let Some(t) = &self.table else {
             return Err(JsError::new(NO_TABLE_CLOCK));
         };
-        self.world.step_writing(t, &mut self.buf);
+        self.world
+            .step_writing(t, &mut self.buf)
+            .map_err(|e| js_err("η table", e))?;
         out.copy_from(&self.buf);
         Ok(())
     }

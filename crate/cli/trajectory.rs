@@ -322,7 +322,7 @@ fn io(e: impl std::fmt::Display) -> String {
 /// Memory: O(agents).
 ///
 /// # Errors
-/// An invalid scenario or a failed write.
+/// An invalid scenario, a table built for other limits, or a failed write.
 pub fn stream_run(
     sc: &Scenario,
     table: &EtaTable,
@@ -336,18 +336,18 @@ pub fn stream_run(
     }
     let mut world = sc.world().map_err(|e| e.to_string())?;
     // The first row reports the mode the controller chooses at t = 0.
-    world.plan(table);
-    let n = world.agents.len();
+    world.plan(table).map_err(|e| e.to_string())?;
+    let n = world.agents().len();
     let header = Header {
         name: &sc.name,
         source: &sc.source,
-        dt: world.params.dt,
+        dt: world.params().dt,
         steps: sc.steps(),
         every,
         agents: n,
     };
     let mut run = Run {
-        starts: world.agents.iter().map(|a| a.state).collect(),
+        starts: world.agents().iter().map(|a| a.state).collect(),
         world,
         table,
         steps: sc.steps(),
@@ -422,7 +422,11 @@ impl Run<'_> {
             let k = match self.at {
                 None => 0,
                 Some(k) if k < self.steps => {
-                    self.world.step(self.table);
+                    // Checked by `plan` before the first row; the limits
+                    // do not change during a run.
+                    self.world
+                        .step(self.table)
+                        .expect("the table was checked before the run");
                     (self.progress)(k + 1);
                     k + 1
                 }
@@ -431,8 +435,8 @@ impl Run<'_> {
             self.at = Some(k);
             if k % self.every == 0 {
                 self.frames += 1;
-                self.buf.fill(&self.world.agents);
-                return Some(self.buf.frame(self.world.time));
+                self.buf.fill(self.world.agents());
+                return Some(self.buf.frame(self.world.time()));
             }
         }
     }
@@ -449,9 +453,9 @@ impl Run<'_> {
 
 /// Each agent's [`AgentMetrics`] in `world`, from its start pose.
 fn agent_metrics(world: &World, starts: &[VehicleState]) -> Vec<AgentMetrics> {
-    let p = world.params;
+    let p = *world.params();
     world
-        .agents
+        .agents()
         .iter()
         .zip(starts)
         .map(|(a, s0)| {

@@ -226,7 +226,8 @@ impl CrowdConfig {
     /// [`CrowdError::Json`] for malformed JSON or unknown fields, else see
     /// [`CrowdConfig::validate`].
     pub fn from_json(text: &str) -> Result<Self, CrowdError> {
-        let c: Self = serde_json::from_str(text).map_err(|e| CrowdError::Json(e.to_string()))?;
+        let c: Self = crate::base::field_error::from_str(text)
+            .map_err(|e| CrowdError::Json(e.to_string()))?;
         c.validate()?;
         Ok(c)
     }

@@ -29,7 +29,8 @@ pub enum CrowdError {
     /// A numeric parameter (named as in the JSON config) is NaN, infinite
     /// or outside its range.
     Range(RangeError),
-    /// The JSON text could not be parsed into a `CrowdConfig`.
+    /// The JSON text could not be parsed into a `CrowdConfig`: the path of
+    /// the field at fault and why (`crate::base::field_error`).
     Json(String),
 }
 

@@ -11,8 +11,8 @@
 //! Why a module: a bad file must be refused with the field named. Ranges
 //! and ratios are [`check_vehicle`]'s (the scenarios' validation plus the
 //! generator's ratios); JSON has no NaN or Infinity, so a file that writes
-//! one is a syntax error, which serde reports by line and column only:
-//! [`parse`] names the key whose value failed to parse.
+//! one is a syntax error, which [`parse`] reports at the path of the key
+//! whose value failed to parse ([`crate::base::field_error`]).
 //!
 //! The reference vehicles ([`REFERENCE`]) are the files in
 //! `scenarios/vehicles/`, compiled in so the lab and the tests read the
@@ -20,6 +20,7 @@
 
 use serde::Deserialize;
 
+use crate::base::field_error::{self, FieldError};
 use crate::base::vehicle::VehicleParams;
 use crate::funnelling::table::spec::check_vehicle;
 
@@ -60,60 +61,26 @@ pub const REFERENCE: [(&str, &str); 4] = [
     ),
 ];
 
-/// The key whose value starts before byte `at` of `text` (the last
-/// `"key":` before it), for naming the field of a syntax error.
-fn key_before(text: &str, at: usize) -> Option<&str> {
-    let head = &text[..at.min(text.len())];
-    let colon = head.rfind(':')?;
-    let before = head[..colon].trim_end().strip_suffix('"')?;
-    let open = before.rfind('"')?;
-    Some(&before[open + 1..])
-}
-
-/// Byte offset of 1-based `line`, `column` in `text`.
-fn offset(text: &str, line: usize, column: usize) -> usize {
-    let start: usize = text
-        .split_inclusive('\n')
-        .take(line.saturating_sub(1))
-        .map(str::len)
-        .sum();
-    (start + column.saturating_sub(1)).min(text.len())
-}
-
 /// Parses and checks a vehicle file.
 ///
 /// # Errors
-/// A message naming the refused field: a syntax error (NaN, Infinity,
-/// a string for a number) names the key it follows, unknown keys and
-/// wrong types are serde's (which name them), ranges and ratios
-/// [`check_vehicle`]'s.
+/// A message naming the refused field by its path
+/// ([`crate::base::field_error`]): a syntax error (NaN, Infinity) names
+/// the key it follows, a wrong type or an unknown key the key itself
+/// (`vehicle.accelMax: expected a number, found the string "fast"`);
+/// ranges and ratios are [`check_vehicle`]'s.
 pub fn parse(text: &str) -> Result<VehicleFile, String> {
-    let value: serde_json::Value = serde_json::from_str(text).map_err(|e| {
-        let at = offset(text, e.line(), e.column());
-        match key_before(text, at) {
-            Some(k) => format!("field `{k}`: not a JSON number or value ({e})"),
-            None => format!("not a JSON vehicle file: {e}"),
-        }
-    })?;
-    // serde's type errors carry no path: name the key of a non-number.
-    let obj = value.get("vehicle").unwrap_or(&value);
-    if let Some(m) = obj.as_object() {
-        for (k, v) in m {
-            if k != "integrator" && !v.is_number() {
-                return Err(format!("field `{k}`: expected a number, got {v}"));
-            }
-        }
-    }
+    let refused = |e: FieldError| format!("vehicle file: {e}");
+    let value: serde_json::Value = field_error::from_str(text).map_err(refused)?;
     let file = if value.get("vehicle").is_some() {
-        let w: Wrapped = serde_json::from_value(value).map_err(|e| format!("vehicle file: {e}"))?;
+        let w: Wrapped = field_error::from_value(&value).map_err(refused)?;
         VehicleFile {
             name: w.name,
             description: w.description,
             vehicle: w.vehicle,
         }
     } else {
-        let vehicle: VehicleParams =
-            serde_json::from_value(value).map_err(|e| format!("vehicle: {e}"))?;
+        let vehicle: VehicleParams = field_error::from_value(&value).map_err(refused)?;
         VehicleFile {
             name: String::new(),
             description: String::new(),

@@ -307,31 +307,31 @@ pub struct RunReport {
 #[must_use]
 pub fn run(sc: &Scenario, table: &EtaTable) -> RunReport {
     let mut w = sc.world().expect("benchmark scenarios are valid");
-    w.plan(table);
+    w.plan(table).expect("the table is built for these limits");
     let mut prox = Proximity::new(sc.avoidance.radius);
     let mut active = 0u64;
     let mut rest = 0u32;
     let rest_steps = (1.0 / sc.vehicle.dt).round() as u32;
     for _ in 0..sc.steps() {
-        w.step(table);
+        w.step(table).expect("the table is built for these limits");
         prox.observe(&w);
-        active += w.avoider.commands.iter().filter(|c| c.active).count() as u64;
-        if w.agents.iter().all(|a| a.done() && a.state.v == 0.0) {
+        active += w.avoider().commands.iter().filter(|c| c.active).count() as u64;
+        if w.agents().iter().all(|a| a.done() && a.state.v == 0.0) {
             rest += 1;
             if rest >= rest_steps {
                 break;
             }
         }
     }
-    let reached = w.agents.iter().filter(|a| a.done()).count();
+    let reached = w.agents().iter().filter(|a| a.done()).count();
     RunReport {
-        agents: w.agents.len(),
+        agents: w.agents().len(),
         reached,
         entries: prox.entries,
         oriented: prox.oriented,
-        finish_time: if reached == w.agents.len() {
+        finish_time: if reached == w.agents().len() {
             Some(
-                w.agents
+                w.agents()
                     .iter()
                     .filter_map(|a| a.finished_at)
                     .fold(0.0f32, f32::max),
@@ -339,19 +339,19 @@ pub fn run(sc: &Scenario, table: &EtaTable) -> RunReport {
         } else {
             None
         },
-        path_length: w.agents.iter().map(|a| a.metrics.length).sum(),
+        path_length: w.agents().iter().map(|a| a.metrics.length).sum(),
         min_distance: prox.min_distance,
         overlap_pair_steps: prox.overlap_pair_steps,
         max_overlapping: prox.max_overlapping,
         obstacle_contacts: prox.obstacle_contact_steps,
         deadlocks: prox.deadlocks(),
         violations: w
-            .agents
+            .agents()
             .iter()
             .map(|a| u64::from(a.metrics.violations))
             .sum(),
         nan: w
-            .agents
+            .agents()
             .iter()
             .filter(|a| {
                 !(a.state.pos.is_finite() && a.state.theta.is_finite() && a.state.v.is_finite())

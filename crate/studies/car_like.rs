@@ -248,13 +248,13 @@ pub fn run_from(
     let limit = (MAX_TIME / p.dt) as u32;
     let mut done = false;
     for _ in 0..2 * limit {
-        let prev = w.agents[0].state;
-        let solves = w.agents[0].memory.manoeuvre.solves;
+        let prev = w.agents()[0].state;
+        let solves = w.agents()[0].memory.manoeuvre.solves;
         if !done && rec.updates >= limit {
             break;
         }
-        w.step(table);
-        let a = &w.agents[0];
+        w.step(table).expect("the table is built for these limits");
+        let a = &w.agents()[0];
         rec.backing += u32::from(a.state.v < 0.0);
         if diff(a.state.theta, prev.theta).abs() > 1f32.to_radians()
             && prev.v.abs() < 0.02 * p.v_max
@@ -285,7 +285,7 @@ pub fn run_from(
             }
         }
     }
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     rec.violations = a.metrics.violations;
     if !rec.finished {
         rec.length = a.metrics.length;

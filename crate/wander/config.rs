@@ -173,7 +173,8 @@ impl WanderConfig {
     /// Parses JSON (schema errors become [`WanderError::Json`]) and
     /// validates.
     pub fn from_json(json: &str) -> Result<Self, WanderError> {
-        let cfg: Self = serde_json::from_str(json).map_err(|e| WanderError::Json(e.to_string()))?;
+        let cfg: Self = crate::base::field_error::from_str(json)
+            .map_err(|e| WanderError::Json(e.to_string()))?;
         cfg.validate()?;
         Ok(cfg)
     }

@@ -325,7 +325,8 @@ pub struct WanderPreset {
 impl WanderPreset {
     /// Parses a preset and validates every variant.
     pub fn from_json(json: &str) -> Result<Self, WanderError> {
-        let p: Self = serde_json::from_str(json).map_err(|e| WanderError::Json(e.to_string()))?;
+        let p: Self = crate::base::field_error::from_str(json)
+            .map_err(|e| WanderError::Json(e.to_string()))?;
         if p.variants.is_empty() {
             return Err(WanderError::Empty {
                 what: "preset.variants",

@@ -9,16 +9,18 @@ use crate::funnelling::relaxed::RelaxedInternals;
 use crate::funnelling::update::{Internals, Mode};
 use crate::world::goals::GoalSpec;
 
-/// One agent.
+/// One agent, read through [`World::agents`](crate::world::World::agents)
+/// and [`World::agent`](crate::world::World::agent); changed only by the
+/// world's edits, which validate (a user cannot build one: the world keeps
+/// a copy of its current goal).
 #[derive(Clone, Debug, PartialEq)]
 pub struct Agent {
     /// Kinematic state.
     pub state: VehicleState,
-    /// Goal queue (changed directly, not through the world's edits: call
-    /// [`World::queues_changed`](crate::world::World::queues_changed) before the next step).
+    /// Goal queue ([`World::set_goals`](crate::world::World::set_goals)
+    /// replaces it).
     pub goals: Vec<GoalSpec>,
-    /// Index of the current goal (== `goals.len()` when all are done; as
-    /// `goals` for direct changes).
+    /// Index of the current goal (== `goals.len()` when all are done).
     pub current: usize,
     /// Mode-logic memory for the current goal.
     pub memory: FunnelMemory,
@@ -39,8 +41,7 @@ pub struct Agent {
     /// goal from the agent's own record, which the per-agent loop streams
     /// through, instead of from the queue's own allocation, a cache miss
     /// per agent per step in a big world. Same bits. Every change of `goals` or `current` goes
-    /// through [`Agent::refresh_spec`] ([`World::queues_changed`](crate::world::World::queues_changed) for
-    /// direct changes); debug builds check it at each plan.
+    /// through [`Agent::refresh_spec`]; debug builds check it at each plan.
     pub(crate) spec: GoalSpec,
 }
 

@@ -35,7 +35,8 @@ use glam::Vec2;
 use serde::{Deserialize, Serialize};
 
 use crate::avoidance::{config::AvoidanceConfig, config::Obstacle};
-use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
+use crate::base::field_error::{self, FieldError};
+use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::{ControllerKind, Reading};
 use crate::funnelling::goal::Goal;
@@ -197,37 +198,53 @@ pub const MAX_AGENT_STEPS: u64 = 1_000_000_000;
 /// `velocity` / `center`.
 ///
 /// # Errors
-/// [`ScenarioError::Parse`] naming the path of the first such array.
+/// [`ScenarioError::Parse`] naming the path of the first such array
+/// (`path` is the path of `v`, empty at the top).
 fn refuse_positional(v: &serde_json::Value, path: &str) -> Result<(), ScenarioError> {
     use serde_json::Value;
-    let positional = || {
-        ScenarioError::Parse(format!(
-            "`{path}` is an array where an object with named fields is expected (positional \
-             arrays are refused)"
+    let positional = |path: &str| {
+        ScenarioError::Parse(FieldError::new(
+            path,
+            "is not an object with named fields (positional arrays are refused)",
         ))
     };
+    let top = path.is_empty();
     match v {
         Value::Object(m) => m.iter().try_for_each(|(k, x)| {
-            let pair = matches!(x, Value::Array(a) if a.len() == 2 && a.iter().all(Value::is_number));
+            let pair =
+                matches!(x, Value::Array(a) if a.len() == 2 && a.iter().all(Value::is_number));
+            let here = if top {
+                k.clone()
+            } else {
+                format!("{path}.{k}")
+            };
             if (k == "velocity" || k == "center") && pair {
                 Ok(())
             } else {
-                refuse_positional(x, &format!("{path}.{k}"))
+                refuse_positional(x, &here)
             }
         }),
-        Value::Array(_) if path == "scenario" => Err(positional()),
+        Value::Array(_) if top => Err(positional(path)),
         Value::Array(a) => a.iter().enumerate().try_for_each(|(i, x)| {
+            let here = format!("{path}[{i}]");
             if x.is_object() {
-                refuse_positional(x, &format!("{path}[{i}]"))
+                refuse_positional(x, &here)
             } else {
-                Err(ScenarioError::Parse(format!(
-                    "`{path}[{i}]` is not an object with named fields (positional arrays are refused)"
-                )))
+                Err(positional(&here))
             }
         }),
-        _ if path == "scenario" => Err(positional()),
+        _ if top => Err(ScenarioError::Parse(FieldError::new(
+            path,
+            "expected an object (a scenario)",
+        ))),
         _ => Ok(()),
     }
+}
+
+/// True when field path `path` lies inside `outer` (or is it).
+fn within(path: &str, outer: &str) -> bool {
+    path.strip_prefix(outer)
+        .is_some_and(|rest| rest.is_empty() || outer.is_empty() || rest.starts_with(['.', '[']))
 }
 
 /// The scenario `value` with its `funnel` and `relaxed` objects laid over
@@ -245,10 +262,11 @@ fn with_reading(
         ("relaxed", serde_json::to_value(reading.relaxed())),
     ];
     for (key, base) in bases {
-        let mut base = base.map_err(|e| ScenarioError::Parse(e.to_string()))?;
+        let mut base =
+            base.map_err(|e| ScenarioError::Parse(FieldError::new(key, e.to_string())))?;
         if let Some(given) = value.get(key) {
             let given = given.as_object().ok_or_else(|| {
-                ScenarioError::Parse(format!("`{key}` is not an object of settings"))
+                ScenarioError::Parse(FieldError::new(key, "expected an object of settings"))
             })?;
             if let Some(b) = base.as_object_mut() {
                 b.extend(given.iter().map(|(k, v)| (k.clone(), v.clone())));
@@ -259,32 +277,48 @@ fn with_reading(
     Ok(value)
 }
 
-/// Why a scenario was refused.
-#[derive(Debug)]
+/// Why a scenario was refused: always the path of the field at fault in
+/// the file (`agents[0].goals[1].x`) and what is wrong with it.
+#[derive(Clone, Debug, PartialEq, Eq)]
 pub enum ScenarioError {
-    /// Not valid JSON for the schema (message from the parser, with line).
-    Parse(String),
-    /// A value is invalid.
-    Param(ParamError),
-    /// Something else is inconsistent.
-    Invalid(String),
+    /// Not valid JSON for the schema (a syntax error, a wrong type, a
+    /// missing or unknown field).
+    Parse(FieldError),
+    /// A value out of range, or values inconsistent together.
+    Invalid(FieldError),
+}
+
+impl ScenarioError {
+    /// The field at fault and what is wrong with it.
+    #[must_use]
+    pub fn field(&self) -> &FieldError {
+        match self {
+            Self::Parse(e) | Self::Invalid(e) => e,
+        }
+    }
+
+    /// An invalid value at `path`.
+    fn invalid(path: impl Into<String>, e: impl fmt::Display) -> Self {
+        Self::Invalid(FieldError::new(path, e.to_string()))
+    }
 }
 
 impl fmt::Display for ScenarioError {
     fn fmt(&self, f: &mut fmt::Formatter<'_>) -> fmt::Result {
         match self {
-            Self::Parse(m) => write!(f, "scenario is not valid: {m}"),
-            Self::Param(e) => write!(f, "scenario has an invalid value: {e}"),
-            Self::Invalid(m) => write!(f, "scenario is inconsistent: {m}"),
+            Self::Parse(e) => write!(f, "scenario is not valid: {e}"),
+            Self::Invalid(e) => write!(f, "scenario is inconsistent: {e}"),
         }
     }
 }
 
 impl std::error::Error for ScenarioError {}
 
-impl From<ParamError> for ScenarioError {
-    fn from(e: ParamError) -> Self {
-        Self::Param(e)
+/// An obstacle list's refusal (`obstacles[1]: …`) with its path apart.
+fn obstacle_error(e: &str) -> ScenarioError {
+    match e.split_once(": ") {
+        Some((path, rest)) if path.starts_with("obstacles[") => ScenarioError::invalid(path, rest),
+        _ => ScenarioError::invalid("obstacles", e),
     }
 }
 
@@ -312,16 +346,37 @@ impl Scenario {
     /// Parses a scenario from JSON text.
     ///
     /// # Errors
-    /// [`ScenarioError::Parse`] with the parser's message and position.
+    /// [`ScenarioError`] naming the path of the field at fault
+    /// (`agents[0].goals[1].x: expected a number, found a list`).
     pub fn from_json(text: &str) -> Result<Self, ScenarioError> {
+        Self::from_bytes(text.as_bytes())
+    }
+
+    /// [`Scenario::from_json`] on a file's bytes as read (bytes that are
+    /// not UTF-8 are refused at the field they are in).
+    ///
+    /// # Errors
+    /// As [`Scenario::from_json`].
+    pub fn from_bytes(bytes: &[u8]) -> Result<Self, ScenarioError> {
         let value: serde_json::Value =
-            serde_json::from_str(text).map_err(|e| ScenarioError::Parse(e.to_string()))?;
-        refuse_positional(&value, "scenario")?;
-        let s: Self = match value.get("reading").and_then(serde_json::Value::as_str) {
-            Some("paper") => serde_json::from_value(with_reading(value, Reading::Paper)?),
-            _ => serde_json::from_str(text),
-        }
-        .map_err(|e| ScenarioError::Parse(e.to_string()))?;
+            field_error::from_slice(bytes).map_err(ScenarioError::Parse)?;
+        let positional = refuse_positional(&value, "");
+        let typed = match value.get("reading").and_then(serde_json::Value::as_str) {
+            Some("paper") => with_reading(value, Reading::Paper)
+                .and_then(|v| field_error::from_value(&v).map_err(ScenarioError::Parse)),
+            // From the bytes, for the line and column beside the path.
+            _ => field_error::from_slice(bytes).map_err(ScenarioError::Parse),
+        };
+        // A struct written as a positional array is named as such when the
+        // schema's own refusal lies inside it (or there is none: serde
+        // reads a struct from an array); other refusals are the schema's
+        // (`x: [1]` is a list where a number belongs).
+        let s: Self = match (typed, positional) {
+            (Ok(_), Err(p)) => return Err(p),
+            (Err(e), Err(p)) if within(&e.field().path, &p.field().path) => return Err(p),
+            (Err(e), _) => return Err(e),
+            (Ok(s), Ok(())) => s,
+        };
         s.validate()?;
         Ok(s)
     }
@@ -345,65 +400,85 @@ impl Scenario {
     /// Checks every value.
     ///
     /// # Errors
-    /// The first invalid value.
+    /// The first invalid value, with its path in the file.
     pub fn validate(&self) -> Result<(), ScenarioError> {
-        self.vehicle.validate()?;
-        self.funnel.validate()?;
-        self.relaxed.validate()?;
-        self.avoidance.validate()?;
+        self.vehicle
+            .validate()
+            .map_err(|e| ScenarioError::invalid("vehicle", e))?;
+        self.funnel
+            .validate()
+            .map_err(|e| ScenarioError::invalid("funnel", e))?;
+        self.relaxed
+            .validate()
+            .map_err(|e| ScenarioError::invalid("relaxed", e))?;
+        self.avoidance
+            .validate()
+            .map_err(|e| ScenarioError::invalid("avoidance", e))?;
         crate::avoidance::config::validate_obstacles(&self.obstacles)
-            .map_err(ScenarioError::Invalid)?;
+            .map_err(|e| obstacle_error(&e))?;
         crate::base::ranges::DURATION
             .check(self.duration)
-            .map_err(ParamError::Range)?;
+            .map_err(|e| ScenarioError::invalid("duration", e))?;
         let n = self.agents.len();
         if n > MAX_SCENARIO_AGENTS {
-            return Err(ScenarioError::Invalid(format!(
-                "{n} agents (at most {MAX_SCENARIO_AGENTS})"
-            )));
+            return Err(ScenarioError::invalid(
+                "agents",
+                format!("{n} agents (at most {MAX_SCENARIO_AGENTS})"),
+            ));
         }
         let work = n as u64 * u64::from(self.steps());
         if work > MAX_AGENT_STEPS {
-            return Err(ScenarioError::Invalid(format!(
-                "{n} agents × {} steps (duration {} s at dt {} s) = {work} agent-steps, more than \
-                 {MAX_AGENT_STEPS}: shorten the duration or use fewer agents",
-                self.steps(),
-                self.duration,
-                self.vehicle.dt
-            )));
+            return Err(ScenarioError::invalid(
+                "agents",
+                format!(
+                    "{n} agents × {} steps (duration {} s at dt {} s) = {work} agent-steps, more \
+                     than {MAX_AGENT_STEPS}: shorten the duration or use fewer agents",
+                    self.steps(),
+                    self.duration,
+                    self.vehicle.dt
+                ),
+            ));
         }
         for (i, a) in self.agents.iter().enumerate() {
-            let st = VehicleState::new(Vec2::new(a.x, a.y), a.theta_deg.to_radians(), a.v, a.omega);
-            st.validate(&self.vehicle)
-                .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
-            if a.goals.len() > MAX_GOALS {
-                return Err(ScenarioError::Invalid(format!(
-                    "agent {i}: {} goals (at most {MAX_GOALS})",
-                    a.goals.len()
-                )));
-            }
-            let specs: Vec<GoalSpec> = a.goals.iter().map(GoalFile::to_spec).collect();
-            for (spec, g) in specs.iter().zip(&a.goals) {
-                spec.validate(&self.vehicle)
-                    .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
-                if let GoalMotion::FaceAgent { agent, .. } = g.motion {
-                    if agent >= self.agents.len() || agent == i {
-                        return Err(ScenarioError::Invalid(format!(
-                            "agent {i} faces agent {agent}, which does not exist or is itself"
-                        )));
-                    }
-                }
-            }
-            precision::check_agent(&self.vehicle, st.pos, &specs, Some(self.duration)).map_err(
-                |e| {
-                    ScenarioError::Invalid(format!(
-                        "agent {i}: {e} (f32 positions resolve a quarter of one step, slowest goal \
-                         speed × dt, only within that range: move the scene nearer the origin)"
-                    ))
-                },
-            )?;
+            self.validate_agent(i, a)?;
         }
         Ok(())
+    }
+
+    /// Checks agent `i` (`agents[i]` in the file).
+    fn validate_agent(&self, i: usize, a: &AgentSpec) -> Result<(), ScenarioError> {
+        let at = format!("agents[{i}]");
+        let st = VehicleState::new(Vec2::new(a.x, a.y), a.theta_deg.to_radians(), a.v, a.omega);
+        st.validate(&self.vehicle)
+            .map_err(|e| ScenarioError::invalid(&at, e))?;
+        if a.goals.len() > MAX_GOALS {
+            return Err(ScenarioError::invalid(
+                format!("{at}.goals"),
+                format!("{} goals (at most {MAX_GOALS})", a.goals.len()),
+            ));
+        }
+        let specs: Vec<GoalSpec> = a.goals.iter().map(GoalFile::to_spec).collect();
+        for (k, (spec, g)) in specs.iter().zip(&a.goals).enumerate() {
+            spec.validate(&self.vehicle)
+                .map_err(|e| ScenarioError::invalid(format!("{at}.goals[{k}]"), e))?;
+            if let GoalMotion::FaceAgent { agent, .. } = g.motion {
+                if agent >= self.agents.len() || agent == i {
+                    return Err(ScenarioError::invalid(
+                        format!("{at}.goals[{k}].motion.agent"),
+                        format!("agent {i} faces agent {agent}, which does not exist or is itself"),
+                    ));
+                }
+            }
+        }
+        precision::check_agent(&self.vehicle, st.pos, &specs, Some(self.duration)).map_err(|e| {
+            ScenarioError::invalid(
+                &at,
+                format!(
+                    "{e} (f32 positions resolve a quarter of one step, slowest goal speed × dt, \
+                     only within that range: move the scene nearer the origin)"
+                ),
+            )
+        })
     }
 
     /// Builds the world. The agents' internals are provisional until the
@@ -411,13 +486,15 @@ impl Scenario {
     /// trajectory should come after `plan`).
     ///
     /// # Errors
-    /// Any invalid agent or goal, naming the agent.
+    /// Any invalid agent or goal, with its path in the file.
     pub fn world(&self) -> Result<World, ScenarioError> {
         self.validate()?;
-        let mut w = World::new(self.vehicle, self.funnel)?;
-        w.set_controller(self.controller, self.relaxed)?;
+        let mut w = World::new(self.vehicle, self.funnel)
+            .map_err(|e| ScenarioError::invalid("vehicle", e))?;
+        w.set_controller(self.controller, self.relaxed)
+            .map_err(|e| ScenarioError::invalid("relaxed", e))?;
         w.set_avoidance(self.avoidance, self.obstacles.clone())
-            .map_err(ScenarioError::Invalid)?;
+            .map_err(|e| ScenarioError::invalid("avoidance", e))?;
         for (i, a) in self.agents.iter().enumerate() {
             let st = VehicleState::new(
                 Vec2::new(a.x, a.y),
@@ -427,7 +504,7 @@ impl Scenario {
             );
             let goals = a.goals.iter().map(GoalFile::to_spec).collect();
             w.add_agent(st, goals)
-                .map_err(|e| ScenarioError::Invalid(format!("agent {i}: {e}")))?;
+                .map_err(|e| ScenarioError::invalid(format!("agents[{i}]"), e))?;
         }
         Ok(w)
     }
@@ -476,6 +553,47 @@ mod tests {
         assert!(e.contains("unknown variant `both`"), "{e}");
     }
 
+    /// Every refusal names the path of the field at fault, in a one-line
+    /// file too (as the lab exports them), whichever reading it starts from.
+    #[test]
+    fn a_refused_file_names_the_path_of_the_field() {
+        let goals = r#"[{"x": 1, "y": 0}, {"x": [1], "y": 0}]"#;
+        for reading in ["ours", "paper"] {
+            let text = format!(
+                r#"{{"name": "p", "reading": "{reading}", "agents": [{{"x": 0, "y": 0, "goals": {goals}}}]}}"#
+            );
+            let e = Scenario::from_json(&text).unwrap_err();
+            assert_eq!(e.field().path, "agents[0].goals[1].x");
+            assert!(
+                e.to_string().starts_with(
+                    "scenario is not valid: agents[0].goals[1].x: expected a number, found a list"
+                ),
+                "{e}"
+            );
+        }
+        let refused = |text: &str| Scenario::from_json(text).unwrap_err().to_string();
+        let e = refused(r#"{"name": "p", "agents": [{"y": 0}]}"#);
+        assert!(e.contains(": agents[0].x: missing"), "{e}");
+        let e = refused(r#"{"name": "p", "agents": [{"x": 0, "y": 0, "thetaDeg": 1e999}]}"#);
+        assert!(
+            e.contains(": agents[0].thetaDeg: number out of range"),
+            "{e}"
+        );
+        let e = refused(r#"{"name": "p", "agents": [{"x": 0, "y": 0, "goals": [{"x": 1, "y"#);
+        assert!(e.contains(": agents[0].goals[0]: EOF while parsing"), "{e}");
+        let e = refused(r#"{"name": "p", "agents": [{"x": 0, "y": 0, "goals": [{"x": 1, "y": "#);
+        assert!(
+            e.contains(": agents[0].goals[0].y: EOF while parsing"),
+            "{e}"
+        );
+        let e = refused(r#"{"name": "p", "agents": [{"x": 0, "y": 0, "goals": [[1, 2]]}]}"#);
+        assert!(e.contains(": agents[0].goals[0]: is not an object"), "{e}");
+        let e = refused(
+            r#"{"name": "p", "agents": [{"x": 0, "y": 0, "goals": [{"x": 3, "y": 0, "betaDeg": 3e38}]}]}"#,
+        );
+        assert!(e.contains(": agents[0].goals[0]: goal.beta"), "{e}");
+    }
+
     /// The desired-speed range of `base::ranges` holds in files too.
     #[test]
     fn a_desired_speed_of_zero_is_refused_in_files_too() {
@@ -483,7 +601,7 @@ mod tests {
         let e = Scenario::from_json(text).unwrap_err();
         assert_eq!(
             e.to_string(),
-            "scenario is inconsistent: agent 0: goal.speed = 0 is outside [0.01, 2]"
+            "scenario is inconsistent: agents[0].goals[0]: goal.speed = 0 is outside [0.01, 2]"
         );
     }
 }

@@ -35,8 +35,17 @@ pub const PARALLEL_CHUNK: usize = 512;
 ///
 /// The η table is not part of the world: every [`World::step`] borrows
 /// it, so one table serves many worlds. It must have been built for the
-/// world's vehicle limits ([`World::check_table`]; [`World::try_step`]
-/// checks and steps).
+/// world's vehicle limits: every call that plans or steps
+/// ([`World::plan`], [`World::step`], [`World::step_writing`]) checks it
+/// first ([`World::check_table`]) and refuses one built for other limits,
+/// unless the world was told to accept that ([`World::allow_other_table`]).
+///
+/// The agents and settings are read through methods ([`World::agents`],
+/// [`World::params`], …) and changed only through methods that validate
+/// ([`World::add_agent`], [`World::set_pose`], [`World::set_goals`],
+/// [`World::set_params`], …): a world never holds more agents than its
+/// bound ([`World::max_agents`]), a value that is not finite, or an agent
+/// its step buffers do not know.
 ///
 /// Natively a step updates the agents on every core of the current rayon
 /// pool ([`PARALLEL_CHUNK`] agents per task, worlds of fewer than two
@@ -48,39 +57,42 @@ pub const PARALLEL_CHUNK: usize = 512;
 /// [`World::split_ranges`]).
 #[derive(Clone, Debug, PartialEq)]
 pub struct World {
-    /// Vehicle parameters shared by every agent.
-    pub params: VehicleParams,
-    /// Funnelling settings shared by every agent.
-    pub config: FunnelConfig,
+    /// Vehicle parameters shared by every agent ([`World::params`]).
+    pub(super) params: VehicleParams,
+    /// Funnelling settings shared by every agent ([`World::config`]).
+    pub(super) config: FunnelConfig,
     /// Which controller steers the agents (standard unless set).
-    pub controller: ControllerKind,
+    pub(super) controller: ControllerKind,
     /// Relaxed-controller settings (used when `controller` is relaxed).
-    pub relaxed: RelaxedConfig,
-    /// The agents.
-    pub agents: Vec<Agent>,
+    pub(super) relaxed: RelaxedConfig,
+    /// The agents; the snapshot below has one state per agent, always.
+    pub(super) agents: Vec<Agent>,
     /// Simulated time, s.
-    pub time: f32,
+    pub(super) time: f32,
     /// Avoidance between agents and of the obstacles (off by
     /// default). Set with [`World::set_avoidance`].
-    pub avoidance: AvoidanceConfig,
+    pub(super) avoidance: AvoidanceConfig,
     /// Static obstacles (avoided when the avoidance is on).
-    pub obstacles: Vec<Obstacle>,
-    pub(crate) snapshot: Vec<VehicleState>,
+    pub(super) obstacles: Vec<Obstacle>,
+    pub(super) snapshot: Vec<VehicleState>,
     /// Agents whose queue holds a goal facing an agent
     /// ([`GoalMotion::FaceAgent`]), the only goals that read the snapshot:
     /// while there are none and the avoidance (which reads it too) is off,
     /// a step takes no snapshot (a pass over every agent's record before
     /// the update pass, a large share of the loop's own cost in a big
     /// world; same bits). Kept by every edit of a queue.
-    pub(crate) facing: usize,
-    pub(crate) preferred: Vec<(f32, f32)>,
+    pub(super) facing: usize,
+    pub(super) preferred: Vec<(f32, f32)>,
     /// The avoidance's buffers and this step's commands.
-    pub avoider: Avoider,
+    pub(super) avoider: Avoider,
     /// Whether a step adds to every agent's [`Agent::metrics`] (on unless
     /// set with [`World::set_metrics`]).
-    pub(crate) metrics_on: bool,
+    pub(super) metrics_on: bool,
     /// Most agents the world accepts ([`World::set_max_agents`]).
-    pub(crate) max_agents: usize,
+    pub(super) max_agents: usize,
+    /// Whether a step accepts a table built for other vehicle limits
+    /// ([`World::allow_other_table`]; off unless set).
+    pub(super) other_table: bool,
 }
 
 impl World {
@@ -106,6 +118,7 @@ impl World {
             avoider: Avoider::default(),
             metrics_on: true,
             max_agents: DEFAULT_MAX_AGENTS,
+            other_table: false,
         })
     }
 
@@ -125,6 +138,107 @@ impl World {
     #[must_use]
     pub fn metrics_on(&self) -> bool {
         self.metrics_on
+    }
+
+    /// The agents, in index order (changed only through the world's
+    /// edits: [`World::add_agent`], [`World::set_pose`], [`World::set_goals`], …).
+    ///
+    /// Neither the list nor an agent can be changed past the world's
+    /// checks (the bound, finite values, the step buffers' one state per
+    /// agent):
+    ///
+    /// ```compile_fail
+    /// # use steering::prelude::*;
+    /// let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    /// w.agents.clear(); // private: the world's buffers hold one value per agent
+    /// ```
+    ///
+    /// ```compile_fail
+    /// # use steering::prelude::*;
+    /// let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+    /// w.add_agent(VehicleState::default(), Vec::new()).unwrap();
+    /// w.agents()[0].state.v = f32::NAN; // read only: `set_pose` validates
+    /// ```
+    #[must_use]
+    pub fn agents(&self) -> &[Agent] {
+        &self.agents
+    }
+
+    /// The vehicle parameters every agent shares.
+    #[must_use]
+    pub fn params(&self) -> &VehicleParams {
+        &self.params
+    }
+
+    /// Replaces the vehicle parameters; the agents keep their states and
+    /// goals. A table built for the old limits is refused from then on
+    /// (unless [`World::allow_other_table`]).
+    ///
+    /// # Errors
+    /// An invalid parameter, named (NaN included); nothing is changed then.
+    pub fn set_params(&mut self, params: VehicleParams) -> Result<(), ParamError> {
+        params.validate()?;
+        self.params = params;
+        Ok(())
+    }
+
+    /// The funnelling settings every agent shares.
+    #[must_use]
+    pub fn config(&self) -> &FunnelConfig {
+        &self.config
+    }
+
+    /// Replaces the funnelling settings. Agents keep their state, goals
+    /// and mode memory: the next update uses the new settings.
+    ///
+    /// # Errors
+    /// An invalid setting, named; nothing is changed then.
+    pub fn set_config(&mut self, config: FunnelConfig) -> Result<(), ParamError> {
+        config.validate()?;
+        self.config = config;
+        Ok(())
+    }
+
+    /// Which controller steers the agents ([`World::set_controller`]).
+    #[must_use]
+    pub fn controller(&self) -> ControllerKind {
+        self.controller
+    }
+
+    /// The relaxed controller's settings ([`World::set_controller`]).
+    #[must_use]
+    pub fn relaxed(&self) -> &RelaxedConfig {
+        &self.relaxed
+    }
+
+    /// Simulated time, s.
+    #[must_use]
+    pub fn time(&self) -> f32 {
+        self.time
+    }
+
+    /// The avoidance settings ([`World::set_avoidance`]).
+    #[must_use]
+    pub fn avoidance(&self) -> &AvoidanceConfig {
+        &self.avoidance
+    }
+
+    /// The static obstacles ([`World::set_avoidance`]).
+    #[must_use]
+    pub fn obstacles(&self) -> &[Obstacle] {
+        &self.obstacles
+    }
+
+    /// The avoidance's buffers and the last step's commands.
+    #[must_use]
+    pub fn avoider(&self) -> &Avoider {
+        &self.avoider
+    }
+
+    /// Restarts the avoidance's count of pairwise checks
+    /// ([`Avoider::checks`]).
+    pub fn reset_avoidance_checks(&mut self) {
+        self.avoider.reset_checks();
     }
 
     /// Chooses the controller (paper 001: standard or relaxed funnelling).
@@ -166,8 +280,12 @@ impl World {
     /// exact inside the tolerance, else Funnelling towards the goal centre.
     /// Call it after adding agents or changing the controller (stepping
     /// does not need it). Constant cost per agent, no allocation.
-    pub fn plan(&mut self, table: &EtaTable) {
-        self.plan_agents(table, 0..self.agents.len());
+    ///
+    /// # Errors
+    /// A table built for other vehicle limits ([`World::step`] says
+    /// when one is accepted); nothing is planned then.
+    pub fn plan(&mut self, table: &EtaTable) -> Result<(), TableError> {
+        self.plan_agents(table, 0..self.agents.len())
     }
 
     /// [`World::plan`] of the agents in `range` only (clipped to the
@@ -175,7 +293,15 @@ impl World {
     /// any other's. Constant cost per agent planned, whatever the world's
     /// size: the states are gathered only when one of them has a goal
     /// that faces an agent (the only plan that reads other agents).
-    pub fn plan_agents(&mut self, table: &EtaTable, range: core::ops::Range<usize>) {
+    ///
+    /// # Errors
+    /// As [`World::plan`]; nothing is planned then.
+    pub fn plan_agents(
+        &mut self,
+        table: &EtaTable,
+        range: core::ops::Range<usize>,
+    ) -> Result<(), TableError> {
+        self.check_table_in_force(table)?;
         let n = self.agents.len();
         let range = range.start.min(n)..range.end.min(n);
         let facing = self.agents[range.clone()].iter().any(|a| faces(&a.goals));
@@ -200,13 +326,14 @@ impl World {
                 planner.plan(a, false);
             }
         }
+        Ok(())
     }
 
     /// What the world keeps about its agents' goal queues, recomputed after
-    /// `agents[i].goals` or `.current` were changed directly (the world's
-    /// own edits keep it): each agent's current goal (`Agent::spec`'s
-    /// copy) and the count of queues facing an agent (`World::facing`).
-    pub fn queues_changed(&mut self) {
+    /// an edit that changed queues in place (a slice's renumbered facing
+    /// links): each agent's current goal (`Agent::spec`'s copy) and the
+    /// count of queues facing an agent (`World::facing`).
+    pub(super) fn queues_changed(&mut self) {
         for a in &mut self.agents {
             a.refresh_spec();
         }
@@ -215,6 +342,8 @@ impl World {
 
     /// Checks that `table` was built for this world's vehicle limits, bit
     /// for bit (η is only exact for the limits it was simulated with).
+    /// Every call that plans or steps checks it first; this says why one
+    /// would be refused before stepping.
     ///
     /// # Errors
     /// [`TableError::ParamsMismatch`] naming the first limit that differs,
@@ -223,37 +352,52 @@ impl World {
         table.check_params(&self.params)
     }
 
-    /// [`World::step`] on a table checked first ([`World::check_table`]):
-    /// what a library user calls. The check compares nine numbers, nothing
-    /// beside a step's cost.
-    ///
-    /// # Errors
-    /// A table built for other vehicle limits; nothing is stepped then.
-    pub fn try_step(&mut self, table: &EtaTable) -> Result<(), TableError> {
-        self.check_table(table)?;
-        self.step(table);
-        Ok(())
+    /// Lets the world plan and step on a table built for other vehicle
+    /// limits (`true`), or refuse one (`false`, the default). The η values
+    /// of such a table are only approximate for this world: the lab's page
+    /// accepts that while the table for newly set limits is being built,
+    /// and says so; a library user has no reason to.
+    pub fn allow_other_table(&mut self, allowed: bool) {
+        self.other_table = allowed;
+    }
+
+    /// [`World::check_table`] unless [`World::allow_other_table`] is on.
+    fn check_table_in_force(&self, table: &EtaTable) -> Result<(), TableError> {
+        if self.other_table {
+            Ok(())
+        } else {
+            self.check_table(table)
+        }
     }
 
     /// Advances every agent by one time step. Agents see each other's
     /// states from the start of the step, so the order does not matter
     /// (and natively they are updated on every core, see [`World`]).
     ///
-    /// The table is not checked: the lab's page steps on the table it has
-    /// while the one for newly set limits is being built (its predictions
-    /// are then approximate, and the page says so). Check it once with
-    /// [`World::check_table`], or step with [`World::try_step`].
-    pub fn step(&mut self, table: &EtaTable) {
+    /// The table is checked first ([`World::check_table`]: nine numbers
+    /// compared, nothing beside a step's cost).
+    ///
+    /// # Errors
+    /// A table built for other vehicle limits (unless
+    /// [`World::allow_other_table`]); nothing is stepped then.
+    pub fn step(&mut self, table: &EtaTable) -> Result<(), TableError> {
+        self.check_table_in_force(table)?;
         self.step_each(table, None);
+        Ok(())
     }
 
     /// [`World::step`], then the records [`World::write_state`] writes,
     /// each written as soon as its agent has stepped, while the agent's
     /// memory is at hand (a stepping worker's step and state in one pass
     /// over the agents instead of two; the same floats).
-    pub fn step_writing(&mut self, table: &EtaTable, out: &mut Vec<f32>) {
+    ///
+    /// # Errors
+    /// As [`World::step`]; nothing is stepped or written then.
+    pub fn step_writing(&mut self, table: &EtaTable, out: &mut Vec<f32>) -> Result<(), TableError> {
+        self.check_table_in_force(table)?;
         out.resize(self.agents.len() * STATE_STRIDE, 0.0);
         self.step_each(table, Some(out));
+        Ok(())
     }
 
     /// One step, each agent's record written to `out` (when given) once it

@@ -38,7 +38,7 @@ pub fn world_hash(
     let mut h = FNV_OFFSET;
     let mut buf = Vec::new();
     for _ in 0..steps {
-        w.step(table);
+        w.step(table).unwrap();
         buf.clear();
         w.write_state(&mut buf);
         fnv(&mut h, &buf);

@@ -117,13 +117,13 @@ pub fn run(
     let mut last_eos_ok = false;
     let mut dubins_from = (sc.start.pos.x, sc.start.pos.y, sc.start.theta);
     for k in 0..limit + rest_limit {
-        let prev = w.agents[0].state;
-        let cur = w.agents[0].current;
+        let prev = w.agents()[0].state;
+        let cur = w.agents()[0].current;
         if done_at.is_none() && k >= limit {
             break;
         }
-        w.step(table);
-        let a = &w.agents[0];
+        w.step(table).expect("the table is built for these limits");
+        let a = &w.agents()[0];
         if !a.state.pos.is_finite() || !a.state.theta.is_finite() || !a.state.v.is_finite() {
             rec.nan += 1;
         }
@@ -161,7 +161,7 @@ pub fn run(
             }
         }
     }
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     rec.violations = a.metrics.violations;
     if !rec.finished {
         rec.time = limit as f32 * p.dt;

@@ -42,11 +42,11 @@ fn run() -> Result<bool, Box<dyn std::error::Error>> {
         world.add_agent(start, vec![GoalSpec { goal, ..GoalSpec::default() }])?;
         targets.push(goal);
     }
-    while !world.agents.iter().all(Agent::at_rest) && world.time < 60.0 {
-        world.try_step(&table)?;
+    while !world.agents().iter().all(Agent::at_rest) && world.time() < 60.0 {
+        world.step(&table)?;
     }
     let mut all = true;
-    for (i, (a, g)) in world.agents.iter().zip(&targets).enumerate() {
+    for (i, (a, g)) in world.agents().iter().zip(&targets).enumerate() {
         let d = (a.state.pos - g.pos).length();
         let e = steering::base::angle::diff(g.beta, a.state.theta);
         let ok = a.at_rest() && d < g.d_tol && e.abs() < g.eps_tol;
@@ -60,6 +60,6 @@ fn run() -> Result<bool, Box<dyn std::error::Error>> {
         );
         all &= ok;
     }
-    println!("{:.2} s simulated", world.time);
+    println!("{:.2} s simulated", world.time());
     Ok(all)
 }
