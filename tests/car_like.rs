@@ -440,9 +440,9 @@ fn the_reverse_parking_preset_backs_into_the_bay() {
     let mut w = sc.world().unwrap();
     let (mut backing, mut forward, mut pivots) = (0u32, 0u32, 0u32);
     for _ in 0..sc.steps() {
-        let prev = w.agents[0].state;
-        w.step(table());
-        let s = w.agents[0].state;
+        let prev = w.agents()[0].state;
+        w.step(table()).unwrap();
+        let s = w.agents()[0].state;
         backing += u32::from(s.v < 0.0);
         forward += u32::from(s.v > 0.0);
         if steering::base::angle::diff(s.theta, prev.theta).abs() > 1f32.to_radians()
@@ -451,7 +451,7 @@ fn the_reverse_parking_preset_backs_into_the_bay() {
             pivots += 1;
         }
     }
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     eprintln!(
         "reverse parking: backing {backing} steps, forward {forward}, finished at {:?}, at {:?}",
         a.finished_at, a.state

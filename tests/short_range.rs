@@ -219,10 +219,14 @@ fn the_preset_shows_turning_first_and_looping() {
     let sc = steering::world::scenario::Scenario::from_json(text).unwrap();
     let table = common::table();
     let mut w = sc.world().unwrap();
-    w.step(&table);
-    let sides: Vec<i8> = w.agents.iter().map(|a| a.memory.short_range.side).collect();
+    w.step(&table).unwrap();
+    let sides: Vec<i8> = w
+        .agents()
+        .iter()
+        .map(|a| a.memory.short_range.side)
+        .collect();
     let caps: Vec<f32> = w
-        .agents
+        .agents()
         .iter()
         .map(|a| a.memory.short_range.speed_cap)
         .collect();
@@ -230,9 +234,9 @@ fn the_preset_shows_turning_first_and_looping() {
     assert!(sides[0] != 0 && sides[1] != 0, "{sides:?}");
     assert!(sides[2] == 0 && caps[2] == 0.0, "{sides:?} {caps:?}");
     for _ in 1..sc.steps() {
-        w.step(&table);
+        w.step(&table).unwrap();
     }
-    for (i, a) in w.agents.iter().enumerate() {
+    for (i, a) in w.agents().iter().enumerate() {
         assert!(a.done(), "agent {i}");
         assert_eq!(a.metrics.violations, 0, "agent {i}");
         let g = a.goals[0].goal;

@@ -159,7 +159,9 @@ impl Lab {
                 mu_max: f32::NAN,
                 ..provisional_plan(self.world.params(), &a.state, &a.goal_now)
             }
-        } else if self.world.controller() == ControllerKind::Relaxed || self.world.params().car_like() {
+        } else if self.world.controller() == ControllerKind::Relaxed
+            || self.world.params().car_like()
+        {
             // Relaxed funnelling plans towards the relaxed point, and a
             // car-like vehicle's manoeuvre, once begun, lives in its memory
             // (crate::funnelling::manoeuvre): a fresh plan from here would

@@ -5,6 +5,7 @@
 use wasm_bindgen::prelude::*;
 
 use super::lab::{whole, Lab};
+use crate::bindings::boundary::js_err;
 use crate::funnelling::table::gpu_table::GpuTable;
 use crate::world::entry_judge::EntryJudge;
 use crate::world::gpu_world::GpuWorld;
@@ -125,7 +126,7 @@ impl Lab {
             .ok_or_else(|| JsError::new("η table: not loaded yet"))?;
         let mut judge = EntryJudge::new(&self.world);
         for _ in 0..n.min(10_000) {
-            self.world.step(&t);
+            self.world.step(&t).map_err(|e| js_err("η table", e))?;
             judge.observe(&self.world);
         }
         Ok(judge.verdicts())

@@ -136,7 +136,9 @@ pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize, plain: bool
         return rec;
     }
     if plain {
-        w.agents[0].memory.short_range = ShortRange::restored();
+        if let Some(m) = w.memory_mut(0) {
+            m.short_range = ShortRange::restored();
+        }
     }
     let limit = (MAX_TIME * sc.time() / p.dt) as u32;
     let mut done = false;
@@ -145,9 +147,11 @@ pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize, plain: bool
         if !done && updates >= limit {
             break;
         }
-        let prev = w.agents[0].state;
-        w.step(table);
-        let a = &w.agents[0];
+        let prev = w.agents()[0].state;
+        if w.step(table).is_err() {
+            break;
+        }
+        let a = &w.agents()[0];
         if done {
             if a.state.v == 0.0 && a.state.omega.abs() < 1e-3 {
                 break;
@@ -175,7 +179,7 @@ pub fn run(table: &EtaTable, p: &VehicleParams, seed: u64, i: usize, plain: bool
     if !rec.reached {
         rec.entry_time = updates as f32 * p.dt;
     }
-    let a = &w.agents[0];
+    let a = &w.agents()[0];
     rec.violations = a.metrics.violations;
     if g.halting && rec.finished {
         let d = (g.pos - a.state.pos).length();

@@ -426,8 +426,8 @@ mod tests {
         one.spawn_random(40, 3, 10.0, 1.3).unwrap();
         let mut all = one.clone();
         for _ in 0..30 {
-            one.step(&table);
-            all.step(&table);
+            one.step(&table).unwrap();
+            all.step(&table).unwrap();
         }
         let starts = [(-3.0, 1.0, 0.5), (2.0, -4.0, 2.0), (0.5, 0.5, -1.0)];
         for (k, &(x, y, theta)) in starts.iter().enumerate() {
@@ -446,10 +446,10 @@ mod tests {
                 switch: SwitchRule::EndOfSteering,
             };
             let i = one.add_agent(state, vec![goal]).unwrap();
-            one.plan_agents(&table, i..i + 1);
+            one.plan_agents(&table, i..i + 1).unwrap();
             all.add_agent(state, vec![goal]).unwrap();
         }
-        all.plan(&table);
+        all.plan(&table).unwrap();
         // The old agents' plans are the ones of their last step in `one`,
         // the whole-world plan's in `all`: compare the new agents.
         let n = all.agents.len();
@@ -457,8 +457,8 @@ mod tests {
             assert_eq!(one.agents[i], all.agents[i], "agent {i}");
         }
         for _ in 0..200 {
-            one.step(&table);
-            all.step(&table);
+            one.step(&table).unwrap();
+            all.step(&table).unwrap();
         }
         assert_eq!(one.agents, all.agents, "the same run from there on");
     }

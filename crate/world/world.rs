@@ -8,6 +8,7 @@ use crate::avoidance::{
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
+use crate::funnelling::goal::FunnelMemory;
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
 use crate::funnelling::seek::{seek_step, seek_step_committed_unicycle};
 use crate::funnelling::table::format::TableError;
@@ -162,6 +163,14 @@ impl World {
     #[must_use]
     pub fn agents(&self) -> &[Agent] {
         &self.agents
+    }
+
+    /// Agent `i`'s goal memory, for the crate's own studies that start a
+    /// run from a chosen memory (the short-range study's funnelling-only
+    /// baseline, crate::studies::short_range). Crate-internal: the public
+    /// API edits agents only through the validating methods.
+    pub(crate) fn memory_mut(&mut self, i: usize) -> Option<&mut FunnelMemory> {
+        self.agents.get_mut(i).map(|a| &mut a.memory)
     }
 
     /// The vehicle parameters every agent shares.
