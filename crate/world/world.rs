@@ -8,7 +8,6 @@ use crate::avoidance::{
 use crate::base::vehicle::{ParamError, VehicleParams, VehicleState};
 use crate::funnelling::config::FunnelConfig;
 use crate::funnelling::controller::ControllerKind;
-use crate::funnelling::goal::FunnelMemory;
 use crate::funnelling::relaxed::{RelaxedConfig, RelaxedInternals};
 use crate::funnelling::seek::{seek_step, seek_step_committed_unicycle};
 use crate::funnelling::table::format::TableError;
@@ -169,7 +168,11 @@ impl World {
     /// run from a chosen memory (the short-range study's funnelling-only
     /// baseline, crate::studies::short_range). Crate-internal: the public
     /// API edits agents only through the validating methods.
-    pub(crate) fn memory_mut(&mut self, i: usize) -> Option<&mut FunnelMemory> {
+    #[cfg(feature = "studies")]
+    pub(crate) fn memory_mut(
+        &mut self,
+        i: usize,
+    ) -> Option<&mut crate::funnelling::goal::FunnelMemory> {
         self.agents.get_mut(i).map(|a| &mut a.memory)
     }
 
