@@ -63,6 +63,11 @@ pub const NEAR: f32 = 5.0;
 pub const SLOW: f32 = 0.5;
 /// Longest simulated approach, s at the pedestrian's time scale.
 pub const HORIZON: f32 = 20.0;
+/// The most steps one trial may take, whatever the time step: the
+/// reference vehicles' horizons stay under it (the car's, the longest,
+/// 3,375 steps at 60 Hz), and a hostile time step (1e-4 s) or speed
+/// cannot turn a goal's one-off choice into minutes of simulation.
+pub const MAX_TRIAL_STEPS: u32 = 16_384;
 /// The walk round the disk keeps this far outside it, m at the
 /// pedestrian's scale, plus a quarter of D_tol.
 pub const CLEARANCE: f32 = 0.3;
@@ -101,7 +106,7 @@ pub fn decide(cfg: &FunnelConfig, u: &mut Update<'_>) {
     if d >= NEAR * sc.length || d < g.d_tol {
         return;
     }
-    let horizon = (HORIZON * sc.time() / p.dt) as u32;
+    let horizon = ((HORIZON * sc.time() / p.dt) as u32).min(MAX_TRIAL_STEPS);
     let base = *u.memory;
     let mut best = (
         trial(cfg, u.table, p, s, &g, base, horizon),
