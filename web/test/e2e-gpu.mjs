@@ -97,10 +97,10 @@ try {
 
   await check("timing rows: the kernel and the core in the same run (SwiftShader: a CPU emulation)", async () => {
     const { rows, cost } = await page.evaluate(() => window.__gpu.measure([5000]));
-    for (const r of rows) console.log(`${r.backend}${r.backend.startsWith("GPU") && status.emulated ? " (CPU emulation)" : ""}: ${r.agents} agents, ${r.msPerStep.toFixed(2)} ms/step, ${Math.round(r.perFrame)} per 16.7 ms (${r.clock})`);
+    for (const r of rows) console.log(`${r.backend}${r.backend.startsWith("GPU") && status.emulated ? " (CPU emulation)" : ""}: ${r.agents} agents, ${r.stepMs.toFixed(2)} ms/step, ${Math.round(r.perFrame)} per 16.7 ms (${r.clock})`);
     console.log(`counted cost per update: ${cost.blends.toFixed(2)} blends, ${cost.locates.toFixed(2)} axes located, ${Math.round(cost.bytes)} bytes (table ${Math.round(cost.tableBytes)}), ${cost.passes} pass per step`);
     assert.equal(rows.length, 2);
-    assert.ok(rows.every((r) => r.msPerStep > 0 && Number.isFinite(r.perFrame)));
+    assert.ok(rows.every((r) => r.stepMs > 0 && Number.isFinite(r.perFrame)));
     assert.ok(cost.blends >= 0.5 && cost.blends <= 3, `${cost.blends} blends per update`);
     assert.deepEqual(problems, []);
   });

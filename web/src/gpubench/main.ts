@@ -29,7 +29,7 @@ function showRows(rows: Timing[], emulated: boolean): void {
   body.replaceChildren(...rows.map((r) => {
     const tr = document.createElement("tr");
     const what = r.backend.startsWith("wasm") ? r.backend : `${r.backend}${emulated ? " (CPU emulation)" : ""}`;
-    for (const cell of [what, r.agents.toLocaleString("en"), r.drawn ? "stepped + drawn" : "stepped", fmt(r.msPerStep), fmt(r.perFrame), r.clock]) {
+    for (const cell of [what, r.agents.toLocaleString("en"), r.drawn ? "stepped + drawn" : "stepped", fmt(r.stepMs), fmt(r.perFrame), r.clock]) {
       const td = document.createElement("td");
       td.textContent = cell;
       tr.append(td);

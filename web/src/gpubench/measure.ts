@@ -14,7 +14,7 @@ export interface Timing {
   backend: string;
   agents: number;
   /** Milliseconds per step (with the draw when `drawn`). */
-  msPerStep: number;
+  stepMs: number;
   /** Agents stepped per 16.7 ms at that rate. */
   perFrame: number;
   drawn: boolean;
@@ -61,7 +61,7 @@ export async function measureGpu(device: GPUDevice, lab: Lab, table: GpuTable, n
   await device.queue.onSubmittedWorkDone();
   const steps = n >= 500_000 ? 10 : 30;
   const [ms, clock] = await gpuTime(device, k, steps, timestamps);
-  const rows: Timing[] = [{ backend: label, agents: n, msPerStep: ms, perFrame: (n * FRAME_MS) / ms, drawn: false, clock }];
+  const rows: Timing[] = [{ backend: label, agents: n, stepMs: ms, perFrame: (n * FRAME_MS) / ms, drawn: false, clock }];
   if (drawer) {
     const draw = () => {
       const enc = device.createCommandEncoder();
@@ -69,7 +69,7 @@ export async function measureGpu(device: GPUDevice, lab: Lab, table: GpuTable, n
       device.queue.submit([enc.finish()]);
     };
     const [dms, dclock] = await gpuTime(device, k, steps, false, draw);
-    rows.push({ backend: label, agents: n, msPerStep: dms, perFrame: (n * FRAME_MS) / dms, drawn: true, clock: dclock });
+    rows.push({ backend: label, agents: n, stepMs: dms, perFrame: (n * FRAME_MS) / dms, drawn: true, clock: dclock });
   }
   k.destroy();
   return rows;
@@ -85,7 +85,7 @@ export function measureCore(lab: Lab, n: number): Timing {
   w.step(steps);
   const ms = (performance.now() - t0) / steps;
   w.free();
-  return { backend: "wasm core, one thread of this CPU", agents: n, msPerStep: ms, perFrame: (n * FRAME_MS) / ms, drawn: false, clock: "wall clock" };
+  return { backend: "wasm core, one thread of this CPU", agents: n, stepMs: ms, perFrame: (n * FRAME_MS) / ms, drawn: false, clock: "wall clock" };
 }
 
 /** The kernel's counted cost per update over 60 steps of `n` agents. */
