@@ -58,6 +58,9 @@ impl FieldError {
         // holding that key is the path then.
         let path = path.trim_end_matches(".?").trim_end_matches('?');
         let path = if path == "." { "" } else { path };
+        // serde-wasm-bindgen's errors are JavaScript `Error`s, whose text
+        // starts "Error: ": the message alone reads better after the field.
+        let raw = raw.strip_prefix("Error: ").unwrap_or(raw);
         let named = |prefix: &str| {
             let rest = raw.strip_prefix(prefix)?;
             let (name, tail) = rest.split_once('`')?;
