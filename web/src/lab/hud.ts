@@ -193,7 +193,11 @@ class HudView {
     }
     if (this.speed.textContent !== p.speed) {
       this.speed.textContent = p.speed;
-      this.speed.classList.toggle("slower", / slower /.test(p.speed));
+      const slower = / slower /.test(p.speed);
+      this.speed.classList.toggle("slower", slower);
+      // Folded, the line is hidden (it would cover a small stage); the
+      // fold button says "slow" instead, the warning a tap away.
+      this.speed.closest(".hud")?.classList.toggle("slow", slower);
     }
     if (this.numbers.textContent !== p.numbers) this.numbers.textContent = p.numbers;
     if (this.diagnostics.textContent !== p.diagnostics) this.diagnostics.textContent = p.diagnostics;
