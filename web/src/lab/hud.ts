@@ -75,7 +75,9 @@ function hudText(h: HudData): { parts: HudText; key: string } {
   // A car-like vehicle with a reverse gear backs where that is shorter:
   // its speed is then negative, and the HUD says so in words.
   const backing = h.speed < 0;
-  const say = `${who}${backing ? "reverse gear, backing up: " : ""}${words?.meaning ?? ""}`;
+  // Backing is never a loop: the mode's own words ("looping round") would
+  // contradict what the reader sees.
+  const say = `${who}${backing ? "reverse gear: backing up on its way to arrive facing β" : (words?.meaning ?? "")}`;
   const manoeuvre = radius > 0 && h.mode === Mode.OrientationOnly;
   const warn = manoeuvre
     ? (h.vReverse ?? 0) > 0
