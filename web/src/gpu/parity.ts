@@ -31,6 +31,8 @@ export interface RunParity {
   left: [number, number];
   oriented: [number, number];
   restInside: [number, number];
+  /** Short-range choices the core made for goals the kernel moved agents on to. */
+  decided?: number;
 }
 
 export interface ProbeParity {
@@ -95,7 +97,13 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
   const start = splitWorld(lab.gpuWorld());
   const kOpts = { records: true, ...(opts.source === undefined ? {} : { source: opts.source }) };
   const free = await FunnelKernel.create(device, table, start, kOpts);
-  free.step(opts.steps);
+  // One step at a time: the core's short-range choice for a goal an agent
+  // moves on to is made between steps, as the core makes it at the next.
+  let decided = 0;
+  for (let s = 0; s < opts.steps; s++) {
+    free.step(1);
+    decided += await free.decide(lab);
+  }
   const n = free.n;
   const oriented = new Uint32Array(n);
   let verdicts: Uint32Array = new Uint32Array(2 * n);
@@ -142,7 +150,7 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
       if (run.examples.length < 5) run.examples.push(`agent ${i}: core ${cpu.join("/")}, kernel ${gpu.join("/")}`);
     }
   }
-  return { samples, run };
+  return { samples, run: { ...run, decided } };
 }
 
 /** `n` probes (D, α, ω, v_c, v_d) drawn from `seed` over the table's range
