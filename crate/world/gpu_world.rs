@@ -320,3 +320,77 @@ impl GpuWorld {
         ]
     }
 }
+
+#[cfg(all(test, not(target_arch = "wasm32")))]
+mod tests {
+    use super::*;
+    use crate::base::vehicle::VehicleParams;
+    use crate::funnelling::config::FunnelConfig;
+
+    fn table() -> EtaTable {
+        let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap();
+        EtaTable::from_bytes(&bytes).unwrap()
+    }
+
+    /// The choice in an agent's words.
+    fn words(agents: &[u32], i: usize) -> (f32, i32) {
+        let a = &agents[i * GpuWorld::AGENT_WORDS..];
+        (f32::from_bits(a[12]), a[13] as i32)
+    }
+
+    fn of(sr: ShortRange) -> (f32, i32) {
+        (sr.speed_cap, i32::from(sr.side))
+    }
+
+    #[test]
+    fn the_packed_and_the_awaited_choices_are_the_cores_own() {
+        let t = table();
+        let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+        // A small square: most goals are near, many turned first.
+        w.spawn_random(200, 3, 4.0, 1.3).unwrap();
+        let packed = GpuWorld::of(&w, &t).unwrap();
+        w.step(&t).unwrap();
+        let mut turned = 0;
+        for (i, a) in w.agents.iter().enumerate() {
+            if a.current == 0 {
+                assert_eq!(
+                    words(&packed.agents, i),
+                    of(a.memory.short_range),
+                    "agent {i}"
+                );
+                turned += usize::from(a.memory.short_range.side != 0);
+            }
+        }
+        assert!(turned > 0, "no agent turns first");
+        // Goals moved on to: awaited after the kernel's step, made by the
+        // host from the state after it, as the core's next update makes it.
+        let mut moved = 0;
+        for _ in 0..600 {
+            let before: Vec<usize> = w.agents.iter().map(|a| a.current).collect();
+            w.step(&t).unwrap();
+            let mut g = GpuWorld::of(&w, &t).unwrap();
+            let switched: Vec<usize> = (0..w.agents.len())
+                .filter(|&i| w.agents[i].current != before[i] && !w.agents[i].done())
+                .collect();
+            for &i in &switched {
+                let a = &mut g.agents[i * GpuWorld::AGENT_WORDS..];
+                a[5] |= GpuWorld::PENDING;
+                a[12] = 0;
+                a[13] = 0;
+            }
+            let made = GpuWorld::decide_pending(&w, &t, &mut g.agents, &g.goals);
+            assert_eq!(made as usize, switched.len());
+            let now: Vec<usize> = w.agents.iter().map(|a| a.current).collect();
+            w.step(&t).unwrap();
+            for &i in switched.iter().filter(|&&i| w.agents[i].current == now[i]) {
+                assert_eq!(words(&g.agents, i), of(w.agents[i].memory.short_range));
+                assert_eq!(
+                    g.agents[i * GpuWorld::AGENT_WORDS + 5] & GpuWorld::PENDING,
+                    0
+                );
+            }
+            moved += switched.len();
+        }
+        assert!(moved > 0, "no agent moved on to a goal");
+    }
+}

@@ -40,6 +40,9 @@ export const AGENT_MODE = 10;
 export const AGENT_COUNTED = 11;
 /** Agent flags' bit: the short-range choice for the current goal is awaited from the host (GpuWorld::PENDING). */
 export const PENDING = 2;
+/** Agent word offsets of the short-range choice: the speed cap (f32, 0: none) and the side turned round (i32, 0: funnelling). */
+export const AGENT_CAP = 12;
+export const AGENT_SIDE = 13;
 /** Words per goal (GpuWorld::GOAL_WORDS). */
 export const GOAL_WORDS = 8;
 const WORKGROUP = 64;
