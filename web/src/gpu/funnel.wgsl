@@ -391,10 +391,11 @@ fn orbit_free_speed(d: f32, alpha: f32) -> f32 {
 // FunnelConfig::plan_begun (from plan_ours): Approach::begin (D, α, the
 // halting cap, the tolerance phase; static goals need no lead and count no
 // laps), then turning first round side `side` when the short-range choice
-// says so (short_range::turn_first), else aim_and_funnel: the terminal pursuit, the entry aim, one lookup there
-// (Approach::look), Δη, Position_only near or when no correction is
-// needed, else the bounded modulation (Approach::funnel, config::mu_max
-// with MuBound::TurningRadius, config::modulation).
+// says so (short_range::turn_first), else aim_and_funnel: the terminal
+// pursuit, the entry aim, one lookup there (Approach::look), Δη,
+// Position_only near or when no correction is needed, else the bounded
+// modulation (Approach::funnel, config::mu_max with MuBound::TurningRadius,
+// config::modulation).
 fn plan(a: Agent, g: Goal, met: ptr<function, bool>, side: i32) -> Out {
   let c = seen(a, g.x, g.y);
   let halting = (g.flags & 1u) == 1u;
