@@ -95,6 +95,27 @@ impl Lab {
         Ok(pack(g))
     }
 
+    /// The short-range choices the kernel awaits (`GpuWorld::decide_pending`),
+    /// made with this lab's vehicle, settings and table: `agents` as read
+    /// back after a step (changed in place), `goals` as uploaded. Returns
+    /// how many were made.
+    #[wasm_bindgen(js_name = gpuDecide)]
+    pub fn gpu_decide(&self, agents: &mut [u32], goals: &[u32]) -> Result<u32, JsError> {
+        if agents.len() % GpuWorld::AGENT_WORDS != 0 {
+            return Err(JsError::new(&format!(
+                "gpuDecide: {} words is not a whole number of agents of {}",
+                agents.len(),
+                GpuWorld::AGENT_WORDS
+            )));
+        }
+        Ok(GpuWorld::decide_pending(
+            &self.world,
+            self.table()?,
+            agents,
+            goals,
+        ))
+    }
+
     /// The core's lookup at each probe (five floats each: D, α, ω, v_c,
     /// v_d): four floats each, η, reachable (1/0), v_dt, η valid (1/0).
     #[wasm_bindgen(js_name = lookupProbes)]

@@ -7,12 +7,26 @@
 //! a unicycle, avoidance off) towards static goals; anything else is
 //! refused here, with the reason, so a page falls back to the workers.
 //!
+//! The short-range choice ([`crate::funnelling::short_range::decide`]),
+//! made once per near static goal at its first update by simulating the
+//! ways in, stays on the CPU: the kernel follows the choice every update.
+//! Packing a world makes the choice for each agent's current goal when its
+//! first update is still to come (as that update would, from the same
+//! state); when the kernel moves an agent on to its next goal it marks the
+//! choice awaited, and the host makes it from the state after that step
+//! ([`GpuWorld::decide_pending`]) before the next one. A host that steps
+//! on without making it gets plain funnelling for that goal.
+//!
 //! Layout, 32-bit words (`f32` unless said):
 //! - agents, [`GpuWorld::AGENT_WORDS`] each: `x, y, θ, v, ω`, flags (`u32`,
-//!   bit 0: the position met, [`crate::funnelling::goal::FunnelMemory::position_met`]),
-//!   current goal (`u32`), first goal's index in `goals` (`u32`), goals in
-//!   the queue (`u32`), goals entered oriented (`u32`, counted by the
-//!   kernel), the last mode (`u32`), padding;
+//!   bit 0: the position met, [`crate::funnelling::goal::FunnelMemory::position_met`];
+//!   bit 1: the short-range choice for the current goal awaited from the
+//!   host, [`GpuWorld::decide_pending`]), current goal (`u32`), first
+//!   goal's index in `goals` (`u32`), goals in the queue (`u32`), goals
+//!   entered oriented (`u32`, counted by the kernel), the last mode (`u32`),
+//!   the table reads counted (`u32`), then the short-range choice
+//!   ([`crate::funnelling::goal::ShortRange`]): the speed cap (0: none) and
+//!   the side (`i32`, 0: funnelling);
 //! - goals, [`GpuWorld::GOAL_WORDS`] each: `x, y, β, D_tol, ε_tol, speed`,
 //!   flags (`u32`: bit 0 halting, bit 1 the End_of_Steering switch rule),
 //!   padding;
@@ -20,11 +34,14 @@
 
 use crate::avoidance::config::AvoidanceMethod;
 use crate::base::vehicle::Integrator;
+use crate::base::vehicle::VehicleState;
 use crate::funnelling::config::{Aim, Deviations, MuBound};
 use crate::funnelling::controller::ControllerKind;
-use crate::funnelling::goal::FunnelMemory;
+use crate::funnelling::goal::{FunnelMemory, Goal, ShortRange};
+use crate::funnelling::short_range::decide;
 use crate::funnelling::table::lookup::EtaTable;
 use crate::funnelling::table::spec::VehicleScale;
+use crate::funnelling::update::Update;
 use crate::world::goals::{GoalMotion, SwitchRule};
 use crate::world::World;
 
@@ -46,7 +63,9 @@ pub const CAR_LIKE: &str = "the GPU path steers unicycles only: a car-like vehic
 
 impl GpuWorld {
     /// Words per agent.
-    pub const AGENT_WORDS: usize = 12;
+    pub const AGENT_WORDS: usize = 14;
+    /// Agent flags' bit: the short-range choice is awaited from the host.
+    pub const PENDING: u32 = 2;
     /// Words per goal.
     pub const GOAL_WORDS: usize = 8;
     /// Floats of settings.
@@ -101,6 +120,12 @@ impl GpuWorld {
                 );
                 goals.extend([flags, 0]);
             }
+            let sr = match a.goals.get(a.current) {
+                Some(g) if !a.memory.short_range.decided => {
+                    Self::choose(w, table, a.state, &g.goal, a.memory)
+                }
+                _ => a.memory.short_range,
+            };
             agents.extend([s.pos.x, s.pos.y, s.theta, s.v, s.omega].map(f32::to_bits));
             agents.extend([
                 u32::from(a.memory.position_met),
@@ -110,6 +135,8 @@ impl GpuWorld {
                 0,
                 a.internals.mode as u32,
                 0,
+                sr.speed_cap.to_bits(),
+                i32::from(sr.side) as u32,
             ]);
         }
         Ok(Self {
@@ -154,12 +181,83 @@ impl GpuWorld {
                 );
                 out.goals.extend([0, 0]);
             }
+            let sr = Self::choose(w, table, s, &queue[0].goal, queue[0].fresh_memory());
             out.agents
                 .extend([s.pos.x, s.pos.y, s.theta, s.v, s.omega].map(f32::to_bits));
-            out.agents.extend([0, 0, first, keep as u32, 0, 3, 0]);
+            out.agents.extend([
+                0,
+                0,
+                first,
+                keep as u32,
+                0,
+                3,
+                0,
+                sr.speed_cap.to_bits(),
+                i32::from(sr.side) as u32,
+            ]);
         })
         .map_err(|e| e.to_string())?;
         Ok(out)
+    }
+
+    /// The short-range choice of the core's first update towards `g` from
+    /// state `s` with memory `mem` ([`decide`]).
+    fn choose(
+        w: &World,
+        table: &EtaTable,
+        mut s: VehicleState,
+        g: &Goal,
+        mut mem: FunnelMemory,
+    ) -> ShortRange {
+        decide(
+            &w.config,
+            &mut Update {
+                table,
+                params: &w.params,
+                state: &mut s,
+                goal: g,
+                memory: &mut mem,
+            },
+        );
+        mem.short_range
+    }
+
+    /// Makes the short-range choice the kernel awaits ([`GpuWorld::PENDING`])
+    /// for each agent of `agents` (words as the kernel left them after a
+    /// step) towards its current goal in `goals`, from the agent's state
+    /// and a goal's fresh memory, as the core's first update towards it
+    /// does; `w` gives the vehicle and settings. Returns how many were made.
+    pub fn decide_pending(w: &World, table: &EtaTable, agents: &mut [u32], goals: &[u32]) -> u32 {
+        let f = f32::from_bits;
+        let mut made = 0;
+        for a in agents.chunks_exact_mut(Self::AGENT_WORDS) {
+            if a[5] & Self::PENDING == 0 {
+                continue;
+            }
+            a[5] &= !Self::PENDING;
+            if a[6] >= a[8] {
+                continue;
+            }
+            let at = (a[7] + a[6]) as usize * Self::GOAL_WORDS;
+            let Some(q) = goals.get(at..at + Self::GOAL_WORDS) else {
+                continue;
+            };
+            let g = Goal {
+                pos: glam::Vec2::new(f(q[0]), f(q[1])),
+                beta: f(q[2]),
+                d_tol: f(q[3]),
+                eps_tol: f(q[4]),
+                speed: f(q[5]),
+                halting: q[6] & 1 == 1,
+                vel: glam::Vec2::ZERO,
+            };
+            let s = VehicleState::new(glam::Vec2::new(f(a[0]), f(a[1])), f(a[2]), f(a[3]), f(a[4]));
+            let sr = Self::choose(w, table, s, &g, FunnelMemory::default());
+            a[12] = sr.speed_cap.to_bits();
+            a[13] = i32::from(sr.side) as u32;
+            made += 1;
+        }
+        made
     }
 
     /// The settings: the vehicle (`dt, v_max, accel_max, ω_max, ω̇_max, A,
@@ -220,5 +318,79 @@ impl GpuWorld {
                 },
             ),
         ]
+    }
+}
+
+#[cfg(all(test, not(target_arch = "wasm32")))]
+mod tests {
+    use super::*;
+    use crate::base::vehicle::VehicleParams;
+    use crate::funnelling::config::FunnelConfig;
+
+    fn table() -> EtaTable {
+        let bytes = std::fs::read(concat!(env!("CARGO_MANIFEST_DIR"), "/tables/eta.bin")).unwrap();
+        EtaTable::from_bytes(&bytes).unwrap()
+    }
+
+    /// The choice in an agent's words.
+    fn words(agents: &[u32], i: usize) -> (f32, i32) {
+        let a = &agents[i * GpuWorld::AGENT_WORDS..];
+        (f32::from_bits(a[12]), a[13] as i32)
+    }
+
+    fn of(sr: ShortRange) -> (f32, i32) {
+        (sr.speed_cap, i32::from(sr.side))
+    }
+
+    #[test]
+    fn the_packed_and_the_awaited_choices_are_the_cores_own() {
+        let t = table();
+        let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+        // A small square: most goals are near, many turned first.
+        w.spawn_random(200, 3, 4.0, 1.3).unwrap();
+        let packed = GpuWorld::of(&w, &t).unwrap();
+        w.step(&t).unwrap();
+        let mut turned = 0;
+        for (i, a) in w.agents.iter().enumerate() {
+            if a.current == 0 {
+                assert_eq!(
+                    words(&packed.agents, i),
+                    of(a.memory.short_range),
+                    "agent {i}"
+                );
+                turned += usize::from(a.memory.short_range.side != 0);
+            }
+        }
+        assert!(turned > 0, "no agent turns first");
+        // Goals moved on to: awaited after the kernel's step, made by the
+        // host from the state after it, as the core's next update makes it.
+        let mut moved = 0;
+        for _ in 0..600 {
+            let before: Vec<usize> = w.agents.iter().map(|a| a.current).collect();
+            w.step(&t).unwrap();
+            let mut g = GpuWorld::of(&w, &t).unwrap();
+            let switched: Vec<usize> = (0..w.agents.len())
+                .filter(|&i| w.agents[i].current != before[i] && !w.agents[i].done())
+                .collect();
+            for &i in &switched {
+                let a = &mut g.agents[i * GpuWorld::AGENT_WORDS..];
+                a[5] |= GpuWorld::PENDING;
+                a[12] = 0;
+                a[13] = 0;
+            }
+            let made = GpuWorld::decide_pending(&w, &t, &mut g.agents, &g.goals);
+            assert_eq!(made as usize, switched.len());
+            let now: Vec<usize> = w.agents.iter().map(|a| a.current).collect();
+            w.step(&t).unwrap();
+            for &i in switched.iter().filter(|&&i| w.agents[i].current == now[i]) {
+                assert_eq!(words(&g.agents, i), of(w.agents[i].memory.short_range));
+                assert_eq!(
+                    g.agents[i * GpuWorld::AGENT_WORDS + 5] & GpuWorld::PENDING,
+                    0
+                );
+            }
+            moved += switched.len();
+        }
+        assert!(moved > 0, "no agent moved on to a goal");
     }
 }

@@ -4,16 +4,22 @@
 // (window.__gpu, src/gpubench/hook.ts). The kernel's contract
 // (src/gpu/kernel.ts):
 // - one step from the same states, sampled along seeded runs of the core
-//   (pedestrian, car, robot; a few thousand agents, two goals each, the
-//   second halting): the same mode for >= 99.9 % of agents, positions
+//   (pedestrian, car, robot; the car is the reference car's limits on a
+//   unicycle, whose short range reaches 21 times the pedestrian's, so
+//   most of its goals are near; a few thousand agents, two goals each,
+//   the second halting): the same mode for >= 99.9 % of agents, positions
 //   within 1e-4 m, headings within 1e-4 rad, speeds within 1e-4;
 // - a free run of 600 steps from the same start: every agent's verdict
 //   (goals left, entered oriented, at rest inside both tolerances) the
 //   core's;
 // - the table read at >= 10,000 random probes within 1e-5 rad of the
 //   core's lookup;
-// - and the suite bites: a planted change to the kernel's μ bound or to
-//   its integrator (made in memory, in a copy of the WGSL) fails the checks.
+// - near static goals the core's short-range choice is followed: some
+//   agents turn first, and choices are made between steps of the free run
+//   for goals agents move on to (kernel.ts FunnelKernel.decide);
+// - and the suite bites: a planted change to the kernel's μ bound, to its
+//   integrator or to the short range's walk round the disk (made in
+//   memory, in a copy of the WGSL) fails the checks.
 // Also: the worlds the kernel cannot step are refused with a reason (a
 // car-like vehicle, the paper's reading, avoidance), and the timing rows
 // are printed, labelled a CPU emulation.
@@ -66,16 +72,19 @@ try {
       const r = await parity(vehicle, n);
       for (const s of r.samples) console.log(`${vehicle} step ${s.step}: modes ${s.modesAgree}/${s.agents}, |Δpos| ${s.maxPos.toExponential(2)} m, |Δθ| ${s.maxHeading.toExponential(2)}, |Δv| ${s.maxSpeed.toExponential(2)}, |Δω| ${s.maxOmega.toExponential(2)}, |Δγ| ${s.maxGamma.toExponential(2)}`);
       console.log(`${vehicle} free run: ${r.run.differ}/${r.run.agents} verdicts differ; goals left ${r.run.left}, oriented ${r.run.oriented}, at rest inside ${r.run.restInside} (core, kernel); ${Math.round(r.ms)} ms`);
+      console.log(`${vehicle} short range: ${r.run.turnFirst} turn first and ${r.run.slowed} funnel slowed at the start; ${r.run.decided} choices made between steps`);
       assert.deepEqual(broken(r), []);
+      assert.ok(r.run.turnFirst > 0 && r.run.decided > 0, "the short-range ways in are exercised: turning first at the start, choices made between steps");
       assert.ok(r.run.left[0] > 0 && r.run.restInside[0] > 0, "the run reaches goals and rests in some: the verdicts say something");
     });
   }
 
-  await check("the checks bite: a planted change to the μ bound or the integrator fails them", async () => {
+  await check("the checks bite: a planted change to the μ bound, the integrator or the walk round the disk fails them", async () => {
     const source = await page.evaluate(() => window.__gpu.source);
     const plants = {
       "μ bound": ["let r = S(BOUND_FACTOR) *", "let r = 1.2 * S(BOUND_FACTOR) *"],
       integrator: ["(*a).x = (*a).x + u.y * (v0 * dt);", "(*a).x = (*a).x + u.y * (v1 * dt);"],
+      "short range's walk round": ["let r_clear = min(g.d_tol + 0.5 * m,", "let r_clear = min(g.d_tol + 0.8 * m,"],
     };
     for (const [name, [from, to]] of Object.entries(plants)) {
       assert.ok(source.includes(from), `the kernel still has ${from}`);

@@ -11,6 +11,18 @@
 // the same state gives the same mode for >= 99.9 % of agents, positions
 // within 1e-4 m and headings within 1e-4 rad; a table read is within 1e-5
 // rad of the core's lookup.
+//
+// Near a static goal a unicycle is approached as the core's short-range
+// choice says (crate/funnelling/short_range.rs): funnelling, funnelling
+// at a capped speed, or turning first round one side of the disk. The
+// choice itself (short_range::decide, which simulates the ways in) stays
+// on the CPU: the core makes it for each agent's current goal when the
+// world is packed (crate/world/gpu_world.rs), and when this kernel moves
+// an agent on to its next goal it marks the choice awaited (flags bit 1);
+// the host makes it from the state after that step (Lab.gpuDecide,
+// GpuWorld::decide_pending) and uploads it before the next one. A choice
+// still awaited when the agent is planned is taken as plain funnelling.
+// Every update then follows the choice here (plan_with, turn_first).
 
 const PI: f32 = 3.14159265358979323846;
 const TAU: f32 = 6.28318530717958647692;
@@ -26,13 +38,20 @@ const ORIENTATION_ONLY: u32 = 1u;
 const POSITION_ONLY: u32 = 2u;
 const FUNNELLING: u32 = 3u;
 
-// crate/world/gpu_world.rs GpuWorld (12 words).
+// crate/world/gpu_world.rs GpuWorld (14 words): flags bit 0 the position
+// met, bit 1 the short-range choice awaited from the host.
 struct Agent {
   x: f32, y: f32, theta: f32, v: f32, omega: f32,
   flags: u32, current: u32, first: u32, count: u32, oriented: u32, mode: u32,
   // Table reads counted over the steps (`counted`).
   pad: u32,
+  // goal.rs ShortRange for the current goal: the speed cap (0: none) and
+  // the side turned round (0: funnelling).
+  cap: f32, side: i32,
 }
+
+const MET = 1u;
+const PENDING = 2u;
 
 // crate/world/gpu_world.rs GpuWorld (8 words): flags bit 0 halting, bit 1
 // the End_of_Steering switch rule.
@@ -369,13 +388,15 @@ fn orbit_free_speed(d: f32, alpha: f32) -> f32 {
   return min(S(OMEGA_MAX) * r, sqrt(S(NORMAL_ACCEL) * r));
 }
 
-// FunnelConfig::plan_ours: Approach::begin (D, α, the halting cap, the
-// tolerance phase; static goals need no lead and count no laps), then
-// aim_and_funnel: the terminal pursuit, the entry aim, one lookup there
-// (Approach::look), Δη, Position_only near or when no correction is
-// needed, else the bounded modulation (Approach::funnel, config::mu_max
-// with MuBound::TurningRadius, config::modulation).
-fn plan(a: Agent, g: Goal, met: ptr<function, bool>) -> Out {
+// FunnelConfig::plan_begun (from plan_ours): Approach::begin (D, α, the
+// halting cap, the tolerance phase; static goals need no lead and count no
+// laps), then turning first round side `side` when the short-range choice
+// says so (short_range::turn_first), else aim_and_funnel: the terminal
+// pursuit, the entry aim, one lookup there (Approach::look), Δη,
+// Position_only near or when no correction is needed, else the bounded
+// modulation (Approach::funnel, config::mu_max with MuBound::TurningRadius,
+// config::modulation).
+fn plan(a: Agent, g: Goal, met: ptr<function, bool>, side: i32) -> Out {
   let c = seen(a, g.x, g.y);
   let halting = (g.flags & 1u) == 1u;
   var v_d = g.speed;
@@ -385,6 +406,7 @@ fn plan(a: Agent, g: Goal, met: ptr<function, bool>) -> Out {
   }
   var out = Out(FUNNELLING, c.x, c.z, 0.0, 0.0, 0.0, c.y, 1.0, v_d);
   if (tolerance_phase(a, g, met, c.x, &out)) { return out; }
+  if (side != 0) { return turn_first(a, g, side, c.x, c.y, v_d, out); }
   if (S(TERMINAL_HEADING) >= 0.0 && terminal(a, g, c.y, &out)) { return out; }
   // Approach::seen_aim / entry_depth: the entry point d_tol − r_reach
   // before the centre along β, the centre itself for a small disk.
@@ -420,6 +442,108 @@ fn plan(a: Agent, g: Goal, met: ptr<function, bool>) -> Out {
   return out;
 }
 
+// ---- short range (crate/funnelling/short_range.rs)
+
+// short_range::CLEARANCE, CORE, AIM_SHARE, GO_SHARE, WALK_ERR, COS_PI_8.
+const SR_CLEARANCE: f32 = 0.3;
+const SR_CORE: f32 = 0.6;
+const SR_AIM_SHARE: f32 = 0.4;
+const SR_GO_SHARE: f32 = 0.5;
+const SR_WALK_ERR: f32 = 0.5;
+const COS_PI_8: f32 = 0.9238795;
+const FRAC_1_SQRT_2: f32 = 0.70710678118654752440;
+
+// short_range::final_heading: a heading within AIM_SHARE·ε_tol of β whose
+// ray passes within CORE·D_tol of the centre, the nearest to β; `y` is 1
+// when there is one.
+fn final_heading(a: Agent, g: Goal, d: f32) -> vec2<f32> {
+  let core = SR_CORE * g.d_tol;
+  if (d <= core) { return vec2<f32>(g.beta, 1.0); }
+  let bearing = atan2c(g.y - a.y, g.x - a.x);
+  let half = atan2c(core, sqrt(max(d * d - core * core, 0.0)));
+  let h = wrap(bearing + clamp(wrap(g.beta - bearing), -half, half));
+  return vec2<f32>(h, select(0.0, 1.0, abs(wrap(h - g.beta)) <= SR_AIM_SHARE * g.eps_tol));
+}
+
+// short_range::clear: the segment from a to b stays at least r from c.
+fn clear_of(a: vec2<f32>, b: vec2<f32>, c: vec2<f32>, r: f32) -> bool {
+  let ab = b - a;
+  let ac = c - a;
+  let t = clamp((ac.x * ab.x + ac.y * ab.y) / max(ab.x * ab.x + ab.y * ab.y, 1e-12), 0.0, 1.0);
+  let q = a + ab * t - c;
+  return sqrt(q.x * q.x + q.y * q.y) >= r;
+}
+
+// short_range::corner: of the octagon's corners (k·π/4, CORNERS), ordered
+// from the one behind the disk round side `side` to the front, the first
+// in sight; `z` is 1 when one is.
+fn corner(a: Agent, g: Goal, u: vec2<f32>, side: f32, m: f32, d: f32) -> vec3<f32> {
+  let n = vec2<f32>(-u.y, u.x) * side;
+  let rho = (g.d_tol + m) / COS_PI_8;
+  let r_clear = min(g.d_tol + 0.5 * m, 0.5 * (d + g.d_tol));
+  let cs = array<vec2<f32>, 8>(
+    vec2<f32>(1.0, 0.0), vec2<f32>(FRAC_1_SQRT_2, FRAC_1_SQRT_2), vec2<f32>(0.0, 1.0),
+    vec2<f32>(-FRAC_1_SQRT_2, FRAC_1_SQRT_2), vec2<f32>(-1.0, 0.0), vec2<f32>(-FRAC_1_SQRT_2, -FRAC_1_SQRT_2),
+    vec2<f32>(0.0, -1.0), vec2<f32>(FRAC_1_SQRT_2, -FRAC_1_SQRT_2));
+  let pos = vec2<f32>(a.x, a.y);
+  let centre = vec2<f32>(g.x, g.y);
+  for (var k = 0u; k < 8u; k++) {
+    let at = centre + (-u * cs[k].x + n * cs[k].y) * rho;
+    if (clear_of(pos, at, centre, r_clear)) { return vec3<f32>(at, 1.0); }
+  }
+  return vec3<f32>(0.0, 0.0, 0.0);
+}
+
+// short_range::room_ahead, as the speed it allows (min(v, sqrt(2·0.8·A·room))
+// in turn_first): `v` itself when the line ahead misses the disk.
+fn room_speed(a: Agent, g: Goal, v: f32) -> f32 {
+  let f = sincos(a.theta);
+  let tx = g.x - a.x;
+  let ty = g.y - a.y;
+  let along = tx * f.y + ty * f.x;
+  let off2 = (tx * tx + ty * ty) - along * along;
+  let r2 = g.d_tol * g.d_tol;
+  if (along <= 0.0 || off2 >= r2) { return v; }
+  let room = max(along - sqrt(r2 - off2), 0.0);
+  return min(v, sqrt(2.0 * 0.8 * S(ACCEL) * room));
+}
+
+// short_range::turn_first, once the tolerance phase has let the update
+// through: the walk in along final_heading (the speed zero at GO_SHARE·ε_tol
+// of heading error), else the walk round the disk to the corner in sight
+// (away from the disk when none is), within braking distance of the disk
+// ahead and zero at WALK_ERR of heading error; Orientation_only below a
+// tenth of the desired speed, Position_only above.
+fn turn_first(a: Agent, g: Goal, side: i32, d: f32, bearing: f32, v_d: f32, out_in: Out) -> Out {
+  var out = out_in;
+  let b = sincos(g.beta);
+  let u = vec2<f32>(b.y, b.x);
+  let fh = final_heading(a, g, d);
+  var heading = fh.x;
+  var v = 0.0;
+  if (fh.y == 1.0) {
+    let e = abs(wrap(heading - a.theta));
+    v = v_d * max(1.0 - e / (SR_GO_SHARE * g.eps_tol), 0.0);
+  } else {
+    // short_range::clearance
+    let m = SR_CLEARANCE * S(SCALE_LENGTH) + 0.25 * g.d_tol;
+    let c = corner(a, g, u, f32(side), m, d);
+    if (c.z == 1.0) {
+      heading = atan2c(c.y - a.y, c.x - a.x);
+    } else {
+      heading = wrap(bearing + PI);
+    }
+    let e = abs(wrap(heading - a.theta));
+    v = room_speed(a, g, v_d) * max(1.0 - e / SR_WALK_ERR, 0.0);
+  }
+  out.mode = select(POSITION_ONLY, ORIENTATION_ONLY, v < 0.1 * v_d);
+  out.gamma = heading;
+  out.mu = wrap(heading - bearing);
+  out.delta_eta = wrap(g.beta - a.theta);
+  out.v_dt = v;
+  return out;
+}
+
 fn write_record(at: u32, a: Agent, o: Out, g: Goal) {
   var r = array<f32, 19>(a.x, a.y, a.theta, a.v, a.omega, f32(o.mode), o.d, o.alpha, o.eta,
     o.delta_eta, o.mu, o.gamma, o.reachable, o.v_dt, g.x, g.y, g.beta, g.d_tol, g.eps_tol);
@@ -431,6 +555,11 @@ fn write_record(at: u32, a: Agent, o: Out, g: Goal) {
 // goal, takes the committed seek step and advances its queue
 // (planner.rs advance_queue), counting an entry as oriented when the
 // heading after the step is within ε_tol of β (crate/world/entry_judge.rs).
+// The plan follows the short-range choice as FunnelConfig::plan_with
+// does: with a speed cap, funnelling towards the goal slowed to it;
+// with a side, turning first; a choice still awaited, plain funnelling.
+// Moving on to the next goal starts its memory afresh (planner.rs
+// advance_queue, GoalSpec::fresh_memory) with its choice awaited.
 @compute @workgroup_size(64)
 fn step_agents(@builtin(global_invocation_id) id: vec3<u32>) {
   let i = id.x;
@@ -446,8 +575,19 @@ fn step_agents(@builtin(global_invocation_id) id: vec3<u32>) {
     out.v_dt = speed;
     out.gamma = a.theta;
   } else {
-    var met = (a.flags & 1u) == 1u;
-    out = plan(a, g, &met);
+    var met = (a.flags & MET) == MET;
+    if ((a.flags & PENDING) == PENDING) {
+      a.cap = 0.0;
+      a.side = 0;
+    }
+    var pending = false;
+    var towards = g;
+    var side = a.side;
+    if (a.cap > 0.0) {
+      towards.speed = min(g.speed, a.cap);
+      side = 0;
+    }
+    out = plan(a, towards, &met, side);
     seek_committed(&a, out.gamma, out.v_dt);
     var switch_now = met;
     if ((g.flags & 2u) == 2u) { switch_now = out.mode == END_OF_STEERING; }
@@ -455,8 +595,11 @@ fn step_agents(@builtin(global_invocation_id) id: vec3<u32>) {
       a.current += 1u;
       met = false;
       if (abs(wrap(g.beta - a.theta)) < g.eps_tol) { a.oriented += 1u; }
+      a.cap = 0.0;
+      a.side = 0;
+      pending = a.current < a.count;
     }
-    a.flags = select(0u, 1u, met);
+    a.flags = select(0u, MET, met) | select(0u, PENDING, pending);
   }
   a.mode = out.mode;
   a.pad += counted;

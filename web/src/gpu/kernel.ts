@@ -12,6 +12,14 @@
 // the core's; a table read is within 1e-5 rad of the core's lookup. Not
 // the bits: a GPU may fuse multiply-adds, sums the blend's 32 corners in
 // its own order, and the kernel's sin/cos are f32 where the core's are f64.
+//
+// The short-range choice near a static goal (crate/funnelling/short_range.rs
+// decide: simulated ways in) is the core's: made for the current goals
+// when the world is packed, and for a goal the kernel moves an agent on
+// to by FunnelKernel.decide between steps (Lab.gpuDecide); the kernel
+// follows the choice every update. A host that steps on without deciding
+// (the timing page, the lab's GPU crowd) gets plain funnelling for those
+// goals: the same figures' cost, not the core's trajectory near them.
 
 import source from "./funnel.wgsl?raw";
 
@@ -21,14 +29,20 @@ export const FUNNEL_WGSL: string = source;
 /** Floats per agent record (crate/world/state_field.rs STATE_STRIDE). */
 export const RECORD_STRIDE = 19;
 /** Words per agent (crate/world/gpu_world.rs GpuWorld::AGENT_WORDS). */
-export const AGENT_WORDS = 12;
-/** Agent word offsets: the current goal, goals in the queue, goals entered oriented, the mode. */
+export const AGENT_WORDS = 14;
+/** Agent word offsets: the flags, the current goal, goals in the queue, goals entered oriented, the mode. */
+export const AGENT_FLAGS = 5;
 export const AGENT_CURRENT = 6;
 export const AGENT_COUNT = 8;
 export const AGENT_ORIENTED = 9;
 export const AGENT_MODE = 10;
 /** The agent's count of table reads (funnel.wgsl `counted`): blends in the low 16 bits, axes located above. */
 export const AGENT_COUNTED = 11;
+/** Agent flags' bit: the short-range choice for the current goal is awaited from the host (GpuWorld::PENDING). */
+export const PENDING = 2;
+/** Agent word offsets of the short-range choice: the speed cap (f32, 0: none) and the side turned round (i32, 0: funnelling). */
+export const AGENT_CAP = 12;
+export const AGENT_SIDE = 13;
 /** Words per goal (GpuWorld::GOAL_WORDS). */
 export const GOAL_WORDS = 8;
 const WORKGROUP = 64;
@@ -57,6 +71,11 @@ export interface GpuSource {
   gpuTableAxes(): Float32Array;
   gpuTableCells(): Float32Array;
   gpuWorld(): Uint32Array;
+}
+
+/** What makes the short-range choices the kernel awaits (the core's Lab). */
+export interface GpuDecider {
+  gpuDecide(agents: Uint32Array, goals: Uint32Array): number;
 }
 
 /** Lab.gpuWorld's one array split: agents' and goals' word counts first, then both, then the settings. */
@@ -133,6 +152,7 @@ export class FunnelKernel {
   readonly agents: GPUBuffer;
   readonly records: GPUBuffer;
   private readonly goals: GPUBuffer;
+  private readonly goalWords: Uint32Array;
   private readonly settings: GPUBuffer;
   private readonly frame: GPUBuffer;
   private readonly bind: GPUBindGroup;
@@ -148,6 +168,7 @@ export class FunnelKernel {
     this.n = world.agents.length / AGENT_WORDS;
     this.agents = storage(device, world.agents, USAGE.VERTEX, "agents");
     this.goals = storage(device, world.goals, 0, "goals");
+    this.goalWords = world.goals.slice();
     this.settings = storage(device, world.settings, 0, "settings");
     const recordFloats = allRecords ? this.n * RECORD_STRIDE : RECORD_STRIDE;
     this.records = storage(device, new Float32Array(recordFloats), 0, "records");
@@ -198,6 +219,19 @@ export class FunnelKernel {
 
   async readAgents(): Promise<Uint32Array> {
     return new Uint32Array(await readBack(this.device, this.agents, this.n * AGENT_WORDS * 4));
+  }
+
+  /** Makes the short-range choices the last step left awaited (agents moved
+   *  on to a goal) with `core`, from the states after that step, and
+   *  uploads them before the next; returns how many were made. */
+  async decide(core: GpuDecider): Promise<number> {
+    const agents = await this.readAgents();
+    let awaited = false;
+    for (let i = 0; i < this.n && !awaited; i++) awaited = ((agents[i * AGENT_WORDS + AGENT_FLAGS] ?? 0) & PENDING) !== 0;
+    if (!awaited) return 0;
+    const made = core.gpuDecide(agents, this.goalWords);
+    this.device.queue.writeBuffer(this.agents, 0, agents);
+    return made;
   }
 
   /** Every agent's record (with `records`), else the ringed agent's. */

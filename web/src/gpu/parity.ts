@@ -5,7 +5,7 @@
 // over SwiftShader; the timing page shows them for the user's own GPU.
 
 import type { Lab } from "../core/wasm";
-import { AGENT_COUNT, AGENT_CURRENT, AGENT_ORIENTED, AGENT_WORDS, FunnelKernel, GpuTable, RECORD_STRIDE, probeTable, splitWorld, tableArrays } from "./kernel";
+import { AGENT_CAP, AGENT_COUNT, AGENT_SIDE, AGENT_CURRENT, AGENT_ORIENTED, AGENT_WORDS, FunnelKernel, GpuTable, RECORD_STRIDE, probeTable, splitWorld, tableArrays } from "./kernel";
 
 /** One sampled step: agents, how many chose the core's mode, and the largest differences of the next state. */
 export interface StepParity {
@@ -31,6 +31,11 @@ export interface RunParity {
   left: [number, number];
   oriented: [number, number];
   restInside: [number, number];
+  /** Short-range choices the core made between steps, for goals the kernel moved agents on to. */
+  decided: number;
+  /** Agents whose packed current goal is approached by turning first, or funnelling slowed (the choice in force at the start). */
+  turnFirst: number;
+  slowed: number;
 }
 
 export interface ProbeParity {
@@ -95,7 +100,13 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
   const start = splitWorld(lab.gpuWorld());
   const kOpts = { records: true, ...(opts.source === undefined ? {} : { source: opts.source }) };
   const free = await FunnelKernel.create(device, table, start, kOpts);
-  free.step(opts.steps);
+  // One step at a time: the core's short-range choice for a goal an agent
+  // moves on to is made between steps, as the core makes it at the next.
+  let decided = 0;
+  for (let s = 0; s < opts.steps; s++) {
+    free.step(1);
+    decided += await free.decide(lab);
+  }
   const n = free.n;
   const oriented = new Uint32Array(n);
   let verdicts: Uint32Array = new Uint32Array(2 * n);
@@ -123,7 +134,12 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
   free.destroy();
   table.destroy();
   const cpuRec = lab.state();
-  const run: RunParity = { steps: opts.steps, agents: n, differ: 0, examples: [], left: [0, 0], oriented: [0, 0], restInside: [0, 0] };
+  const run: RunParity = { steps: opts.steps, agents: n, differ: 0, examples: [], left: [0, 0], oriented: [0, 0], restInside: [0, 0], decided, turnFirst: 0, slowed: 0 };
+  const f32 = new Float32Array(start.agents.buffer, start.agents.byteOffset, start.agents.length);
+  for (let i = 0; i < n; i++) {
+    if ((start.agents[i * AGENT_WORDS + AGENT_SIDE] ?? 0) !== 0) run.turnFirst++;
+    if ((f32[i * AGENT_WORDS + AGENT_CAP] ?? 0) > 0) run.slowed++;
+  }
   for (let i = 0; i < n; i++) {
     const w = (k: number) => agents[i * AGENT_WORDS + k] ?? 0;
     const cpuLeft = verdicts[2 * i] ?? 0;

@@ -11,7 +11,7 @@ import { fetchTable, Lab, loadCore } from "../core/wasm";
 import { projectedAgents, type CountedCost } from "../gpu/cost";
 import { openGpu, type GpuOpened } from "../gpu/device";
 import { AgentDrawer, type AgentView } from "../gpu/draw";
-import { GpuTable, tableArrays } from "../gpu/kernel";
+import { AGENT_WORDS, GpuTable, tableArrays } from "../gpu/kernel";
 import { probeParity, randomProbes, runParity } from "../gpu/parity";
 import { installHook, type GpuPage } from "./hook";
 import { crowdExtent, measureCore, measureCost, measureGpu, type Timing } from "./measure";
@@ -41,7 +41,7 @@ function showRows(rows: Timing[], emulated: boolean): void {
 function showCost(c: CountedCost): void {
   const lines = [
     `Counted per agent update (60 steps of 100,000 agents): ${c.blends.toFixed(2)} table blends of 32 cells, ${c.locates.toFixed(2)} axes located, ${c.passes} compute pass per step and no grid pass (no avoidance on this path).`,
-    `Bytes per update: ${Math.round(c.bytes)} (agent 48 read + 48 written, goal 32, η table ${Math.round(c.tableBytes)}).`,
+    `Bytes per update: ${Math.round(c.bytes)} (agent ${AGENT_WORDS * 4} read + ${AGENT_WORDS * 4} written, goal 32, η table ${Math.round(c.tableBytes)}).`,
     `Projection, not a measurement: a laptop GPU moving 100 GB/s would step ${fmt(projectedAgents(c.bytes, 100))} agents per 16.7 ms if every byte came from memory, ${fmt(projectedAgents(128, 100))} if the 5.8 MB table stays in cache; a 300 GB/s one, three times that.`,
   ];
   el("gpu-cost").replaceChildren(...lines.map((t) => Object.assign(document.createElement("p"), { textContent: t })));
