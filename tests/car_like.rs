@@ -421,11 +421,12 @@ fn car_like_with_reverse_backs_up_where_shorter() {
                 "{gear} D {lo}–{hi}: {b:?}"
             );
             if gear == "reverse" && rest {
-                // Measured on seed 2: 98–100 % and 1.1–1.3 (the aims, 100 %
-                // and 1.2, are not met yet below 5 R_min).
+                // Measured on seed 2: 99.6–100 % and 1.05–1.10 (the aim of
+                // 100 % is not met below 5 R_min: a start just outside a
+                // large disk whose every simulated path enters it askew).
                 let mut rs = b.ratios_rs.clone();
-                assert!(pct(b.oriented, b.entries) >= 97.0, "D {lo}–{hi}: {b:?}");
-                assert!(percentile(&mut rs, 0.5) <= 1.35, "D {lo}–{hi}");
+                assert!(pct(b.oriented, b.entries) >= 99.5, "D {lo}–{hi}: {b:?}");
+                assert!(percentile(&mut rs, 0.5) <= 1.2, "D {lo}–{hi}");
             }
         }
     }

@@ -135,7 +135,7 @@ fn progress(m: &mut Manoeuvre, s: &VehicleState, rho: f32, dt: f32) -> Vec2 {
 
 /// Whether the goal is done: inside the position tolerance (with the
 /// braking disk for a halting goal) and facing β (also at rest).
-fn arrived(p: &VehicleParams, s: &VehicleState, g: &Goal, d: f32) -> bool {
+pub(crate) fn arrived(p: &VehicleParams, s: &VehicleState, g: &Goal, d: f32) -> bool {
     let err = diff(g.beta, s.theta);
     if g.halting {
         d + braking_distance(p, s.v.abs()) < g.d_tol
