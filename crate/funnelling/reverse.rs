@@ -21,7 +21,7 @@
 //! word is only the first of a few paths tried ([`VARIANTS`]: a radius
 //! closer to `R_min`, a shorter or longer run-in, setting off forwards or
 //! backwards); each is followed in simulation with the very update and
-//! seek step the world runs ([`trial`], bounded by [`MAX_TRIAL_STEPS`]),
+//! seek step the world runs (`trial`, bounded by [`MAX_TRIAL_STEPS`]),
 //! and the shortest drive that arrives entering the disk facing β is
 //! taken. The word's cost is a poor guide near the goal: the pursuit lags
 //! each change of curvature, so an arc close to a large disk can cut into
@@ -78,7 +78,7 @@ pub const CUSP_REACH: f32 = 0.1;
 pub const DISK_MARGIN: f32 = 0.15;
 
 /// The paths simulated besides the manoeuvre's own when a path is solved
-/// ([`solve`]): (path radius, run-in beyond `D_tol`), each a factor of the
+/// (`solve`): (path radius, run-in beyond `D_tol`), each a factor of the
 /// manoeuvre's, and the gear to set off in (0: either).
 pub const VARIANTS: [(f32, f32, f32); 10] = [
     (1.0, 1.0, 1.0),
