@@ -50,6 +50,20 @@ pub fn braking_distance(p: &VehicleParams, v: f32) -> f32 {
     v * v / (2.0 * p.accel_max) + v * p.dt
 }
 
+/// Whether the goal is done: inside the position tolerance (with the
+/// braking disk for a halting goal) and facing β (also at rest): a
+/// car-like vehicle's manoeuvre and its reverse gear both stop on it.
+pub(crate) fn arrived(p: &VehicleParams, s: &VehicleState, g: &Goal, d: f32) -> bool {
+    let err = diff(g.beta, s.theta);
+    if g.halting {
+        d + braking_distance(p, s.v.abs()) < g.d_tol
+            && err.abs() < g.eps_tol
+            && wrap(err - rest_rotation(p, s.omega)).abs() < g.eps_tol
+    } else {
+        d < g.d_tol && err.abs() < g.eps_tol
+    }
+}
+
 /// Heading change, signed, while the angular speed `omega` decays to zero
 /// when the commanded heading is the current one (End_of_Steering, and the
 /// braking after the last halting goal, both hold the heading): the PD

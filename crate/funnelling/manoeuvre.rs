@@ -44,12 +44,12 @@
 
 use glam::Vec2;
 
-use crate::base::angle::{diff, wrap};
+use crate::base::angle::diff;
 use crate::base::dubins::DubinsPath;
 use crate::base::minmax::MinMax;
 use crate::base::trig;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::approach::{braking_distance, halting_speed, rest_rotation, seen_from};
+use crate::funnelling::approach::{arrived, halting_speed, seen_from};
 use crate::funnelling::goal::{Goal, Manoeuvre};
 use crate::funnelling::reverse::Pursuit;
 use crate::funnelling::update::{Internals, Mode, Update};
@@ -131,19 +131,6 @@ fn progress(m: &mut Manoeuvre, s: &VehicleState, rho: f32, dt: f32) -> Vec2 {
     }
     m.s = at;
     m.path.at(at).0
-}
-
-/// Whether the goal is done: inside the position tolerance (with the
-/// braking disk for a halting goal) and facing β (also at rest).
-pub(crate) fn arrived(p: &VehicleParams, s: &VehicleState, g: &Goal, d: f32) -> bool {
-    let err = diff(g.beta, s.theta);
-    if g.halting {
-        d + braking_distance(p, s.v.abs()) < g.d_tol
-            && err.abs() < g.eps_tol
-            && wrap(err - rest_rotation(p, s.omega)).abs() < g.eps_tol
-    } else {
-        d < g.d_tol && err.abs() < g.eps_tol
-    }
 }
 
 /// One update of a car-like vehicle towards an oriented goal: the

@@ -45,9 +45,8 @@ use crate::base::minmax::MinMax;
 use crate::base::reeds_shepp::{cheapest, Candidate, ReedsSheppPath};
 use crate::base::trig;
 use crate::base::vehicle::{VehicleParams, VehicleState};
-use crate::funnelling::approach::{halting_speed, seen_from};
+use crate::funnelling::approach::{arrived, halting_speed, seen_from};
 use crate::funnelling::goal::{Goal, Manoeuvre};
-use crate::funnelling::manoeuvre::arrived;
 use crate::funnelling::seek::seek_step_committed;
 use crate::funnelling::update::{Internals, Mode};
 
