@@ -41,7 +41,7 @@ const tmp = mkdtempSync(join(tmpdir(), "urlfuzz-"));
 const entry = join(tmp, "entry.ts");
 writeFileSync(entry, [
   `export { decodeState, encodeState } from ${JSON.stringify(resolve(src, "urlstate.ts"))};`,
-  `export { RangeTable, FIELDS, parseDecimal } from ${JSON.stringify(resolve(src, "fields.ts"))};`,
+  `export { RangeTable, FIELDS, parseDecimal, limitDefaults } from ${JSON.stringify(resolve(src, "fields.ts"))};`,
   `export { funnelConfig, relaxedConfig } from ${JSON.stringify(resolve(src, "funnelsettings.ts"))};`,
   `export { defaultState } from ${JSON.stringify(resolve(src, "state.ts"))};`,
 ].join("\n"));
@@ -57,8 +57,9 @@ const core = await import(resolve(pkg, "steering.js"));
 core.initSync({ module: readFileSync(resolve(pkg, "steering_bg.wasm")) });
 const tableBytes = readFileSync(resolve(root, "tables/eta.bin"));
 let lab = new core.Lab(tableBytes);
-// The core leaves a zero turning radius out; the page counts it as a limit.
-const defaults = { minTurnRadius: 0, ...lab.params() };
+// The core leaves a zero turning radius and reverse speed out; the page
+// counts them as limits (its own limitDefaults, so the two cannot drift).
+const defaults = page.limitDefaults(lab.params());
 const table = new page.RangeTable(core.ranges(), core.precision());
 const PRESETS = ["p000_fig1_seek", "p000_fig7_variety"];
 
