@@ -78,9 +78,13 @@ try {
       assert.equal(await waitReady(page, 60000), null);
       await settle(page);
       assert.equal(await page.$eval("#lab", (c) => c.dataset.agents), "webgl2");
-      // The agents' dark grey (#2b2b2b) and the mode colours: thousands of pixels.
-      const dark = await colourPixels(page, "#lab", [0x2b, 0x2b, 0x2b]);
-      assert.ok(dark > 2000, `only ${dark} agent-coloured pixels`);
+      // The agents' dark grey (#2b2b2b) and the mode colours they are
+      // filled with (ui/modes.ts): thousands of pixels.
+      let painted = 0;
+      for (const rgb of [[0x2b, 0x2b, 0x2b], [0xd6, 0x27, 0x28], [0xdd, 0x6b, 0x00], [0x1f, 0x5f, 0xd1], [0x8a, 0x8f, 0x98]]) {
+        painted += await colourPixels(page, "#lab", rgb);
+      }
+      assert.ok(painted > 2000, `only ${painted} agent-coloured pixels`);
       await shot(page, `perf-gl-lab-${w}`);
       await page.goto(`${url.replace(/\/?$/, "/")}?draw=2d#n=20000&ov=`);
       assert.equal(await waitReady(page, 60000), null);
