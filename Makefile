@@ -136,13 +136,23 @@ icount:
 # `--no-default-features`: the pages call no study, so `studies` (and
 # anything else on by default for native users) stays out of the download.
 SIMD_FLAGS := -C target-feature=+simd128
+# The two builds run side by side: each ends in a one-unit LTO link that
+# keeps one core busy, so on two cores both take about the time of one.
+# Each writes its log under target/; both are printed, and either failing
+# fails the target.
+WASM_BASE_BUILD := wasm-pack build --target web --release --out-dir web/pkg --no-pack -- --no-default-features
+WASM_SIMD_BUILD := CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
+	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack -- --no-default-features
 # The pages' wasm without its custom sections: the function names (a
 # tenth of the module, there for stack traces, and no panic crosses the
 # boundary), the producers and target features; they carry no semantics.
 wasm: setup-rust setup-wasm-strip
-	wasm-pack build --target web --release --out-dir web/pkg --no-pack -- --no-default-features
-	CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
-	  wasm-pack build --target web --release --out-dir target/wasm-simd/pkg --no-pack -- --no-default-features
+	mkdir -p target/wasm-simd
+	( $(WASM_SIMD_BUILD) ) > target/wasm-simd/build.log 2>&1 & simd=$$!; \
+	base=0; $(WASM_BASE_BUILD) || base=$$?; \
+	simd_rc=0; wait $$simd || simd_rc=$$?; \
+	echo "--- the simd128 build (target/wasm-simd/build.log):"; cat target/wasm-simd/build.log; \
+	if [ $$base != 0 ] || [ $$simd_rc != 0 ]; then echo "wasm builds failed: baseline exit $$base, simd128 exit $$simd_rc"; exit 1; fi
 	cmp web/pkg/steering.js target/wasm-simd/pkg/steering.js
 	cp target/wasm-simd/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm
 	for f in web/pkg/steering_bg.wasm web/pkg/steering_simd_bg.wasm; do wasm-strip $$f; done
@@ -173,8 +183,15 @@ web-build-test: setup-web wasm
 # operations in the same order); the shipped module itself, built with it,
 # is what the smoke, e2e and npm suites load.
 WASM_TEST_PROFILE := CARGO_PROFILE_RELEASE_LTO=false CARGO_PROFILE_RELEASE_CODEGEN_UNITS=16
+#
+# Only the test files that hold browser tests are built for wasm32 (the
+# others are native only, `#![cfg(not(target_arch = "wasm32"))]`, and the
+# library's own unit tests are native ones): building them all compiled
+# the library once more in its test configuration and ran some forty
+# empty binaries.
+WASM_TESTS := $(patsubst tests/%.rs,--test %,$(shell grep -l 'wasm_bindgen_test' tests/*.rs))
 test-wasm: setup-rust setup-browser
-	$(WASM_TEST_PROFILE) wasm-pack test --headless --chrome --release
+	$(WASM_TEST_PROFILE) wasm-pack test --headless --chrome --release $(WASM_TESTS)
 	$(WASM_TEST_PROFILE) CARGO_TARGET_DIR=target/wasm-simd RUSTFLAGS="$(SIMD_FLAGS)" \
 	  wasm-pack test --headless --chrome --release --test funnel_determinism --test wander_determinism --test web_gallery --test web_tables
 	$(stage-done)
