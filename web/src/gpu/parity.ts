@@ -108,7 +108,7 @@ export interface RunOptions {
  *  from the same start, in the kernel; compares one step from the core's
  *  state at each sample, and every agent's verdict at the end. The lab's
  *  world is advanced by `steps`. */
-export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): Promise<{ samples: StepParity[]; run: RunParity }> {
+export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): Promise<{ samples: StepParity[]; run: RunParity; drift: Drift[] }> {
   const table = new GpuTable(device, tableArrays(lab));
   const start = splitWorld(lab.gpuWorld());
   const kOpts = { records: true, ...(opts.source === undefined ? {} : { source: opts.source }) };
@@ -116,9 +116,14 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
   // One step at a time: the core's short-range choice for a goal an agent
   // moves on to is made between steps, as the core makes it at the next.
   let decided = 0;
+  const marks = [...new Set(opts.samples)].filter((s) => s >= 0 && s < opts.steps).sort((a, b) => a - b);
+  // The free run's records at the marks, to measure how far it has drifted
+  // from the core's own run there.
+  const freeAt = new Map<number, Float32Array>();
   for (let s = 0; s < opts.steps; s++) {
     free.step(1);
     decided += await free.decide(lab);
+    if (marks.includes(s + 1)) freeAt.set(s + 1, await free.readRecords());
   }
   const n = free.n;
   const oriented = new Uint32Array(n);
@@ -128,12 +133,14 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
     for (let i = 0; i < n; i++) oriented[i] = (oriented[i] ?? 0) + (v[2 * i + 1] ?? 0);
   };
   const samples: StepParity[] = [];
-  const marks = [...new Set(opts.samples)].filter((s) => s >= 0 && s < opts.steps).sort((a, b) => a - b);
+  const drift: Drift[] = [];
   let t = 0;
   for (const s of [...marks, opts.steps]) {
     if (s > t) add(lab.stepJudging(s - t));
     t = s;
     if (s === opts.steps) break;
+    const gpuFree = freeAt.get(s);
+    if (gpuFree) drift.push({ step: s, ...apart(lab.state(), gpuFree) });
     const world = splitWorld(lab.gpuWorld());
     const k = await FunnelKernel.create(device, table, world, kOpts);
     k.step(1);
@@ -149,13 +156,7 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
   free.destroy();
   table.destroy();
   const cpuRec = lab.state();
-  const run: RunParity = { steps: opts.steps, agents: n, differ: 0, examples: [], left: [0, 0], oriented: [0, 0], restInside: [0, 0], decided, turnFirst: 0, slowed: 0, maxPos: 0, apart: 0 };
-  for (let i = 0; i < n; i++) {
-    const at = (r: Float32Array, f: number) => r[i * RECORD_STRIDE + f] ?? NaN;
-    const d = Math.hypot(at(cpuRec, F.x) - at(gpuRec, F.x), at(cpuRec, F.y) - at(gpuRec, F.y));
-    run.maxPos = Math.max(run.maxPos, Number.isNaN(d) ? Infinity : d);
-    if (!(d <= 0.01)) run.apart++;
-  }
+  const run: RunParity = { steps: opts.steps, agents: n, differ: 0, examples: [], left: [0, 0], oriented: [0, 0], restInside: [0, 0], decided, turnFirst: 0, slowed: 0, ...apart(cpuRec, gpuRec) };
   const f32 = new Float32Array(start.agents.buffer, start.agents.byteOffset, start.agents.length);
   for (let i = 0; i < n; i++) {
     if ((start.agents[i * AGENT_WORDS + AGENT_SIDE] ?? 0) !== 0) run.turnFirst++;
@@ -179,7 +180,26 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
       if (run.examples.length < 5) run.examples.push(`agent ${i}: core ${cpu.join("/")}, kernel ${gpu.join("/")}`);
     }
   }
-  return { samples, run };
+  return { samples, run, drift };
+}
+
+/** The free run against the core's run at one step: how far apart. */
+export interface Drift {
+  step: number;
+  maxPos: number;
+  apart: number;
+}
+
+/** The largest distance between the same agent's positions in two records, m, and how many are more than 1 cm apart. */
+function apart(cpu: Float32Array, gpu: Float32Array): { maxPos: number; apart: number } {
+  const out = { maxPos: 0, apart: 0 };
+  for (let i = 0; i < cpu.length / RECORD_STRIDE; i++) {
+    const at = (r: Float32Array, f: number) => r[i * RECORD_STRIDE + f] ?? NaN;
+    const d = Math.hypot(at(cpu, F.x) - at(gpu, F.x), at(cpu, F.y) - at(gpu, F.y));
+    out.maxPos = Math.max(out.maxPos, Number.isNaN(d) ? Infinity : d);
+    if (!(d <= 0.01)) out.apart++;
+  }
+  return out;
 }
 
 /** The grid a separating kernel built for its step, and how many agents its commands push. */

@@ -7,7 +7,7 @@
 import type { Lab } from "../core/wasm";
 import type { CountedCost } from "../gpu/cost";
 import type { GpuOpened } from "../gpu/device";
-import { FUNNEL_WGSL, type GpuTable } from "../gpu/kernel";
+import { AGENT_WORDS, FUNNEL_WGSL, FunnelKernel, GpuTable, splitWorld, tableArrays } from "../gpu/kernel";
 import { probeParity, randomProbes, runParity } from "../gpu/parity";
 import { measureCore, measureCost, measureGpu, type Timing } from "./measure";
 import { seedWorld, separationWorld, vehicleLab, type VehicleName } from "./worlds";
@@ -47,6 +47,26 @@ export function installHook(page: GpuPage): void {
       const r = await runParity(g.device, lab, { steps, samples, ...(source === undefined ? {} : { source }) });
       lab.free();
       return { ...r, ms: performance.now() - t0 };
+    },
+    /** The lab's GPU crowd with separation on (Lab.gpuRandomCrowd packs the
+     *  world's avoidance, as gpucrowd.ts does): `n` agents stepped `steps`
+     *  steps; whether the grid's passes ran, and the agents' states all finite. */
+    async crowdSeparation(n: number, steps: number) {
+      const { g, bytes } = parts(page);
+      const lab = vehicleLab("pedestrian", bytes);
+      lab.setAvoidance("separation");
+      const table = new GpuTable(g.device, tableArrays(lab));
+      const k = await FunnelKernel.create(g.device, table, splitWorld(lab.gpuRandomCrowd(n, 3, Math.sqrt(n) / 2, 1.3, 4)));
+      k.step(steps);
+      const words = await k.readAgents();
+      const f = new Float32Array(words.buffer);
+      let finite = true;
+      for (let i = 0; i < k.n; i++) for (let w = 0; w < 5; w++) finite &&= Number.isFinite(f[i * AGENT_WORDS + w]);
+      const out = { separating: k.separation !== null, agents: k.n, finite };
+      k.destroy();
+      table.destroy();
+      lab.free();
+      return out;
     },
     /** `n` table reads against the core's lookup (the pedestrian's committed table). */
     async probes(n: number, seed: number, source?: string) {
