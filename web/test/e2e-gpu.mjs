@@ -160,7 +160,8 @@ try {
       assert.ok(source.includes(from), `the kernel still has ${from}`);
       const r = await sepParity("pedestrian", 1000, SEPARATION_WORLDS[0][2], source.replace(from, to), 60, [0, 30]);
       const why = sepStepBroken(r);
-      console.log(`planted ${name}: ${why.length} broken (${why[0] ?? "none"})`);
+      const grid = why.filter((w) => w.includes(": grid "));
+      console.log(`planted ${name}: ${why.length} broken, ${grid.length} of them the grid's (${why[0] ?? "none"}${grid[0] ? `; ${grid[0]}` : ""})`);
       assert.ok(why.length > 0, `the planted ${name} passed the checks`);
     }
   });

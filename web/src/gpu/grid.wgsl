@@ -15,7 +15,9 @@
 // prefix sum of the counts (scan_blocks: a workgroup scan of 256 buckets
 // each, their totals to block_sums; scan_sums: one workgroup scans the
 // totals, each invocation a run of them, so the table has no size limit
-// but the buffers'; scan_add: each bucket's block offset added, the
+// but the buffers': a storage binding of WebGPU's default 128 MiB holds
+// the starts of fewer than 32M buckets, so crowds up to 4M agents (16M
+// buckets), the lab's largest; scan_add: each bucket's block offset added, the
 // cursors set to the starts, starts[buckets] = n), scatter the agent
 // indices to their bucket's slots (scatter_agents, atomicAdd on the
 // cursors: any order within a bucket), then each bucket's slots put back
