@@ -41,13 +41,15 @@ const SEPARATION_WORLDS = [["pedestrian", 2000, 1], ["robot", 1500, 1]];
  *  1e-6 m, but the kernel's f32 sin/cos (the core's round f64 ones) differ
  *  by about 1e-7, and over hundreds of steps such a difference changes
  *  which neighbours push, then when an agent enters a tolerance.
- *  Measured over SwiftShader (seed 7): 12/2000 pedestrians, 4/1500 robots;
+ *  Measured over SwiftShader: seed 7 (these worlds), 12/2000 pedestrians
+ *  and 4/1500 robots; seed 11, 23/2000 and 9/1500; seed 7 at 2 agents per
+ *  m², 14/2000 pedestrians: at most 1.2 %, so the contract is 2 %;
  *  the pedestrians' free run drifts from the core's by at most 5e-10 m
  *  after 3 steps, 2e-6 m after 30, 0.09 m after 200 (2 agents past 1 cm),
  *  1.4 m after 400 (77) and 3.7 m after 600 (928): rounding grown by the
  *  crowd, not a step that differs (one step from the core's states agrees
  *  to 1e-6 all along). */
-const SEP_VERDICTS = 0.01;
+const SEP_VERDICTS = 0.02;
 
 const { server, url } = await serve();
 const browser = await launch(GPU_ARGS);

@@ -18,8 +18,8 @@
 // the core's hashed grid by a counting sort and a prefix sum, grid.wgsl,
 // the separation commands and the move, separation.wgsl): the same
 // one-step contract, the grid the GPU built equal to the CPU's counts, and
-// the free run's verdicts compared as a measured share (a dense crowd
-// under separation is chaotic: e2e-gpu.mjs SEP_VERDICTS).
+// the free run's verdicts the core's for at least 98 % of agents, not all
+// (a dense crowd under separation is chaotic: e2e-gpu.mjs SEP_VERDICTS).
 //
 // The short-range choice near a static goal (crate/funnelling/short_range.rs
 // decide: simulated ways in) is the core's: made for the current goals
