@@ -198,6 +198,14 @@ impl Avoider {
         self.neighbours.grid.reset_checks();
     }
 
+    /// The next step's number: with [`AvoidanceConfig::replan_every`] = e,
+    /// agent i plans at it when `(step + i) % e == 0` (a copy of the
+    /// avoidance stepped elsewhere, the GPU kernel, starts from it).
+    #[must_use]
+    pub fn next_step(&self) -> u32 {
+        self.step
+    }
+
     /// Fills [`Avoider::commands`] for agents in `states` whose funnels
     /// asked for `preferred[i] = (heading, speed)`: the agents not due to
     /// plan hold their commands, the grid and the records are rebuilt, and

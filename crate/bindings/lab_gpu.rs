@@ -14,13 +14,20 @@ use crate::world::gpu_world::GpuWorld;
 /// few hundred MB of wasm memory, past that.
 const AGENTS_GPU: u32 = 4_000_000;
 
-/// `gpuWorld`'s one array: the agents' and goals' word counts, then the
-/// agents, the goals and the settings' bits.
+/// `gpuWorld`'s one array: the agents', goals' and held commands' word
+/// counts, then the agents, the goals, the commands and the settings' bits.
 fn pack(g: GpuWorld) -> Vec<u32> {
-    let mut out = Vec::with_capacity(2 + g.agents.len() + g.goals.len() + g.settings.len());
-    out.extend([g.agents.len() as u32, g.goals.len() as u32]);
+    let mut out = Vec::with_capacity(
+        3 + g.agents.len() + g.goals.len() + g.commands.len() + g.settings.len(),
+    );
+    out.extend([
+        g.agents.len() as u32,
+        g.goals.len() as u32,
+        g.commands.len() as u32,
+    ]);
     out.extend(g.agents);
     out.extend(g.goals);
+    out.extend(g.commands);
     out.extend(g.settings.iter().map(|x| x.to_bits()));
     out
 }
@@ -55,9 +62,9 @@ impl Lab {
         GpuWorld::refusal(&self.world)
     }
 
-    /// The world for the kernel, as one array of words: the agents' word
-    /// count, the goals' word count, then the agents, the goals and the
-    /// settings (`f32` bits).
+    /// The world for the kernel, as one array of words: the agents', the
+    /// goals' and the held commands' word counts, then the agents, the
+    /// goals, the commands and the settings (`f32` bits).
     #[wasm_bindgen(js_name = gpuWorld)]
     pub fn gpu_world(&self) -> Result<Vec<u32>, JsError> {
         let g = GpuWorld::of(&self.world, self.table()?).map_err(|e| JsError::new(&e))?;

@@ -4,8 +4,20 @@
 //!
 //! The kernel (`web/src/gpu/`) mirrors the world's default step
 //! ([`crate::funnelling::controller::ControllerKind::is_ours_unicycle`]: our standard controller on
-//! a unicycle, avoidance off) towards static goals; anything else is
-//! refused here, with the reason, so a page falls back to the workers.
+//! a unicycle) towards static goals, with avoidance off or with
+//! separation between agents ([`AvoidanceMethod::Separation`] without
+//! obstacles: the kernel builds the core's hashed neighbour grid,
+//! [`crate::base::grid::NeighbourGrid`], by a counting sort and a prefix
+//! sum, and plans on the core's cadence); anything else (ORCA, obstacles)
+//! is refused here, with the reason, so a page falls back to the workers.
+//!
+//! With separation the kernel reads the settings the core's pass reads
+//! (`crate::avoidance::planning`'s `Pass`), the size of the core's bucket
+//! table for this many agents (so that neighbours come in the core's
+//! gather order, and ties among equal distances are broken as the core
+//! breaks them), the avoider's next step number
+//! ([`crate::avoidance::avoider::Avoider::next_step`]) and the commands
+//! agents hold between plans ([`GpuWorld::commands`]).
 //!
 //! The short-range choice ([`crate::funnelling::short_range::decide`]),
 //! made once per near static goal at its first update by simulating the
@@ -30,6 +42,11 @@
 //! - goals, [`GpuWorld::GOAL_WORDS`] each: `x, y, β, D_tol, ε_tol, speed`,
 //!   flags (`u32`: bit 0 halting, bit 1 the End_of_Steering switch rule),
 //!   padding;
+//! - commands, [`GpuWorld::COMMAND_WORDS`] each, with separation only (else
+//!   none): the command an agent holds between its plans, `heading, speed`,
+//!   active (`u32`, 1: its last plan changed the funnel's), padding; none
+//!   packed (empty) when the avoider keeps none for these agents: every
+//!   agent takes its funnel's until it plans;
 //! - settings, [`GpuWorld::SETTINGS`] floats, in [`GpuWorld::settings`]'s order.
 
 use crate::avoidance::config::AvoidanceMethod;
@@ -52,7 +69,10 @@ pub struct GpuWorld {
     pub agents: Vec<u32>,
     /// [`GpuWorld::GOAL_WORDS`] words per goal.
     pub goals: Vec<u32>,
-    /// The vehicle, controller and table numbers the kernel reads.
+    /// [`GpuWorld::COMMAND_WORDS`] words per agent with separation, the
+    /// commands held between plans; empty: none held.
+    pub commands: Vec<u32>,
+    /// The vehicle, controller, table and avoidance numbers the kernel reads.
     pub settings: Vec<f32>,
 }
 
@@ -68,12 +88,14 @@ impl GpuWorld {
     pub const PENDING: u32 = 2;
     /// Words per goal.
     pub const GOAL_WORDS: usize = 8;
+    /// Words per held command.
+    pub const COMMAND_WORDS: usize = 4;
     /// Floats of settings.
-    pub const SETTINGS: usize = 24;
+    pub const SETTINGS: usize = 33;
 
     /// Why the kernel cannot step `w`, if it cannot: a car-like vehicle,
     /// another controller or reading, a μ bound other than the turning
-    /// radius one, avoidance, or a goal that moves.
+    /// radius one, ORCA, obstacles with separation, or a goal that moves.
     #[must_use]
     pub fn refusal(w: &World) -> Option<String> {
         let why = if w.params.car_like() {
@@ -84,8 +106,10 @@ impl GpuWorld {
             "the GPU path runs our reading of the standard controller only: the paper's reading and its switches run in the workers"
         } else if !matches!(w.config.bound, MuBound::TurningRadius { .. }) {
             "the GPU path bounds μ by turning radii only: the literal and constant bounds run in the workers"
-        } else if w.avoidance.method != AvoidanceMethod::Off {
-            "the GPU path has no avoidance between agents: separation and ORCA run in the workers"
+        } else if w.avoidance.method == AvoidanceMethod::Orca {
+            "the GPU path avoids by separation only: ORCA runs in the workers"
+        } else if w.avoidance.method == AvoidanceMethod::Separation && !w.obstacles.is_empty() {
+            "the GPU path has no obstacles: separation with obstacles runs in the workers"
         } else if w
             .agents
             .iter()
@@ -139,10 +163,27 @@ impl GpuWorld {
                 i32::from(sr.side) as u32,
             ]);
         }
+        let n = w.agents.len();
+        let held = &w.avoider.commands;
+        let commands = if w.avoidance.method == AvoidanceMethod::Separation && held.len() == n {
+            held.iter()
+                .flat_map(|c| {
+                    [
+                        c.heading.to_bits(),
+                        c.speed.to_bits(),
+                        u32::from(c.active),
+                        0,
+                    ]
+                })
+                .collect()
+        } else {
+            Vec::new()
+        };
         Ok(Self {
             agents,
             goals,
-            settings: Self::settings(w, table),
+            commands,
+            settings: Self::settings(w, table, n, w.avoider.next_step()),
         })
     }
 
@@ -170,7 +211,8 @@ impl GpuWorld {
         let mut out = Self {
             agents: Vec::with_capacity(n * Self::AGENT_WORDS),
             goals: Vec::with_capacity(n * keep * Self::GOAL_WORDS),
-            settings: Self::settings(w, table),
+            commands: Vec::new(),
+            settings: Self::settings(w, table, n, 0),
         };
         World::random_crowd(&w.params, n, seed, extent, speed, |_, s, queue| {
             let first = (out.goals.len() / Self::GOAL_WORDS) as u32;
@@ -266,9 +308,45 @@ impl GpuWorld {
     /// the terminal pursuit's lookahead, heading (−1: off) and range, 1 for
     /// the entry aim), the vehicle's scale (length, speed, time), the
     /// table's reach radius, `D_η` and lowest desired speed, and the
-    /// speed term of [`FunnelMemory::release_radius`].
+    /// speed term of [`FunnelMemory::release_radius`]; then the avoidance
+    /// ([`GpuWorld::avoidance_settings`]) for `n` agents whose first step
+    /// is the avoider's step number `step`.
     #[must_use]
-    pub fn settings(w: &World, table: &EtaTable) -> Vec<f32> {
+    pub fn settings(w: &World, table: &EtaTable, n: usize, step: u32) -> Vec<f32> {
+        let mut out = Self::funnel_settings(w, table);
+        out.extend(Self::avoidance_settings(w, n, step));
+        out
+    }
+
+    /// The avoidance's settings as the core's pass reads them
+    /// (`crate::avoidance::planning`'s `Pass`): 1 for separation (0: off),
+    /// the radius avoided with (body plus margin), the reach squared, the
+    /// grid's inverse cell (`1 / reach`, as `NeighbourGrid::rebuild`
+    /// computes it), the neighbours kept (at most
+    /// [`crate::avoidance::orca::MAX_NEIGHBOURS`]), the separation weight,
+    /// the planning cadence (at least 1), the bucket count of the core's
+    /// grid for `n` agents (`(4n)` rounded up to a power of two, at least
+    /// 64) and the first step's number `step`.
+    #[must_use]
+    pub fn avoidance_settings(w: &World, n: usize, step: u32) -> [f32; 9] {
+        let c = &w.avoidance;
+        let on = c.method == AvoidanceMethod::Separation;
+        let every = c.replan_every.max(1);
+        [
+            if on { 1.0 } else { 0.0 },
+            c.radius + c.margin,
+            c.reach * c.reach,
+            1.0 / c.reach,
+            (c.max_neighbours as usize).min(crate::avoidance::orca::MAX_NEIGHBOURS) as f32,
+            c.separation_weight,
+            every as f32,
+            (4 * n).next_power_of_two().max(64) as f32,
+            (step % every) as f32,
+        ]
+    }
+
+    /// The vehicle, funnel and table settings ([`GpuWorld::settings`]'s first 24).
+    fn funnel_settings(w: &World, table: &EtaTable) -> Vec<f32> {
         let p = &w.params;
         let c = &w.config;
         let sc = VehicleScale::of(p);
@@ -340,6 +418,57 @@ mod tests {
 
     fn of(sr: ShortRange) -> (f32, i32) {
         (sr.speed_cap, i32::from(sr.side))
+    }
+
+    /// With separation the kernel gets the core's pass settings, the
+    /// grid's bucket count, the avoider's next step and the commands held;
+    /// ORCA and obstacles are refused.
+    #[test]
+    fn separation_is_packed_and_orca_and_obstacles_are_refused() {
+        use crate::avoidance::config::{AvoidanceConfig, Obstacle};
+        let t = table();
+        let mut w = World::new(VehicleParams::default(), FunnelConfig::default()).unwrap();
+        w.spawn_random(300, 5, 6.0, 1.3).unwrap();
+        let sep = AvoidanceConfig::with_method(AvoidanceMethod::Separation);
+        w.set_avoidance(sep, Vec::new()).unwrap();
+        let fresh = GpuWorld::of(&w, &t).unwrap();
+        assert!(fresh.commands.is_empty(), "no command held before a step");
+        for _ in 0..3 {
+            w.step(&t).unwrap();
+        }
+        let g = GpuWorld::of(&w, &t).unwrap();
+        assert_eq!(g.settings.len(), GpuWorld::SETTINGS);
+        let s = &g.settings[24..];
+        assert_eq!(s[0], 1.0);
+        assert_eq!(s[1], sep.radius + sep.margin);
+        assert_eq!(s[2], sep.reach * sep.reach);
+        assert_eq!(s[3], 1.0 / sep.reach);
+        assert_eq!(s[4], sep.max_neighbours as f32);
+        assert_eq!(s[6], sep.replan_every as f32);
+        assert_eq!(s[7], 2048.0, "4 × 300 rounded up to a power of two");
+        assert_eq!(s[8], (3 % sep.replan_every) as f32);
+        assert_eq!(g.commands.len(), 300 * GpuWorld::COMMAND_WORDS);
+        let active = g.commands.chunks_exact(4).filter(|c| c[2] == 1).count();
+        assert!(active > 0, "some agents are pushed");
+        for (c, h) in g.commands.chunks_exact(4).zip(&w.avoider.commands) {
+            assert_eq!(
+                (f32::from_bits(c[0]), f32::from_bits(c[1])),
+                (h.heading, h.speed)
+            );
+        }
+        let orca = AvoidanceConfig::with_method(AvoidanceMethod::Orca);
+        w.set_avoidance(orca, Vec::new()).unwrap();
+        assert!(GpuWorld::refusal(&w).unwrap().contains("ORCA"));
+        let disc = Obstacle::Disc {
+            x: 0.0,
+            y: 0.0,
+            radius: 1.0,
+        };
+        w.set_avoidance(sep, vec![disc]).unwrap();
+        assert!(GpuWorld::refusal(&w).unwrap().contains("obstacles"));
+        w.set_avoidance(AvoidanceConfig::default(), vec![disc])
+            .unwrap();
+        assert_eq!(GpuWorld::refusal(&w), None, "off: obstacles are not read");
     }
 
     #[test]

@@ -66,6 +66,11 @@ const SEEK_THRESHOLD = 10u; const BOUND_FACTOR = 11u; const MIN_BOUND_RADIUS = 1
 const LOOKAHEAD = 13u; const TERMINAL_HEADING = 14u; const TERMINAL_RANGE = 15u; const AIM_ENTRY = 16u;
 const SCALE_LENGTH = 17u; const SCALE_SPEED = 18u; const SCALE_TIME = 19u; const REACH_RADIUS = 20u;
 const D_ETA = 21u; const VD_MIN = 22u; const RELEASE = 23u;
+// Avoidance (GpuWorld::avoidance_settings): separation on, the radius
+// avoided with, reach², 1/reach, neighbours kept, the push's weight, the
+// planning cadence, the buckets of the grid, the first step's number.
+const SEPARATION = 24u; const SEP_R = 25u; const REACH2 = 26u; const INV_CELL = 27u; const K_MAX = 28u;
+const SEP_WEIGHT = 29u; const REPLAN = 30u; const BUCKETS = 31u; const STEP0 = 32u;
 
 @group(0) @binding(0) var<storage, read> settings: array<f32>;
 @group(0) @binding(1) var<storage, read> tmeta: array<u32>;
@@ -550,45 +555,65 @@ fn write_record(at: u32, a: Agent, o: Out, g: Goal) {
   for (var k = 0u; k < STRIDE; k++) { records[at * STRIDE + k] = r[k]; }
 }
 
-// world.rs step_agent: a done agent holds its heading at its cruise speed
-// (Agent::cruise_speed, Agent::hold); another plans towards its current
-// goal, takes the committed seek step and advances its queue
-// (planner.rs advance_queue), counting an entry as oriented when the
-// heading after the step is within ε_tol of β (crate/world/entry_judge.rs).
-// The plan follows the short-range choice as FunnelConfig::plan_with
-// does: with a speed cap, funnelling towards the goal slowed to it;
-// with a side, turning first; a choice still awaited, plain funnelling.
-// Moving on to the next goal starts its memory afresh (planner.rs
-// advance_queue, GoalSpec::fresh_memory) with its choice awaited.
-@compute @workgroup_size(64)
-fn step_agents(@builtin(global_invocation_id) id: vec3<u32>) {
-  let i = id.x;
-  if (i >= frame.n) { return; }
-  var a = agents[i];
+// The current goal (a default one for an agent without goals).
+fn current_goal(a: Agent) -> Goal {
+  if (a.count > 0u) { return goals[a.first + min(a.current, a.count - 1u)]; }
+  return Goal(0.0, 0.0, 0.0, 0.25, 0.0872664626, 1.3, 0u, 0u);
+}
+
+// A short-range choice awaited from the host and not made: plain funnelling.
+fn drop_awaited_choice(a: ptr<function, Agent>) {
+  if (((*a).flags & PENDING) == PENDING) {
+    (*a).cap = 0.0;
+    (*a).side = 0;
+  }
+}
+
+// world.rs step_agent's plan (and avoid_step.rs's step 1): a done agent
+// holds its heading at its cruise speed (Agent::cruise_speed, Agent::hold);
+// another plans towards its current goal following the short-range choice
+// as FunnelConfig::plan_with does: with a speed cap, funnelling towards
+// the goal slowed to it; with a side, turning first; a choice still
+// awaited, plain funnelling. `met` is the position met after the plan.
+fn plan_agent(a: ptr<function, Agent>, met: ptr<function, bool>) -> Out {
   var out = Out(END_OF_STEERING, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0, 0.0);
-  var g = Goal(0.0, 0.0, 0.0, 0.25, 0.0872664626, 1.3, 0u, 0u);
-  if (a.count > 0u) { g = goals[a.first + min(a.current, a.count - 1u)]; }
-  if (a.current >= a.count) {
+  let g = current_goal(*a);
+  if ((*a).current >= (*a).count) {
     var speed = 0.0;
-    if (a.count > 0u && (g.flags & 1u) == 0u) { speed = g.speed; }
-    integrate(&a, S(KP) * wrap(a.theta - a.theta) - S(KD) * a.omega, speed);
+    if ((*a).count > 0u && (g.flags & 1u) == 0u) { speed = g.speed; }
     out.v_dt = speed;
+    out.gamma = (*a).theta;
+    return out;
+  }
+  *met = ((*a).flags & MET) == MET;
+  drop_awaited_choice(a);
+  var towards = g;
+  var side = (*a).side;
+  if ((*a).cap > 0.0) {
+    towards.speed = min(g.speed, (*a).cap);
+    side = 0;
+  }
+  return plan(*a, towards, met, side);
+}
+
+// world.rs step_agent's move (and avoid_step.rs's step 3): the committed
+// seek step to (heading, speed) — the plan's (γ, v_dt), or the avoidance's
+// command —, then for an agent not done the queue's advance (planner.rs
+// advance_queue), counting an entry as oriented when the heading after
+// the step is within ε_tol of β (crate/world/entry_judge.rs); moving on
+// to the next goal starts its memory afresh (GoalSpec::fresh_memory) with
+// its choice awaited. A done agent's γ is its heading after the step.
+fn move_agent(i: u32, a_in: Agent, plan_out: Out, met_in: bool, heading: f32, speed: f32) {
+  var a = a_in;
+  var out = plan_out;
+  var met = met_in;
+  let g = current_goal(a);
+  let done = a.current >= a.count;
+  seek_committed(&a, heading, speed);
+  if (done) {
     out.gamma = a.theta;
   } else {
-    var met = (a.flags & MET) == MET;
-    if ((a.flags & PENDING) == PENDING) {
-      a.cap = 0.0;
-      a.side = 0;
-    }
     var pending = false;
-    var towards = g;
-    var side = a.side;
-    if (a.cap > 0.0) {
-      towards.speed = min(g.speed, a.cap);
-      side = 0;
-    }
-    out = plan(a, towards, &met, side);
-    seek_committed(&a, out.gamma, out.v_dt);
     var switch_now = met;
     if ((g.flags & 2u) == 2u) { switch_now = out.mode == END_OF_STEERING; }
     if (switch_now) {
@@ -609,6 +634,17 @@ fn step_agents(@builtin(global_invocation_id) id: vec3<u32>) {
   } else if (i == frame.ring) {
     write_record(0u, a, out, g);
   }
+}
+
+// world.rs step_agent, avoidance off: plan and move in one invocation.
+@compute @workgroup_size(64)
+fn step_agents(@builtin(global_invocation_id) id: vec3<u32>) {
+  let i = id.x;
+  if (i >= frame.n) { return; }
+  var a = agents[i];
+  var met = false;
+  let out = plan_agent(&a, &met);
+  move_agent(i, a, out, met, out.gamma, out.v_dt);
 }
 
 // ---- table probes: the lookup alone, for the parity checks

@@ -13,6 +13,14 @@
 // the bits: a GPU may fuse multiply-adds, sums the blend's 32 corners in
 // its own order, and the kernel's sin/cos are f32 where the core's are f64.
 //
+// With separation between agents (GpuWorld::avoidance_settings; no
+// obstacles, ORCA refused) a step is ten dispatches (passes.ts: the plans,
+// the core's hashed grid by a counting sort and a prefix sum, grid.wgsl,
+// the separation commands and the move, separation.wgsl): the same
+// one-step contract, the grid the GPU built equal to the CPU's counts, and
+// the free run's verdicts the core's for at least 98 % of agents, not all
+// (a dense crowd under separation is chaotic: e2e-gpu.mjs SEP_VERDICTS).
+//
 // The short-range choice near a static goal (crate/funnelling/short_range.rs
 // decide: simulated ways in) is the core's: made for the current goals
 // when the world is packed, and for a goal the kernel moves an agent on
@@ -21,10 +29,17 @@
 // (the timing page, the lab's GPU crowd) gets plain funnelling for those
 // goals: the same figures' cost, not the core's trajectory near them.
 
-import source from "./funnel.wgsl?raw";
+import funnel from "./funnel.wgsl?raw";
+import grid from "./grid.wgsl?raw";
+import separation from "./separation.wgsl?raw";
+import { USAGE, readBack, storage } from "./buffers";
+import { SeparationPasses } from "./passes";
 
-/** The kernel's WGSL (a parity check may plant a change in a copy). */
-export const FUNNEL_WGSL: string = source;
+export { USAGE, readBack };
+
+/** The kernel's WGSL, one module: the funnel's step, the neighbour grid and
+ *  separation (a parity check may plant a change in a copy). */
+export const FUNNEL_WGSL: string = [funnel, grid, separation].join("\n");
 
 /** Floats per agent record (crate/world/state_field.rs STATE_STRIDE). */
 export const RECORD_STRIDE = 19;
@@ -45,11 +60,14 @@ export const AGENT_CAP = 12;
 export const AGENT_SIDE = 13;
 /** Words per goal (GpuWorld::GOAL_WORDS). */
 export const GOAL_WORDS = 8;
-const WORKGROUP = 64;
+/** Words per held command (GpuWorld::COMMAND_WORDS). */
+export const COMMAND_WORDS = 4;
+/** Settings' indices (GpuWorld::avoidance_settings): separation on, the grid's buckets, the first step's number. */
+export const SETTING_SEPARATION = 24;
+export const SETTING_BUCKETS = 31;
+export const SETTING_STEP0 = 32;
+export const WORKGROUP = 64;
 
-/** WebGPU's buffer usage and map mode flags (the spec's numbers; TypeScript's DOM library types them but declares no values). */
-export const USAGE = { MAP_READ: 0x1, COPY_SRC: 0x4, COPY_DST: 0x8, VERTEX: 0x20, UNIFORM: 0x40, STORAGE: 0x80, QUERY_RESOLVE: 0x200 } as const;
-const MAP_READ_MODE = 0x1;
 
 /** The η table as the kernel reads it (Lab.gpuTableMeta, gpuTableAxes, gpuTableCells). */
 export interface GpuTableArrays {
@@ -62,6 +80,8 @@ export interface GpuTableArrays {
 export interface GpuWorldArrays {
   agents: Uint32Array;
   goals: Uint32Array;
+  /** The commands held between plans (separation; empty: none held). */
+  commands: Uint32Array;
   settings: Float32Array;
 }
 
@@ -78,39 +98,25 @@ export interface GpuDecider {
   gpuDecide(agents: Uint32Array, goals: Uint32Array): number;
 }
 
-/** Lab.gpuWorld's one array split: agents' and goals' word counts first, then both, then the settings. */
+/** Lab.gpuWorld's one array split: agents', goals' and commands' word counts first, then the three, then the settings. */
 export function splitWorld(words: Uint32Array): GpuWorldArrays {
   const na = words[0] ?? 0;
   const ng = words[1] ?? 0;
-  const agents = words.subarray(2, 2 + na);
-  const goals = words.subarray(2 + na, 2 + na + ng);
-  const rest = words.slice(2 + na + ng);
-  return { agents, goals, settings: new Float32Array(rest.buffer, rest.byteOffset, rest.length) };
+  const nc = words[2] ?? 0;
+  const agents = words.subarray(3, 3 + na);
+  const goals = words.subarray(3 + na, 3 + na + ng);
+  const commands = words.subarray(3 + na + ng, 3 + na + ng + nc);
+  const rest = words.slice(3 + na + ng + nc);
+  return { agents, goals, commands, settings: new Float32Array(rest.buffer, rest.byteOffset, rest.length) };
+}
+
+/** True when the world avoids by separation (GpuWorld::avoidance_settings). */
+export function separating(world: GpuWorldArrays): boolean {
+  return (world.settings[SETTING_SEPARATION] ?? 0) === 1;
 }
 
 export function tableArrays(lab: GpuSource): GpuTableArrays {
   return { meta: lab.gpuTableMeta(), axes: lab.gpuTableAxes(), cells: lab.gpuTableCells() };
-}
-
-function storage(device: GPUDevice, data: ArrayBufferView, extra: number = 0, label = "funnel"): GPUBuffer {
-  // A binding needs a non-empty buffer; sizes are multiples of 4 anyway.
-  const size = Math.max(16, Math.ceil(data.byteLength / 16) * 16);
-  const b = device.createBuffer({ label, size, usage: USAGE.STORAGE | USAGE.COPY_DST | USAGE.COPY_SRC | extra, mappedAtCreation: true });
-  new Uint8Array(b.getMappedRange()).set(new Uint8Array(data.buffer, data.byteOffset, data.byteLength));
-  b.unmap();
-  return b;
-}
-
-/** Reads `size` bytes of `buffer` back (tests, the ringed agent's HUD numbers). */
-export async function readBack(device: GPUDevice, buffer: GPUBuffer, size: number, offset = 0): Promise<ArrayBuffer> {
-  const staging = device.createBuffer({ size, usage: USAGE.MAP_READ | USAGE.COPY_DST });
-  const enc = device.createCommandEncoder();
-  enc.copyBufferToBuffer(buffer, offset, staging, 0, size);
-  device.queue.submit([enc.finish()]);
-  await staging.mapAsync(MAP_READ_MODE);
-  const out = staging.getMappedRange().slice(0);
-  staging.destroy();
-  return out;
 }
 
 /** The η table on the device, shared by the step and the probes. */
@@ -138,7 +144,7 @@ export interface KernelOptions {
 }
 
 /** Compiles the kernel's module, refusing one with errors (their messages joined). */
-async function compile(device: GPUDevice, code: string): Promise<GPUShaderModule> {
+export async function compile(device: GPUDevice, code: string): Promise<GPUShaderModule> {
   const module = device.createShaderModule({ label: "funnel.wgsl", code });
   const info = await module.getCompilationInfo();
   const errors = info.messages.filter((m) => m.type === "error");
@@ -157,6 +163,8 @@ export class FunnelKernel {
   private readonly frame: GPUBuffer;
   private readonly bind: GPUBindGroup;
   private readonly frameWords = new Uint32Array(4);
+  /** Separation's passes (null: avoidance off, one dispatch per step). */
+  separation: SeparationPasses | null = null;
 
   private constructor(
     private readonly device: GPUDevice,
@@ -175,17 +183,28 @@ export class FunnelKernel {
     this.frame = device.createBuffer({ size: 16, usage: USAGE.UNIFORM | USAGE.COPY_DST });
     this.frameWords.set([this.n, allRecords ? 1 : 0, 0xffffffff, 0]);
     device.queue.writeBuffer(this.frame, 0, this.frameWords);
-    const buffers = [this.settings, table.meta, table.axes, table.cells, this.agents, this.goals, this.records, this.frame];
+    const buffers = this.bindings(table);
     this.bind = device.createBindGroup({
       layout: pipeline.getBindGroupLayout(0),
       entries: buffers.map((buffer, binding) => ({ binding, resource: { buffer } })),
     });
   }
 
+  /** The kernel's buffers by binding (funnel.wgsl 0–7). */
+  private bindings(table: GpuTable): GPUBuffer[] {
+    return [this.settings, table.meta, table.axes, table.cells, this.agents, this.goals, this.records, this.frame];
+  }
+
   static async create(device: GPUDevice, table: GpuTable, world: GpuWorldArrays, opts: KernelOptions = {}): Promise<FunnelKernel> {
     const module = await compile(device, opts.source ?? FUNNEL_WGSL);
     const pipeline = await device.createComputePipelineAsync({ layout: "auto", compute: { module, entryPoint: "step_agents" } });
-    return new FunnelKernel(device, pipeline, table, world, opts.records ?? false);
+    const k = new FunnelKernel(device, pipeline, table, world, opts.records ?? false);
+    if (separating(world)) {
+      const buckets = world.settings[SETTING_BUCKETS] ?? 64;
+      const step0 = world.settings[SETTING_STEP0] ?? 0;
+      k.separation = await SeparationPasses.create(device, module, k.bindings(table), k.n, buckets, world.commands, step0);
+    }
+    return k;
   }
 
   /** The agent whose record is written each step when not all are (the HUD's ringed agent). */
@@ -194,7 +213,8 @@ export class FunnelKernel {
     this.device.queue.writeBuffer(this.frame, 0, this.frameWords);
   }
 
-  /** Encodes `steps` steps, one compute pass each, into `enc`; with
+  /** Encodes `steps` steps, one compute pass each (with separation, its
+   *  ten dispatches: passes.ts), into `enc`; with
    *  `timestamps`, its query 0 at the first pass's start and 1 at the last's end. */
   encode(enc: GPUCommandEncoder, steps = 1, timestamps?: GPUQuerySet): void {
     for (let s = 0; s < steps; s++) {
@@ -204,9 +224,13 @@ export class FunnelKernel {
         ...(s === steps - 1 ? { endOfPassWriteIndex: 1 } : {}),
       };
       const pass = enc.beginComputePass(tw && (s === 0 || s === steps - 1) ? { timestampWrites: tw } : {});
-      pass.setPipeline(this.pipeline);
-      pass.setBindGroup(0, this.bind);
-      pass.dispatchWorkgroups(Math.ceil(this.n / WORKGROUP));
+      if (this.separation) {
+        this.separation.dispatch(pass);
+      } else {
+        pass.setPipeline(this.pipeline);
+        pass.setBindGroup(0, this.bind);
+        pass.dispatchWorkgroups(Math.ceil(this.n / WORKGROUP));
+      }
       pass.end();
     }
   }
@@ -242,6 +266,7 @@ export class FunnelKernel {
 
   destroy(): void {
     for (const b of [this.agents, this.goals, this.settings, this.records, this.frame]) b.destroy();
+    this.separation?.destroy();
   }
 }
 

@@ -1,11 +1,15 @@
 // The kernel against the core on this device (docs/DESIGN.md §20): one step
-// from the same states sampled along a run of the wasm core, a free run's
-// arrival verdicts, and table reads at random probes. The e2e suite
+// from the same states sampled along a run of the wasm core (with
+// separation, also the grid the kernel built for it, gridcheck.ts, and how
+// many agents were pushed), a free run's arrival verdicts, and table reads
+// at random probes. The e2e suite
 // (web/test/e2e-gpu.mjs) asserts the kernel's contract on these numbers
 // over SwiftShader; the timing page shows them for the user's own GPU.
 
 import type { Lab } from "../core/wasm";
-import { AGENT_CAP, AGENT_COUNT, AGENT_SIDE, AGENT_CURRENT, AGENT_ORIENTED, AGENT_WORDS, FunnelKernel, GpuTable, RECORD_STRIDE, probeTable, splitWorld, tableArrays } from "./kernel";
+import { separationCost, type SeparationCost } from "./cost";
+import { checkGrid, type GridParity } from "./gridcheck";
+import { AGENT_CAP, AGENT_COUNT, AGENT_SIDE, AGENT_CURRENT, AGENT_ORIENTED, AGENT_WORDS, COMMAND_WORDS, FunnelKernel, GpuTable, RECORD_STRIDE, probeTable, splitWorld, tableArrays } from "./kernel";
 
 /** One sampled step: agents, how many chose the core's mode, and the largest differences of the next state. */
 export interface StepParity {
@@ -18,6 +22,12 @@ export interface StepParity {
   maxOmega: number;
   /** Largest difference of the commanded heading γ among agents of the same mode. */
   maxGamma: number;
+  /** With separation: the grid the kernel built for the step, against the CPU's counts. */
+  grid?: GridParity;
+  /** With separation: agents whose command after the step is the avoidance's (active), of `agents`. */
+  pushed?: number;
+  /** With separation: what it adds per agent update, counted from that grid. */
+  cost?: SeparationCost;
 }
 
 /** A free run: agents whose verdict (goals left, entered oriented, at rest inside both tolerances at the end) differs. */
@@ -36,6 +46,9 @@ export interface RunParity {
   /** Agents whose packed current goal is approached by turning first, or funnelling slowed (the choice in force at the start). */
   turnFirst: number;
   slowed: number;
+  /** At the end: the largest distance between an agent's positions in the core and the kernel, m, and how many are more than 1 cm apart. */
+  maxPos: number;
+  apart: number;
 }
 
 export interface ProbeParity {
@@ -95,7 +108,7 @@ export interface RunOptions {
  *  from the same start, in the kernel; compares one step from the core's
  *  state at each sample, and every agent's verdict at the end. The lab's
  *  world is advanced by `steps`. */
-export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): Promise<{ samples: StepParity[]; run: RunParity }> {
+export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): Promise<{ samples: StepParity[]; run: RunParity; drift: Drift[] }> {
   const table = new GpuTable(device, tableArrays(lab));
   const start = splitWorld(lab.gpuWorld());
   const kOpts = { records: true, ...(opts.source === undefined ? {} : { source: opts.source }) };
@@ -103,9 +116,14 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
   // One step at a time: the core's short-range choice for a goal an agent
   // moves on to is made between steps, as the core makes it at the next.
   let decided = 0;
+  const marks = [...new Set(opts.samples)].filter((s) => s >= 0 && s < opts.steps).sort((a, b) => a - b);
+  // The free run's records at the marks, to measure how far it has drifted
+  // from the core's own run there.
+  const freeAt = new Map<number, Float32Array>();
   for (let s = 0; s < opts.steps; s++) {
     free.step(1);
     decided += await free.decide(lab);
+    if (marks.includes(s + 1)) freeAt.set(s + 1, await free.readRecords());
   }
   const n = free.n;
   const oriented = new Uint32Array(n);
@@ -115,26 +133,30 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
     for (let i = 0; i < n; i++) oriented[i] = (oriented[i] ?? 0) + (v[2 * i + 1] ?? 0);
   };
   const samples: StepParity[] = [];
-  const marks = [...new Set(opts.samples)].filter((s) => s >= 0 && s < opts.steps).sort((a, b) => a - b);
+  const drift: Drift[] = [];
   let t = 0;
   for (const s of [...marks, opts.steps]) {
     if (s > t) add(lab.stepJudging(s - t));
     t = s;
     if (s === opts.steps) break;
-    const k = await FunnelKernel.create(device, table, splitWorld(lab.gpuWorld()), kOpts);
+    const gpuFree = freeAt.get(s);
+    if (gpuFree) drift.push({ step: s, ...apart(lab.state(), gpuFree) });
+    const world = splitWorld(lab.gpuWorld());
+    const k = await FunnelKernel.create(device, table, world, kOpts);
     k.step(1);
     const gpu = await k.readRecords();
+    const extra = k.separation ? await separationChecks(k.separation, world.agents, world.settings) : {};
     k.destroy();
     add(lab.stepJudging(1));
     t++;
-    samples.push(compareStep(s, lab.state(), gpu));
+    samples.push({ ...compareStep(s, lab.state(), gpu), ...extra });
   }
   const agents = await free.readAgents();
   const gpuRec = await free.readRecords();
   free.destroy();
   table.destroy();
   const cpuRec = lab.state();
-  const run: RunParity = { steps: opts.steps, agents: n, differ: 0, examples: [], left: [0, 0], oriented: [0, 0], restInside: [0, 0], decided, turnFirst: 0, slowed: 0 };
+  const run: RunParity = { steps: opts.steps, agents: n, differ: 0, examples: [], left: [0, 0], oriented: [0, 0], restInside: [0, 0], decided, turnFirst: 0, slowed: 0, ...apart(cpuRec, gpuRec) };
   const f32 = new Float32Array(start.agents.buffer, start.agents.byteOffset, start.agents.length);
   for (let i = 0; i < n; i++) {
     if ((start.agents[i * AGENT_WORDS + AGENT_SIDE] ?? 0) !== 0) run.turnFirst++;
@@ -158,7 +180,36 @@ export async function runParity(device: GPUDevice, lab: Lab, opts: RunOptions): 
       if (run.examples.length < 5) run.examples.push(`agent ${i}: core ${cpu.join("/")}, kernel ${gpu.join("/")}`);
     }
   }
-  return { samples, run };
+  return { samples, run, drift };
+}
+
+/** The free run against the core's run at one step: how far apart. */
+export interface Drift {
+  step: number;
+  maxPos: number;
+  apart: number;
+}
+
+/** The largest distance between the same agent's positions in two records, m, and how many are more than 1 cm apart. */
+function apart(cpu: Float32Array, gpu: Float32Array): { maxPos: number; apart: number } {
+  const out = { maxPos: 0, apart: 0 };
+  for (let i = 0; i < cpu.length / RECORD_STRIDE; i++) {
+    const at = (r: Float32Array, f: number) => r[i * RECORD_STRIDE + f] ?? NaN;
+    const d = Math.hypot(at(cpu, F.x) - at(gpu, F.x), at(cpu, F.y) - at(gpu, F.y));
+    out.maxPos = Math.max(out.maxPos, Number.isNaN(d) ? Infinity : d);
+    if (!(d <= 0.01)) out.apart++;
+  }
+  return out;
+}
+
+/** The grid a separating kernel built for its step, and how many agents its commands push. */
+async function separationChecks(sep: NonNullable<FunnelKernel["separation"]>, agents: Uint32Array, settings: Float32Array): Promise<{ grid: GridParity; pushed: number; cost: SeparationCost }> {
+  const built = await sep.readGrid();
+  const grid = checkGrid(built, agents, settings);
+  const commands = await sep.readCommands();
+  let pushed = 0;
+  for (let i = 0; i < sep.n; i++) pushed += (commands[i * COMMAND_WORDS + 2] ?? 0) === 1 ? 1 : 0;
+  return { grid, pushed, cost: separationCost(built, agents, settings) };
 }
 
 /** `n` probes (D, α, ω, v_c, v_d) drawn from `seed` over the table's range

@@ -48,21 +48,47 @@ export function vehicleLab(vehicle: VehicleName, pedestrianTable: Uint8Array): L
   return lab;
 }
 
-/** Puts `n` agents drawn from `seed` in `lab`'s world (a scenario at the lab's vehicle's scale). */
+/** Puts `n` agents drawn from `seed` in `lab`'s world (a scenario at the
+ *  lab's vehicle's scale), in a square the vehicle crosses in about 10 s. */
 export function seedWorld(lab: Lab, n: number, seed: number): void {
+  // A square the agents cross in about 10 s (600 steps): goals are
+  // reached and rested in within a free run, for every vehicle.
+  const half = 5 * lab.params().vMax;
+  placeWorld(lab, n, seed, half, null);
+}
+
+/** A seeded dense world for separation: `n` agents in a square holding
+ *  `density` agents per m², each goal within about 3 s of travel of the
+ *  last point (so that within a free run agents arrive and rest among
+ *  their pushing neighbours), separation on with the core's default
+ *  settings (body 0.3 m, margin 0.15 m, reach 3 m, 10 neighbours). */
+export function separationWorld(lab: Lab, n: number, seed: number, density: number): void {
+  placeWorld(lab, n, seed, Math.sqrt(n / density) / 2, 3 * lab.params().vMax);
+  lab.setAvoidance("separation");
+}
+
+/** `n` agents drawn from `seed` in a square of half-side `half` m, with
+ *  two goals each, each at most `hop` m from the last point on each axis
+ *  (kept in the square; null: anywhere in it): the first passed through
+ *  (the tolerance switch), the second to rest in (halting,
+ *  End_of_Steering). */
+function placeWorld(lab: Lab, n: number, seed: number, half: number, hop: number | null): void {
   const p = lab.params();
   const k = lengthScale(p);
   const next = draws(seed);
-  // A square the agents cross in about 10 s (600 steps): goals are
-  // reached and rested in within a free run, for every vehicle.
-  const extent = 5 * p.vMax;
-  const at = () => Math.round((2 * next() - 1) * extent * 1000) / 1000;
+  const r3 = (v: number) => Math.round(v * 1000) / 1000;
+  const at = () => r3((2 * next() - 1) * half);
+  const near = (v: number) => (hop === null ? at() : r3(Math.max(-half, Math.min(half, v + (2 * next() - 1) * hop))));
   const deg = () => Math.round(360 * next() - 180);
-  const speed = Math.round(0.65 * p.vMax * 1000) / 1000;
-  const goal = (last: boolean) => ({
-    x: at(), y: at(), betaDeg: deg(), dTol: Math.round(0.3 * k * 1000) / 1000, epsTolDeg: 10, speed,
+  const speed = r3(0.65 * p.vMax);
+  const goal = (from: { x: number; y: number }, last: boolean) => ({
+    x: near(from.x), y: near(from.y), betaDeg: deg(), dTol: r3(0.3 * k), epsTolDeg: 10, speed,
     halting: last, switch: last ? "endOfSteering" : "tolerance",
   });
-  const agents = Array.from({ length: n }, () => ({ x: at(), y: at(), thetaDeg: deg(), goals: [goal(false), goal(true)] }));
+  const agents = Array.from({ length: n }, () => {
+    const start = { x: at(), y: at(), thetaDeg: deg() };
+    const first = goal(start, false);
+    return { ...start, goals: [first, goal(first, true)] };
+  });
   lab.loadScenario(JSON.stringify({ name: `gpu parity ${n}`, duration: 20, vehicle: p, agents }));
 }

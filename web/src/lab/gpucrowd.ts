@@ -1,7 +1,9 @@
 // The lab's random crowd on the GPU (docs/DESIGN.md §20): with the engine
 // "gpu" (gpukeys.ts) the crowd is the core's random crowd packed for the
 // kernel (Lab.gpuRandomCrowd: spawnRandom's agents, bit for bit), stepped
-// one compute pass per step and drawn straight from the agent buffer on a
+// one compute pass per step (with the lab's separation on, the kernel's
+// grid and separation passes in it: the lab's avoidance settings, no
+// obstacles) and drawn straight from the agent buffer on a
 // WebGPU canvas over the lab's, with the lab's view. Nothing is read back
 // per frame: the ringed agent is the playground's, stepped by the core.
 // Without WebGPU, or for a world the kernel refuses, `start` says why and
@@ -160,7 +162,8 @@ export class LabGpu {
   line(): string | undefined {
     if (!this.kernel || !this.gpu) return undefined;
     const goals = this.goals < 16 ? `, the first ${this.goals} of 16 goals each` : "";
-    return `GPU kernel on ${this.gpu.label}${this.gpu.emulated ? " (CPU emulation)" : ""}: ${this.kernel.n.toLocaleString("en")} agents${goals}, drawn from its buffers`;
+    const sep = this.kernel.separation ? ", separating through a GPU grid" : "";
+    return `GPU kernel on ${this.gpu.label}${this.gpu.emulated ? " (CPU emulation)" : ""}: ${this.kernel.n.toLocaleString("en")} agents${goals}${sep}, drawn from its buffers`;
   }
 
   stop(): void {

@@ -302,9 +302,13 @@ export class LabSim {
 
   /** An avoidance edit. The workers step worlds without avoidance only
    *  (it couples every agent): a method switched on while they step
-   *  rebuilds the world, at t = 0, on this page's core. */
+   *  rebuilds the world, at t = 0, on this page's core. The GPU crowd is
+   *  packed with the avoidance in force (separation runs on the GPU,
+   *  obstacles and ORCA are refused there): any avoidance edit while it
+   *  runs rebuilds it. */
   private editAvoid(e: Edit & { kind: "avoid" }, answer: (a: EditAnswer) => void): void {
-    if (this.stepping() && e.method !== undefined && e.method !== "off") void this.rebuild(false);
+    const onGpu = (this.gpu?.agents ?? 0) > 0;
+    if (onGpu || (this.stepping() && e.method !== undefined && e.method !== "off")) void this.rebuild(false);
     else this.edit(e, answer);
   }
 
