@@ -341,6 +341,13 @@ fn car_like_with_reverse_backs_up_where_shorter() {
             let runs = run_all_from(table(), &p, kind, seed, n, rest);
             eprintln!("car_like {gear}, starts {start}, seed {seed}, {n} runs:");
             eprint!("{}", text_reverse(&runs));
+            for r in runs
+                .iter()
+                .filter(|r| r.reached && !r.starts_inside && !r.oriented_on_entry && !r.unavoidable)
+                .take(8)
+            {
+                eprintln!("  unoriented, avoidable: {r:?}");
+            }
             let bands = summarise(&runs, 0.0);
             let violations: u32 = runs.iter().map(|r| r.violations).sum();
             let pivots: u32 = runs.iter().map(|r| r.pivots).sum();
@@ -421,11 +428,11 @@ fn car_like_with_reverse_backs_up_where_shorter() {
                 "{gear} D {lo}–{hi}: {b:?}"
             );
             if gear == "reverse" && rest {
-                // Measured on seed 2: 99.6–100 % and 1.05–1.10 (the aim of
-                // 100 % is not met below 5 R_min: a start just outside a
-                // large disk whose every simulated path enters it askew).
+                // Every start at rest enters oriented (a start at the rim
+                // of a large disk stands off first), median path within
+                // 1.2× the Reeds–Shepp shortest (seed 2: 1.05–1.10).
                 let mut rs = b.ratios_rs.clone();
-                assert!(pct(b.oriented, b.entries) >= 99.5, "D {lo}–{hi}: {b:?}");
+                assert_eq!(b.oriented, b.entries, "D {lo}–{hi}: {b:?}");
                 assert!(percentile(&mut rs, 0.5) <= 1.2, "D {lo}–{hi}");
             }
         }

@@ -81,9 +81,9 @@ fn default_controllers_meet_the_envelope_targets_on_the_test_seed() {
     // Compared where both funnel: closer than the short-range reach the
     // standard controller may turn first
     // (steering::funnelling::short_range), the relaxed one does not.
-    let near = steering::funnelling::short_range::NEAR;
-    let rel_far = summarise(rel.runs(GoalKind::Static).iter().filter(|r| r.d0 >= near));
-    let std_far = summarise(runs.iter().filter(|r| r.d0 >= near));
+    let reach = steering::funnelling::short_range::FAR;
+    let rel_far = summarise(rel.runs(GoalKind::Static).iter().filter(|r| r.d0 >= reach));
+    let std_far = summarise(runs.iter().filter(|r| r.d0 >= reach));
     assert!(
         rel_far.oriented >= std_far.oriented,
         "relaxed {rel_far:?} vs standard {std_far:?}"

@@ -28,7 +28,11 @@
 //! it, and a path radius with a margin or a long run-in lengthens every
 //! path (tuned on seed 1: at rest, oriented on entry 98.6–99.0 % → 99.6–100 %
 //! below 5 R_min, median path over the Reeds–Shepp shortest 1.27 → 1.09).
-//! When no path enters oriented, the cheapest word is followed as it is.
+//! When no path enters oriented (a start at the rim of a large disk:
+//! every word passes too close to it for the pursuit's lag), straight
+//! stand-offs are tried ([`STANDOFFS`]): drive away from the goal first,
+//! then manoeuvre. When none of these does either, the cheapest word is
+//! followed as it is.
 //!
 //! Tracking is the forward manoeuvre's pure pursuit, with the aim point
 //! behind the car while it backs (the heading aimed at is the bearing of
@@ -42,7 +46,7 @@ use glam::Vec2;
 use crate::base::angle::{diff, wrap};
 use crate::base::dubins::DubinsPath;
 use crate::base::minmax::MinMax;
-use crate::base::reeds_shepp::{cheapest, Candidate, ReedsSheppPath};
+use crate::base::reeds_shepp::{cheapest, Candidate, ReedsSheppPath, SEGMENTS};
 use crate::base::trig;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::approach::{arrived, halting_speed, seen_from};
@@ -91,6 +95,13 @@ pub const VARIANTS: [(f32, f32, f32); 10] = [
     (1.0, 6.0, 0.0),
     (1.0, 6.0, -1.0),
 ];
+/// The straight stand-offs tried in turn, path radii, when no path of
+/// the [`VARIANTS`] enters the disk facing β (a start at its rim: every
+/// word passes too close to the disk for the pursuit's lag): drive
+/// straight away from the goal first, then manoeuvre. Tuned on seed 1:
+/// facing a disk of radius R_min from its rim, the way round it needs
+/// two path radii.
+pub const STANDOFFS: [f32; 4] = [0.5, 1.0, 2.0, 4.0];
 /// A simulated entry counts as oriented within this share of `ε_tol`.
 pub const TRIAL_EPS_SHARE: f32 = 0.9;
 /// The most steps one simulated path may take.
@@ -181,7 +192,8 @@ fn forward_word(from: (f32, f32, f32), to: (f32, f32, f32), rho: f32) -> Option<
 
 /// The cheapest admissible path from the vehicle's pose to the goal
 /// through a run-in of length `run`, with path radius `rho` (module docs),
-/// setting off in gear `first` (1 forwards, −1 backwards, 0 either).
+/// setting off in gear `first` (1 forwards, −1 backwards, 0 either), of
+/// words of at most `most` segments.
 fn cheapest_path(
     p: &VehicleParams,
     s: &VehicleState,
@@ -189,6 +201,7 @@ fn cheapest_path(
     rho: f32,
     run: f32,
     first: f32,
+    most: usize,
 ) -> ReedsSheppPath {
     let from = (s.pos.x, s.pos.y, s.theta);
     let d0 = (s.pos - g.pos).length();
@@ -203,7 +216,10 @@ fn cheapest_path(
             |c: &Candidate| f64::from(p.gear_cost) * f64::from(u8::from(c.gears().1 != gear));
         // The shortest forward path too: no gear change, where the
         // Reeds–Shepp words (each arc at most a half turn) all have one.
-        let sets_off = |c: &Candidate| first == 0.0 || c.gears().0 == first;
+        let sets_off = |c: &Candidate| {
+            (first == 0.0 || c.gears().0 == first)
+                && c.len.iter().filter(|l| **l != 0.0).count() <= most
+        };
         if let Some(c) = forward_word(from, to, rho).filter(|_| first >= 0.0) {
             let cost = c.length() * f64::from(rho) + change(&c);
             if best.is_none_or(|b| cost < b.0) && clear_of(from, &c, rho, g.pos) >= keep {
@@ -227,6 +243,42 @@ fn cheapest_path(
         Some((_, c, gear)) => ReedsSheppPath::of(from, &c, rho, run, gear),
         None => ReedsSheppPath::from_segments(s.pos, s.theta, [0.0; 6], [0.0; 6], [1.0; 6]),
     }
+}
+
+/// A path that first drives `len` straight away from the goal (forwards
+/// when its centre lies behind the vehicle, else backwards), then the
+/// cheapest path from there with the manoeuvre's radius and run-in, of
+/// words of at most four segments (the stand-off takes the fifth of
+/// [`SEGMENTS`]' six, the run-in the last).
+fn standoff_path(
+    p: &VehicleParams,
+    s: &VehicleState,
+    g: &Goal,
+    k: &Pursuit,
+    len: f32,
+) -> ReedsSheppPath {
+    let gear = if (g.pos - s.pos).dot(s.forward()) > 0.0 {
+        -1.0
+    } else {
+        1.0
+    };
+    let from = VehicleState {
+        pos: s.pos + s.forward() * (gear * len),
+        ..*s
+    };
+    let rest = cheapest_path(p, &from, g, k.rho, k.run_in, 0.0, 4);
+    let mut kappa = [0.0; SEGMENTS];
+    let mut lens = [0.0; SEGMENTS];
+    let mut gears = [1.0; SEGMENTS];
+    lens[0] = len;
+    gears[0] = gear;
+    let kept = (0..SEGMENTS).filter(|&i| rest.len[i] > 0.0);
+    for (j, i) in (1..SEGMENTS).zip(kept) {
+        kappa[j] = rest.kappa[i];
+        lens[j] = rest.len[i];
+        gears[j] = rest.gear[i];
+    }
+    ReedsSheppPath::from_segments(s.pos, s.theta, kappa, lens, gears)
 }
 
 /// Simulates following `path` from `s` with the update and the committed
@@ -280,14 +332,14 @@ fn solve(
     k: &Pursuit,
     simulate: bool,
 ) {
-    let mut path = cheapest_path(p, s, g, k.rho, k.run_in, 0.0);
+    let mut path = cheapest_path(p, s, g, k.rho, k.run_in, 0.0, 5);
     if simulate {
         let max = trial_steps(p, s, g, k);
         let mut best = trial(p, *s, g, k, path, max);
         for (radius, run, first) in VARIANTS {
             let rho = k.rho * radius;
             let run = g.d_tol + (k.run_in - g.d_tol) * run;
-            let other = cheapest_path(p, s, g, rho, run, first);
+            let other = cheapest_path(p, s, g, rho, run, first, 5);
             if other == path {
                 continue;
             }
@@ -296,6 +348,18 @@ fn solve(
                     best = Some(l);
                     path = other;
                 }
+            }
+        }
+        // Only when every path above enters askew (a start at the rim):
+        // standing off first.
+        for len in STANDOFFS {
+            if best.is_some() {
+                break;
+            }
+            let other = standoff_path(p, s, g, k, len * k.rho);
+            best = trial(p, *s, g, k, other, max);
+            if best.is_some() {
+                path = other;
             }
         }
     }

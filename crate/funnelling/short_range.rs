@@ -19,9 +19,22 @@
 //! speed [`SLOW`], and turning first round either side of the disk. The
 //! first that enters oriented wins, the fastest among those; when none
 //! does, funnelling as it is. So a goal that funnelling already enters
-//! oriented and soonest is approached exactly as without this module, and
-//! a goal farther than [`NEAR`] always is. Cost: nothing per update but a
-//! flag; once per near goal, at most four bounded simulations.
+//! oriented and soonest is approached exactly as without this module.
+//!
+//! From [`NEAR`] out to [`FAR`] the funnel has room and usually enters
+//! oriented: there funnelling is simulated first and kept unless it
+//! enters askew within the horizon; only a goal it would enter askew (a
+//! tight ε_tol with a large disk, mostly, where the bent path still
+//! crosses the rim while turning) gets the other ways in, chosen as
+//! above. This reach is the default funnel's only
+//! ([`FunnelConfig::default`]): other settings are there to be seen
+//! funnelling, and beyond [`NEAR`] are left as they are (the centre aim
+//! enters a large disk askew by construction, which paper 001 Fig. 6b
+//! shows; the reach study compares μ bounds and gains by their entries).
+//! A goal at [`FAR`] or beyond is always approached by funnelling. Cost:
+//! nothing per update but a flag; once per goal closer than [`FAR`], at
+//! most four bounded simulations (beyond [`NEAR`], one when funnelling
+//! does not enter askew).
 //!
 //! **Turning first** ([`turn_first`]). From where the vehicle stands, if
 //! some heading within [`AIM_SHARE`]·ε_tol of β leads straight into the
@@ -55,13 +68,19 @@ use crate::funnelling::table::spec::VehicleScale;
 use crate::funnelling::update::{Internals, Mode, Update};
 
 /// Goals closer than this at their first update are considered, m at the
-/// pedestrian's scale ([`VehicleScale::length`]): at 5 m and beyond the
-/// funnel enters oriented in 99–100 % of runs and keeps its figures.
+/// pedestrian's scale ([`VehicleScale::length`]): every way in competes
+/// on time.
 pub const NEAR: f32 = 5.0;
+/// Goals from [`NEAR`] to this, m at the pedestrian's scale, are
+/// considered only when funnelling would enter them askew (the module's
+/// docs): at 15 m and beyond the funnel enters oriented in 99–100 % of
+/// runs and keeps its figures.
+pub const FAR: f32 = 15.0;
 /// The slow funnelling candidate's desired speed, m/s at the pedestrian's
 /// scale: the envelope's slowest.
 pub const SLOW: f32 = 0.5;
-/// Longest simulated approach, s at the pedestrian's time scale.
+/// Longest simulated approach, s at the pedestrian's time scale (beyond
+/// [`NEAR`], at least three times the straight drive at the goal's speed).
 pub const HORIZON: f32 = 20.0;
 /// The most steps one trial may take, whatever the time step: the
 /// reference vehicles' horizons stay under it (the car's, the longest,
@@ -89,6 +108,8 @@ struct Trial {
     oriented: bool,
     /// Steps to that.
     steps: u32,
+    /// Entered the disk facing elsewhere (not merely out of time).
+    askew: bool,
 }
 
 /// Chooses how the goal of `u` is approached ([`ShortRange`]; the
@@ -103,15 +124,25 @@ pub fn decide(cfg: &FunnelConfig, u: &mut Update<'_>) {
     }
     let sc = VehicleScale::of(p);
     let d = (g.pos - s.pos).length();
-    if d >= NEAR * sc.length || d < g.d_tol {
+    let near = d < NEAR * sc.length;
+    if d >= FAR * sc.length || d < g.d_tol || !(near || *cfg == FunnelConfig::default()) {
         return;
     }
-    let horizon = ((HORIZON * sc.time() / p.dt) as u32).min(MAX_TRIAL_STEPS);
+    // Beyond NEAR a slow goal may take longer than HORIZON to reach:
+    // three times the straight drive at its speed.
+    let mut t_max = HORIZON * sc.time();
+    if !near {
+        t_max = t_max.at_least(3.0 * d / g.speed.at_least(SLOW * sc.speed));
+    }
+    let horizon = ((t_max / p.dt) as u32).min(MAX_TRIAL_STEPS);
     let base = *u.memory;
     let mut best = (
         trial(cfg, u.table, p, s, &g, base, horizon),
         base.short_range,
     );
+    if !near && !best.0.askew {
+        return;
+    }
     let slow = SLOW * sc.speed;
     let mut candidates = [
         ShortRange::chosen(0.0, 1),
@@ -173,13 +204,16 @@ fn trial(
             return Trial {
                 oriented: true,
                 steps: k,
+                askew: false,
             };
         }
         cfg.seek_step(p, &mut s, out.gamma, out.v_dt);
         if (g.pos - s.pos).length() < g.d_tol {
+            let oriented = diff(g.beta, s.theta).abs() < g.eps_tol;
             return Trial {
-                oriented: diff(g.beta, s.theta).abs() < g.eps_tol,
+                oriented,
                 steps: k + 1,
+                askew: !oriented,
             };
         }
     }
