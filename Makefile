@@ -10,7 +10,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 .PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-gpu test-e2e-peers test-protocol bench-budget \
-	npm test-npm test-library-user figures figures-full screenshots stages-start icount
+	npm test-npm test-library-user test-lanes figures figures-full screenshots stages-start icount
 
 # `make test` says how long each stage took (its own builds included: a
 # stage's time runs from the end of the one before to its own end), from
@@ -293,8 +293,11 @@ test-e2e-avoid: setup-browser web-build-test
 # choice (turning first, funnelling slowed), made by the core when the
 # world is packed and between steps for goals agents move on to; the suite
 # asserts some agents turn first. A planted change to the kernel's μ bound,
-# integrator or walk round the disk must fail it. Also prints the timing
-# page's rows, labelled an emulation.
+# integrator or walk round the disk must fail it. With separation (dense
+# pedestrian and robot worlds): the same one-step contract, the GPU-built
+# grid against the CPU's counts, free-run verdicts the core's for >= 98 %
+# of agents, and a planted change to the push or the prefix sum fails.
+# Also prints the timing page's rows, labelled an emulation.
 test-e2e-gpu: setup-browser web-build-test
 	node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/e2e-gpu.mjs
 	$(stage-done)
@@ -400,11 +403,27 @@ test-library-user:
 	cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user
 	$(stage-done)
 
+# Every browser suite above, the npm package's tests and the library
+# user, two at a time (web/test/lanes.mjs: each job's output printed whole
+# when it ends, its time in target/lanes.log): a suite mostly waits on its
+# page, so one at a time left a core idle. Longest first. The targets above
+# still run one suite each.
+LANE_SUITE = $(1)="node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/$(1).mjs"
+LANE_JOBS := $(call LANE_SUITE,e2e) $(call LANE_SUITE,e2e-gpu) $(call LANE_SUITE,e2e-perf) \
+	$(call LANE_SUITE,e2e-gallery) $(call LANE_SUITE,e2e-vehicle) $(call LANE_SUITE,e2e-avoid) \
+	library-user="cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user" \
+	npm="node --test npm/test/*.test.mjs" $(call LANE_SUITE,e2e-learn) $(call LANE_SUITE,e2e-teach) \
+	$(call LANE_SUITE,e2e-keys) $(call LANE_SUITE,e2e-axe) $(call LANE_SUITE,e2e-peers)
+test-lanes: setup-browser web-build-test npm
+	node web/test/lanes.mjs --jobs 2 $(LANE_JOBS)
+	$(stage-done)
+
 stages-start:
 	@mkdir -p target && echo "$$(date +%s) start" > $(STAGES_LOG)
 
-test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-e2e test-e2e-gallery test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle test-e2e-perf test-e2e-avoid test-e2e-gpu test-e2e-peers test-npm test-library-user
+test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-lanes
 	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
+	@echo "  test-lanes' jobs, two at a time:"; awk '{ printf "    %-18s %5d s\n", $$2, $$1 }' target/lanes.log
 	@echo "make test: all suites passed"
 
 demo: setup web-build
