@@ -10,7 +10,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 .PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-gpu test-e2e-peers test-protocol bench-budget \
-	npm test-npm test-library-user test-lanes figures figures-full screenshots stages-start icount
+	npm test-npm test-library-user test-lanes test-build-lanes figures figures-full screenshots stages-start icount
 
 # `make test` says how long each stage took (its own builds included: a
 # stage's time runs from the end of the one before to its own end), from
@@ -421,8 +421,24 @@ test-lanes: setup-browser web-build-test npm
 stages-start:
 	@mkdir -p target && echo "$$(date +%s) start" > $(STAGES_LOG)
 
-test: stages-start setup lint test-native test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build test-lanes
+# The native suites (lint, then test-native: target/debug) beside the
+# wasm ones and the page's builds (target/release, target/wasm-simd, web/):
+# no build directory in common, so neither waits on the other's lock, and
+# each fills the other's single-core stretches (a one-unit LTO link, a
+# test binary whose last test runs alone, Chromium). Each lane is its own
+# make, with its own stage times (target/stages-native.log,
+# target/stages-wasm.log).
+BUILD_LANES := native="$(MAKE) --no-print-directory stages-start lint test-native STAGES_LOG=target/stages-native.log" \
+	wasm="$(MAKE) --no-print-directory stages-start test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build STAGES_LOG=target/stages-wasm.log"
+test-build-lanes: setup-web
+	node web/test/lanes.mjs --jobs 2 --log build-lanes $(BUILD_LANES)
+	$(stage-done)
+
+STAGE_TIMES = awk 'NR > 1 { printf "    %-18s %5d s\n", $$2, $$1 - t } { t = $$1 }' $(1)
+test: stages-start setup test-build-lanes test-lanes
 	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
+	@echo "  test-build-lanes, the native lane's stages:"; $(call STAGE_TIMES,target/stages-native.log)
+	@echo "  test-build-lanes, the wasm lane's stages:"; $(call STAGE_TIMES,target/stages-wasm.log)
 	@echo "  test-lanes' jobs, two at a time:"; awk '{ printf "    %-18s %5d s\n", $$2, $$1 }' target/lanes.log
 	@echo "make test: all suites passed"
 

@@ -6,20 +6,20 @@
 //
 // Each job's output is kept whole and printed when it ends (never two
 // jobs' lines interleaved), and also written to target/lanes/NAME.log;
-// its time goes to target/lanes.log ("seconds name exit"), which `make
-// test` prints beside its stages. Every job runs even when one fails; the
+// its time goes to target/NAME.log for `--log NAME` (default lanes:
+// "seconds job exit" per line), which `make test` prints beside its stages. Every job runs even when one fails; the
 // run then fails, naming the failed jobs.
 //
-//   node web/test/lanes.mjs [--jobs N] NAME=COMMAND ...
+//   node web/test/lanes.mjs [--jobs N] [--log NAME] NAME=COMMAND ...
 import { spawn } from "node:child_process";
 import { appendFileSync, mkdirSync, writeFileSync } from "node:fs";
-import { resolve } from "node:path";
+import { dirname, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
 import { parseArgs } from "node:util";
-import { webDir } from "./harness.mjs";
 
 const { values, positionals } = parseArgs({
   allowPositionals: true,
-  options: { jobs: { type: "string", default: "2" } },
+  options: { jobs: { type: "string", default: "2" }, log: { type: "string", default: "lanes" } },
 });
 const jobs = Number(values.jobs);
 if (!Number.isInteger(jobs) || jobs < 1) {
@@ -35,14 +35,16 @@ const queue = positionals.map((arg) => {
   return { name: arg.slice(0, eq), command: arg.slice(eq + 1) };
 });
 if (queue.length === 0) {
-  console.error("usage: node web/test/lanes.mjs [--jobs N] NAME=COMMAND ...");
+  console.error("usage: node web/test/lanes.mjs [--jobs N] [--log NAME] NAME=COMMAND ...");
   process.exit(2);
 }
 
-const root = resolve(webDir, "..");
+// The repository's root (not harness.mjs's webDir: that module loads vite
+// and Playwright, which the build lanes run before).
+const root = resolve(dirname(fileURLToPath(import.meta.url)), "../..");
 const logDir = resolve(root, "target/lanes");
 mkdirSync(logDir, { recursive: true });
-const timesLog = resolve(root, "target/lanes.log");
+const timesLog = resolve(root, `target/${values.log}.log`);
 writeFileSync(timesLog, "");
 
 /** Runs one job in the repository's root; resolves to its exit code and seconds. */
