@@ -200,13 +200,48 @@ impl VehicleParams {
         self.omega_limit_as(self.car_like(), v)
     }
 
+    /// True with a reverse gear ([`VehicleParams::v_reverse`] above 0).
+    #[inline]
+    #[must_use]
+    pub fn reverse_gear(&self) -> bool {
+        self.v_reverse > 0.0
+    }
+
+    /// [`VehicleParams::omega_limit`] at a speed `v` that is not negative
+    /// (−0 and +0 included): the same bits. A vehicle that is not car-like
+    /// skips the reverse gear's |v|, which changes nothing there (−0 and +0
+    /// give the same limit); the table's lookup and the μ bound call it
+    /// every update.
+    #[inline(always)]
+    #[must_use]
+    pub fn omega_limit_ahead(&self, v: f32) -> f32 {
+        if self.car_like() {
+            self.omega_limit_as(true, v)
+        } else if v * self.omega_max > self.normal_accel_max {
+            self.normal_accel_max / v
+        } else {
+            self.omega_max
+        }
+    }
+
     /// [`VehicleParams::omega_limit`] with [`VehicleParams::car_like`]
     /// given, a constant where the caller knows it for many steps.
     #[inline(always)]
     fn omega_limit_as(&self, car_like: bool, v: f32) -> f32 {
+        self.omega_limit_geared(car_like, true, v)
+    }
+
+    /// [`VehicleParams::omega_limit_as`], the reverse gear tested only when
+    /// `geared` (false: the caller knows there is none).
+    #[inline(always)]
+    fn omega_limit_geared(&self, car_like: bool, geared: bool, v: f32) -> f32 {
         // Forwards only, v ≥ 0 is used as it is (the same bits as ever,
         // −0 included); backing, its magnitude.
-        let v = if self.v_reverse > 0.0 { v.abs() } else { v };
+        let v = if geared && self.reverse_gear() {
+            v.abs()
+        } else {
+            v
+        };
         let w = if v * self.omega_max > self.normal_accel_max {
             self.normal_accel_max / v
         } else {
@@ -237,7 +272,7 @@ impl VehicleParams {
     #[must_use]
     pub fn min_turn_radius(&self, v: f32) -> f32 {
         let v = v.clamp(1e-3, self.v_max);
-        v / self.omega_limit(v)
+        v / self.omega_limit_ahead(v)
     }
 
     /// The curvature bound of a car-like vehicle applied after the speed
@@ -275,14 +310,16 @@ impl VehicleParams {
     #[inline(always)]
     #[must_use]
     pub fn new_speeds(&self, v0: f32, w0: f32, ang_acc: f32, v_des: f32) -> (f32, f32) {
-        self.new_speeds_as(self.car_like(), v0, w0, ang_acc, v_des)
+        self.new_speeds_as(self.car_like(), true, v0, w0, ang_acc, v_des)
     }
 
-    /// [`VehicleParams::new_speeds`] with [`VehicleParams::car_like`] given.
+    /// [`VehicleParams::new_speeds`] with [`VehicleParams::car_like`] given,
+    /// and the reverse gear tested only when `geared`.
     #[inline(always)]
     fn new_speeds_as(
         &self,
         car_like: bool,
+        geared: bool,
         v0: f32,
         w0: f32,
         ang_acc: f32,
@@ -290,13 +327,13 @@ impl VehicleParams {
     ) -> (f32, f32) {
         let dt = self.dt;
         let a = ang_acc.clamp(-self.omega_accel_max, self.omega_accel_max);
-        let wl = self.omega_limit_as(car_like, v0);
+        let wl = self.omega_limit_geared(car_like, geared, v0);
         let w1 = (w0 + a * dt).clamp(-wl, wl);
         let dv = self.accel_max * dt;
         let vcap = self.speed_limit(w1);
         // Forwards only, the floor is 0 (the same bits as ever); with a
         // reverse gear, −min(v_reverse, A/|ω₁|).
-        let floor = if self.v_reverse > 0.0 {
+        let floor = if geared && self.reverse_gear() {
             -self.v_reverse.at_most(vcap)
         } else {
             0.0
@@ -320,25 +357,34 @@ impl VehicleParams {
     /// so every limit holds exactly after every step.
     #[inline]
     pub fn integrate(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
-        self.integrate_as(self.car_like(), s, ang_acc, v_des);
+        self.integrate_as(self.car_like(), true, s, ang_acc, v_des);
     }
 
-    /// [`VehicleParams::integrate`] for a unicycle (`R_min` 0, which the
-    /// caller has checked once for many steps): the same operations,
-    /// without the two tests for the curvature bound (a world's default
+    /// [`VehicleParams::integrate`] for a unicycle without a reverse gear
+    /// (`R_min` and `v_reverse` 0, which the caller has checked once for
+    /// many steps): the same operations, without the two tests for the
+    /// curvature bound and the two for the reverse gear (a world's default
     /// step, [`crate::funnelling::seek::seek_step_committed_unicycle`]).
     #[inline]
     pub fn integrate_unicycle(&self, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
-        debug_assert!(!self.car_like());
-        self.integrate_as(false, s, ang_acc, v_des);
+        debug_assert!(!self.car_like() && !self.reverse_gear());
+        self.integrate_as(false, false, s, ang_acc, v_des);
     }
 
-    /// [`VehicleParams::integrate`] with [`VehicleParams::car_like`] given.
+    /// [`VehicleParams::integrate`] with [`VehicleParams::car_like`] given,
+    /// and the reverse gear tested only when `geared`.
     #[inline(always)]
-    fn integrate_as(&self, car_like: bool, s: &mut VehicleState, ang_acc: f32, v_des: f32) {
+    fn integrate_as(
+        &self,
+        car_like: bool,
+        geared: bool,
+        s: &mut VehicleState,
+        ang_acc: f32,
+        v_des: f32,
+    ) {
         let dt = self.dt;
         let (v0, w0) = (s.v, s.omega);
-        let (w1, v1) = self.new_speeds_as(car_like, v0, w0, ang_acc, v_des);
+        let (w1, v1) = self.new_speeds_as(car_like, geared, v0, w0, ang_acc, v_des);
         match self.integrator {
             Integrator::Euler => {
                 s.pos += crate::base::trig::unit(s.theta) * (v0 * dt);

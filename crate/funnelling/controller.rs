@@ -79,8 +79,9 @@ impl ControllerKind {
         }
     }
 
-    /// True for our standard controller on a unicycle: [`ControllerKind::plan`]
-    /// is then [`FunnelConfig::plan_ours`] and the seek step
+    /// True for our standard controller on a unicycle without a reverse
+    /// gear: [`ControllerKind::plan`] is then [`FunnelConfig::plan_ours`]
+    /// and the seek step
     /// [`crate::funnelling::seek::seek_step_committed_unicycle`], which a
     /// world's step calls directly, the choice made once per step.
     #[inline]
@@ -88,6 +89,7 @@ impl ControllerKind {
     pub fn is_ours_unicycle(self, funnel: &FunnelConfig, p: &VehicleParams) -> bool {
         self == Self::Standard
             && !p.car_like()
+            && !p.reverse_gear()
             && funnel.deviations() == Deviations::OURS
             && funnel.commit_turn
     }

@@ -77,22 +77,35 @@ impl FunnelConfig {
     /// does), funnelling slower, or turning first.
     #[inline(always)]
     fn plan_with(&self, u: &mut Update<'_>, dev: Deviations) -> Internals {
-        let mut side = 0;
         if dev == Deviations::OURS {
-            if !u.memory.short_range.decided {
-                short_range::decide(self, u);
-            }
+            // Most updates funnel as decided (every goal farther than
+            // short_range::NEAR): that is tested here, the rest is out of
+            // line, so the common update carries none of it.
             let sr = u.memory.short_range;
-            if sr.speed_cap > 0.0 {
-                let slow = Goal {
-                    speed: u.goal.speed.at_most(sr.speed_cap),
-                    ..*u.goal
-                };
-                return self.plan_begun(&mut u.towards(&slow), dev, 0);
+            if !sr.decided || sr.side != 0 || sr.speed_cap > 0.0 {
+                return self.plan_short_range(u);
             }
-            side = sr.side;
         }
-        self.plan_begun(u, dev, side)
+        self.plan_begun(u, dev, 0)
+    }
+
+    /// [`FunnelConfig::plan_with`] with our switches, for a goal not yet
+    /// decided or approached otherwise than by funnelling as it is.
+    #[inline(never)]
+    fn plan_short_range(&self, u: &mut Update<'_>) -> Internals {
+        let dev = Deviations::OURS;
+        if !u.memory.short_range.decided {
+            short_range::decide(self, u);
+        }
+        let sr = u.memory.short_range;
+        if sr.speed_cap > 0.0 {
+            let slow = Goal {
+                speed: u.goal.speed.at_most(sr.speed_cap),
+                ..*u.goal
+            };
+            return self.plan_begun(&mut u.towards(&slow), dev, 0);
+        }
+        self.plan_begun(u, dev, sr.side)
     }
 
     /// The tolerance phase, then funnelling, or turning first round side

@@ -78,8 +78,9 @@ pub fn seek_step_committed(
     p.integrate(s, pd(p, s, e), desired_speed);
 }
 
-/// [`seek_step_committed`] for a unicycle ([`VehicleParams::integrate_unicycle`]:
-/// `R_min` 0, checked by the caller once for many steps); the same bits.
+/// [`seek_step_committed`] for a unicycle without a reverse gear
+/// ([`VehicleParams::integrate_unicycle`]: `R_min` and `v_reverse` 0,
+/// checked by the caller once for many steps); the same bits.
 #[inline]
 pub fn seek_step_committed_unicycle(
     p: &VehicleParams,

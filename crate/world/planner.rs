@@ -39,7 +39,8 @@ impl Planner<'_> {
     }
 
     /// True when the world's controller is our standard one on a unicycle
-    /// ([`ControllerKind::is_ours_unicycle`]): a step then plans every
+    /// without a reverse gear ([`ControllerKind::is_ours_unicycle`]): a
+    /// step then plans every
     /// agent with [`FunnelConfig::plan_ours`] and moves it with
     /// [`seek_step_committed_unicycle`](crate::funnelling::seek::seek_step_committed_unicycle).
     #[inline]

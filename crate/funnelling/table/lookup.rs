@@ -258,7 +258,7 @@ impl EtaTable {
     #[inline]
     #[must_use]
     pub fn omega_fraction(&self, omega: f32, v: f32) -> f32 {
-        omega / self.params.vehicle.omega_limit(v.at_least(0.0))
+        omega / self.params.vehicle.omega_limit_ahead(v.at_least(0.0))
     }
 
     #[inline(always)]

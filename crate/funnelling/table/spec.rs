@@ -119,9 +119,12 @@ impl VehicleScale {
 }
 
 /// The turning radius at full speed, m: `v_max / min(ω_max, A/v_max)`.
+/// (`v_max` is not negative in valid limits: the limit at it is
+/// [`VehicleParams::omega_limit_ahead`]'s, which the μ bound reads every
+/// update.)
 #[must_use]
 pub fn turn_radius(p: &VehicleParams) -> f32 {
-    p.v_max / p.omega_limit(p.v_max)
+    p.v_max / p.omega_limit_ahead(p.v_max)
 }
 
 /// The time step of the generator's reach simulations for vehicle `p`:
