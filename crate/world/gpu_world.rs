@@ -4,7 +4,7 @@
 //!
 //! The kernel (`web/src/gpu/`) mirrors the world's default step
 //! ([`crate::funnelling::controller::ControllerKind::is_ours_unicycle`]: our standard controller on
-//! a unicycle) towards static goals, with avoidance off or with
+//! a unicycle without a reverse gear) towards static goals, with avoidance off or with
 //! separation between agents ([`AvoidanceMethod::Separation`] without
 //! obstacles: the kernel builds the core's hashed neighbour grid,
 //! [`crate::base::grid::NeighbourGrid`], by a counting sort and a prefix
