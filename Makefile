@@ -7,7 +7,7 @@ export PATH := $(HOME)/.cargo/bin:$(PATH)
 WASM_PACK_VERSION := 0.15.1
 WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"/,"",$$3); print $$3; exit}' Cargo.lock)
 
-.PHONY: setup setup-rust setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
+.PHONY: setup setup-rust setup-rustup setup-rust-tools setup-base tools-done setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-gpu test-e2e-peers test-protocol bench-budget \
 	npm test-npm test-library-user test-lanes test-build-lanes figures figures-full screenshots stages-start icount
@@ -27,10 +27,16 @@ setup: setup-rust setup-browser setup-web setup-wasm-strip
 # (post-processing a few megabytes of wasm) stays a fraction of a second.
 TOOL_PROFILE := CARGO_PROFILE_RELEASE_OPT_LEVEL=1
 
-setup-rust:
+setup-rust: setup-rustup setup-rust-tools
+
+setup-rustup:
 	rustup target list --installed | grep -qx wasm32-unknown-unknown || rustup target add wasm32-unknown-unknown
 	rustup component list --installed | grep -q '^clippy' || rustup component add clippy
 	rustup component list --installed | grep -q '^rustfmt' || rustup component add rustfmt
+
+# wasm-pack and the wasm-bindgen CLI, built from crates.io (their release
+# binaries come from GitHub, which these machines cannot reach).
+setup-rust-tools:
 	if ! wasm-pack --version 2>/dev/null | grep -q "$(WASM_PACK_VERSION)"; then \
 	  $(TOOL_PROFILE) cargo install wasm-pack --version $(WASM_PACK_VERSION) --locked; fi
 	if ! wasm-bindgen --version 2>/dev/null | grep -q "$(WASM_BINDGEN_VERSION)"; then \
@@ -409,11 +415,12 @@ test-library-user:
 # page, so one at a time left a core idle. Longest first. The targets above
 # still run one suite each.
 LANE_SUITE = $(1)="node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/$(1).mjs"
-LANE_JOBS := $(call LANE_SUITE,e2e) $(call LANE_SUITE,e2e-gpu) $(call LANE_SUITE,e2e-perf) \
+LANE_JOBS := $(call LANE_SUITE,e2e-perf) $(call LANE_SUITE,e2e-gpu) $(call LANE_SUITE,e2e) \
 	$(call LANE_SUITE,e2e-gallery) $(call LANE_SUITE,e2e-vehicle) $(call LANE_SUITE,e2e-avoid) \
+	npm="node --test npm/test/*.test.mjs" \
 	library-user="cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user" \
-	npm="node --test npm/test/*.test.mjs" $(call LANE_SUITE,e2e-learn) $(call LANE_SUITE,e2e-teach) \
-	$(call LANE_SUITE,e2e-keys) $(call LANE_SUITE,e2e-axe) $(call LANE_SUITE,e2e-peers)
+	$(call LANE_SUITE,e2e-keys) $(call LANE_SUITE,e2e-learn) $(call LANE_SUITE,e2e-teach) \
+	$(call LANE_SUITE,e2e-axe) $(call LANE_SUITE,e2e-peers)
 test-lanes: setup-browser web-build-test npm
 	node web/test/lanes.mjs --jobs 2 $(LANE_JOBS)
 	$(stage-done)
@@ -428,14 +435,22 @@ stages-start:
 # test binary whose last test runs alone, Chromium). Each lane is its own
 # make, with its own stage times (target/stages-native.log,
 # target/stages-wasm.log).
+# The native lane needs no wasm tool, so on a new machine wasm-pack and
+# the wasm-bindgen CLI are built at the head of the wasm lane
+# (setup-rust-tools), beside the native lane's lint.
 BUILD_LANES := native="$(MAKE) --no-print-directory stages-start lint test-native STAGES_LOG=target/stages-native.log" \
-	wasm="$(MAKE) --no-print-directory stages-start test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build STAGES_LOG=target/stages-wasm.log"
-test-build-lanes: setup-web
+	wasm="$(MAKE) --no-print-directory stages-start setup-rust-tools tools-done test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build STAGES_LOG=target/stages-wasm.log"
+tools-done:
+	$(stage-done)
+test-build-lanes: setup-rustup setup-web
 	node web/test/lanes.mjs --jobs 2 --log build-lanes $(BUILD_LANES)
 	$(stage-done)
 
 STAGE_TIMES = awk 'NR > 1 { printf "    %-18s %5d s\n", $$2, $$1 - t } { t = $$1 }' $(1)
-test: stages-start setup test-build-lanes test-lanes
+# `setup` less the wasm tools' builds (see BUILD_LANES).
+setup-base: setup-rustup setup-browser setup-web setup-wasm-strip
+	$(stage-done)
+test: stages-start setup-base test-build-lanes test-lanes
 	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
 	@echo "  test-build-lanes, the native lane's stages:"; $(call STAGE_TIMES,target/stages-native.log)
 	@echo "  test-build-lanes, the wasm lane's stages:"; $(call STAGE_TIMES,target/stages-wasm.log)
