@@ -118,8 +118,20 @@ impl GoalSpec {
     }
 
     /// The goal at world time `t`, given the agents' states `states`.
+    /// A static goal is a plain copy, made where it is read (every agent
+    /// update reads its goal here); a moving one is computed out of line.
     #[must_use]
+    #[inline(always)]
     pub fn at(&self, t: f32, states: &[VehicleState]) -> Goal {
+        match self.motion {
+            GoalMotion::Static => self.goal,
+            _ => self.moved(t, states),
+        }
+    }
+
+    /// [`GoalSpec::at`] for a goal in motion.
+    #[inline(never)]
+    fn moved(&self, t: f32, states: &[VehicleState]) -> Goal {
         let mut g = self.goal;
         match self.motion {
             GoalMotion::Static => {}
