@@ -35,12 +35,15 @@ setup-rustup:
 	rustup component list --installed | grep -q '^rustfmt' || rustup component add rustfmt
 
 # wasm-pack and the wasm-bindgen CLI, built from crates.io (their release
-# binaries come from GitHub, which these machines cannot reach).
+# binaries come from GitHub, which these machines cannot reach). The CLI
+# without its default features: they add a TLS stack (rustls, ring's C
+# build) that its test runner never uses here, speaking plain HTTP to
+# Debian's ChromeDriver on this machine.
 setup-rust-tools:
 	if ! wasm-pack --version 2>/dev/null | grep -q "$(WASM_PACK_VERSION)"; then \
 	  $(TOOL_PROFILE) cargo install wasm-pack --version $(WASM_PACK_VERSION) --locked; fi
 	if ! wasm-bindgen --version 2>/dev/null | grep -q "$(WASM_BINDGEN_VERSION)"; then \
-	  $(TOOL_PROFILE) cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION) --force; fi
+	  $(TOOL_PROFILE) cargo install wasm-bindgen-cli --version $(WASM_BINDGEN_VERSION) --no-default-features --force; fi
 
 setup-browser:
 	if [ ! -x /usr/bin/chromium ] || [ ! -x /usr/bin/chromedriver ]; then \
@@ -74,12 +77,14 @@ lint:
 # The tests write the figures records into target/figures (cleared first,
 # so a renamed test leaves no stale record); then the report's checked
 # part (docs/FIGURES.md) must equal what they measured, byte for byte
-# (`steer` in the test profile: the tests' own build, nothing compiled again).
+# (`steer` as the tests built it, target/debug/steer: `cargo run` would
+# resolve the features without the dev-dependencies and compile the crate
+# and some of its dependencies again, 80 s on a 2-core machine).
 test-native:
 	rm -rf target/figures
 	cargo test --all-targets --features cli,counters
 	cargo test --doc --features cli,counters
-	cargo run --profile test --features cli,counters --bin steer -- report --check
+	$${CARGO_TARGET_DIR:-target}/debug/steer report --check
 	$(stage-done)
 
 # The figures report, fast mode (a few minutes): every test that writes a
