@@ -10,7 +10,7 @@ WASM_BINDGEN_VERSION := $(shell awk '/^name = "wasm-bindgen"$$/{getline; gsub(/"
 .PHONY: setup setup-rust setup-rustup setup-rust-tools setup-base tools-done setup-browser setup-web setup-wasm-strip test test-native lint table bench demo \
 	wasm web-build web-build-test test-wasm test-smoke test-tsc test-e2e bench-web test-e2e-gallery test-urlfuzz \
 	test-e2e-learn test-e2e-teach test-e2e-axe test-e2e-vehicle bench-wasm-native test-e2e-perf bench-tables test-e2e-avoid test-e2e-gpu test-e2e-peers test-protocol bench-budget \
-	npm test-npm test-library-user test-lanes test-build-lanes figures figures-full screenshots stages-start icount
+	npm test-npm test-library-user test-lanes test-jobs figures figures-full screenshots stages-start icount
 
 # `make test` says how long each stage took (its own builds included: a
 # stage's time runs from the end of the one before to its own end), from
@@ -184,6 +184,7 @@ web-build: setup-web wasm
 # and the benches drive.
 web-build-test: setup-web wasm
 	cd web && npx vite build --mode test --logLevel warn
+	$(stage-done)
 
 # The bindings in headless Chromium (webdriver.json carries the flags).
 # Then the golden-hash suites again in the SIMD build: the shipped simd128
@@ -398,6 +399,7 @@ npm: setup-web wasm
 	@ls -l npm/pkg/steering_bg.wasm | awk '{print "npm wasm: " $$5 " bytes"}'
 	@gzip -9 -c npm/pkg/steering_bg.wasm | wc -c | awk '{print "npm wasm gzipped: " $$1 " bytes"}'
 	@ls -l npm/funnel-figure.js | awk '{print "npm element module: " $$5 " bytes"}'
+	$(stage-done)
 
 # The tarball installed into a scratch folder under target/ (node:test):
 # the example page and a plain page of two <funnel-figure> elements served
@@ -415,51 +417,58 @@ test-library-user:
 	$(stage-done)
 
 # Every browser suite above, the npm package's tests and the library
-# user, two at a time (web/test/lanes.mjs: each job's output printed whole
-# when it ends, its time in target/lanes.log): a suite mostly waits on its
-# page, so one at a time left a core idle. Longest first. The targets above
-# still run one suite each.
-LANE_SUITE = $(1)="node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/$(1).mjs"
-LANE_JOBS := $(call LANE_SUITE,e2e-perf) $(call LANE_SUITE,e2e-gpu) $(call LANE_SUITE,e2e) \
-	$(call LANE_SUITE,e2e-gallery) $(call LANE_SUITE,e2e-vehicle) $(call LANE_SUITE,e2e-avoid) \
-	npm="node --test npm/test/*.test.mjs" \
+# user, longest first (web/test/lanes.mjs: each job's output printed whole
+# when it ends, its time in target/lanes.log). `make test-lanes` runs them
+# two at a time on their own; `make test` runs them after the build lanes
+# below, each suite as soon as the wasm lane has built the page and the
+# package ($(1) = "@wasm"). The targets above still run one suite each.
+# e2e-peers writes its deterministic records into target/figures, which
+# test-native clears first and checks last: it starts after the native lane.
+comma := ,
+LANE_SUITE = $(1)$(2)="node $(NODE_TEST_ARGS) web/test/suite.mjs web/test/$(1).mjs"
+LANE_JOBS = $(call LANE_SUITE,e2e-perf,$(1)) $(call LANE_SUITE,e2e-gpu,$(1)) $(call LANE_SUITE,e2e,$(1)) \
+	$(call LANE_SUITE,e2e-gallery,$(1)) $(call LANE_SUITE,e2e-vehicle,$(1)) $(call LANE_SUITE,e2e-avoid,$(1)) \
+	npm$(1)="node --test npm/test/*.test.mjs" \
 	library-user="cargo run --release --manifest-path examples/library-user/Cargo.toml --target-dir target/library-user" \
-	$(call LANE_SUITE,e2e-keys) $(call LANE_SUITE,e2e-learn) $(call LANE_SUITE,e2e-teach) \
-	$(call LANE_SUITE,e2e-axe) $(call LANE_SUITE,e2e-peers)
+	$(call LANE_SUITE,e2e-keys,$(1)) $(call LANE_SUITE,e2e-learn,$(1)) $(call LANE_SUITE,e2e-teach,$(1)) \
+	$(call LANE_SUITE,e2e-axe,$(1)) $(call LANE_SUITE,e2e-peers,$(if $(1),$(1)$(comma)native))
 test-lanes: setup-browser web-build-test npm
-	node web/test/lanes.mjs --jobs 2 $(LANE_JOBS)
+	node web/test/lanes.mjs --jobs 2 $(call LANE_JOBS,)
 	$(stage-done)
 
 stages-start:
 	@mkdir -p target && echo "$$(date +%s) start" > $(STAGES_LOG)
 
-# The native suites (lint, then test-native: target/debug) beside the
-# wasm ones and the page's builds (target/release, target/wasm-simd, web/):
-# no build directory in common, so neither waits on the other's lock, and
-# each fills the other's single-core stretches (a one-unit LTO link, a
-# test binary whose last test runs alone, Chromium). Each lane is its own
-# make, with its own stage times (target/stages-native.log,
-# target/stages-wasm.log).
-# The native lane needs no wasm tool, so on a new machine wasm-pack and
-# the wasm-bindgen CLI are built at the head of the wasm lane
-# (setup-rust-tools), beside the native lane's lint.
+# `make test` after set-up: one run of web/test/lanes.mjs, two jobs at a
+# time. First the two build lanes: the native suites (lint, then
+# test-native: target/debug) beside the wasm ones and the page's builds
+# (target/release, target/wasm-simd, web/), no build directory in
+# common, so neither waits on the other's lock. Each lane is its own make,
+# with its own stage times (target/stages-native.log,
+# target/stages-wasm.log). The native lane needs no wasm tool, so on a new
+# machine wasm-pack and the wasm-bindgen CLI are built at the head of the
+# wasm lane (setup-rust-tools), beside the native lane's lint. Then the
+# jobs of LANE_JOBS, the browser suites starting in whichever lane is free
+# once the wasm lane has ended: where it ends first, they fill the
+# native lane's single-core stretches (a test binary whose last test runs
+# alone) instead of waiting for it.
 BUILD_LANES := native="$(MAKE) --no-print-directory stages-start lint test-native STAGES_LOG=target/stages-native.log" \
-	wasm="$(MAKE) --no-print-directory stages-start setup-rust-tools tools-done test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build STAGES_LOG=target/stages-wasm.log"
+	wasm="$(MAKE) --no-print-directory stages-start setup-rust-tools tools-done test-wasm test-smoke test-urlfuzz test-tsc test-protocol web-build web-build-test npm STAGES_LOG=target/stages-wasm.log"
 tools-done:
 	$(stage-done)
-test-build-lanes: setup-rustup setup-web
-	node web/test/lanes.mjs --jobs 2 --log build-lanes $(BUILD_LANES)
+test-jobs: setup-rustup setup-web setup-browser
+	node web/test/lanes.mjs --jobs 2 $(BUILD_LANES) $(call LANE_JOBS,@wasm)
 	$(stage-done)
 
 STAGE_TIMES = awk 'NR > 1 { printf "    %-18s %5d s\n", $$2, $$1 - t } { t = $$1 }' $(1)
 # `setup` less the wasm tools' builds (see BUILD_LANES).
 setup-base: setup-rustup setup-browser setup-web setup-wasm-strip
 	$(stage-done)
-test: stages-start setup-base test-build-lanes test-lanes
+test: stages-start setup-base test-jobs
 	@awk 'NR > 1 { printf "  %-20s %5d s\n", $$2, $$1 - t } { t = $$1; if (NR == 1) t0 = $$1 } END { printf "  %-20s %5d s (%.1f min)\n", "make test", t - t0, (t - t0) / 60 }' $(STAGES_LOG)
-	@echo "  test-build-lanes, the native lane's stages:"; $(call STAGE_TIMES,target/stages-native.log)
-	@echo "  test-build-lanes, the wasm lane's stages:"; $(call STAGE_TIMES,target/stages-wasm.log)
-	@echo "  test-lanes' jobs, two at a time:"; awk '{ printf "    %-18s %5d s\n", $$2, $$1 }' target/lanes.log
+	@echo "  the native lane's stages:"; $(call STAGE_TIMES,target/stages-native.log)
+	@echo "  the wasm lane's stages:"; $(call STAGE_TIMES,target/stages-wasm.log)
+	@echo "  test-jobs, two at a time (seconds, started at):"; awk '{ printf "    %-18s %5d s  +%d s\n", $$2, $$1, $$4 }' target/lanes.log
 	@echo "make test: all suites passed"
 
 demo: setup web-build
