@@ -205,6 +205,28 @@ impl DubinsPath {
         ))
     }
 
+    /// The path of `word` from `start` (x, y, θ) to `goal` with turning
+    /// radius `rho` (> 0), not necessarily the shortest; `None` when the
+    /// word has no solution.
+    #[must_use]
+    pub fn of_word(
+        word: Word,
+        start: (f32, f32, f32),
+        goal: (f32, f32, f32),
+        rho: f32,
+    ) -> Option<Self> {
+        let (r, d, a, b) = frame(start, goal, rho);
+        let (t, p, q) = segments(word, a, b, d).filter(|(t, p, q)| (t + p + q).is_finite())?;
+        let k = (1.0 / r) as f32;
+        let tn = turns(word);
+        Some(Self::from_segments(
+            Vec2::new(start.0, start.1),
+            start.2,
+            [tn[0] * k, tn[1] * k, tn[2] * k],
+            [(t * r) as f32, (p * r) as f32, (q * r) as f32],
+        ))
+    }
+
     /// The path from `start` at heading `theta` through three segments of
     /// curvature `kappa` and length `len` (a zero length for none).
     #[must_use]
