@@ -333,6 +333,24 @@ mod tests {
     }
 
     #[test]
+    fn a_path_of_any_word_ends_at_the_goal_pose() {
+        let (from, to, rho) = ((1.0, -2.0, 0.3), (4.0, 3.0, -2.0), 1.5);
+        let mut n = 0;
+        for w in WORDS {
+            if let Some(path) = DubinsPath::of_word(w, from, to, rho) {
+                n += 1;
+                let (q, th, _) = path.at(path.length());
+                assert!((q - Vec2::new(to.0, to.1)).length() < 1e-4, "{w:?}: {q:?}");
+                assert!(
+                    crate::base::angle::diff(th, to.2).abs() < 1e-4,
+                    "{w:?}: {th}"
+                );
+            }
+        }
+        assert!(n >= 4, "{n}");
+    }
+
+    #[test]
     fn every_word_solution_ends_at_the_goal_pose() {
         let mut r = crate::base::rng::Rng::new(3);
         let mut solved = 0;

@@ -182,3 +182,44 @@ fn clear_word(w: Word, pos: Vec2, th: f32, at: Vec2, h: f32, r: f32, g: &Goal) -
     }
     true
 }
+
+#[cfg(test)]
+mod tests {
+    use super::*;
+
+    fn car() -> VehicleParams {
+        VehicleParams {
+            r_min: 5.0,
+            ..VehicleParams::default()
+        }
+    }
+
+    fn goal(d_tol: f32, beta: f32) -> Goal {
+        Goal {
+            pos: Vec2::new(10.0, 0.0),
+            beta,
+            d_tol,
+            eps_tol: 5f32.to_radians(),
+            ..Goal::default()
+        }
+    }
+
+    #[test]
+    fn far_at_rest_any_heading_is_possible() {
+        let s = VehicleState::new(Vec2::new(-40.0, 0.0), 0.0, 0.0, 0.0);
+        for beta in [0.0, 1.5, PI, -2.0] {
+            assert!(oriented_entry_possible(&car(), &s, &goal(2.5, beta)));
+        }
+    }
+
+    #[test]
+    fn at_rest_at_the_rim_facing_into_a_large_disk_is_not() {
+        // A disk of radius R_min, the car at rest a tenth of a metre off
+        // its rim facing its centre, β the other way: every forward path
+        // enters at once, far from β.
+        let s = VehicleState::new(Vec2::new(4.9, 0.0), 0.0, 0.0, 0.0);
+        assert!(!oriented_entry_possible(&car(), &s, &goal(5.0, PI)));
+        // Facing β already: possible.
+        assert!(oriented_entry_possible(&car(), &s, &goal(5.0, 0.0)));
+    }
+}

@@ -134,9 +134,10 @@ pub struct CarRun {
 /// sampled search [`crate::studies::car_entry`] enters the disk facing β
 /// (forward paths of radius `R_min` after braking from a moving start
 /// along a tightening full-lock or straight lead-in, to entry poses
-/// sampled on the rim, keeping out of the disk before; a moving start's
-/// full-lock arcs at the radius of its start speed, which the full-lock
-/// test traces, ignore that braking tightens the turn). A start inside
+/// sampled on the rim, keeping out of the disk before). Not the
+/// full-lock test there: its arcs keep a moving start's radius, where
+/// braking tightens the turn, and it excused a run the manoeuvre entered
+/// oriented (the study asserts the search excuses none). A start inside
 /// the disk is never counted.
 #[must_use]
 pub fn entry_unavoidable(p: &VehicleParams, s: &VehicleState, g: &Goal) -> bool {
@@ -147,8 +148,8 @@ pub fn entry_unavoidable(p: &VehicleParams, s: &VehicleState, g: &Goal) -> bool 
     }
 }
 
-/// From `s`, the
-/// vehicle's two extreme paths, full lock left and full lock right at the
+/// The full-lock test of an unavoidable wrong-heading entry: from `s`,
+/// the vehicle's two extreme paths, full lock left and full lock right at the
 /// radius of its speed (`max(R_min, v²/A)`), both enter the position
 /// tolerance disk within the distance the vehicle is committed to (a
 /// full turn forwards only; with a reverse gear only its braking
