@@ -324,7 +324,7 @@ const REVERSE_N: usize = 1500;
 
 #[test]
 fn car_like_with_reverse_backs_up_where_shorter() {
-    use steering::studies::car_like::{run_all_from, text_reverse};
+    use steering::studies::car_like::{full_lock_askew, run_all_from, scenario, text_reverse};
     let seed: u64 = std::env::var("CAR_SEED")
         .ok()
         .and_then(|s| s.parse().ok())
@@ -341,6 +341,24 @@ fn car_like_with_reverse_backs_up_where_shorter() {
             let runs = run_all_from(table(), &p, kind, seed, n, rest);
             eprintln!("car_like {gear}, starts {start}, seed {seed}, {n} runs:");
             eprint!("{}", text_reverse(&runs));
+            // The deciding test excuses nothing the controller managed;
+            // and the runs the full-lock test alone would excuse besides.
+            let excused_yet_oriented = runs
+                .iter()
+                .filter(|r| r.unavoidable && r.reached && !r.starts_inside && r.oriented_on_entry)
+                .count();
+            let lock_only = runs
+                .iter()
+                .filter(|r| {
+                    let (mut s, g) = scenario(&p, seed, r.index);
+                    if rest {
+                        s.v = 0.0;
+                        s.omega = 0.0;
+                    }
+                    r.reached && !r.starts_inside && !r.unavoidable && full_lock_askew(&p, &s, &g)
+                })
+                .count();
+            eprintln!("  unavoidable yet entered oriented: {excused_yet_oriented}; possible by the deciding test, unavoidable by the full-lock test alone: {lock_only}");
             for r in runs
                 .iter()
                 .filter(|r| r.reached && !r.starts_inside && !r.oriented_on_entry && !r.unavoidable)
@@ -351,7 +369,13 @@ fn car_like_with_reverse_backs_up_where_shorter() {
             let bands = summarise(&runs, 0.0);
             let violations: u32 = runs.iter().map(|r| r.violations).sum();
             let pivots: u32 = runs.iter().map(|r| r.pivots).sum();
-            checks.push((gear, rest, violations, pivots, bands.clone()));
+            checks.push((
+                gear,
+                rest,
+                violations + pivots,
+                excused_yet_oriented,
+                bands.clone(),
+            ));
             let key = format!("car_like.{gear}.{start}");
             for (b, (lo, hi)) in bands.iter().zip(BANDS) {
                 let k = format!("{key}.d{lo}-{hi}");
@@ -367,7 +391,18 @@ fn car_like_with_reverse_backs_up_where_shorter() {
                     "%",
                     1,
                 ));
-                figs.push(Figure::new(&format!("{k}.unavoidable"), &format!("entries where a wrong heading was unavoidable (both full-lock arcs enter the disk outside β ± ε_tol within the committed distance), {what}"), b.unavoidable as f64, "runs", 0));
+                let test = if gear == "reverse" {
+                    "both full-lock arcs enter the disk outside β ± ε_tol within the braking distance"
+                } else {
+                    "no forward path of radius R_min, after braking on a tightening full-lock or straight lead-in, reaches an entry pose sampled on the rim within β ± ε_tol without entering the disk before"
+                };
+                figs.push(Figure::new(
+                    &format!("{k}.unavoidable"),
+                    &format!("entries where a wrong heading was unavoidable ({test}), {what}"),
+                    b.unavoidable as f64,
+                    "runs",
+                    0,
+                ));
                 figs.push(Figure::new(
                     &format!("{k}.oriented_possible"),
                     &format!("oriented on entry where possible, {what}"),
@@ -390,6 +425,13 @@ fn car_like_with_reverse_backs_up_where_shorter() {
                     2,
                 ));
             }
+            figs.push(Figure::new(
+                &format!("{key}.unavoidable_yet_oriented"),
+                &format!("entries the deciding test calls unavoidable that entered oriented anyway, {gear}, starts {start}"),
+                excused_yet_oriented as f64,
+                "runs",
+                0,
+            ));
             figs.push(Figure::new(
                 &format!("{key}.violations"),
                 &format!("steps with a violated limit, {gear}, starts {start}"),
@@ -419,13 +461,17 @@ fn car_like_with_reverse_backs_up_where_shorter() {
         },
         &figs,
     );
-    for (gear, rest, violations, pivots, bands) in checks {
-        assert_eq!(violations, 0, "{gear} rest {rest}");
-        assert_eq!(pivots, 0, "{gear} rest {rest}");
+    for (gear, rest, violations_pivots, excused, bands) in checks {
+        assert_eq!(violations_pivots, 0, "{gear} rest {rest}");
+        assert_eq!(excused, 0, "{gear} rest {rest}");
         for (b, (lo, hi)) in bands.iter().zip(BANDS) {
             assert!(
                 pct(b.rest_ok, b.halting) >= 99.5,
                 "{gear} D {lo}–{hi}: {b:?}"
+            );
+            assert!(
+                pct(b.oriented_possible.1, b.oriented_possible.0) >= 95.0,
+                "{gear} rest {rest} D {lo}–{hi}: {b:?}"
             );
             if gear == "reverse" && rest {
                 // Every start at rest enters oriented (a start at the rim

@@ -205,6 +205,28 @@ impl DubinsPath {
         ))
     }
 
+    /// The path of `word` from `start` (x, y, θ) to `goal` with turning
+    /// radius `rho` (> 0), not necessarily the shortest; `None` when the
+    /// word has no solution.
+    #[must_use]
+    pub fn of_word(
+        word: Word,
+        start: (f32, f32, f32),
+        goal: (f32, f32, f32),
+        rho: f32,
+    ) -> Option<Self> {
+        let (r, d, a, b) = frame(start, goal, rho);
+        let (t, p, q) = segments(word, a, b, d).filter(|(t, p, q)| (t + p + q).is_finite())?;
+        let k = (1.0 / r) as f32;
+        let tn = turns(word);
+        Some(Self::from_segments(
+            Vec2::new(start.0, start.1),
+            start.2,
+            [tn[0] * k, tn[1] * k, tn[2] * k],
+            [(t * r) as f32, (p * r) as f32, (q * r) as f32],
+        ))
+    }
+
     /// The path from `start` at heading `theta` through three segments of
     /// curvature `kappa` and length `len` (a zero length for none).
     #[must_use]
@@ -308,6 +330,24 @@ mod tests {
             }
         }
         (x, y, th)
+    }
+
+    #[test]
+    fn a_path_of_any_word_ends_at_the_goal_pose() {
+        let (from, to, rho) = ((1.0, -2.0, 0.3), (4.0, 3.0, -2.0), 1.5);
+        let mut n = 0;
+        for w in WORDS {
+            if let Some(path) = DubinsPath::of_word(w, from, to, rho) {
+                n += 1;
+                let (q, th, _) = path.at(path.length());
+                assert!((q - Vec2::new(to.0, to.1)).length() < 1e-4, "{w:?}: {q:?}");
+                assert!(
+                    crate::base::angle::diff(th, to.2).abs() < 1e-4,
+                    "{w:?}: {th}"
+                );
+            }
+        }
+        assert!(n >= 4, "{n}");
     }
 
     #[test]

@@ -211,6 +211,17 @@ pub struct Manoeuvre {
     /// vehicle with a reverse gear ([`crate::funnelling::reverse`]).
     #[serde(skip_serializing_if = "ReedsSheppPath::is_unused")]
     pub rs: ReedsSheppPath,
+    /// The straight run-in after [`Manoeuvre::path`], m, when the path
+    /// was chosen by simulation with another than the manoeuvre's own
+    /// (0: its own, [`crate::funnelling::manoeuvre::runway`]).
+    #[serde(skip_serializing_if = "is_zero")]
+    pub run_in: f32,
+}
+
+/// Serde's test of a field left out when 0.
+#[allow(clippy::trivially_copy_pass_by_ref)]
+fn is_zero(x: &f32) -> bool {
+    *x == 0.0
 }
 
 impl Manoeuvre {

@@ -16,6 +16,21 @@
 //! before the goal ([`runway`]) and goes on straight past it, so the
 //! vehicle enters the position tolerance facing β.
 //!
+//! **Checked by simulation.** Whenever a path is solved, it is first
+//! followed in simulation with the very update and seek step the world
+//! runs (`trial`). When it would enter the position tolerance at the
+//! wrong heading (the pursuit lags each change of curvature, and the
+//! shortest word to the run-in may cut through the disk: a start close
+//! to a large disk, or a fast start braking along its first arc), the
+//! alternatives are simulated too, at most [`ALT_TRIALS`]: every
+//! Dubins word, not only the shortest, of a few radii (`R_min` itself
+//! among them) to run-ins of a few lengths, also off the goal's line, each
+//! keeping out of the disk; the shortest drive that enters it facing β is
+//! taken. A path whose simulation enters oriented is kept as it is, so
+//! where the manoeuvre already arrived oriented nothing changes. (Tuned on seed 1:
+//! forwards only, oriented on entry where possible below 5 R_min
+//! 92.0–95.3 % → 96.9–99.8 %.)
+//!
 //! A car with a reverse gear ([`VehicleParams::v_reverse`]) follows a
 //! Reeds–Shepp path instead, forwards and backwards
 //! ([`crate::funnelling::reverse`]).
@@ -36,22 +51,26 @@
 //! and the heading at rest, as [`crate::funnelling::approach::tolerance_phase`]
 //! judges them).
 //!
-//! Cost per update is bounded: at most one Dubins solve (six closed forms)
-//! and three path samples. A path is solved again only when the goal pose
-//! moved, the vehicle strayed from the path by more than [`REPLAN_ERR`]
-//! path radii, or it came to the end of the path without arriving;
-//! [`Manoeuvre::solves`] counts the solves.
+//! Cost per update is bounded: at most one solve and three path samples.
+//! A solve is one Dubins solve (six closed forms) and one simulated
+//! follow, plus, when that enters askew, the alternatives' closed forms
+//! and at most [`ALT_TRIALS`] more simulated follows (each at most
+//! [`MAX_TRIAL_STEPS`] steps). A path is solved again only when the goal
+//! pose moved, the vehicle strayed from the path by more than
+//! [`REPLAN_ERR`] path radii, or it came to the end of the path without
+//! arriving; [`Manoeuvre::solves`] counts the solves.
 
 use glam::Vec2;
 
 use crate::base::angle::diff;
-use crate::base::dubins::DubinsPath;
+use crate::base::dubins::{DubinsPath, WORDS};
 use crate::base::minmax::MinMax;
 use crate::base::trig;
 use crate::base::vehicle::{VehicleParams, VehicleState};
 use crate::funnelling::approach::{arrived, halting_speed, seen_from};
 use crate::funnelling::goal::{Goal, Manoeuvre};
-use crate::funnelling::reverse::Pursuit;
+use crate::funnelling::reverse::{segment_distance, Pursuit, MAX_TRIAL_STEPS, TRIAL_EPS_SHARE};
+use crate::funnelling::seek::seek_step_committed;
 use crate::funnelling::update::{Internals, Mode, Update};
 
 /// The path radius over `R_min`: tracking a change of curvature takes the
@@ -77,6 +96,21 @@ pub const SPEED_FACTOR: f32 = 0.5;
 /// The run-in beyond the position tolerance, path radii ([`runway`]).
 pub const RUNWAY: f32 = 0.5;
 
+/// The run-ins beyond the position tolerance of the paths tried when the
+/// manoeuvre's own would enter askew, path radii (`alternatives`): a
+/// longer one leaves the pursuit room to settle on the line.
+pub const ALT_RUN_INS: [f32; 5] = [0.5, 0.0, 1.0, 2.0, 4.0];
+/// Their lateral offsets from the goal, shares of `D_tol`: the run-in
+/// need not cross the goal itself.
+pub const ALT_OFFSETS: [f32; 3] = [0.0, 0.5, -0.5];
+/// Their radii, in path radii: a wider one is tracked more closely.
+pub const ALT_RADII: [f32; 3] = [1.0, 1.0 / RHO_FACTOR, 1.3];
+/// How far they keep out of the disk, path radii: room for the pursuit's
+/// tracking error.
+pub const ALT_MARGIN: f32 = 0.15;
+/// The most of them simulated per solve.
+pub const ALT_TRIALS: usize = 24;
+
 /// The speed a car-like vehicle manoeuvres at: the goal's desired speed,
 /// at most [`SPEED_FACTOR`] of the fastest speed whose turning radius is still `R_min`
 /// (`min(ω_max·R_min, √(A·R_min))`).
@@ -101,21 +135,141 @@ pub fn runway(g: &Goal, rho: f32) -> f32 {
     g.d_tol + RUNWAY * rho
 }
 
+/// The run-in of the path followed: the one it was chosen with, or the
+/// manoeuvre's own.
+fn run_of(m: &Manoeuvre, g: &Goal, rho: f32) -> f32 {
+    if m.run_in > 0.0 {
+        m.run_in
+    } else {
+        runway(g, rho)
+    }
+}
+
 /// Solves the path from the vehicle's pose to the start of the run-in.
 /// A vehicle faster than the manoeuvre brakes along it and strays at
 /// first, then solves again from where it is (planning with the radius
 /// of its current speed instead made the study's paths twice as long).
-fn solve(m: &mut Manoeuvre, s: &VehicleState, g: &Goal, rho: f32) {
+/// With `simulate`, the path is followed in simulation first, and when it
+/// would enter the disk askew the shortest of the [`alternatives`] that
+/// enters it facing β is taken instead (module docs).
+fn solve(m: &mut Manoeuvre, p: &VehicleParams, s: &VehicleState, g: &Goal, simulate: bool) {
+    let rho = path_radius(p);
     let from = (s.pos.x, s.pos.y, s.theta);
     let start = g.pos - trig::unit(g.beta) * runway(g, rho);
     let to = (start.x, start.y, g.beta);
-    m.path = DubinsPath::shortest(from, to, rho)
+    let mut path = DubinsPath::shortest(from, to, rho)
         .unwrap_or_else(|| DubinsPath::from_segments(s.pos, s.theta, [0.0; 3], [0.0; 3]));
+    let mut run_in = 0.0;
+    if simulate && trial(p, *s, g, path, 0.0).is_none() {
+        let mut best = f32::INFINITY;
+        for (other, run) in alternatives(s, g, rho) {
+            if let Some(l) = trial(p, *s, g, other, run) {
+                if l < best {
+                    best = l;
+                    (path, run_in) = (other, run);
+                }
+            }
+        }
+    }
+    m.path = path;
+    m.run_in = run_in;
     m.s = 0.0;
     m.goal = g.pos;
     m.beta = g.beta;
     m.solves = m.solves.saturating_add(1);
     m.active = true;
+}
+
+/// The paths tried when the manoeuvre's own would enter askew: every
+/// Dubins word (not only the shortest) of the radii [`ALT_RADII`] to a
+/// run-in along β at the lateral offsets [`ALT_OFFSETS`], starting
+/// [`ALT_RUN_INS`] beyond the rim, with their run-ins, m, keeping out of
+/// the disk; those keeping [`ALT_MARGIN`] path radii out (at most half
+/// the start's distance from the rim) first, each set shortest first; at
+/// most [`ALT_TRIALS`] of them.
+fn alternatives(s: &VehicleState, g: &Goal, rho: f32) -> Vec<(DubinsPath, f32)> {
+    let from = (s.pos.x, s.pos.y, s.theta);
+    let d0 = (s.pos - g.pos).length();
+    let keep = g.d_tol + (ALT_MARGIN * rho).at_most(0.5 * (d0 - g.d_tol).at_least(0.0));
+    let (along, across) = (
+        trig::unit(g.beta),
+        trig::unit(g.beta + core::f32::consts::FRAC_PI_2),
+    );
+    let mut out = Vec::new();
+    for offset in ALT_OFFSETS {
+        let y = offset * g.d_tol;
+        let rim = (g.d_tol * g.d_tol - y * y).at_least(0.0).sqrt();
+        for run in ALT_RUN_INS {
+            let run = rim + run * rho;
+            let start = g.pos + across * y - along * run;
+            for k in ALT_RADII {
+                for word in WORDS {
+                    let to = (start.x, start.y, g.beta);
+                    let Some(path) = DubinsPath::of_word(word, from, to, k * rho) else {
+                        continue;
+                    };
+                    let clear = path_clearance(&path, g.pos);
+                    if clear > g.d_tol {
+                        out.push((clear < keep, path.length() + run, path, run));
+                    }
+                }
+            }
+        }
+    }
+    out.sort_by(|a, b| a.0.cmp(&b.0).then(a.1.total_cmp(&b.1)));
+    out.truncate(ALT_TRIALS);
+    out.into_iter()
+        .map(|(_, _, path, run)| (path, run))
+        .collect()
+}
+
+/// The smallest distance of `path` from `q`.
+fn path_clearance(path: &DubinsPath, q: Vec2) -> f32 {
+    (0..3)
+        .filter(|&i| path.len[i] > 0.0)
+        .map(|i| {
+            let (pos, th) = path.knots[i];
+            segment_distance(q, pos, th, path.kappa[i], path.len[i])
+        })
+        .fold(f32::INFINITY, f32::min)
+}
+
+/// Simulates following `path` and then the run-in `run_in` (0: the
+/// manoeuvre's own) from `s` with the update and the committed seek step
+/// a world runs: the distance driven to the first entry into the disk
+/// when it faces β (within [`TRIAL_EPS_SHARE`] of `ε_tol`), `None` when
+/// it enters askew or not within the trial's steps.
+fn trial(
+    p: &VehicleParams,
+    mut s: VehicleState,
+    g: &Goal,
+    path: DubinsPath,
+    run_in: f32,
+) -> Option<f32> {
+    let rho = path_radius(p);
+    let vm = manoeuvre_speed(p, g);
+    let mut m = Manoeuvre {
+        active: true,
+        path,
+        run_in,
+        goal: g.pos,
+        beta: g.beta,
+        ..Manoeuvre::default()
+    };
+    let far = (s.pos - g.pos).length() + core::f32::consts::TAU * rho + path.length();
+    let t = 2.0 * far / vm.at_least(1e-3) + 2.0 * s.v.abs() / p.accel_max;
+    let steps = ((t / p.dt) as u32).clamp(1, MAX_TRIAL_STEPS);
+    let mut length = 0.0;
+    for _ in 0..steps {
+        if (s.pos - g.pos).length() < g.d_tol {
+            return (diff(g.beta, s.theta).abs() < TRIAL_EPS_SHARE * g.eps_tol).then_some(length);
+        }
+        let out = step(p, &s, g, &mut m, Internals::default(), false);
+        let before = s.pos;
+        seek_step_committed(p, &mut s, out.gamma, out.v_dt);
+        length += (s.pos - before).length();
+    }
+    None
 }
 
 /// Advances the arc length reached to the vehicle's projection on the path
@@ -190,7 +344,7 @@ pub fn plan(u: &mut Update<'_>, far: impl FnOnce(&mut Update<'_>) -> Internals) 
         };
         return crate::funnelling::reverse::follow(&p, &s, &g, m, &k, out);
     }
-    follow(&p, &s, &g, m, rho, out)
+    follow(&p, &s, &g, m, out)
 }
 
 /// The manoeuvre's update: solve a path when needed, then the pure-pursuit
@@ -200,27 +354,42 @@ fn follow(
     s: &VehicleState,
     g: &Goal,
     m: &mut Manoeuvre,
-    rho: f32,
-    mut out: Internals,
+    out: Internals,
 ) -> Internals {
+    step(p, s, g, m, out, true)
+}
+
+/// [`follow`]; a path solved meanwhile is chosen by simulation when
+/// `simulate` (never inside a simulation).
+fn step(
+    p: &VehicleParams,
+    s: &VehicleState,
+    g: &Goal,
+    m: &mut Manoeuvre,
+    mut out: Internals,
+    simulate: bool,
+) -> Internals {
+    let rho = path_radius(p);
     let moved =
         (g.pos - m.goal).length() > 0.1 * g.d_tol || diff(g.beta, m.beta).abs() > 0.1 * g.eps_tol;
     let vm = manoeuvre_speed(p, g);
     // At most one solve per update: a fresh path starts at the vehicle.
     let fresh = !m.active || moved;
     if fresh {
-        solve(m, s, g, rho);
+        solve(m, p, s, g, simulate);
     }
     let on_path = progress(m, s, rho, p.dt);
-    let len = m.path.length() + runway(g, rho);
+    let run = run_of(m, g, rho);
+    let len = m.path.length() + run;
     let stopped = s.v < 0.05 * vm && m.s > len - 0.05 * rho;
     let strayed = (s.pos - on_path).length() > REPLAN_ERR * rho;
     if !fresh && (strayed || stopped || m.s > len + rho) {
-        solve(m, s, g, rho);
+        solve(m, p, s, g, simulate);
     }
+    let run = run_of(m, g, rho);
     let (aim, _, _) = m.path.at(m.s + LOOKAHEAD * rho);
     let (_, gamma, _) = seen_from(s, aim);
-    let left = (m.path.length() + runway(g, rho) - m.s).at_least(0.0);
+    let left = (m.path.length() + run - m.s).at_least(0.0);
     // On a straight, up to the goal's speed, braking to the manoeuvre
     // speed by the next arc.
     let straight = m.path.straight_ahead(m.s).at_most(left);

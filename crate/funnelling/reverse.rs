@@ -129,7 +129,7 @@ pub fn run_in(g: &Goal, rho: f32) -> f32 {
 
 /// Smallest distance from `q` to a segment from `pos` at heading `th`,
 /// curvature `k`, signed length `l` (negative: backwards).
-fn segment_distance(q: Vec2, pos: Vec2, th: f32, k: f32, l: f32) -> f32 {
+pub fn segment_distance(q: Vec2, pos: Vec2, th: f32, k: f32, l: f32) -> f32 {
     if k == 0.0 {
         let dir = trig::unit(th) * l;
         let along = ((q - pos).dot(dir) / dir.length_squared().at_least(1e-12)).clamp(0.0, 1.0);

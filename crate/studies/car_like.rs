@@ -129,8 +129,27 @@ pub struct CarRun {
     pub backing: u32,
 }
 
-/// The deciding test of an unavoidable wrong-heading entry: from `s`, the
-/// vehicle's two extreme paths, full lock left and full lock right at the
+/// The deciding test of an unavoidable wrong-heading entry. With a
+/// reverse gear: [`full_lock_askew`]. Forwards only: no path of the
+/// sampled search [`crate::studies::car_entry`] enters the disk facing β
+/// (forward paths of radius `R_min` after braking from a moving start
+/// along a tightening full-lock or straight lead-in, to entry poses
+/// sampled on the rim, keeping out of the disk before). Not the
+/// full-lock test there: its arcs keep a moving start's radius, where
+/// braking tightens the turn, and it excused a run the manoeuvre entered
+/// oriented (the study asserts the search excuses none). A start inside
+/// the disk is never counted.
+#[must_use]
+pub fn entry_unavoidable(p: &VehicleParams, s: &VehicleState, g: &Goal) -> bool {
+    if p.car_like() && p.v_reverse <= 0.0 {
+        !crate::studies::car_entry::oriented_entry_possible(p, s, g)
+    } else {
+        full_lock_askew(p, s, g)
+    }
+}
+
+/// The full-lock test of an unavoidable wrong-heading entry: from `s`,
+/// the vehicle's two extreme paths, full lock left and full lock right at the
 /// radius of its speed (`max(R_min, v²/A)`), both enter the position
 /// tolerance disk within the distance the vehicle is committed to (a
 /// full turn forwards only; with a reverse gear only its braking
@@ -139,7 +158,7 @@ pub struct CarRun {
 /// can face on entering). Traced in steps of at most a quarter of D_tol
 /// and 2 % of the radius. A start inside the disk is never counted.
 #[must_use]
-pub fn entry_unavoidable(p: &VehicleParams, s: &VehicleState, g: &Goal) -> bool {
+pub fn full_lock_askew(p: &VehicleParams, s: &VehicleState, g: &Goal) -> bool {
     let v = s.v.abs();
     if (s.pos - g.pos).length() < g.d_tol || !p.car_like() {
         return false;
