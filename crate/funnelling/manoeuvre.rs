@@ -27,9 +27,8 @@
 //! among them) to run-ins of a few lengths, also off the goal's line, each
 //! keeping out of the disk; the shortest drive that enters it facing β is
 //! taken. A path whose simulation enters oriented is kept as it is, so
-//! where the manoeuvre already arrived oriented nothing changes. (Tuned on seed 1:
-//! forwards only, oriented on entry where possible below 5 R_min
-//! 92.0–95.3 % → 96.9–99.8 %.)
+//! where the manoeuvre already arrived oriented nothing changes (the
+//! car-like study's figures: docs/FIGURES.md, `car_like.forward.*`).
 //!
 //! A car with a reverse gear ([`VehicleParams::v_reverse`]) follows a
 //! Reeds–Shepp path instead, forwards and backwards
