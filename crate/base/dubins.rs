@@ -195,14 +195,7 @@ impl DubinsPath {
             .filter_map(|&w| segments(w, a, b, d).map(|s| (w, s)))
             .filter(|(_, (t, p, q))| (t + p + q).is_finite())
             .min_by(|x, y| (x.1 .0 + x.1 .1 + x.1 .2).total_cmp(&(y.1 .0 + y.1 .1 + y.1 .2)))?;
-        let k = (1.0 / r) as f32;
-        let tn = turns(word);
-        Some(Self::from_segments(
-            Vec2::new(start.0, start.1),
-            start.2,
-            [tn[0] * k, tn[1] * k, tn[2] * k],
-            [(t * r) as f32, (p * r) as f32, (q * r) as f32],
-        ))
+        Some(Self::of_solution(word, (t, p, q), r, start))
     }
 
     /// The path of `word` from `start` (x, y, θ) to `goal` with turning
@@ -217,14 +210,20 @@ impl DubinsPath {
     ) -> Option<Self> {
         let (r, d, a, b) = frame(start, goal, rho);
         let (t, p, q) = segments(word, a, b, d).filter(|(t, p, q)| (t + p + q).is_finite())?;
+        Some(Self::of_solution(word, (t, p, q), r, start))
+    }
+
+    /// The path of `word` whose segments are `(t, p, q)` turning radii
+    /// `r` long, from `start` (x, y, θ).
+    fn of_solution(word: Word, (t, p, q): (f64, f64, f64), r: f64, start: (f32, f32, f32)) -> Self {
         let k = (1.0 / r) as f32;
         let tn = turns(word);
-        Some(Self::from_segments(
+        Self::from_segments(
             Vec2::new(start.0, start.1),
             start.2,
             [tn[0] * k, tn[1] * k, tn[2] * k],
             [(t * r) as f32, (p * r) as f32, (q * r) as f32],
-        ))
+        )
     }
 
     /// The path from `start` at heading `theta` through three segments of
