@@ -560,7 +560,9 @@ try {
       await page.waitForFunction((n) => window.__lab.state().preset === n && window.__lab.count() > 0, name, { timeout: 5000 });
       assert.equal(await page.locator("#message").isHidden(), true, await page.locator("#message").textContent());
       await page.evaluate(() => window.__lab.setPaused(false));
-      await page.waitForTimeout(1500);
+      // Thirty frames drawn: half a second at 60 Hz, however busy the machine.
+      const f0 = await page.evaluate(() => window.__lab.frames);
+      await page.waitForFunction((f) => window.__lab.frames >= f + 30, f0);
       await shot(page, `08-preset-${name}`);
       assert.ok(page.url().includes(`preset=${encodeURIComponent(name)}`) || page.url().includes(`preset=${name}`));
       // Every paper preset states its claim and our measurement.
