@@ -34,6 +34,7 @@ import grid from "./grid.wgsl?raw";
 import separation from "./separation.wgsl?raw";
 import { USAGE, readBack, storage } from "./buffers";
 import { SeparationPasses } from "./passes";
+import { compile, pipelineOf } from "./pipelines";
 
 export { USAGE, readBack };
 
@@ -143,15 +144,6 @@ export interface KernelOptions {
   records?: boolean;
 }
 
-/** Compiles the kernel's module, refusing one with errors (their messages joined). */
-export async function compile(device: GPUDevice, code: string): Promise<GPUShaderModule> {
-  const module = device.createShaderModule({ label: "funnel.wgsl", code });
-  const info = await module.getCompilationInfo();
-  const errors = info.messages.filter((m) => m.type === "error");
-  if (errors.length > 0) throw new Error(`funnel.wgsl: ${errors.map((m) => `${m.lineNum}:${m.linePos} ${m.message}`).join("; ")}`);
-  return module;
-}
-
 /** The agents of one world on the device, stepped by the kernel. */
 export class FunnelKernel {
   readonly n: number;
@@ -197,8 +189,7 @@ export class FunnelKernel {
 
   static async create(device: GPUDevice, table: GpuTable, world: GpuWorldArrays, opts: KernelOptions = {}): Promise<FunnelKernel> {
     const module = await compile(device, opts.source ?? FUNNEL_WGSL);
-    const pipeline = await device.createComputePipelineAsync({ layout: "auto", compute: { module, entryPoint: "step_agents" } });
-    const k = new FunnelKernel(device, pipeline, table, world, opts.records ?? false);
+    const k = new FunnelKernel(device, await pipelineOf(device, module, "step_agents"), table, world, opts.records ?? false);
     if (separating(world)) {
       const buckets = world.settings[SETTING_BUCKETS] ?? 64;
       const step0 = world.settings[SETTING_STEP0] ?? 0;
@@ -276,17 +267,17 @@ export class FunnelKernel {
 export async function probeTable(device: GPUDevice, table: GpuTable, settings: Float32Array, probes: Float32Array, source?: string): Promise<Float32Array> {
   const n = probes.length / 5;
   const module = await compile(device, source ?? FUNNEL_WGSL);
-  const pipeline = await device.createComputePipelineAsync({ layout: "auto", compute: { module, entryPoint: "probe_table" } });
+  const probe = await pipelineOf(device, module, "probe_table");
   const frame = device.createBuffer({ size: 16, usage: USAGE.UNIFORM | USAGE.COPY_DST });
   device.queue.writeBuffer(frame, 0, new Uint32Array([n, 0, 0, 0]));
   const s = storage(device, settings);
   const q = storage(device, probes);
   const answers = storage(device, new Float32Array(4 * n));
   const entries: [number, GPUBuffer][] = [[0, s], [1, table.meta], [2, table.axes], [3, table.cells], [7, frame], [8, q], [9, answers]];
-  const bind = device.createBindGroup({ layout: pipeline.getBindGroupLayout(0), entries: entries.map(([binding, buffer]) => ({ binding, resource: { buffer } })) });
+  const bind = device.createBindGroup({ layout: probe.getBindGroupLayout(0), entries: entries.map(([binding, buffer]) => ({ binding, resource: { buffer } })) });
   const enc = device.createCommandEncoder();
   const pass = enc.beginComputePass();
-  pass.setPipeline(pipeline);
+  pass.setPipeline(probe);
   pass.setBindGroup(0, bind);
   pass.dispatchWorkgroups(Math.ceil(n / WORKGROUP));
   pass.end();

@@ -8,6 +8,7 @@
 // the passes; the kernel (kernel.ts) owns the agents, goals and table.
 
 import { readBack, storage } from "./buffers";
+import { pipelineOf } from "./pipelines";
 
 /** Words per plan (funnel.wgsl Plan: the Internals, the position met, the reads counted). */
 const PLAN_WORDS = 11;
@@ -94,7 +95,7 @@ export class SeparationPasses {
       move_agents: groups(n, AGENT_GROUP),
     };
     for (const entry of Object.keys(USES) as Entry[]) {
-      const pipeline = await device.createComputePipelineAsync({ layout: "auto", compute: { module, entryPoint: entry } });
+      const pipeline = await pipelineOf(device, module, entry);
       const bind = device.createBindGroup({
         label: entry,
         layout: pipeline.getBindGroupLayout(0),
