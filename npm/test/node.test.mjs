@@ -107,6 +107,10 @@ test("adds cost amortised constant time each, single or batched (one run)", asyn
   const ratio16 = median(sixteen) / median(one);
   const ratio100 = batch / median(one);
   t.diagnostic(`CPU time: 1,000 single adds ${(median(one) * 1000).toFixed(1)} ms (median of 3); 16,000 ${(median(sixteen) * 1000).toFixed(1)} ms (${ratio16.toFixed(1)}×); 100,000 in one call ${(batch * 1000).toFixed(1)} ms (${ratio100.toFixed(1)}×)`);
-  assert.ok(ratio16 < 20, `16,000 single adds took ${ratio16.toFixed(1)}× the time of 1,000 (linear: 16×)`);
-  assert.ok(ratio100 < 150, `100,000 agents in one call took ${ratio100.toFixed(1)}× the time of 1,000 single adds (linear: 100×)`);
+  // Bounds at twice the linear ratio: under `make test`'s load one run's
+  // ratio moved between 12× and 20× (16,000 against 1,000), while a cost
+  // per add that grows with the count (the world copied on each add) gives
+  // 256×.
+  assert.ok(ratio16 < 32, `16,000 single adds took ${ratio16.toFixed(1)}× the time of 1,000 (linear: 16×)`);
+  assert.ok(ratio100 < 200, `100,000 agents in one call took ${ratio100.toFixed(1)}× the time of 1,000 single adds (linear: 100×)`);
 });
