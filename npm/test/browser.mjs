@@ -13,7 +13,9 @@ const requireFromWeb = createRequire(join(repo, "web/package.json"));
 const playwright = await import(pathToFileURL(requireFromWeb.resolve("playwright-core")).href);
 const chromium = playwright.chromium ?? playwright.default.chromium;
 
-const CHROMIUM_ARGS = ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run"];
+const CHROMIUM_ARGS = ["--headless=new", "--no-sandbox", "--disable-gpu", "--disable-dev-shm-usage", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic", "--no-first-run",
+  // No preloaded WebUI omnibox popups (web/test/harness.mjs says why).
+  "--disable-features=WebUIOmniboxPopup,WebUIOmniboxAimPopup,WebUIOmniboxFullPopup"];
 const TYPES = { ".html": "text/html", ".js": "text/javascript", ".wasm": "application/wasm", ".bin": "application/octet-stream", ".json": "application/json" };
 
 /** Serves `root` (files only, nothing outside it) on 127.0.0.1. */
