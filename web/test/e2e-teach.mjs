@@ -116,13 +116,14 @@ try {
         const r = await page.evaluate(() => {
           const c = document.getElementById("lab").getBoundingClientRect();
           const rel = (e) => { const b = e.getBoundingClientRect(); return { x0: b.left - c.left, y0: b.top - c.top, x1: b.right - c.left, y1: b.bottom - c.top }; };
-          return { h: window.__lab.handles(), w: c.width, hgt: c.height, hud: rel(document.getElementById("hud")), legend: rel(document.querySelector(".stage .legend")) };
+          const hud = document.getElementById("hud");
+          return { h: window.__lab.handles(), w: c.width, hgt: c.height, hud: rel(hud), legend: rel(document.querySelector(".stage .legend")), hudSays: `${hud.classList.contains("folded") ? "folded" : "open"}: ${hud.textContent}` };
         });
         for (const k of ["vehicle", "target", "beta", "heading", "opening", "rim"]) {
           const p = r.h[k];
           assert.ok(p.x > 0 && p.x < r.w && p.y > 0 && p.y < r.hgt, `${k} on the stage: ${JSON.stringify(p)}`);
           for (const [name, b] of [["HUD", r.hud], ["legend", r.legend]]) {
-            assert.ok(!(p.x > b.x0 - 4 && p.x < b.x1 + 4 && p.y > b.y0 - 4 && p.y < b.y1 + 4), `${k} under the ${name}: ${JSON.stringify(p)} ${JSON.stringify(b)}`);
+            assert.ok(!(p.x > b.x0 - 4 && p.x < b.x1 + 4 && p.y > b.y0 - 4 && p.y < b.y1 + 4), `${k} under the ${name}: ${JSON.stringify(p)} ${JSON.stringify(b)} (the HUD ${r.hudSays})`);
           }
         }
       });
