@@ -1,6 +1,6 @@
 // The kernel's compiled WGSL and compute pipelines, kept per device and
-// source: a kernel built again for a new world (the lab's restarts, each
-// sampled step of a parity check) reuses them instead of compiling the
+// source: a kernel built again for a new world (each new GPU crowd of the
+// lab, each sampled step of a parity check) reuses them instead of compiling the
 // same code again, which over SwiftShader (a CPU emulation) costs seconds
 // for separation's eleven entry points. A changed source (a parity check's
 // planted change) is compiled on its own.
