@@ -48,6 +48,17 @@ function sameBits(what, run) {
 const table = readFileSync(resolve(root, "tables/eta.bin"));
 const presets = (dir) => readdirSync(resolve(root, dir)).filter((f) => f.endsWith(".json")).map((f) => [f, readFileSync(resolve(root, dir, f), "utf8")]);
 
+/** Steps `lab` one step at a time, `steps` times, hashing what each of
+ *  `reads` returns after every step. */
+function everyStep(lab, steps, ...reads) {
+  const h = hasher();
+  for (let t = 0; t < steps; t++) {
+    lab.step(1);
+    for (const read of reads) fnv(h, read(lab));
+  }
+  return h;
+}
+
 // The golden hashes' length (tests/funnel_determinism.rs: 1,800 steps).
 const STEPS = 1800;
 
@@ -56,11 +67,7 @@ test("every funnelling preset: every state of 1,800 steps, bit for bit", () => {
     sameBits(name, (core) => {
       const lab = new core.Lab(new Uint8Array(table));
       lab.loadScenario(json);
-      const h = hasher();
-      for (let t = 0; t < STEPS; t++) {
-        lab.step(1);
-        fnv(h, lab.state());
-      }
+      const h = everyStep(lab, STEPS, (l) => l.state());
       lab.free();
       return h.value;
     });
@@ -87,12 +94,7 @@ test("the crowd presets: positions and velocities every step, and the trace, bit
   for (const [name, json] of presets("scenarios/crowd")) {
     sameBits(name, (core) => {
       const lab = core.CrowdLab.fromJson(json);
-      const h = hasher();
-      for (let t = 0; t < 400; t++) {
-        lab.step(1);
-        fnv(h, lab.positions());
-        fnv(h, lab.velocities());
-      }
+      const h = everyStep(lab, 400, (l) => l.positions(), (l) => l.velocities());
       fnv(h, lab.trace());
       lab.free();
       return h.value;
